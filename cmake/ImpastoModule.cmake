@@ -1,0 +1,36 @@
+# Helpers shared by every module of Impasto.
+
+# Warnings for the project's own targets (never for generated or third-party code).
+function(impasto_warnings target)
+  target_compile_options(${target} PRIVATE -Wall -Wextra -Wpedantic)
+  if(IMPASTO_WERROR)
+    target_compile_options(${target} PRIVATE -Werror)
+  endif()
+endfunction()
+
+# impasto_module(NAME [DEPS ...]): a static library impasto_NAME (alias impasto::NAME) from
+# NAME/src/*.cpp with public headers in NAME/include/impasto/NAME/.
+function(impasto_module name)
+  cmake_parse_arguments(ARG "" "" "DEPS;PRIVATE_DEPS" ${ARGN})
+  file(GLOB_RECURSE sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/src/*.cpp)
+  add_library(impasto_${name} STATIC ${sources})
+  add_library(impasto::${name} ALIAS impasto_${name})
+  target_include_directories(impasto_${name} PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}/include
+                                             PRIVATE ${CMAKE_CURRENT_SOURCE_DIR}/src)
+  target_compile_features(impasto_${name} PUBLIC cxx_std_20)
+  target_link_libraries(impasto_${name} PUBLIC ${ARG_DEPS} PRIVATE ${ARG_PRIVATE_DEPS})
+  impasto_warnings(impasto_${name})
+endfunction()
+
+# impasto_test(NAME SOURCES... DEPS ...): one GoogleTest executable registered with CTest.
+function(impasto_test name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})
+  add_executable(${name} ${ARG_SOURCES})
+  target_link_libraries(${name} PRIVATE ${ARG_DEPS} GTest::gtest GTest::gtest_main)
+  target_compile_definitions(${name} PRIVATE
+    IMPASTO_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+    IMPASTO_SHARED_DIR="${PROJECT_SOURCE_DIR}/../shared")
+  impasto_warnings(${name})
+  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60
+                       PROPERTIES ENVIRONMENT "IMPASTO_DATA_DIR=${PROJECT_SOURCE_DIR}/data")
+endfunction()
