@@ -13,6 +13,13 @@ endfunction()
 function(impasto_module name)
   cmake_parse_arguments(ARG "" "" "DEPS;PRIVATE_DEPS" ${ARGN})
   file(GLOB_RECURSE sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/src/*.cpp)
+  if(NOT sources)  # a module whose sources are not written yet: headers only
+    add_library(impasto_${name} INTERFACE)
+    add_library(impasto::${name} ALIAS impasto_${name})
+    target_include_directories(impasto_${name} INTERFACE ${CMAKE_CURRENT_SOURCE_DIR}/include)
+    target_link_libraries(impasto_${name} INTERFACE ${ARG_DEPS})
+    return()
+  endif()
   add_library(impasto_${name} STATIC ${sources})
   add_library(impasto::${name} ALIAS impasto_${name})
   target_include_directories(impasto_${name} PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}/include

@@ -16,6 +16,10 @@ struct CommandRegistrar {
   CommandRegistrar(std::string name, CommandSetup setup);
 };
 
+// The sub-command group NAME of root (e.g. "bench"), created on first use, so that several
+// files can add sub-commands to it ("bench sim", "bench color").
+CLI::App* command_group(CLI::App& root, const std::string& name, const std::string& description);
+
 // Every registered command, sorted by name, added to root.
 void add_registered_commands(CLI::App& root);
 
