@@ -1,0 +1,107 @@
+#pragma once
+// The records of a painting session: pen samples and the events between them, in the order
+// they happened, so that a whole session can be replayed. Files: docs/stroke-format.md.
+#include <impasto/paintcore/pen_sample.hpp>
+
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace impasto::input {
+
+// The version of the stroke file format this program reads and writes.
+inline constexpr int kStrokeFormatVersion = 1;
+
+// One pen sample. A stroke is a maximal run of samples whose tip bit (kPenTip) is set.
+struct SampleEvent {
+  paintcore::PenSample sample;
+  bool operator==(const SampleEvent& other) const;
+};
+
+// The canvas the session was painted on: size in cells and cells per inch.
+struct CanvasEvent {
+  int width_cells = 0;
+  int height_cells = 0;
+  double dpi = 0.0;
+  bool operator==(const CanvasEvent&) const = default;
+};
+
+// Switch to a tool by name ("brush", "eraser", "knife", ...).
+struct ToolEvent {
+  std::string name;
+  bool operator==(const ToolEvent&) const = default;
+};
+
+// An extra numeric setting of a brush head, kept in the order it was written.
+struct BrushParam {
+  std::string key;
+  double value = 0.0;
+  bool operator==(const BrushParam&) const = default;
+};
+
+// Choose a brush head (by name) with its size in mm and stiffness (0 soft .. 1 stiff).
+struct BrushEvent {
+  std::string head;
+  double size_mm = 0.0;
+  double stiffness = 0.0;
+  std::vector<BrushParam> params;
+  bool operator==(const BrushEvent&) const = default;
+};
+
+// One pigment of a mix and its share, in parts (only ratios matter).
+struct PigmentPart {
+  std::string pigment;  // as named in the pigment database, e.g. "Titanium White"
+  double parts = 0.0;
+  bool operator==(const PigmentPart&) const = default;
+};
+
+// Load the brush with a volume of a pigment mix.
+struct LoadEvent {
+  double volume_mm3 = 0.0;
+  std::vector<PigmentPart> mix;
+  bool operator==(const LoadEvent&) const = default;
+};
+
+// Wipe the brush clean.
+struct WipeEvent {
+  bool operator==(const WipeEvent&) const = default;
+};
+
+// Let the wet layer dry by a fraction (0 nothing .. 1 fully dry).
+struct DryEvent {
+  double fraction = 0.0;
+  bool operator==(const DryEvent&) const = default;
+};
+
+struct UndoEvent {
+  bool operator==(const UndoEvent&) const = default;
+};
+
+struct RedoEvent {
+  bool operator==(const RedoEvent&) const = default;
+};
+
+using StrokeEvent = std::variant<SampleEvent, CanvasEvent, ToolEvent, BrushEvent, LoadEvent,
+                                 WipeEvent, DryEvent, UndoEvent, RedoEvent>;
+
+// A whole stroke file: its format version and its records in order.
+struct StrokeFile {
+  int version = kStrokeFormatVersion;
+  std::vector<StrokeEvent> events;
+  bool operator==(const StrokeFile&) const = default;
+};
+
+// A stroke: the index range [begin, end) of its samples in a list of pen samples.
+struct StrokeSpan {
+  std::size_t begin = 0;
+  std::size_t end = 0;
+  bool operator==(const StrokeSpan&) const = default;
+};
+
+// The pen samples of a file, in order (other events dropped).
+std::vector<paintcore::PenSample> pen_samples(const StrokeFile& file);
+
+// The strokes in a list of samples: maximal runs with the tip bit set.
+std::vector<StrokeSpan> split_strokes(const std::vector<paintcore::PenSample>& samples);
+
+}  // namespace impasto::input

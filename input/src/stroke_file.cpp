@@ -1,0 +1,124 @@
+#include <impasto/input/stroke_file.hpp>
+
+#include <istream>
+#include <ostream>
+#include <sstream>
+
+#include "stroke_record.hpp"
+#include "text_fields.hpp"
+
+namespace impasto::input {
+
+namespace {
+
+constexpr std::string_view kMagic = "impasto-strokes";
+
+void parse_header(const std::string& line, const detail::LineContext& where, StrokeFile& file) {
+  const auto fields = detail::split_fields(line, where);
+  if (fields.size() != 2 || fields[0] != kMagic) {
+    where.fail("", "not an Impasto stroke file (the first line must be 'impasto-strokes 1')");
+  }
+  file.version = static_cast<int>(detail::parse_integer(fields[1], where, "version"));
+  if (file.version != kStrokeFormatVersion) {
+    where.fail("version", "unsupported version " + std::string(fields[1]) +
+                              " (this program reads version " +
+                              std::to_string(kStrokeFormatVersion) + ")");
+  }
+}
+
+// Rules that span lines: one canvas record before the first sample, time never goes back.
+class SessionChecks {
+ public:
+  void check(const StrokeEvent& event, const detail::LineContext& where) {
+    if (std::holds_alternative<CanvasEvent>(event)) {
+      if (seen_canvas_) where.fail("", "a second 'canvas' record");
+      if (seen_sample_) where.fail("", "'canvas' must come before the first pen sample");
+      seen_canvas_ = true;
+    } else if (const auto* pen = std::get_if<SampleEvent>(&event)) {
+      if (seen_sample_ && pen->sample.time_s < last_time_s_) {
+        where.fail("time", "time goes backwards (" + detail::shortest(pen->sample.time_s) +
+                               " s after " + detail::shortest(last_time_s_) + " s)");
+      }
+      seen_sample_ = true;
+      last_time_s_ = pen->sample.time_s;
+    }
+  }
+
+ private:
+  bool seen_canvas_ = false;
+  bool seen_sample_ = false;
+  double last_time_s_ = 0.0;
+};
+
+}  // namespace
+
+StrokeFile parse_strokes(std::istream& in, const std::string& source_name) {
+  StrokeFile file;
+  std::string line;
+  int line_number = 0;
+  if (!std::getline(in, line)) throw InputFormatError(source_name, 1, "", "empty file");
+  ++line_number;
+  parse_header(line, {source_name, line_number}, file);
+  SessionChecks checks;
+  while (std::getline(in, line)) {
+    ++line_number;
+    const detail::LineContext where{source_name, line_number};
+    const auto fields = detail::split_fields(line, where);
+    if (fields.empty()) continue;  // blank or comment
+    StrokeEvent event = detail::parse_record(fields, where);
+    checks.check(event, where);
+    file.events.push_back(std::move(event));
+  }
+  if (in.bad()) throw InputFormatError(source_name, line_number, "", "read error");
+  return file;
+}
+
+StrokeFile read_stroke_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputFormatError(path.string(), 0, "", "cannot open the file");
+  return parse_strokes(in, path.string());
+}
+
+std::string format_event(const StrokeEvent& event) {
+  std::string line = detail::record_line(event);
+  // Check the line by the reader's own rules, so that nothing written is unreadable.
+  const std::string source = "event to write";
+  const detail::LineContext where{source, 0};
+  const auto fields = detail::split_fields(line, where);
+  if (fields.empty() || detail::parse_record(fields, where) != event) {
+    throw InputFormatError(source, 0, "", "cannot be written exactly: " + line);
+  }
+  return line;
+}
+
+void format_strokes(std::ostream& out, const StrokeFile& file) {
+  if (file.version != kStrokeFormatVersion) {
+    throw std::runtime_error("cannot write stroke file version " + std::to_string(file.version));
+  }
+  out << kMagic << ' ' << kStrokeFormatVersion << '\n';
+  for (const StrokeEvent& event : file.events) out << format_event(event) << '\n';
+}
+
+void write_stroke_file(const std::filesystem::path& path, const StrokeFile& file) {
+  std::ostringstream text;
+  format_strokes(text, file);
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) throw std::runtime_error(path.string() + ": cannot create the file");
+  out << text.str();
+  out.flush();
+  if (!out) throw std::runtime_error(path.string() + ": write failed");
+}
+
+StrokeRecorder::StrokeRecorder(const std::filesystem::path& path)
+    : path_(path), out_(path, std::ios::binary | std::ios::trunc) {
+  if (!out_) throw std::runtime_error(path.string() + ": cannot create the file");
+  out_ << kMagic << ' ' << kStrokeFormatVersion << '\n' << std::flush;
+}
+
+void StrokeRecorder::record(const StrokeEvent& event) {
+  out_ << format_event(event) << '\n' << std::flush;
+  if (!out_) throw std::runtime_error(path_.string() + ": write failed");
+  ++count_;
+}
+
+}  // namespace impasto::input

@@ -1,0 +1,225 @@
+#include "stroke_record.hpp"
+
+#include <cstdint>
+#include <limits>
+
+namespace impasto::input::detail {
+
+namespace {
+
+using Fields = std::vector<std::string_view>;
+
+void expect_count(const Fields& fields, std::size_t count, const LineContext& where,
+                  const char* usage) {
+  if (fields.size() != count) {
+    where.fail("", "'" + std::string(fields[0]) + "' takes " + std::to_string(count - 1) +
+                       " field(s): " + usage + ", found " + std::to_string(fields.size() - 1));
+  }
+}
+
+double in_range(double value, double lo, double hi, const LineContext& where,
+                const std::string& field) {
+  if (value < lo || value > hi) {
+    where.fail(field, shortest(value) + " is outside " + shortest(lo) + ".." + shortest(hi));
+  }
+  return value;
+}
+
+// Names of tools, brush heads and parameters: letters, digits, '_', '-', '.'.
+std::string identifier(std::string_view text, const LineContext& where, const std::string& field) {
+  if (text.empty()) where.fail(field, "empty name");
+  for (char c : text) {
+    const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                    c == '_' || c == '-' || c == '.';
+    if (!ok) where.fail(field, "a name may hold only letters, digits, '_', '-' and '.'");
+  }
+  return std::string(text);
+}
+
+SampleEvent parse_pen(const Fields& f, const LineContext& where) {
+  expect_count(f, 9, where, "time x y pressure tilt_x tilt_y rotation buttons");
+  paintcore::PenSample s;
+  s.time_s = parse_double(f[1], where, "time");
+  s.x_mm = parse_double(f[2], where, "x");
+  s.y_mm = parse_double(f[3], where, "y");
+  s.pressure = parse_float(f[4], where, "pressure");
+  in_range(s.pressure, 0.0, 1.0, where, "pressure");
+  s.tilt_x_deg = parse_float(f[5], where, "tilt_x");
+  in_range(s.tilt_x_deg, -90.0, 90.0, where, "tilt_x");
+  s.tilt_y_deg = parse_float(f[6], where, "tilt_y");
+  in_range(s.tilt_y_deg, -90.0, 90.0, where, "tilt_y");
+  s.rotation_deg = parse_float(f[7], where, "rotation");
+  in_range(s.rotation_deg, 0.0, 360.0, where, "rotation");
+  const std::int64_t buttons = parse_integer(f[8], where, "buttons");
+  if (buttons < 0 || buttons > std::numeric_limits<std::uint32_t>::max()) {
+    where.fail("buttons", "must be an unsigned 32-bit bit set");
+  }
+  s.buttons = static_cast<std::uint32_t>(buttons);
+  return SampleEvent{s};
+}
+
+CanvasEvent parse_canvas(const Fields& f, const LineContext& where) {
+  expect_count(f, 4, where, "width_cells height_cells dpi");
+  constexpr std::int64_t kMaxCells = 1 << 16;
+  CanvasEvent canvas;
+  const auto cells = [&](std::string_view text, const char* field) {
+    const std::int64_t n = parse_integer(text, where, field);
+    if (n < 1 || n > kMaxCells) {
+      where.fail(field, std::to_string(n) + " is outside 1.." + std::to_string(kMaxCells));
+    }
+    return static_cast<int>(n);
+  };
+  canvas.width_cells = cells(f[1], "width");
+  canvas.height_cells = cells(f[2], "height");
+  canvas.dpi = parse_double(f[3], where, "dpi");
+  if (!(canvas.dpi > 0.0)) where.fail("dpi", "must be positive");
+  in_range(canvas.dpi, 0.0, 100000.0, where, "dpi");
+  return canvas;
+}
+
+BrushEvent parse_brush(const Fields& f, const LineContext& where) {
+  if (f.size() < 2) where.fail("head", "'brush' needs a head name, size=MM and stiffness=X");
+  BrushEvent brush;
+  brush.head = identifier(f[1], where, "head");
+  bool has_size = false;
+  bool has_stiffness = false;
+  for (std::size_t i = 2; i < f.size(); ++i) {
+    const std::size_t eq = f[i].find('=');
+    if (eq == std::string_view::npos) where.fail(std::string(f[i]), "expected key=value");
+    const std::string key = identifier(f[i].substr(0, eq), where, "key");
+    const double value = parse_double(f[i].substr(eq + 1), where, key);
+    const auto seen = [&] {
+      for (const BrushParam& p : brush.params) {
+        if (p.key == key) return true;
+      }
+      return (key == "size" && has_size) || (key == "stiffness" && has_stiffness);
+    };
+    if (seen()) where.fail(key, "given twice");
+    if (key == "size") {
+      if (!(value > 0.0)) where.fail(key, "must be positive (mm)");
+      brush.size_mm = value;
+      has_size = true;
+    } else if (key == "stiffness") {
+      brush.stiffness = in_range(value, 0.0, 1.0, where, key);
+      has_stiffness = true;
+    } else {
+      brush.params.push_back({key, value});
+    }
+  }
+  if (!has_size) where.fail("size", "missing (size=MM)");
+  if (!has_stiffness) where.fail("stiffness", "missing (stiffness=X)");
+  return brush;
+}
+
+LoadEvent parse_load(const Fields& f, const LineContext& where) {
+  if (f.size() < 4 || f.size() % 2 != 0) {
+    where.fail("", "'load' takes a volume in mm^3 then \"pigment name\" parts pairs");
+  }
+  LoadEvent load;
+  load.volume_mm3 = parse_double(f[1], where, "volume");
+  if (load.volume_mm3 < 0.0) where.fail("volume", "must not be negative");
+  for (std::size_t i = 2; i < f.size(); i += 2) {
+    if (!is_quoted(f[i])) where.fail("pigment", "pigment names are written in double quotes");
+    const std::string_view name = unquote(f[i]);
+    if (name.empty()) where.fail("pigment", "empty pigment name");
+    for (char c : name) {
+      if (static_cast<unsigned char>(c) < 0x20) where.fail("pigment", "control character in name");
+    }
+    PigmentPart part{std::string(name), parse_double(f[i + 1], where, "parts")};
+    if (!(part.parts > 0.0)) where.fail("parts", "must be positive");
+    load.mix.push_back(std::move(part));
+  }
+  return load;
+}
+
+struct RecordLine {
+  std::string text;
+  void add(std::string_view field) {
+    if (!text.empty()) text += ' ';
+    text += field;
+  }
+};
+
+struct LineWriter {
+  std::string operator()(const SampleEvent& e) const {
+    const paintcore::PenSample& s = e.sample;
+    RecordLine line;
+    line.add("pen");
+    line.add(shortest(s.time_s));
+    line.add(shortest(s.x_mm));
+    line.add(shortest(s.y_mm));
+    line.add(shortest(s.pressure));
+    line.add(shortest(s.tilt_x_deg));
+    line.add(shortest(s.tilt_y_deg));
+    line.add(shortest(s.rotation_deg));
+    line.add(std::to_string(s.buttons));
+    return line.text;
+  }
+  std::string operator()(const CanvasEvent& e) const {
+    return "canvas " + std::to_string(e.width_cells) + " " + std::to_string(e.height_cells) + " " +
+           shortest(e.dpi);
+  }
+  std::string operator()(const ToolEvent& e) const { return "tool " + e.name; }
+  std::string operator()(const BrushEvent& e) const {
+    RecordLine line;
+    line.add("brush");
+    line.add(e.head);
+    line.add("size=" + shortest(e.size_mm));
+    line.add("stiffness=" + shortest(e.stiffness));
+    for (const BrushParam& p : e.params) line.add(p.key + "=" + shortest(p.value));
+    return line.text;
+  }
+  std::string operator()(const LoadEvent& e) const {
+    RecordLine line;
+    line.add("load");
+    line.add(shortest(e.volume_mm3));
+    for (const PigmentPart& p : e.mix) {
+      line.add("\"" + p.pigment + "\"");
+      line.add(shortest(p.parts));
+    }
+    return line.text;
+  }
+  std::string operator()(const WipeEvent&) const { return "wipe"; }
+  std::string operator()(const DryEvent& e) const { return "dry " + shortest(e.fraction); }
+  std::string operator()(const UndoEvent&) const { return "undo"; }
+  std::string operator()(const RedoEvent&) const { return "redo"; }
+};
+
+}  // namespace
+
+StrokeEvent parse_record(const Fields& f, const LineContext& where) {
+  const std::string_view kind = f.at(0);
+  if (kind == "pen") return parse_pen(f, where);
+  if (kind == "canvas") return parse_canvas(f, where);
+  if (kind == "tool") {
+    expect_count(f, 2, where, "name");
+    return ToolEvent{identifier(f[1], where, "name")};
+  }
+  if (kind == "brush") return parse_brush(f, where);
+  if (kind == "load") return parse_load(f, where);
+  if (kind == "wipe") {
+    expect_count(f, 1, where, "none");
+    return WipeEvent{};
+  }
+  if (kind == "dry") {
+    expect_count(f, 2, where, "fraction");
+    return DryEvent{in_range(parse_double(f[1], where, "fraction"), 0.0, 1.0, where, "fraction")};
+  }
+  if (kind == "undo") {
+    expect_count(f, 1, where, "none");
+    return UndoEvent{};
+  }
+  if (kind == "redo") {
+    expect_count(f, 1, where, "none");
+    return RedoEvent{};
+  }
+  std::string shown;
+  for (char c : kind.substr(0, 40)) shown += (c >= 0x20 && c < 0x7f) ? c : '?';
+  where.fail("", "unknown record '" + shown + "'");
+}
+
+std::string record_line(const StrokeEvent& event) {
+  return std::visit(LineWriter{}, event);
+}
+
+}  // namespace impasto::input::detail
