@@ -1,0 +1,100 @@
+// Analytic view factors of the six cavity shapes (derivations: docs/cracks.md).
+#include "impasto/cracks/cavity.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+namespace impasto::cracks {
+
+std::string_view shape_name(CavityShape shape) {
+  switch (shape) {
+    case CavityShape::ArcGroove:
+      return "arc-groove";
+    case CavityShape::VGroove:
+      return "v-groove";
+    case CavityShape::BoxGroove:
+      return "box-groove";
+    case CavityShape::SpherePit:
+      return "sphere-pit";
+    case CavityShape::ConePit:
+      return "cone-pit";
+    case CavityShape::CylinderPit:
+      return "cylinder-pit";
+  }
+  return "unknown";
+}
+
+CavityShape shape_from_name(std::string_view name) {
+  for (CavityShape s : kAllShapes) {
+    if (shape_name(s) == name) return s;
+  }
+  throw std::runtime_error("unknown cavity shape '" + std::string(name) +
+                           "' (expected arc-groove, v-groove, box-groove, sphere-pit, "
+                           "cone-pit or cylinder-pit)");
+}
+
+void validate(const CavityDims& dims) {
+  if (!(dims.depth_mm >= 0.0) || !std::isfinite(dims.depth_mm)) {
+    throw std::runtime_error("cavity depth_mm must be finite and >= 0, got " +
+                             std::to_string(dims.depth_mm));
+  }
+  if (!(dims.half_width_mm > 0.0) || !std::isfinite(dims.half_width_mm)) {
+    throw std::runtime_error("cavity half_width_mm must be finite and > 0, got " +
+                             std::to_string(dims.half_width_mm));
+  }
+}
+
+namespace {
+
+// Half-angle beta of the arc of a circular segment of chord 2R and sagitta L, seen from the
+// circle's centre and measured from the deepest point: cos(beta) = 1 - L / r.
+double arc_half_angle(double L, double R) {
+  return 2.0 * std::atan2(L, R);
+}
+
+}  // namespace
+
+CavityAreas cavity_areas(CavityShape shape, const CavityDims& d) {
+  const double L = d.depth_mm;
+  const double R = d.half_width_mm;
+  const double pi = std::numbers::pi;
+  switch (shape) {
+    case CavityShape::ArcGroove: {
+      // Circle through (+-R, 0) and (0, -L): radius r = (R^2 + L^2) / 2L; arc = 2 r beta.
+      // For L -> 0 the arc tends to the chord; r beta = R beta / sin(beta) keeps precision.
+      const double beta = arc_half_angle(L, R);
+      const double r_beta = beta > 1e-12 ? R * beta / std::sin(beta) : R;
+      return {2.0 * R, 2.0 * r_beta};
+    }
+    case CavityShape::VGroove:
+      return {2.0 * R, 2.0 * std::hypot(R, L)};
+    case CavityShape::BoxGroove:
+      return {2.0 * R, 2.0 * R + 2.0 * L};
+    case CavityShape::SpherePit:
+      return {pi * R * R, pi * (R * R + L * L)};
+    case CavityShape::ConePit:
+      return {pi * R * R, pi * R * std::hypot(R, L)};
+    case CavityShape::CylinderPit:
+      return {pi * R * R, pi * R * R + 2.0 * pi * R * L};
+  }
+  return {};
+}
+
+ViewFactors view_factors(CavityShape shape, const CavityDims& dims) {
+  validate(dims);
+  const double L = dims.depth_mm;
+  const double R = dims.half_width_mm;
+  const CavityAreas areas = cavity_areas(shape, dims);
+  ViewFactors vf;
+  vf.G = areas.opening / areas.walls;
+  // F: the deepest element, facing +z, sees the opening (half-width R) at height L.
+  // Grooves (2-D): F = (sin phi2 - sin phi1) / 2 with phi = +-atan(R/L): R / sqrt(R^2+L^2).
+  // Pits (disc of radius R on the axis): F = sin^2(atan(R/L)) = R^2 / (R^2 + L^2).
+  const double sin_half_angle = R / std::hypot(R, L);
+  vf.F = is_groove(shape) ? sin_half_angle : sin_half_angle * sin_half_angle;
+  return vf;
+}
+
+}  // namespace impasto::cracks
