@@ -1,0 +1,70 @@
+#include <algorithm>
+#include <cctype>
+#include <stdexcept>
+
+#include "impasto/data/data_dir.hpp"
+#include "impasto/data/pigments.hpp"
+
+namespace impasto::data {
+namespace {
+
+bool equal_ignoring_case(std::string_view a, std::string_view b) {
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+           return std::tolower(static_cast<unsigned char>(x)) ==
+                  std::tolower(static_cast<unsigned char>(y));
+         });
+}
+
+}  // namespace
+
+PigmentDatabase PigmentDatabase::load(const std::filesystem::path& dir) {
+  if (!std::filesystem::is_directory(dir)) {
+    throw std::runtime_error(dir.string() + ": not a pigment folder");
+  }
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+    if (entry.is_regular_file() && entry.path().extension() == ".csv")
+      files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());  // directory order is not deterministic
+
+  PigmentDatabase db;
+  std::vector<std::filesystem::path> sources;
+  for (const auto& file : files) {
+    Pigment pigment = read_pigment_file(file);
+    for (std::size_t i = 0; i < db.pigments_.size(); ++i) {
+      if (db.pigments_[i].name == pigment.name) {
+        throw std::runtime_error(file.string() + ": pigment '" + pigment.name +
+                                 "' is also defined in " + sources[i].string());
+      }
+    }
+    db.pigments_.push_back(std::move(pigment));
+    sources.push_back(file);
+  }
+  if (db.pigments_.empty()) throw std::runtime_error(dir.string() + ": no pigment files (*.csv)");
+  return db;
+}
+
+const PigmentDatabase& PigmentDatabase::defaults() {
+  static const PigmentDatabase db = load(data_dir() / "pigments");
+  return db;
+}
+
+const Pigment* PigmentDatabase::find(std::string_view name) const {
+  for (const auto& p : pigments_) {
+    if (p.name == name) return &p;
+  }
+  for (const auto& p : pigments_) {
+    if (equal_ignoring_case(p.name, name)) return &p;
+  }
+  return nullptr;
+}
+
+const Pigment& PigmentDatabase::get(std::string_view name) const {
+  if (const Pigment* p = find(name)) return *p;
+  std::string known;
+  for (const auto& p : pigments_) known += (known.empty() ? "" : ", ") + p.name;
+  throw std::runtime_error("unknown pigment '" + std::string(name) + "' (known: " + known + ")");
+}
+
+}  // namespace impasto::data

@@ -1,0 +1,118 @@
+#include "impasto/data/pigments.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+namespace impasto::data {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A fresh, empty folder under the test's temporary directory.
+fs::path scratch_folder(const std::string& name) {
+  const fs::path dir = fs::path(testing::TempDir()) / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+TEST(PigmentDatabase, DefaultsHoldTheGoldenAcrylics) {
+  const PigmentDatabase& db = PigmentDatabase::defaults();
+  ASSERT_EQ(db.all().size(), 27u);
+  for (const Pigment& p : db.all()) {
+    ASSERT_EQ(p.K.values.size(), 40u) << p.name;  // 360..750 nm every 10 nm
+    EXPECT_EQ(p.K.wavelengths_nm.front(), 360.0);
+    EXPECT_EQ(p.S.wavelengths_nm, p.K.wavelengths_nm);
+    for (std::size_t i = 0; i < p.K.values.size(); ++i) {
+      EXPECT_TRUE(std::isfinite(p.K.values[i]) && p.K.values[i] >= 0.0) << p.name;
+      EXPECT_TRUE(std::isfinite(p.S.values[i]) && p.S.values[i] >= 0.0) << p.name;
+    }
+    EXPECT_EQ(p.metadata.at("binder"), "acrylic");
+  }
+  EXPECT_EQ(&PigmentDatabase::defaults(), &db) << "loaded once";
+}
+
+TEST(PigmentDatabase, TitaniumWhiteIsTheScatteringReference) {
+  const Pigment& white = PigmentDatabase::defaults().get("Titanium White");
+  for (double s : white.S.values) EXPECT_EQ(s, 1.0);
+  EXPECT_NEAR(white.K.at(550), 0.000515, 1e-9);
+}
+
+TEST(PigmentDatabase, FindsByNameAndListsNamesWhenUnknown) {
+  const PigmentDatabase& db = PigmentDatabase::defaults();
+  ASSERT_NE(db.find("phthalo blue (green shade)"), nullptr);
+  EXPECT_EQ(db.find("phthalo blue (green shade)")->name, "Phthalo Blue (Green Shade)");
+  EXPECT_EQ(db.find("Unobtainium"), nullptr);
+  try {
+    db.get("Unobtainium");
+    FAIL() << "unknown pigment accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("Unobtainium"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("Burnt Sienna"), std::string::npos);
+  }
+}
+
+TEST(PigmentFile, RoundTripsAndKeepsUnknownMetadata) {
+  const fs::path dir = scratch_folder("impasto_pigment_roundtrip");
+  Pigment p{"Test Red",
+            {"K", {400, 500, 600}, {1.5, 0.25, 0.0}},
+            {"S", {400, 500, 600}, {1, 2, 3}},
+            {{"colour_index", "PR254"}, {"flake_size_um", "20"}}};
+  write_pigment_file(dir / pigment_file_name(p.name), p);
+  const PigmentDatabase db = PigmentDatabase::load(dir);
+  ASSERT_EQ(db.all().size(), 1u);
+  const Pigment& q = db.get("Test Red");
+  EXPECT_EQ(q.K.values, p.K.values);
+  EXPECT_EQ(q.S.values, p.S.values);
+  EXPECT_EQ(q.metadata.at("colour_index"), "PR254");
+  EXPECT_EQ(q.metadata.at("flake_size_um"), "20");
+  fs::remove_all(dir);
+}
+
+TEST(PigmentFile, ExtraColumnsAreAllowed) {
+  const fs::path dir = scratch_folder("impasto_pigment_extra");
+  std::ofstream(dir / "flake.csv") << "# quantity: kubelka_munk\n# name: Flake\n# future_key: x\n"
+                                      "wavelength_nm,K,S,flake_density\n400,1,2,3\n500,1,2,3\n";
+  EXPECT_EQ(PigmentDatabase::load(dir).get("Flake").S.values, (std::vector<double>{2, 2}));
+  fs::remove_all(dir);
+}
+
+TEST(PigmentDatabase, RejectsBadFolders) {
+  const fs::path dir = scratch_folder("impasto_pigment_bad");
+  EXPECT_THROW(PigmentDatabase::load(dir), std::runtime_error);  // empty
+  EXPECT_THROW(PigmentDatabase::load(dir / "missing"), std::runtime_error);
+  const char* good = "# quantity: kubelka_munk\n# name: Same\nwavelength_nm,K,S\n400,1,1\n";
+  std::ofstream(dir / "a.csv") << good;
+  std::ofstream(dir / "b.csv") << good;
+  try {
+    PigmentDatabase::load(dir);
+    FAIL() << "a repeated name was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("a.csv"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("b.csv"), std::string::npos) << e.what();
+  }
+  fs::remove(dir / "b.csv");
+  std::ofstream(dir / "c.csv") << "# quantity: kubelka_munk\nwavelength_nm,K,S\n400,1,1\n";
+  EXPECT_THROW(PigmentDatabase::load(dir), std::runtime_error);  // no name
+  std::ofstream(dir / "c.csv") << "# quantity: kubelka_munk\n# name: C\nwavelength_nm,K\n400,1\n";
+  EXPECT_THROW(PigmentDatabase::load(dir), std::runtime_error);  // no S
+  std::ofstream(dir / "c.csv")
+      << "# quantity: kubelka_munk\n# name: C\nwavelength_nm,K,S\n400,-1,1\n";
+  EXPECT_THROW(PigmentDatabase::load(dir), std::runtime_error);  // negative K
+  std::ofstream(dir / "c.csv")
+      << "# quantity: reflectance\n# name: C\nwavelength_nm,K,S\n400,1,1\n";
+  EXPECT_THROW(PigmentDatabase::load(dir), std::runtime_error);  // wrong quantity
+  fs::remove_all(dir);
+}
+
+TEST(PigmentFile, FileNamesAreLowerCaseWords) {
+  EXPECT_EQ(pigment_file_name("Phthalo Blue (Green Shade)"), "phthalo_blue_green_shade.csv");
+  EXPECT_EQ(pigment_file_name("  ??  "), "pigment.csv");
+}
+
+}  // namespace
+}  // namespace impasto::data
