@@ -18,7 +18,7 @@ using detail::Vec3;
 
 namespace {
 // Random streams: one per use, so that no two draw the same numbers.
-constexpr std::uint32_t kStreamPaths = 1, kStreamViewF = 2, kStreamViewG = 3;
+constexpr std::uint32_t kStreamPaths = 1, kStreamViewF = 2, kStreamViewG = 3, kStreamPoint = 4;
 constexpr std::uint64_t kPathsPerBlock = 4096;
 
 // Number of reflections before the path leaves, or -1 if it is still inside.
@@ -119,6 +119,23 @@ ViewFactorEstimate estimate_view_factors(CavityShape shape, const CavityDims& di
   const double n = static_cast<double>(std::max<std::uint64_t>(samples, 1));
   const double pf = static_cast<double>(escaped_f) / n, pg = static_cast<double>(escaped_g) / n;
   return {{pf, pg}, {std::sqrt(pf * (1.0 - pf) / n), std::sqrt(pg * (1.0 - pg) / n)}};
+}
+
+std::array<double, 2> estimate_opening_view_factor(CavityShape shape, const CavityDims& dims,
+                                                   const CavityWallPoint& point,
+                                                   std::uint64_t samples, std::uint64_t seed) {
+  const CavityGeometry geo(shape, dims);
+  const Vec3 n{point.normal[0], point.normal[1], point.normal[2]};
+  const Vec3 start = Vec3{point.position[0], point.position[1], point.position[2]} +
+                     (1e-7 * (dims.depth_mm + dims.half_width_mm)) * n;
+  std::uint64_t escaped = 0;
+  for (std::uint64_t i = 0; i < samples; ++i) {
+    const UniformBlock u = uniforms(seed, kStreamPoint, i, 0);
+    if (!geo.trace(start, detail::cosine_direction(n, u.u[0], u.u[1]))) ++escaped;
+  }
+  const double count = static_cast<double>(std::max<std::uint64_t>(samples, 1));
+  const double p = static_cast<double>(escaped) / count;
+  return {p, std::sqrt(p * (1.0 - p) / count)};
 }
 
 }  // namespace impasto::cracks

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "impasto/cracks/cavity.hpp"
+#include "impasto/cracks/close_up.hpp"
 
 namespace impasto::cracks {
 
@@ -61,5 +62,11 @@ struct ViewFactorEstimate {
 // uniformly over the wall area. `samples` rays for each.
 ViewFactorEstimate estimate_view_factors(CavityShape shape, const CavityDims& dims,
                                          std::uint64_t samples, std::uint64_t seed);
+
+// Monte Carlo estimate of one wall point's view factor to the opening (diffuse rays from a
+// hair above the point); returns {estimate, standard error}.
+std::array<double, 2> estimate_opening_view_factor(CavityShape shape, const CavityDims& dims,
+                                                   const CavityWallPoint& point,
+                                                   std::uint64_t samples, std::uint64_t seed);
 
 }  // namespace impasto::cracks
