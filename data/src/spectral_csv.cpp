@@ -204,6 +204,7 @@ SpectralTable parse_spectral_csv(std::string_view text, const std::string& sourc
         throw std::runtime_error(location(source_name, line_number, 1) + "metadata key '" + key +
                                  "' given twice");
       }
+      table.metadata_lines[key] = line_number;
       if (key == "quantity") {
         try {
           table.quantity = parse_spectral_quantity(value);
@@ -315,7 +316,7 @@ void write_spectral_csv(const std::filesystem::path& path, const SpectralTable& 
 SpectralTable make_spectral_table(SpectralQuantity quantity, std::vector<Spectrum> columns,
                                   std::map<std::string, std::string> metadata) {
   if (columns.empty()) throw std::runtime_error("a spectral table needs at least one column");
-  SpectralTable table{quantity, std::move(metadata), columns.front().wavelengths_nm, {}};
+  SpectralTable table{quantity, std::move(metadata), columns.front().wavelengths_nm, {}, {}};
   for (auto& column : columns) {
     if (column.wavelengths_nm != table.wavelengths_nm) {
       throw std::runtime_error("column '" + column.name +

@@ -31,6 +31,7 @@ struct SpectralTable {
   std::map<std::string, std::string> metadata;  // every "# key: value" line, quantity included
   std::vector<double> wavelengths_nm;           // strictly increasing
   std::vector<Spectrum> columns;                // named by the header; same wavelengths each
+  std::map<std::string, std::size_t> metadata_lines;  // line number of each metadata key
 
   const Spectrum* find(std::string_view column_name) const;
   // Throws std::runtime_error naming the missing column and the ones present.

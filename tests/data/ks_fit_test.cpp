@@ -1,0 +1,173 @@
+#include "impasto/data/ks_fit.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+#include "impasto/data/spectral_csv.hpp"
+
+namespace impasto::data {
+namespace {
+
+TEST(KubelkaMunk, OpaqueReflectanceAndKsAreInverse) {
+  EXPECT_EQ(ks_from_reflectance(1.0), 0.0);
+  EXPECT_DOUBLE_EQ(ks_from_reflectance(0.5), 0.25);
+  EXPECT_EQ(reflectance_from_ks(0.0), 1.0);
+  EXPECT_NEAR(reflectance_from_ks(1e12), 0.5e-12, 1e-20);  // R∞ → 1/(2·K/S) for large K/S
+  for (double r : {1e-6, 0.01, 0.3, 0.9, 0.999}) {
+    EXPECT_NEAR(reflectance_from_ks(ks_from_reflectance(r)), r, 1e-12 * (1 + r)) << r;
+  }
+}
+
+TEST(KubelkaMunk, SaundersonRoundTripsAndHasTheRightLimits) {
+  const Saunderson s{0.03, 0.65};
+  EXPECT_NEAR(s.to_measured(0.0), 0.03, 1e-15);  // a black body shows only its surface gloss
+  EXPECT_NEAR(s.to_measured(1.0), 1.0, 1e-15);   // a perfect white stays white
+  for (double r : {0.05, 0.4, 0.8}) EXPECT_NEAR(s.to_internal(s.to_measured(r)), r, 1e-14);
+}
+
+// Synthetic measurements made from known K and S by the forward model.
+KsFitProblem synthetic_problem(const std::vector<const Pigment*>& truth,
+                               const std::optional<Saunderson>& saunderson) {
+  KsFitProblem problem;
+  for (const Pigment* p : truth) problem.pigment_names.push_back(p->name);
+  problem.reference_pigment = truth.front()->name;
+  problem.saunderson = saunderson;
+  const std::size_t n = truth.size();
+  auto add = [&](std::string name, std::vector<double> c) {
+    problem.samples.push_back({name, mixture_reflectance(truth, c, saunderson), c});
+  };
+  for (std::size_t j = 0; j < n; ++j) {
+    std::vector<double> c(n, 0.0);
+    c[j] = 1.0;
+    add("masstone " + truth[j]->name, c);
+  }
+  for (std::size_t a = 0; a < n; ++a) {
+    for (std::size_t b = a + 1; b < n; ++b) {
+      for (double share : {0.1, 0.5, 0.9}) {
+        std::vector<double> c(n, 0.0);
+        c[a] = share;
+        c[b] = 1.0 - share;
+        add(truth[a]->name + "+" + truth[b]->name, c);
+      }
+    }
+  }
+  return problem;
+}
+
+void expect_recovered(const std::vector<const Pigment*>& truth, const KsFitResult& fit) {
+  ASSERT_EQ(fit.pigments.size(), truth.size());
+  for (std::size_t j = 0; j < truth.size(); ++j) {
+    for (std::size_t w = 0; w < truth[j]->K.values.size(); ++w) {
+      const double k = truth[j]->K.values[w], s = truth[j]->S.values[w];
+      EXPECT_NEAR(fit.pigments[j].K.values[w], k, 1e-6 * std::max(1.0, k)) << truth[j]->name << w;
+      EXPECT_NEAR(fit.pigments[j].S.values[w], s, 1e-6 * std::max(1.0, s)) << truth[j]->name << w;
+    }
+  }
+  for (const KsSampleResidual& r : fit.residuals) EXPECT_LT(r.max_reflectance, 1e-9) << r.name;
+}
+
+std::vector<const Pigment*> four_golden_pigments() {
+  const PigmentDatabase& db = PigmentDatabase::defaults();
+  return {&db.get("Titanium White"), &db.get("Phthalo Blue (Green Shade)"), &db.get("Pyrrole Red"),
+          &db.get("Hansa Yellow Opaque")};
+}
+
+TEST(KsFit, RecoversKnownPigmentsFromSyntheticMixtures) {
+  const auto truth = four_golden_pigments();
+  const KsFitResult fit = fit_kubelka_munk(synthetic_problem(truth, std::nullopt));
+  expect_recovered(truth, fit);
+  EXPECT_EQ(fit.residuals.size(), 4u + 6u * 3u);
+}
+
+TEST(KsFit, RecoversThroughTheSaundersonCorrection) {
+  const auto truth = four_golden_pigments();
+  expect_recovered(truth, fit_kubelka_munk(synthetic_problem(truth, Saunderson{0.03, 0.65})));
+}
+
+TEST(KsFit, ReportsResidualsOfInconsistentData) {
+  const auto truth = four_golden_pigments();
+  KsFitProblem problem = synthetic_problem(truth, std::nullopt);
+  for (double& r : problem.samples[5].reflectance.values) r *= 0.9;  // one bad measurement
+  const KsFitResult fit = fit_kubelka_munk(problem);
+  double worst = 0;
+  for (const auto& r : fit.residuals) worst = std::max(worst, r.max_reflectance);
+  EXPECT_GT(worst, 1e-3);
+  for (const Pigment& p : fit.pigments) {
+    for (double k : p.K.values) EXPECT_GE(k, 0.0);
+    for (double s : p.S.values) EXPECT_GE(s, 0.0);
+  }
+}
+
+TEST(KsFit, RejectsInconsistentProblems) {
+  const auto truth = four_golden_pigments();
+  KsFitProblem problem = synthetic_problem(truth, std::nullopt);
+  problem.reference_pigment = "Lead White";
+  EXPECT_THROW(fit_kubelka_munk(problem), std::runtime_error);
+  problem = synthetic_problem(truth, std::nullopt);
+  problem.samples[0].concentrations.pop_back();
+  EXPECT_THROW(fit_kubelka_munk(problem), std::runtime_error);
+  problem = synthetic_problem(truth, std::nullopt);
+  problem.samples[0].reflectance.values[3] = 1.5;
+  EXPECT_THROW(fit_kubelka_munk(problem), std::runtime_error);
+}
+
+class KsMeasurementsFile : public testing::Test {
+ protected:
+  std::filesystem::path path_ =
+      std::filesystem::path(testing::TempDir()) / "impasto_ks_measurements_test.csv";
+  void TearDown() override { std::filesystem::remove(path_); }
+  void write(const std::string& text) { std::ofstream(path_) << text; }
+  std::string error() {
+    try {
+      read_ks_measurements(path_);
+    } catch (const std::runtime_error& e) {
+      return e.what();
+    }
+    return "";
+  }
+};
+
+TEST_F(KsMeasurementsFile, ReadsMixesReferenceAndSaunderson) {
+  write(
+      "# quantity: reflectance\n# reference: White\n# saunderson: 0.04, 0.6\n"
+      "# mix w: White=1\n# mix tint: Blue=1; White=3\n# mix b: Blue = 2\n"
+      "wavelength_nm,w,b,tint\n400,0.9,0.1,0.5\n500,0.9,0.2,0.6\n");
+  const KsFitProblem p = read_ks_measurements(path_);
+  EXPECT_EQ(p.reference_pigment, "White");
+  ASSERT_TRUE(p.saunderson.has_value());
+  EXPECT_EQ(p.saunderson->k1, 0.04);
+  EXPECT_EQ(p.saunderson->k2, 0.6);
+  EXPECT_EQ(p.pigment_names, (std::vector<std::string>{"White", "Blue"}));
+  ASSERT_EQ(p.samples.size(), 3u);
+  EXPECT_EQ(p.samples[1].name, "b");
+  EXPECT_EQ(p.samples[1].concentrations, (std::vector<double>{0, 2}));
+  EXPECT_EQ(p.samples[2].concentrations, (std::vector<double>{3, 1}));
+  EXPECT_EQ(p.samples[2].reflectance.values, (std::vector<double>{0.5, 0.6}));
+}
+
+TEST_F(KsMeasurementsFile, ErrorsNameFileAndLine) {
+  const std::string file = path_.string();
+  write("# quantity: reflectance\n# reference: W\n# mix a: W=x\nwavelength_nm,a\n400,0.5\n");
+  EXPECT_EQ(error().rfind(file + ":3:", 0), 0u) << error();
+  write(
+      "# quantity: reflectance\n# reference: W\n# mix a: W=1\n# mix z: "
+      "W=1\nwavelength_nm,a\n400,0.5\n");
+  EXPECT_EQ(error().rfind(file + ":4:", 0), 0u) << error();
+  write(
+      "# quantity: reflectance\n# reference: W\n# saunderson: 2\n# mix a: "
+      "W=1\nwavelength_nm,a\n400,0.5\n");
+  EXPECT_EQ(error().rfind(file + ":3:", 0), 0u) << error();
+  write("# quantity: reflectance\n# reference: W\nwavelength_nm,a\n400,0.5\n");
+  EXPECT_NE(error().find("column 'a' has no '# mix a"), std::string::npos) << error();
+  write("# quantity: reflectance\n# mix a: W=1\nwavelength_nm,a\n400,0.5\n");
+  EXPECT_NE(error().find("reference"), std::string::npos) << error();
+  write("# quantity: reflectance\n# reference: W\n# mix a: W=1\nwavelength_nm,a\n400,1.5\n");
+  EXPECT_EQ(error().rfind(file + ":5:2:", 0), 0u) << error();
+}
+
+}  // namespace
+}  // namespace impasto::data
