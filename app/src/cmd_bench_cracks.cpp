@@ -1,0 +1,151 @@
+// impasto bench cracks: accuracy and cost of Gouffé's cavity formula against the Monte
+// Carlo radiosity reference, for every crack shape.
+#include <impasto/cracks/accuracy.hpp>
+#include <impasto/cracks/gouffe.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "command.hpp"
+
+namespace impasto::app {
+namespace {
+
+using namespace impasto::cracks;
+
+struct BenchCracksArgs {
+  bool json = false;
+  std::uint64_t paths = 40000;
+  std::uint64_t seed = 1;
+};
+
+// Mean time (ns) of one call of fn over a sweep of rho0, F and G values.
+template <class Fn>
+double time_ns(Fn fn) {
+  constexpr int kCalls = 2000000;
+  volatile double sink = 0.0;
+  const auto start = std::chrono::steady_clock::now();
+  double acc = 0.0;
+  for (int i = 0; i < kCalls; ++i) {
+    const double rho0 = 0.05 + 0.9 * ((i * 37) % 1000) * 1e-3;
+    const ViewFactors vf{0.01 + 0.98 * ((i * 13) % 997) / 997.0,
+                         0.01 + 0.98 * ((i * 7) % 991) / 991.0};
+    acc += fn(rho0, vf);
+  }
+  sink = acc;
+  (void)sink;
+  return std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start)
+             .count() /
+         kCalls;
+}
+
+struct Summary {
+  double gouffe = 0, gouffe_first = 0, first = 0, second = 0, noise = 0;
+};
+
+void run(const BenchCracksArgs& args) {
+  AccuracyGrid grid;
+  grid.monte_carlo.paths = args.paths;
+  grid.monte_carlo.seed = args.seed;
+  const auto mc_start = std::chrono::steady_clock::now();
+  const std::vector<AccuracyRow> rows = measure_accuracy(grid);
+  const double mc_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - mc_start).count();
+  const double runs =
+      static_cast<double>(grid.shapes.size() * grid.depth_over_half_width.size() * 2);
+
+  // The loop's own cost (making the arguments) is measured and taken off.
+  const double ns_loop = time_ns([](double r, const ViewFactors& vf) { return r + vf.F + vf.G; });
+  const double ns_closed = -ns_loop + time_ns([](double r, const ViewFactors& vf) {
+    return apparent_reflectance(r, vf);
+  });
+  const double ns_first = -ns_loop + time_ns([](double r, const ViewFactors& vf) {
+    return apparent_reflectance_first_order(r, vf);
+  });
+  const double ns_second = -ns_loop + time_ns([](double r, const ViewFactors& vf) {
+    return apparent_reflectance_second_order(r, vf);
+  });
+  const double ns_view_factors = -ns_loop + time_ns([](double r, const ViewFactors& vf) {
+    return view_factors(CavityShape::ArcGroove, {r * 10.0, vf.G}).F;
+  });
+
+  // Largest |error| over rho0, per shape, L/R and illumination.
+  std::map<std::tuple<int, double, std::string>, Summary> worst;
+  for (const AccuracyRow& r : rows) {
+    Summary& s = worst[{static_cast<int>(r.shape), r.depth_over_half_width, r.illumination}];
+    s.gouffe = std::max(s.gouffe, std::abs(r.gouffe - r.reference));
+    s.gouffe_first = std::max(s.gouffe_first, std::abs(r.gouffe_first - r.reference));
+    s.first = std::max(s.first, std::abs(r.first_order - r.reference));
+    s.second = std::max(s.second, std::abs(r.second_order - r.reference));
+    s.noise = std::max(s.noise, r.reference_error);
+  }
+
+  if (args.json) {
+    nlohmann::json out;
+    out["paths"] = args.paths;
+    out["seed"] = args.seed;
+    out["cost_ns"] = {{"closed_form", ns_closed},
+                      {"first_order", ns_first},
+                      {"second_order", ns_second},
+                      {"view_factors_arc_groove", ns_view_factors},
+                      {"monte_carlo_per_geometry", mc_seconds / runs * 1e9}};
+    for (const AccuracyRow& r : rows) {
+      out["rows"].push_back({{"shape", shape_name(r.shape)},
+                             {"L_over_R", r.depth_over_half_width},
+                             {"illumination", r.illumination},
+                             {"rho0", r.rho0},
+                             {"reference", r.reference},
+                             {"reference_stderr", r.reference_error},
+                             {"gouffe", r.gouffe},
+                             {"gouffe_first_reflection_F", r.gouffe_first},
+                             {"first_order", r.first_order},
+                             {"second_order", r.second_order}});
+    }
+    std::cout << out.dump(1) << "\n";
+    return;
+  }
+  std::printf(
+      "Largest |rho - rho_reference| over rho0 in {0.05 .. 0.95}; reference: Monte Carlo, "
+      "%llu paths, seed %llu\n",
+      static_cast<unsigned long long>(args.paths), static_cast<unsigned long long>(args.seed));
+  std::printf(
+      "gouffe: closed form with F of the deepest element; gouffe F1: with F averaged over "
+      "the first reflections (beam only)\n\n");
+  std::printf("| shape | L/R | light | gouffe | gouffe F1 | 1st order | 2nd order | MC stderr |\n");
+  std::printf("|---|---:|---|---:|---:|---:|---:|---:|\n");
+  for (const auto& [key, s] : worst) {
+    const auto& [shape, ratio, light] = key;
+    char first_reflection[32] = "-";
+    if (light == "normal")
+      std::snprintf(first_reflection, sizeof first_reflection, "%.4f", s.gouffe_first);
+    std::printf("| %s | %g | %s | %.4f | %s | %.4f | %.4f | %.4f |\n",
+                std::string(shape_name(static_cast<CavityShape>(shape))).c_str(), ratio,
+                light.c_str(), s.gouffe, first_reflection, s.first, s.second, s.noise);
+  }
+  std::printf(
+      "\nCost per evaluation (ns): closed form %.2f, first order %.2f, second order %.2f, "
+      "view factors (arc groove) %.2f; Monte Carlo reference %.1f ms per geometry\n",
+      ns_closed, ns_first, ns_second, ns_view_factors, mc_seconds / runs * 1e3);
+}
+
+const CommandRegistrar registrar("bench cracks", [](CLI::App& root) {
+  CLI::App* bench = command_group(root, "bench", "Measure accuracy and speed");
+  CLI::App* cmd = bench->add_subcommand(
+      "cracks", "Gouffé cavity formula vs the Monte Carlo radiosity reference, per crack shape");
+  auto args = std::make_shared<BenchCracksArgs>();
+  cmd->add_flag("--json", args->json, "Print every row as JSON");
+  cmd->add_option("--paths", args->paths, "Monte Carlo paths per geometry")
+      ->check(CLI::Range(std::uint64_t{100}, std::uint64_t{100000000}));
+  cmd->add_option("--seed", args->seed, "Monte Carlo seed");
+  cmd->callback([args] { run(*args); });
+});
+
+}  // namespace
+}  // namespace impasto::app

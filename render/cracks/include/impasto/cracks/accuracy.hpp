@@ -1,0 +1,34 @@
+#pragma once
+// How close Gouffé's closed form and its first- and second-order terms come to the Monte
+// Carlo reference, over shapes, depth/width ratios and wall reflectances.
+#include <string>
+#include <vector>
+
+#include "impasto/cracks/monte_carlo.hpp"
+
+namespace impasto::cracks {
+
+struct AccuracyRow {
+  CavityShape shape;
+  double depth_over_half_width;  // L / R
+  std::string illumination;      // "normal" (a beam along the axis) or "diffuse"
+  double rho0;
+  double reference, reference_error;  // Monte Carlo value and its standard error
+  double gouffe;                      // closed form, F of the deepest element
+  double gouffe_first;                // closed form, F averaged over the first reflections
+  double first_order, second_order;   // rho0 F and rho0 F + rho0^2 (1-F) G
+};
+
+struct AccuracyGrid {
+  std::vector<CavityShape> shapes{kAllShapes.begin(), kAllShapes.end()};
+  std::vector<double> depth_over_half_width{0.1, 0.2, 0.5, 1.0, 2.0, 5.0, 10.0, 20.0};
+  std::vector<double> rho0{0.05, 0.2, 0.35, 0.5, 0.65, 0.8, 0.95};
+  bool normal = true, diffuse = true;
+  MonteCarloSettings monte_carlo{};
+};
+
+// One row per (shape, L/R, illumination, rho0); one Monte Carlo run per (shape, L/R,
+// illumination) serves every rho0.
+std::vector<AccuracyRow> measure_accuracy(const AccuracyGrid& grid);
+
+}  // namespace impasto::cracks
