@@ -1,0 +1,67 @@
+#include "impasto/flakes/flake_paint.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "impasto/flakes/fresnel.hpp"
+
+namespace impasto::flakes {
+
+double OrientationDistribution::relative_density(double beta_rad) const {
+  if (kind == Kind::gaussian) {
+    const double x = beta_rad / gaussian_sd_rad;
+    return std::exp(-0.5 * x * x);
+  }
+  if (table_beta_rad.empty() || beta_rad > table_beta_rad.back()) return 0.0;
+  const auto upper = std::upper_bound(table_beta_rad.begin(), table_beta_rad.end(), beta_rad);
+  if (upper == table_beta_rad.begin()) return table_density.front();
+  if (upper == table_beta_rad.end()) return table_density.back();
+  const auto i = static_cast<std::size_t>(upper - table_beta_rad.begin());
+  const double f = (beta_rad - table_beta_rad[i - 1]) / (table_beta_rad[i] - table_beta_rad[i - 1]);
+  return table_density[i - 1] + f * (table_density[i] - table_density[i - 1]);
+}
+
+double OrientationDistribution::support_rad() const {
+  constexpr double kHalfPi = std::numbers::pi / 2;
+  if (kind == Kind::gaussian) return std::min(kHalfPi, 9.0 * gaussian_sd_rad);  // e^{-40.5}
+  return table_beta_rad.empty() ? 0.0 : std::min(kHalfPi, table_beta_rad.back());
+}
+
+double FilmMaterial::index_at(double wavelength_nm) const {
+  return name == "rutile" ? rutile_index(wavelength_nm) : constant_index;
+}
+
+FilmOptics FlakeCoating::optics(double wavelength_nm, double cos_alpha, double binder_index) const {
+  if (kind == Kind::thin_film) {
+    std::vector<FilmLayer> stack;
+    stack.reserve(layers.size());
+    for (const FilmLayerSpec& layer : layers) {
+      stack.push_back({layer.material.index_at(wavelength_nm), layer.thickness_nm});
+    }
+    if (core_index > 0.0) {
+      return coated_core_optics(
+          thin_film_optics(stack, binder_index, core_index, wavelength_nm, cos_alpha));
+    }
+    return thin_film_optics(stack, binder_index, binder_index, wavelength_nm, cos_alpha);
+  }
+  // Metal: interpolate n and k, constant past the ends of the table.
+  const auto upper = std::upper_bound(wavelengths_nm.begin(), wavelengths_nm.end(), wavelength_nm);
+  std::size_t i = static_cast<std::size_t>(upper - wavelengths_nm.begin());
+  double nn = 0, kk = 0;
+  if (i == 0) {
+    nn = n.front(), kk = k.front();
+  } else if (i == wavelengths_nm.size()) {
+    nn = n.back(), kk = k.back();
+  } else {
+    const double f =
+        (wavelength_nm - wavelengths_nm[i - 1]) / (wavelengths_nm[i] - wavelengths_nm[i - 1]);
+    nn = n[i - 1] + f * (n[i] - n[i - 1]);
+    kk = k[i - 1] + f * (k[i] - k[i - 1]);
+  }
+  const double r =
+      fresnel_conductor(cos_alpha, std::complex<double>(nn, kk) / binder_index).unpolarised();
+  return {r, 0.0};
+}
+
+}  // namespace impasto::flakes

@@ -1,0 +1,285 @@
+#include "impasto/flakes/sparkles.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "impasto/flakes/counter_rng.hpp"
+#include "impasto/flakes/fresnel.hpp"
+#include "impasto/flakes/sparkle_math.hpp"
+
+namespace impasto::flakes {
+
+// What one cell under one light needs before any random number is drawn.
+struct SparkleRenderer::Setup {
+  double mean_count = 0;         // ⟨N⟩
+  double radiance_per_area = 0;  // visible radiance per mm² of sparkling flake, r_p and E⊥ aside
+  double cos_alpha = 1;
+  double t_per_depth = 0;  // optical thickness of the way in and out, 1/mm
+  double depth = 0;        // H along the normal, mm
+  Uint4 key{};             // (canvas cell, flake orientation cell, seed)
+};
+
+namespace {
+// Smooth step from 0 at edge0 to 1 at edge1 (GLSL smoothstep).
+double smoothstep(double edge0, double edge1, double x) {
+  const double t = std::clamp((x - edge0) / (edge1 - edge0), 0.0, 1.0);
+  return t * t * (3.0 - 2.0 * t);
+}
+
+// Above this many sparkles in one cell their summed area is drawn at once.
+constexpr int kMaxSummedSparkles = 256;
+
+// Index of the orientation cell holding a slope, kept inside int32 for steep normals.
+std::uint32_t orientation_cell(double slope, double step) {
+  const double q = std::clamp(std::floor(slope / step), -1e9, 1e9);
+  return static_cast<std::uint32_t>(static_cast<std::int32_t>(q));
+}
+
+void check_light(const Light& light, std::size_t nodes) {
+  if (light.kind == Light::Kind::diffuse) return;
+  if (light.spectral.size() != nodes) {
+    throw std::runtime_error("flake light: spectral has " + std::to_string(light.spectral.size()) +
+                             " values, expected " + std::to_string(nodes) +
+                             " (one per wavelength node)");
+  }
+  if (!(light.angular_diameter_rad > 0.0) || !std::isfinite(light.angular_diameter_rad)) {
+    throw std::runtime_error("flake light: angular_diameter_rad must be positive and finite");
+  }
+}
+}  // namespace
+
+SparkleRenderer::SparkleRenderer(const FlakePaint& paint, std::span<const double> wavelengths_nm,
+                                 SparkleSettings settings)
+    : tables_(paint, wavelengths_nm), settings_(settings) {
+  if (!(settings_.orientation_cell > 0.0)) {
+    throw std::runtime_error("sparkle settings: orientation_cell must be positive");
+  }
+  const double cv = paint.flake_area_sd_mm2 / paint.flake_area_mean_mm2;
+  log_area_sd_ = std::sqrt(std::log1p(cv * cv));
+  log_area_mean_ = std::log(paint.flake_area_mean_mm2) - 0.5 * log_area_sd_ * log_area_sd_;
+}
+
+bool SparkleRenderer::prepare(const FlakeCell& cell, const Light& light, const View& view,
+                              Setup& s) const {
+  if (!(cell.flake_concentration > 0.0) || !(cell.thickness_mm > 0.0)) return false;
+  if (light.kind == Light::Kind::diffuse) return false;  // every flake a little, none brightly
+  check_light(light, tables_.wavelength_count());
+  const FlakePaint& paint = tables_.paint();
+
+  // 1–2. Unit directions from the cell to the light and to the viewer, both above the paint.
+  Vec3 to_light;
+  double beam = 1.0;  // scales light.spectral to the irradiance normal to the beam
+  if (light.kind == Light::Kind::directional) {
+    to_light = -normalize(light.direction);
+  } else {
+    const Vec3 d = light.position_mm - cell.center_mm;
+    const double distance2 = dot(d, d);
+    to_light = (1.0 / std::sqrt(distance2)) * d;
+    beam = 1.0 / distance2;
+    if (light.kind == Light::Kind::spot) {
+      beam *= smoothstep(std::cos(light.spot_outer_rad), std::cos(light.spot_inner_rad),
+                         -dot(normalize(light.direction), to_light));
+    }
+  }
+  const Vec3 to_view =
+      view.orthographic ? normalize(view.direction) : normalize(view.position_mm - cell.center_mm);
+  const Vec3 n = cell.normal;
+  const double cos_light = dot(n, to_light), cos_view = dot(n, to_view);
+  if (!(beam > 0.0) || !(cos_light > 0.0) || !(cos_view > 0.0)) return false;
+
+  // 3–4. Into the binder (Eq. 8), and the flake that mirrors one into the other.
+  const double eta = paint.binder_index;
+  const Vec3 v_light = refract_into_binder(to_light, n, eta);
+  const Vec3 v_view = refract_into_binder(to_view, n, eta);
+  const double cos_light_in = cos_inside_binder(cos_light, eta);
+  const double cos_view_in = cos_inside_binder(cos_view, eta);
+  const SpecularFlake flake = specular_flake(v_view, v_light, n);
+  const double density = tables_.orientation_density(flake.cos_beta);
+  if (!(density > 0.0)) return false;
+
+  // 5. The light's angular radius inside the binder (Eq. 7).
+  const double delta_in =
+      binder_angular_size(0.5 * light.angular_diameter_rad, cos_light, cos_light_in, eta);
+
+  // 6. Optical thickness per unit depth of the way in and out (flakes scale with their
+  // concentration in the cell, the binder's absorption does not).
+  const double c = cell.flake_concentration;
+  const double area_density = c * paint.area_density_per_mm;
+  auto thickness = [&](double cos_in) {
+    return optical_thickness_per_depth(
+        area_density, tables_.projected_area(cos_in), tables_.projected_transmittance(cos_in),
+        paint.binder_absorption_per_mm, c * paint.rayleigh_weight_per_mm, cos_in);
+  };
+  s.t_per_depth = thickness(cos_light_in) + thickness(cos_view_in);
+  s.depth = cell.thickness_mm * n.z;
+
+  // 7. Expected count (Eq. 5 or 6) among the D·Σ·H flakes of the cell.
+  const double flakes =
+      area_density / paint.flake_area_mean_mm2 * cell.area_mm2 * cell.thickness_mm;
+  const double probability = mirror_probability(density, delta_in, flake.cos_alpha);
+  s.mean_count =
+      settings_.depth_model == SparkleSettings::DepthModel::with_masking
+          ? expected_sparkles_with_masking(flakes, probability)
+          : expected_sparkles_without_masking(flakes, probability, s.t_per_depth, s.depth);
+
+  // Eqs. 9–10 per unit flake area and unit E⊥, then spread over the cell's surface.
+  const double energy = sparkle_energy_per_area(
+      beam * cos_light, cos_light_in, 1.0 - fresnel_dielectric(cos_light, eta),
+      1.0 - fresnel_dielectric(cos_view, eta), 1.0, flake.cos_alpha);
+  const double surface_area = cell.area_mm2 / n.z;
+  s.radiance_per_area = visible_radiance(energy, delta_in, eta, cos_view_in, surface_area);
+  s.cos_alpha = flake.cos_alpha;
+
+  const double step = settings_.orientation_cell;
+  s.key = {
+      static_cast<std::uint32_t>(cell.ix), static_cast<std::uint32_t>(cell.iy),
+      orientation_cell(flake.normal.x / flake.normal.z, step),
+      orientation_cell(flake.normal.y / flake.normal.z, step) ^ (settings_.seed * 0x9E3779B9u)};
+  return s.mean_count > 0.0;
+}
+
+double SparkleRenderer::expected_count(const FlakeCell& cell, const Light& light,
+                                       const View& view) const {
+  Setup s;
+  return prepare(cell, light, view, s) ? s.mean_count : 0.0;
+}
+
+double SparkleRenderer::flake_weight(CounterRng& rng, int count, double t_per_depth,
+                                     double depth) const {
+  const bool attenuated = settings_.depth_model == SparkleSettings::DepthModel::with_masking;
+  const FlakePaint& paint = tables_.paint();
+  if (count > kMaxSummedSparkles) {
+    // Many sparkles (a footprint of many cells): the sum by the central limit theorem, with
+    // the exact mean and variance of one sparkle's S·e^{−tz}.
+    const double mean_s = paint.flake_area_mean_mm2, sd_s = paint.flake_area_sd_mm2;
+    const double a1 = attenuated ? direct_fraction(t_per_depth, depth) : 1.0;
+    const double a2 = attenuated ? direct_fraction(2.0 * t_per_depth, depth) : 1.0;
+    const double mean = mean_s * a1;
+    const double variance = std::fmax(0.0, (sd_s * sd_s + mean_s * mean_s) * a2 - mean * mean);
+    return std::fmax(0.0, count * mean + std::sqrt(count * variance) * rng.normal());
+  }
+  double sum = 0;
+  for (int i = 0; i < count; ++i) {
+    const double area = log_area_sd_ > 0.0 ? std::exp(log_area_mean_ + log_area_sd_ * rng.normal())
+                                           : paint.flake_area_mean_mm2;
+    // With masking the sparkle lies at a depth uniform in [0, H] and its light is dimmed.
+    sum += attenuated ? area * std::exp(-t_per_depth * depth * rng.uniform()) : area;
+  }
+  return sum;
+}
+
+int SparkleRenderer::add_cell(const FlakeCell& cell, const Light& light, const View& view,
+                              std::span<double> radiance) const {
+  Setup s;
+  if (!prepare(cell, light, view, s)) return 0;
+  CounterRng rng(s.key);
+  const int count = sample_sparkle_count(rng, s.mean_count);
+  if (count == 0) return 0;
+  const double scale = s.radiance_per_area * flake_weight(rng, count, s.t_per_depth, s.depth);
+  for (std::size_t w = 0; w < radiance.size(); ++w) {
+    radiance[w] += scale * light.spectral[w] * tables_.flake_reflectance(w, s.cos_alpha);
+  }
+  return count;
+}
+
+void SparkleRenderer::add_mean_radiance(const FlakeCell& cell, const Light& light, const View& view,
+                                        std::span<double> radiance) const {
+  Setup s;
+  if (!prepare(cell, light, view, s)) return;
+  double mean_weight = tables_.paint().flake_area_mean_mm2;
+  if (settings_.depth_model == SparkleSettings::DepthModel::with_masking) {
+    mean_weight *= direct_fraction(s.t_per_depth, s.depth);  // ⟨e^{−tz}⟩, z uniform in [0, H]
+  }
+  const double scale = s.mean_count * mean_weight * s.radiance_per_area;
+  for (std::size_t w = 0; w < radiance.size(); ++w) {
+    radiance[w] += scale * light.spectral[w] * tables_.flake_reflectance(w, s.cos_alpha);
+  }
+}
+
+std::size_t SparkleRenderer::add_tile(const FlakeTile& tile, std::span<const Light> lights,
+                                      const View& view, std::span<float> radiance) const {
+  const std::size_t cells = static_cast<std::size_t>(std::max(tile.width, 0)) *
+                            static_cast<std::size_t>(std::max(tile.height, 0));
+  auto where = [&](std::size_t i) {
+    return " at cell (" + std::to_string(tile.first_ix + static_cast<int>(i % tile.width)) + ", " +
+           std::to_string(tile.first_iy + static_cast<int>(i / tile.width)) + ")";
+  };
+  if (tile.concentration.size() != cells) {
+    throw std::runtime_error("flake tile: concentration has " +
+                             std::to_string(tile.concentration.size()) + " values for " +
+                             std::to_string(cells) + " cells");
+  }
+  bool any = false;
+  for (std::size_t i = 0; i < cells; ++i) {
+    const float c = tile.concentration[i];
+    if (!(c >= 0.0f) || !std::isfinite(c)) {
+      throw std::runtime_error("flake tile: concentration is " + std::to_string(c) + where(i));
+    }
+    any = any || c > 0.0f;
+  }
+  if (!any) return 0;  // no flake paint here: no work, nothing written
+
+  const std::size_t nodes = tables_.wavelength_count();
+  auto expect = [&](std::span<const float> values, std::size_t per_cell, const char* name) {
+    if (!values.empty() && values.size() != cells * per_cell) {
+      throw std::runtime_error(std::string("flake tile: ") + name + " has " +
+                               std::to_string(values.size()) + " values, expected " +
+                               std::to_string(cells * per_cell));
+    }
+  };
+  if (tile.thickness_mm.size() != cells) {
+    throw std::runtime_error("flake tile: thickness_mm has " +
+                             std::to_string(tile.thickness_mm.size()) + " values for " +
+                             std::to_string(cells) + " cells");
+  }
+  expect(tile.surface_height_mm, 1, "surface_height_mm");
+  expect(tile.normals, 3, "normals");
+  if (radiance.size() != cells * nodes) {
+    throw std::runtime_error("flake tile: radiance has " + std::to_string(radiance.size()) +
+                             " values, expected " + std::to_string(cells * nodes));
+  }
+  if (!(tile.cell_size_mm > 0.0) || !std::isfinite(tile.cell_size_mm)) {
+    throw std::runtime_error("flake tile: cell_size_mm must be positive and finite");
+  }
+  for (const Light& light : lights) check_light(light, nodes);
+
+  std::size_t evaluated = 0;
+  std::vector<double> cell_radiance(nodes);
+  for (std::size_t i = 0; i < cells; ++i) {
+    if (tile.concentration[i] <= 0.0f) continue;
+    const int x = static_cast<int>(i % tile.width), y = static_cast<int>(i / tile.width);
+    FlakeCell cell;
+    cell.ix = tile.first_ix + x;
+    cell.iy = tile.first_iy + y;
+    const double height = tile.surface_height_mm.empty() ? 0.0 : tile.surface_height_mm[i];
+    cell.center_mm = {(cell.ix + 0.5) * tile.cell_size_mm, (cell.iy + 0.5) * tile.cell_size_mm,
+                      height};
+    if (!tile.normals.empty()) {
+      const Vec3 n{tile.normals[3 * i], tile.normals[3 * i + 1], tile.normals[3 * i + 2]};
+      if (!(n.z > 0.0) || !std::isfinite(length(n))) {
+        throw std::runtime_error("flake tile: normal must point up and be finite" + where(i));
+      }
+      cell.normal = normalize(n);
+    }
+    cell.area_mm2 = tile.cell_size_mm * tile.cell_size_mm;
+    cell.flake_concentration = tile.concentration[i];
+    cell.thickness_mm = tile.thickness_mm[i];
+    if (!(cell.thickness_mm >= 0.0) || !std::isfinite(cell.thickness_mm) ||
+        !std::isfinite(height)) {
+      throw std::runtime_error("flake tile: thickness or height is not a finite length" + where(i));
+    }
+    ++evaluated;
+    std::fill(cell_radiance.begin(), cell_radiance.end(), 0.0);
+    int sparkles = 0;
+    for (const Light& light : lights) sparkles += add_cell(cell, light, view, cell_radiance);
+    if (sparkles == 0) continue;
+    float* out = radiance.data() + i * nodes;
+    for (std::size_t w = 0; w < nodes; ++w) out[w] += static_cast<float>(cell_radiance[w]);
+  }
+  return evaluated;
+}
+
+}  // namespace impasto::flakes
