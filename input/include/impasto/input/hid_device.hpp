@@ -1,0 +1,129 @@
+#pragma once
+// Tablets on this machine, through hidapi's hidraw backend: finding pen digitizers, reading
+// their report descriptors, one reader thread per tablet feeding a SampleQueue, and
+// periodic re-enumeration so tablets can be plugged in and out while painting.
+#include <impasto/input/hid_recording.hpp>
+#include <impasto/input/hid_tablet.hpp>
+#include <impasto/input/sample_queue.hpp>
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace impasto::input::hid {
+
+// False when Impasto was built without hidapi: the functions below then find no devices
+// and opening one throws.
+bool hid_available();
+
+struct HidDeviceInfo {
+  std::string path;  // e.g. /dev/hidraw3
+  std::uint16_t vendor_id = 0;
+  std::uint16_t product_id = 0;
+  std::string manufacturer;
+  std::string product;
+  int interface_number = -1;
+};
+
+// Every HID device hidapi sees, one entry per device node.
+std::vector<HidDeviceInfo> enumerate_hid_devices();
+
+// The report descriptor of a hidraw node: from sysfs (readable without access to the node),
+// else with the HIDIOCGRDESC ioctl. Throws std::runtime_error naming the node.
+std::vector<std::uint8_t> read_report_descriptor(const std::string& hidraw_path);
+
+// A device whose descriptor declares a pen (or whose vendor protocol Impasto knows).
+struct PenTabletInfo {
+  HidDeviceInfo device;
+  std::vector<std::uint8_t> descriptor;
+  std::string unsupported_reason;  // empty when Impasto can read the pen
+  bool readable = false;           // whether this user may open the node (udev uaccess)
+};
+
+// Pen digitizers among the HID devices: Digitizer Pen/Stylus collections, known vendor
+// protocols, or tablet makers' vendor-defined pen collections (listed as unsupported).
+std::vector<PenTabletInfo> find_pen_tablets();
+
+// An open HID device; closed on destruction.
+class HidDevice {
+ public:
+  explicit HidDevice(const std::string& path);  // throws std::runtime_error naming the path
+  ~HidDevice();
+  HidDevice(const HidDevice&) = delete;
+  HidDevice& operator=(const HidDevice&) = delete;
+
+  // One input report, or an empty vector after `timeout_ms` without one. Throws
+  // std::runtime_error when the device is gone.
+  std::vector<std::uint8_t> read(int timeout_ms);
+
+ private:
+  void* handle_ = nullptr;
+  std::string path_;
+};
+
+// Reads one tablet on its own thread, decoding reports into the queue. Times are seconds
+// since `origin` (steady clock), the same for every tablet of a session.
+class TabletReader {
+ public:
+  TabletReader(PenTabletInfo tablet, SampleQueue& queue,
+               std::chrono::steady_clock::time_point origin);
+  ~TabletReader();  // stops and joins the thread
+  TabletReader(const TabletReader&) = delete;
+  TabletReader& operator=(const TabletReader&) = delete;
+
+  const PenTabletInfo& tablet() const { return tablet_; }
+  bool running() const { return running_.load(); }
+  // Why the thread stopped (unplugged, no permission, ...), empty while it runs.
+  std::string stop_reason() const;
+  std::size_t bad_reports() const { return bad_reports_.load(); }
+
+ private:
+  void run();
+
+  PenTabletInfo tablet_;
+  TabletDecoder decoder_;
+  SampleQueue& queue_;
+  std::chrono::steady_clock::time_point origin_;
+  std::atomic<bool> stop_{false};
+  std::atomic<bool> running_{true};
+  std::atomic<std::size_t> bad_reports_{0};
+  mutable std::mutex reason_mutex_;
+  std::string stop_reason_;
+  std::thread thread_;
+};
+
+// Every readable, supported tablet, re-enumerated periodically: plugged-in tablets start
+// reading, unplugged ones are dropped. The application polls samples without blocking.
+class TabletManager {
+ public:
+  explicit TabletManager(std::chrono::milliseconds rescan_interval = std::chrono::seconds(1));
+  ~TabletManager();
+  TabletManager(const TabletManager&) = delete;
+  TabletManager& operator=(const TabletManager&) = delete;
+
+  // Samples of all tablets since the last poll, in arrival order; never blocks for long.
+  std::vector<paintcore::PenSample> poll() { return queue_.drain(); }
+  // The device paths being read now.
+  std::vector<std::string> connected() const;
+
+ private:
+  void rescan();
+  void run();
+
+  SampleQueue queue_;
+  std::chrono::steady_clock::time_point origin_ = std::chrono::steady_clock::now();
+  std::chrono::milliseconds interval_;
+  mutable std::mutex mutex_;
+  std::vector<std::unique_ptr<TabletReader>> readers_;
+  std::atomic<bool> stop_{false};
+  std::thread thread_;
+};
+
+}  // namespace impasto::input::hid

@@ -1,0 +1,91 @@
+#pragma once
+// Turning a tablet's HID input reports into pen samples: which fields of which reports carry
+// the pen's position, pressure, tilt, twist and switches, and how to scale them.
+#include <impasto/input/hid_descriptor.hpp>
+#include <impasto/paintcore/pen_sample.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace impasto::input::hid {
+
+// A tablet whose descriptor has no standard pen report (for example one whose pen speaks
+// only vendor-defined reports). The message says why.
+class UnsupportedTablet : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// One value of a pen report: a field element and its extents.
+struct PenAxis {
+  int field = -1;  // index into ReportDescriptor::fields; -1 when the report lacks it
+  std::uint32_t element = 0;
+  std::int64_t logical_min = 0;
+  std::int64_t logical_max = 0;
+  std::int64_t physical_min = 0;
+  std::int64_t physical_max = 0;
+  Unit unit;
+
+  bool present() const { return field >= 0; }
+  // The value as a fraction of the logical range, clamped to 0..1.
+  double normalised(std::int64_t value) const;
+  // The value in physical units times `scale` (e.g. mm per unit), linear in the logical value.
+  double physical(std::int64_t value, double scale) const;
+};
+
+// Where one pen report keeps each quantity.
+struct PenReportLayout {
+  std::uint8_t report_id = 0;
+  std::size_t bytes = 0;  // on the wire, report ID included
+  PenAxis x, y, pressure, tilt_x, tilt_y, twist;
+  PenAxis in_range, tip, barrel1, barrel2, eraser, invert;
+};
+
+struct DecoderOptions {
+  // When the descriptor gives no usable length unit for X and Y, logical units are taken
+  // as this many per mm (100 is common: 2540 lines per inch).
+  double fallback_lines_per_mm = 100.0;
+};
+
+// The tablet's active area in mm, and whether the descriptor stated it.
+struct TabletArea {
+  double width_mm = 0.0;
+  double height_mm = 0.0;
+  bool from_descriptor = false;
+};
+
+class PenDecoder {
+ public:
+  // Finds the pen reports: input reports with X and Y in a Digitizer Pen or Digitizer
+  // application collection or in a Stylus collection. Throws UnsupportedTablet if none.
+  explicit PenDecoder(ReportDescriptor descriptor, DecoderOptions options = {});
+
+  // Decodes one raw input report taken at time_s. Reports that are not pen reports (pad
+  // buttons, vendor reports) give nullopt. Positions are mm on the tablet from the top left
+  // of its active area. Throws InputFormatError for a pen report shorter than declared.
+  std::optional<paintcore::PenSample> decode(std::span<const std::uint8_t> report,
+                                             double time_s) const;
+
+  const ReportDescriptor& descriptor() const { return descriptor_; }
+  const std::vector<PenReportLayout>& layouts() const { return layouts_; }
+  TabletArea area() const { return area_; }
+  double mm_per_logical_x() const { return mm_per_x_; }
+  double mm_per_logical_y() const { return mm_per_y_; }
+
+ private:
+  ReportDescriptor descriptor_;
+  std::vector<PenReportLayout> layouts_;
+  DecoderOptions options_;
+  TabletArea area_;
+  double mm_per_x_ = 0.0;
+  double mm_per_y_ = 0.0;
+};
+
+// Why a descriptor has no pen report, or an empty string when it has one.
+std::string unsupported_reason(const ReportDescriptor& descriptor);
+
+}  // namespace impasto::input::hid

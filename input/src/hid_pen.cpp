@@ -1,0 +1,241 @@
+#include <impasto/input/hid_pen.hpp>
+
+#include <impasto/input/hid_report.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace impasto::input::hid {
+
+namespace {
+
+using paintcore::PenSample;
+
+// True when the field lies in a collection that makes it part of a pen: a Stylus collection,
+// or a Digitizer/Pen application collection.
+bool in_pen_collection(const ReportDescriptor& d, const ReportField& field) {
+  for (int c = field.collection; c >= 0; c = d.collections[static_cast<std::size_t>(c)].parent) {
+    const Collection& collection = d.collections[static_cast<std::size_t>(c)];
+    if (collection.usage == usage::kStylus) return true;
+    if (collection.type == static_cast<std::uint8_t>(CollectionType::kApplication) &&
+        (collection.usage == usage::kPen || collection.usage == usage::kDigitizer)) {
+      return true;
+    }
+  }
+  return false;
+}
+
+PenAxis axis_of(const ReportField& field, int index, std::uint32_t element) {
+  return {index,
+          element,
+          field.logical_min,
+          field.logical_max,
+          field.physical_min,
+          field.physical_max,
+          field.unit};
+}
+
+// Fills the slot of `usage` in the layout, if the layout has one for it. The first field
+// carrying a usage wins.
+void assign(PenReportLayout& layout, Usage u, const PenAxis& axis) {
+  PenAxis* slot = nullptr;
+  switch (u) {
+    case usage::kX:
+      slot = &layout.x;
+      break;
+    case usage::kY:
+      slot = &layout.y;
+      break;
+    case usage::kTipPressure:
+      slot = &layout.pressure;
+      break;
+    case usage::kXTilt:
+      slot = &layout.tilt_x;
+      break;
+    case usage::kYTilt:
+      slot = &layout.tilt_y;
+      break;
+    case usage::kTwist:
+      slot = &layout.twist;
+      break;
+    case usage::kInRange:
+      slot = &layout.in_range;
+      break;
+    case usage::kTipSwitch:
+      slot = &layout.tip;
+      break;
+    case usage::kBarrelSwitch:
+      slot = &layout.barrel1;
+      break;
+    case usage::kSecondaryBarrelSwitch:
+      slot = &layout.barrel2;
+      break;
+    case usage::kEraser:
+      slot = &layout.eraser;
+      break;
+    case usage::kInvert:
+      slot = &layout.invert;
+      break;
+    default:
+      return;
+  }
+  if (!slot->present()) *slot = axis;
+}
+
+std::vector<PenReportLayout> find_pen_layouts(const ReportDescriptor& d) {
+  std::vector<PenReportLayout> layouts;
+  for (const ReportInfo& report : d.reports) {
+    if (report.type != ReportType::kInput) continue;
+    PenReportLayout layout;
+    layout.report_id = report.report_id;
+    layout.bytes = report.bytes(d.has_report_ids);
+    for (std::size_t i = 0; i < d.fields.size(); ++i) {
+      const ReportField& field = d.fields[i];
+      if (field.type != ReportType::kInput || field.report_id != report.report_id) continue;
+      if (field.is_constant() || !field.is_variable() || !in_pen_collection(d, field)) continue;
+      // Usages beyond the field's elements are never reported; do not walk huge ranges.
+      const std::uint32_t n = static_cast<std::uint32_t>(
+          std::min<std::uint64_t>(field.count, std::max<std::uint64_t>(field.usage_count(), 1)));
+      for (std::uint32_t e = 0; e < n; ++e) {
+        assign(layout, field.usage_at(e), axis_of(field, static_cast<int>(i), e));
+      }
+    }
+    if (layout.x.present() && layout.y.present()) layouts.push_back(layout);
+  }
+  return layouts;
+}
+
+// mm per logical unit of a position axis, when its unit is a length.
+std::optional<double> mm_per_logical(const PenAxis& axis) {
+  const std::optional<double> mm = axis.unit.millimetres();
+  const std::int64_t logical = axis.logical_max - axis.logical_min;
+  const std::int64_t physical = axis.physical_max - axis.physical_min;
+  if (!mm || logical <= 0 || physical <= 0) return std::nullopt;
+  return *mm * static_cast<double>(physical) / static_cast<double>(logical);
+}
+
+// A tilt in degrees: from the unit when it is an angle, else the logical value is taken as
+// degrees (what tablets without units send).
+double tilt_degrees(const PenAxis& axis, std::int64_t value) {
+  if (const auto degrees = axis.unit.degrees()) return axis.physical(value, *degrees);
+  return static_cast<double>(value);
+}
+
+bool switch_on(const PenAxis& axis, std::span<const std::uint8_t> data, const ReportDescriptor& d) {
+  if (!axis.present()) return false;
+  const ReportField& field = d.fields[static_cast<std::size_t>(axis.field)];
+  return field_value(field, axis.element, data) != 0;
+}
+
+std::string hex4(unsigned value) {
+  char text[8];
+  std::snprintf(text, sizeof text, "%04X", value & 0xFFFFu);
+  return text;
+}
+
+}  // namespace
+
+double PenAxis::normalised(std::int64_t value) const {
+  if (logical_max <= logical_min) return 0.0;
+  const double t =
+      static_cast<double>(value - logical_min) / static_cast<double>(logical_max - logical_min);
+  return std::clamp(t, 0.0, 1.0);
+}
+
+double PenAxis::physical(std::int64_t value, double scale) const {
+  if (logical_max == logical_min) return static_cast<double>(physical_min) * scale;
+  const double t =
+      static_cast<double>(value - logical_min) / static_cast<double>(logical_max - logical_min);
+  return (static_cast<double>(physical_min) +
+          t * static_cast<double>(physical_max - physical_min)) *
+         scale;
+}
+
+std::string unsupported_reason(const ReportDescriptor& descriptor) {
+  if (!find_pen_layouts(descriptor).empty()) return "";
+  for (const Collection& c : descriptor.collections) {
+    if (c.parent < 0 && usage_page(c.usage) >= page::kVendorFirst) {
+      return "its pen reports are vendor-defined (application collection " +
+             usage_page_name(usage_page(c.usage)) + " usage 0x" + hex4(usage_id(c.usage)) +
+             "); Impasto reads only standard HID digitizer reports";
+    }
+  }
+  return "it has no pen report (X and Y in a Digitizer Pen or Stylus collection)";
+}
+
+PenDecoder::PenDecoder(ReportDescriptor descriptor, DecoderOptions options)
+    : descriptor_(std::move(descriptor)), options_(options) {
+  layouts_ = find_pen_layouts(descriptor_);
+  if (layouts_.empty())
+    throw UnsupportedTablet("unsupported tablet: " + unsupported_reason(descriptor_));
+  if (!(options_.fallback_lines_per_mm > 0.0)) {
+    throw std::invalid_argument("fallback_lines_per_mm must be positive");
+  }
+  const PenReportLayout& first = layouts_.front();
+  const auto x = mm_per_logical(first.x);
+  const auto y = mm_per_logical(first.y);
+  area_.from_descriptor = x.has_value() && y.has_value();
+  mm_per_x_ = x.value_or(1.0 / options_.fallback_lines_per_mm);
+  mm_per_y_ = y.value_or(1.0 / options_.fallback_lines_per_mm);
+  area_.width_mm = static_cast<double>(first.x.logical_max - first.x.logical_min) * mm_per_x_;
+  area_.height_mm = static_cast<double>(first.y.logical_max - first.y.logical_min) * mm_per_y_;
+}
+
+std::optional<PenSample> PenDecoder::decode(std::span<const std::uint8_t> report,
+                                            double time_s) const {
+  if (report.empty()) return std::nullopt;
+  const std::uint8_t id = descriptor_.has_report_ids ? report[0] : 0;
+  const PenReportLayout* layout = nullptr;
+  for (const PenReportLayout& l : layouts_) {
+    if (l.report_id == id) layout = &l;
+  }
+  if (layout == nullptr) return std::nullopt;
+  const ReportView view = split_input_report(descriptor_, report);
+  const auto value = [&](const PenAxis& axis) {
+    return field_value(descriptor_.fields[static_cast<std::size_t>(axis.field)], axis.element,
+                       view.data);
+  };
+
+  PenSample s;
+  s.time_s = time_s;
+  s.x_mm = static_cast<double>(value(layout->x) - layout->x.logical_min) * mm_per_x_;
+  s.y_mm = static_cast<double>(value(layout->y) - layout->y.logical_min) * mm_per_y_;
+  if (layout->pressure.present()) {
+    s.pressure = static_cast<float>(layout->pressure.normalised(value(layout->pressure)));
+  }
+  if (layout->tilt_x.present()) {
+    s.tilt_x_deg = static_cast<float>(
+        std::clamp(tilt_degrees(layout->tilt_x, value(layout->tilt_x)), -90.0, 90.0));
+  }
+  if (layout->tilt_y.present()) {
+    s.tilt_y_deg = static_cast<float>(
+        std::clamp(tilt_degrees(layout->tilt_y, value(layout->tilt_y)), -90.0, 90.0));
+  }
+  if (layout->twist.present()) {
+    const auto degrees = layout->twist.unit.degrees();
+    double twist = degrees ? layout->twist.physical(value(layout->twist), *degrees)
+                           : 360.0 * layout->twist.normalised(value(layout->twist));
+    twist = std::fmod(twist, 360.0);
+    if (twist < 0.0) twist += 360.0;
+    s.rotation_deg = static_cast<float>(twist);
+  }
+  const bool tip =
+      layout->tip.present() ? switch_on(layout->tip, view.data, descriptor_) : s.pressure > 0.0f;
+  // Without an In Range usage, a pen report means the pen is in range.
+  const bool in_range =
+      !layout->in_range.present() || switch_on(layout->in_range, view.data, descriptor_) || tip;
+  std::uint32_t buttons = 0;
+  if (tip) buttons |= paintcore::kPenTip;
+  if (in_range) buttons |= paintcore::kPenInRange;
+  if (switch_on(layout->barrel1, view.data, descriptor_)) buttons |= paintcore::kPenBarrel1;
+  if (switch_on(layout->barrel2, view.data, descriptor_)) buttons |= paintcore::kPenBarrel2;
+  if (switch_on(layout->eraser, view.data, descriptor_) ||
+      switch_on(layout->invert, view.data, descriptor_)) {
+    buttons |= paintcore::kPenEraser;
+  }
+  s.buttons = buttons;
+  return s;
+}
+
+}  // namespace impasto::input::hid
