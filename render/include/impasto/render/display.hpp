@@ -1,0 +1,43 @@
+#pragma once
+// XYZ (D65-referred, Y = 1 for white) to display RGB through OpenColorIO. Debian's OCIO 2.1
+// ships no configs, so the config is built in code from OCIO's built-in transforms.
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace impasto::render {
+
+enum class DisplayEncoding {
+  srgb,         // sRGB primaries, piecewise sRGB curve (the default; PNG output)
+  display_p3,   // P3 primaries, D65 white, sRGB curve
+  rec709,       // Rec.709 primaries, BT.1886 (gamma 2.4)
+  rec2020,      // Rec.2020 primaries, BT.1886 (gamma 2.4)
+  linear_srgb,  // sRGB/Rec.709 primaries, linear, unclamped (EXR output)
+};
+
+// Parses "srgb", "display-p3", "rec709", "rec2020", "linear-srgb"; throws
+// std::runtime_error naming the accepted values.
+DisplayEncoding parse_display_encoding(std::string_view text);
+std::string_view to_string(DisplayEncoding encoding);
+// Every encoding, for help texts.
+const std::vector<std::string>& display_encoding_names();
+
+class DisplayTransform {
+ public:
+  explicit DisplayTransform(DisplayEncoding encoding);
+  ~DisplayTransform();
+  DisplayTransform(DisplayTransform&&) noexcept;
+  DisplayTransform& operator=(DisplayTransform&&) noexcept;
+
+  DisplayEncoding encoding() const { return encoding_; }
+  // Converts packed XYZ triples to display RGB in place. Thread-safe.
+  void apply(float* xyz_to_rgb, std::size_t pixel_count) const;
+
+ private:
+  struct Impl;
+  DisplayEncoding encoding_;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace impasto::render

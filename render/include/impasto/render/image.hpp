@@ -1,0 +1,29 @@
+#pragma once
+// A rendered image and its files.
+#include <filesystem>
+#include <vector>
+
+namespace impasto::render {
+
+// Packed RGB floats, row-major, top row first.
+struct Image {
+  int width = 0;
+  int height = 0;
+  std::vector<float> rgb;  // 3 · width · height
+
+  float* pixel(int x, int y) {
+    return rgb.data() + 3 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+                             static_cast<std::size_t>(x));
+  }
+  const float* pixel(int x, int y) const { return const_cast<Image*>(this)->pixel(x, y); }
+};
+
+// 8-bit RGB PNG of display-encoded values (clamped to [0, 1], rounded). Throws
+// std::runtime_error naming the file when it cannot be written.
+void write_png(const std::filesystem::path& path, const Image& image);
+// Half-float RGB OpenEXR of linear values, full range kept. Throws std::runtime_error.
+void write_exr(const std::filesystem::path& path, const Image& image);
+// PNG images back as floats in [0, 1] (8- or 16-bit RGB/RGBA/grey); for tests and tools.
+Image read_png(const std::filesystem::path& path);
+
+}  // namespace impasto::render

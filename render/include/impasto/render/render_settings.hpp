@@ -1,0 +1,59 @@
+#pragma once
+// Everything that decides how a painting looks, apart from the painting itself.
+#include <optional>
+#include <string>
+
+#include "impasto/data/spectrum.hpp"
+#include "impasto/render/chromatic_adaptation.hpp"
+#include "impasto/render/display.hpp"
+#include "impasto/render/shading.hpp"
+#include "impasto/render/spectral_sampling.hpp"
+
+namespace impasto::render {
+
+// How the baked reflectance of the dry stack is kept per cell and node.
+enum class ReflectanceStorage {
+  float32,  // exact
+  float16,  // half the memory; rounding below 1e-3 relative (see docs/color-accuracy.md)
+};
+
+struct RenderSettings {
+  // --- light and colour ---
+  std::string light = "D65";  // data::light_from_spec: "D65", "A", "F11", "blackbody:5600", file
+  int wavelengths = 8;        // Gaussian nodes 1..16, or 0 for every nm (the reference)
+  WavelengthRange range;      // the measure the nodes are chosen on
+  ChromaticAdaptation adaptation = ChromaticAdaptation::bradford;
+  DisplayEncoding display = DisplayEncoding::srgb;
+
+  // --- paint optics ---
+  // Millimetres of paint per unit of K-M optical thickness. The Golden data have S = 1 for
+  // titanium white, so 0.1 mm makes 1 mm of white opaque (R within 1% of R∞ over black)
+  // and a 0.01 mm glaze translucent. See docs/rendering.md.
+  double thickness_scale_mm = 0.1;
+  // The canvas ground (gesso) reflectance; unset: R∞ of the palette's "Titanium White".
+  std::optional<data::Spectrum> ground;
+  // Saunderson surface correction of the top reflectance (off: the data are interface-
+  // corrected K-M values, and the specular term already shows the surface).
+  bool saunderson = false;
+  double saunderson_k1 = 0.03;
+  double saunderson_k2 = 0.65;
+
+  // --- shading ---
+  double light_azimuth_deg = 225.0;   // from +x (right) toward +y (down the rows): upper left
+  double light_elevation_deg = 60.0;  // above the canvas plane
+  double ambient = 0.25;              // fraction of the light arriving from everywhere
+  shade::Material dry_material{0.04f, 12.0f};
+  shade::Material wet_material{0.35f, 80.0f};
+  double wet_gloss_mm = 0.02;  // wet paint this thick or more has the full wet gloss
+
+  // --- storage and threads ---
+  ReflectanceStorage storage = ReflectanceStorage::float32;
+  int threads = 0;  // 0: TBB's default; results do not depend on it
+};
+
+// Throws std::runtime_error naming the first field out of range (NaN included).
+void validate(const RenderSettings& settings);
+
+ReflectanceStorage parse_reflectance_storage(std::string_view text);  // "float" or "half"
+
+}  // namespace impasto::render

@@ -1,0 +1,70 @@
+#pragma once
+// Per-cell shading of the paint surface: the reference the GLSL shaders mirror. The canvas
+// lies in the x-y plane (x right, y down the image rows), heights in mm along +z toward the
+// viewer, who looks straight down. Angles in radians.
+#include <algorithm>
+#include <cmath>
+
+namespace impasto::render::shade {
+
+struct Vec3 {
+  float x, y, z;
+};
+
+inline float dot(Vec3 a, Vec3 b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+
+inline Vec3 normalized(Vec3 v) {
+  const float length = std::sqrt(dot(v, v));
+  return length > 0.0f ? Vec3{v.x / length, v.y / length, v.z / length} : Vec3{0.0f, 0.0f, 1.0f};
+}
+
+// Unit vector toward a directional light at azimuth (from +x toward +y) and elevation above
+// the canvas plane.
+inline Vec3 light_direction(float azimuth, float elevation) {
+  return {std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth),
+          std::sin(elevation)};
+}
+
+// Surface normal from central differences of total height (mm): the neighbours left/right
+// and up/down, cell_size_mm apart from the centre (so 2·cell_size between them).
+inline Vec3 height_normal(float left, float right, float up, float down, float cell_size_mm) {
+  const float inv_span = 0.5f / cell_size_mm;
+  return normalized({-(right - left) * inv_span, -(down - up) * inv_span, 1.0f});
+}
+
+// The surface parameters, blended between dry and wet paint by the cell's wetness.
+struct Material {
+  float specular;   // Blinn-Phong specular strength (fraction of the light's white)
+  float shininess;  // Blinn-Phong exponent
+};
+
+inline Material blend(Material dry, Material wet, float wetness) {
+  const float w = std::clamp(wetness, 0.0f, 1.0f);
+  return {dry.specular + w * (wet.specular - dry.specular),
+          dry.shininess + w * (wet.shininess - dry.shininess)};
+}
+
+// The factors that turn a cell's diffuse (K-M) colour and the light's white into its shaded
+// colour: colour = diffuse · diffuse_factor + white · specular_factor.
+struct Shading {
+  float diffuse;
+  float specular;
+};
+
+// Lambert plus ambient, normalised so that flat canvas shows its K-M reflectance exactly
+// (the K-M data describe paint seen at the light's elevation), plus Blinn-Phong specular
+// for a viewer straight above (view vector +z).
+inline Shading blinn_phong(Vec3 normal, Vec3 to_light, float ambient, Material material) {
+  const float flat_lambert = std::max(to_light.z, 0.05f);
+  const float lambert = std::max(dot(normal, to_light), 0.0f) / flat_lambert;
+  const Vec3 half_vector = normalized({to_light.x, to_light.y, to_light.z + 1.0f});
+  const float n_dot_h = std::max(dot(normal, half_vector), 0.0f);
+  const float specular = dot(normal, to_light) > 0.0f
+                             ? material.specular * std::pow(n_dot_h, material.shininess)
+                             : 0.0f;
+  return {ambient + (1.0f - ambient) * lambert, specular};
+}
+
+}  // namespace impasto::render::shade

@@ -1,0 +1,78 @@
+#pragma once
+// The CPU reference renderer of a canvas, tile by tile (64×64 cells), in parallel with TBB.
+// Per cell: the wet layer composited (K-M) over the dry stack, which is baked once per light
+// into a reflectance per node, over the canvas ground; shaded from the total height; XYZ to
+// the display through OpenColorIO. Results do not depend on the thread count.
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "impasto/paintcore/canvas.hpp"
+#include "impasto/render/display.hpp"
+#include "impasto/render/image.hpp"
+#include "impasto/render/render_settings.hpp"
+#include "impasto/render/spectral_palette.hpp"
+
+namespace impasto::render {
+
+// What one update() did.
+struct RenderStats {
+  int tiles_shaded = 0;  // tiles whose every cell was re-shaded
+  int tiles_baked = 0;   // tiles whose dry stack was re-baked
+  int border_cells = 0;  // cells of unchanged neighbours re-shaded because a normal changed
+};
+
+class TileRenderer {
+ public:
+  // Pigment i of the palette is the painting's pigment slot i.
+  TileRenderer(const RenderSettings& settings, SpectralPalette palette);
+  // The palette from the default pigment database and settings.light.
+  TileRenderer(const RenderSettings& settings, std::span<const std::string> pigment_slots);
+  ~TileRenderer();
+  TileRenderer(TileRenderer&&) noexcept;
+  TileRenderer& operator=(TileRenderer&&) noexcept;
+
+  const RenderSettings& settings() const { return settings_; }
+  const SpectralPalette& palette() const { return palette_; }
+
+  // New settings (light, wavelengths, shading, ...): everything is re-baked and re-shaded at
+  // the next update. The palette is rebuilt for the same pigment names.
+  void set_settings(const RenderSettings& settings);
+  // New settings with a palette built by the caller (explicit spectra).
+  void set_settings(const RenderSettings& settings, SpectralPalette palette);
+
+  // Brings the image up to date with `canvas`. The first call after construction, a settings
+  // change or a canvas of another size renders every tile; later calls re-shade only
+  // `changed_tiles` (from Canvas::take_dirty_tiles) and the one-cell rim of their
+  // neighbours whose normals see the changed heights. A changed tile's dry stack is re-baked
+  // only when its dry layers differ from those it was baked from.
+  RenderStats update(const paintcore::Canvas& canvas, std::span<const int> changed_tiles);
+  // Renders every tile (a relight).
+  RenderStats render_all(const paintcore::Canvas& canvas);
+
+  // The display-encoded (or linear, per settings.display) RGB of the whole canvas.
+  Image image() const;
+  // How many times each tile has been fully shaded since construction (tests, profiling).
+  std::uint64_t shade_count(int tile_index) const;
+
+ private:
+  struct TileCache;
+  void reset_caches(const paintcore::Canvas& canvas);
+  void shade_region(const paintcore::Canvas& canvas, int tile_index, int x0, int y0, int x1, int y1,
+                    TileCache& cache) const;
+  void bake_dry_stack(const paintcore::Canvas& canvas, int tile_index, TileCache& cache) const;
+  template <typename Work>
+  void run_parallel(std::size_t count, const Work& work) const;
+
+  RenderSettings settings_;
+  SpectralPalette palette_;
+  std::unique_ptr<DisplayTransform> display_;
+  int width_ = 0, height_ = 0, tiles_x_ = 0, tiles_y_ = 0;
+  double cell_mm_ = 0.0;
+  bool needs_full_render_ = true;
+  std::vector<TileCache> tiles_;
+};
+
+}  // namespace impasto::render

@@ -1,0 +1,156 @@
+#include "impasto/render/display.hpp"
+
+#include <OpenColorIO/OpenColorIO.h>
+
+#include <stdexcept>
+#include <string>
+
+namespace OCIO = OCIO_NAMESPACE;
+
+namespace impasto::render {
+namespace {
+
+struct EncodingName {
+  DisplayEncoding encoding;
+  const char* name;
+};
+constexpr EncodingName kEncodingNames[] = {
+    {DisplayEncoding::srgb, "srgb"},
+    {DisplayEncoding::display_p3, "display-p3"},
+    {DisplayEncoding::rec709, "rec709"},
+    {DisplayEncoding::rec2020, "rec2020"},
+    {DisplayEncoding::linear_srgb, "linear-srgb"},
+};
+
+// XYZ (D65) to linear RGB for sRGB and P3-D65 primaries (IEC 61966-2-1; SMPTE EG 432-1),
+// as the 4×4 row-major matrices OCIO's MatrixTransform takes.
+constexpr double kXyzToLinearSrgb[16] = {3.2409699419,
+                                         -1.5373831776,
+                                         -0.4986107603,
+                                         0,
+                                         -0.9692436363,
+                                         1.8759675015,
+                                         0.0415550574,
+                                         0,
+                                         0.0556300797,
+                                         -0.2039769589,
+                                         1.0569715142,
+                                         0,
+                                         0,
+                                         0,
+                                         0,
+                                         1};
+constexpr double kXyzToLinearP3D65[16] = {2.4934969119,
+                                          -0.9313836179,
+                                          -0.4027107845,
+                                          0,
+                                          -0.8294889696,
+                                          1.7626640603,
+                                          0.0236246858,
+                                          0,
+                                          0.0358458302,
+                                          -0.0761723893,
+                                          0.9568845240,
+                                          0,
+                                          0,
+                                          0,
+                                          0,
+                                          1};
+
+OCIO::TransformRcPtr builtin(const char* style) {
+  auto transform = OCIO::BuiltinTransform::Create();
+  transform->setStyle(style);
+  return transform;
+}
+
+OCIO::TransformRcPtr matrix(const double* m44) {
+  auto transform = OCIO::MatrixTransform::Create();
+  transform->setMatrix(m44);
+  return transform;
+}
+
+// The piecewise sRGB curve, linear to encoded: the inverse of OCIO's "exponent with linear
+// segment" (gamma 2.4, offset 0.055).
+OCIO::TransformRcPtr srgb_curve() {
+  auto transform = OCIO::ExponentWithLinearTransform::Create();
+  const double gamma[4] = {2.4, 2.4, 2.4, 1.0};
+  const double offset[4] = {0.055, 0.055, 0.055, 0.0};
+  transform->setGamma(gamma);
+  transform->setOffset(offset);
+  transform->setDirection(OCIO::TRANSFORM_DIR_INVERSE);
+  return transform;
+}
+
+OCIO::TransformRcPtr transform_for(DisplayEncoding encoding) {
+  switch (encoding) {
+    case DisplayEncoding::srgb:
+      return builtin("DISPLAY - CIE-XYZ-D65_to_sRGB");
+    case DisplayEncoding::rec709:
+      return builtin("DISPLAY - CIE-XYZ-D65_to_REC.1886-REC.709");
+    case DisplayEncoding::rec2020:
+      return builtin("DISPLAY - CIE-XYZ-D65_to_REC.1886-REC.2020");
+    case DisplayEncoding::display_p3: {
+      auto group = OCIO::GroupTransform::Create();
+      group->appendTransform(matrix(kXyzToLinearP3D65));
+      group->appendTransform(srgb_curve());
+      return group;
+    }
+    case DisplayEncoding::linear_srgb:
+      return matrix(kXyzToLinearSrgb);
+  }
+  throw std::logic_error("unhandled display encoding");
+}
+
+}  // namespace
+
+DisplayEncoding parse_display_encoding(std::string_view text) {
+  for (const auto& entry : kEncodingNames) {
+    if (text == entry.name) return entry.encoding;
+  }
+  std::string accepted;
+  for (const auto& name : display_encoding_names())
+    accepted += (accepted.empty() ? "" : ", ") + name;
+  throw std::runtime_error("unknown display encoding '" + std::string(text) + "' (expected " +
+                           accepted + ")");
+}
+
+std::string_view to_string(DisplayEncoding encoding) {
+  for (const auto& entry : kEncodingNames) {
+    if (entry.encoding == encoding) return entry.name;
+  }
+  return "unknown";
+}
+
+const std::vector<std::string>& display_encoding_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> list;
+    for (const auto& entry : kEncodingNames) list.emplace_back(entry.name);
+    return list;
+  }();
+  return names;
+}
+
+struct DisplayTransform::Impl {
+  OCIO::ConstCPUProcessorRcPtr processor;
+};
+
+DisplayTransform::DisplayTransform(DisplayEncoding encoding)
+    : encoding_(encoding), impl_(std::make_unique<Impl>()) {
+  // A raw config suffices: built-in and matrix transforms need no colour spaces or files.
+  const OCIO::ConstConfigRcPtr config = OCIO::Config::CreateRaw();
+  const OCIO::ConstProcessorRcPtr processor = config->getProcessor(transform_for(encoding));
+  impl_->processor = processor->getOptimizedCPUProcessor(OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32,
+                                                         OCIO::OPTIMIZATION_DEFAULT);
+}
+
+DisplayTransform::~DisplayTransform() = default;
+DisplayTransform::DisplayTransform(DisplayTransform&&) noexcept = default;
+DisplayTransform& DisplayTransform::operator=(DisplayTransform&&) noexcept = default;
+
+void DisplayTransform::apply(float* xyz_to_rgb, std::size_t pixel_count) const {
+  if (pixel_count == 0) return;
+  OCIO::PackedImageDesc image(xyz_to_rgb, static_cast<long>(pixel_count), 1, 3);
+  impl_->processor->apply(image);
+}
+
+}  // namespace impasto::render

@@ -1,0 +1,88 @@
+#include <png.h>
+
+#include <ImfRgbaFile.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+#include "impasto/render/image.hpp"
+
+namespace impasto::render {
+namespace {
+
+void check_size(const Image& image, const std::filesystem::path& path) {
+  if (image.width <= 0 || image.height <= 0 ||
+      image.rgb.size() !=
+          3 * static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height)) {
+    throw std::runtime_error(path.string() + ": image has no pixels or a wrong buffer size");
+  }
+}
+
+std::uint8_t to_byte(float value) {
+  const float v = std::isnan(value) ? 0.0f : std::clamp(value, 0.0f, 1.0f);
+  return static_cast<std::uint8_t>(std::lround(v * 255.0f));
+}
+
+}  // namespace
+
+// libpng's simplified API: no setjmp/longjmp across C++ frames, errors come back as text.
+void write_png(const std::filesystem::path& path, const Image& image) {
+  check_size(image, path);
+  std::vector<std::uint8_t> bytes(image.rgb.size());
+  std::transform(image.rgb.begin(), image.rgb.end(), bytes.begin(), to_byte);
+  png_image png{};
+  png.version = PNG_IMAGE_VERSION;
+  png.width = static_cast<png_uint_32>(image.width);
+  png.height = static_cast<png_uint_32>(image.height);
+  png.format = PNG_FORMAT_RGB;  // 8-bit sRGB-encoded
+  if (!png_image_write_to_file(&png, path.c_str(), 0, bytes.data(), 0, nullptr)) {
+    const std::string message = png.message;
+    png_image_free(&png);
+    throw std::runtime_error(path.string() + ": cannot write PNG: " + message);
+  }
+}
+
+Image read_png(const std::filesystem::path& path) {
+  png_image png{};
+  png.version = PNG_IMAGE_VERSION;
+  if (!png_image_begin_read_from_file(&png, path.c_str())) {
+    const std::string message = png.message;
+    png_image_free(&png);
+    throw std::runtime_error(path.string() + ": cannot read PNG: " + message);
+  }
+  png.format = PNG_FORMAT_RGB;
+  std::vector<std::uint8_t> bytes(PNG_IMAGE_SIZE(png));
+  if (!png_image_finish_read(&png, nullptr, bytes.data(), 0, nullptr)) {
+    const std::string message = png.message;
+    png_image_free(&png);
+    throw std::runtime_error(path.string() + ": cannot read PNG: " + message);
+  }
+  Image image;
+  image.width = static_cast<int>(png.width);
+  image.height = static_cast<int>(png.height);
+  image.rgb.resize(bytes.size());
+  std::transform(bytes.begin(), bytes.end(), image.rgb.begin(),
+                 [](std::uint8_t b) { return static_cast<float>(b) / 255.0f; });
+  return image;
+}
+
+void write_exr(const std::filesystem::path& path, const Image& image) {
+  check_size(image, path);
+  std::vector<Imf::Rgba> pixels(static_cast<std::size_t>(image.width) *
+                                static_cast<std::size_t>(image.height));
+  for (std::size_t i = 0; i < pixels.size(); ++i) {
+    pixels[i] = Imf::Rgba(image.rgb[3 * i], image.rgb[3 * i + 1], image.rgb[3 * i + 2], 1.0f);
+  }
+  try {
+    Imf::RgbaOutputFile file(path.c_str(), image.width, image.height, Imf::WRITE_RGB);
+    file.setFrameBuffer(pixels.data(), 1, static_cast<std::size_t>(image.width));
+    file.writePixels(image.height);
+  } catch (const std::exception& e) {
+    throw std::runtime_error(path.string() + ": cannot write OpenEXR: " + e.what());
+  }
+}
+
+}  // namespace impasto::render

@@ -1,0 +1,51 @@
+#include "impasto/render/render_settings.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace impasto::render {
+namespace {
+
+void require(bool ok, const char* field, double value, const char* expected) {
+  if (!ok) {
+    throw std::runtime_error(std::string("render settings: ") + field + " = " +
+                             std::to_string(value) + " (expected " + expected + ")");
+  }
+}
+
+}  // namespace
+
+void validate(const RenderSettings& s) {
+  require(s.wavelengths >= 0 && s.wavelengths <= kMaxNodes, "wavelengths", s.wavelengths,
+          "1..16, or 0 for the full spectrum");
+  require(std::isfinite(s.thickness_scale_mm) && s.thickness_scale_mm > 0.0, "thickness_scale_mm",
+          s.thickness_scale_mm, "> 0");
+  require(std::isfinite(s.light_azimuth_deg), "light_azimuth_deg", s.light_azimuth_deg,
+          "a finite angle");
+  require(s.light_elevation_deg > 0.0 && s.light_elevation_deg <= 90.0, "light_elevation_deg",
+          s.light_elevation_deg, "in (0, 90]");
+  require(s.ambient >= 0.0 && s.ambient <= 1.0, "ambient", s.ambient, "in [0, 1]");
+  require(s.wet_gloss_mm > 0.0 && std::isfinite(s.wet_gloss_mm), "wet_gloss_mm", s.wet_gloss_mm,
+          "> 0");
+  require(s.saunderson_k1 >= 0.0 && s.saunderson_k1 < 1.0, "saunderson_k1", s.saunderson_k1,
+          "in [0, 1)");
+  require(s.saunderson_k2 >= 0.0 && s.saunderson_k2 < 1.0, "saunderson_k2", s.saunderson_k2,
+          "in [0, 1)");
+  for (const auto* m : {&s.dry_material, &s.wet_material}) {
+    require(m->specular >= 0.0f && m->specular <= 1.0f, "material specular", m->specular,
+            "in [0, 1]");
+    require(m->shininess >= 1.0f && m->shininess <= 10000.0f, "material shininess", m->shininess,
+            "in [1, 10000]");
+  }
+  require(s.threads >= 0 && s.threads <= 1024, "threads", s.threads, "0..1024");
+}
+
+ReflectanceStorage parse_reflectance_storage(std::string_view text) {
+  if (text == "float") return ReflectanceStorage::float32;
+  if (text == "half") return ReflectanceStorage::float16;
+  throw std::runtime_error("unknown reflectance storage '" + std::string(text) +
+                           "' (expected float or half)");
+}
+
+}  // namespace impasto::render

@@ -1,0 +1,425 @@
+#include "impasto/render/tile_renderer.hpp"
+
+#include <Imath/half.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <array>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "impasto/render/paint_layer.hpp"
+#include "impasto/render/shading.hpp"
+
+namespace impasto::render {
+
+using paintcore::kTileCells;
+using paintcore::kTileSize;
+
+namespace {
+
+constexpr double kDegreesToRadians = std::numbers::pi / 180.0;
+
+// FNV-1a over the bytes that decide a tile's dry stack: a changed stack changes the hash.
+struct Fnv1a {
+  std::uint64_t state = 1469598103934665603ull;
+  void add(const void* data, std::size_t bytes) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < bytes; ++i) {
+      state = (state ^ p[i]) * 1099511628211ull;
+    }
+  }
+};
+
+// The pigments of one cell of a layer: slot index and concentration (amount / volume).
+template <typename AmountOf>
+int gather_shares(int slot_count, float volume_mm, const AmountOf& amount_of,
+                  std::array<PigmentShare, paintcore::kMaxPigmentSlots>& shares) {
+  int count = 0;
+  const float inverse_volume = 1.0f / volume_mm;
+  for (int k = 0; k < slot_count; ++k) {
+    const auto [slot, amount] = amount_of(k);
+    if (amount > 0.0f) shares[static_cast<std::size_t>(count++)] = {slot, amount * inverse_volume};
+  }
+  return count;
+}
+
+// A rectangle of cells inside one tile, local coordinates, [x0, x1) × [y0, y1).
+struct CellRect {
+  int x0, y0, x1, y1;
+  int area() const { return (x1 - x0) * (y1 - y0); }
+};
+
+}  // namespace
+
+struct TileRenderer::TileCache {
+  std::vector<float> rgb;  // 3 per cell, display-encoded
+  // The dry stack over the ground, nodes per cell; empty when no dry layer touches the tile.
+  std::vector<float> dry_f32;
+  std::vector<Imath::half> dry_f16;
+  bool baked = false;
+  std::uint64_t dry_signature = 0;
+  std::uint64_t shade_count = 0;
+};
+
+TileRenderer::TileRenderer(const RenderSettings& settings, SpectralPalette palette)
+    : settings_(settings), palette_(std::move(palette)) {
+  validate(settings_);
+  display_ = std::make_unique<DisplayTransform>(settings_.display);
+}
+
+TileRenderer::TileRenderer(const RenderSettings& settings,
+                           std::span<const std::string> pigment_slots)
+    : TileRenderer(settings, SpectralPalette(settings, pigment_slots)) {}
+
+TileRenderer::~TileRenderer() = default;
+TileRenderer::TileRenderer(TileRenderer&&) noexcept = default;
+TileRenderer& TileRenderer::operator=(TileRenderer&&) noexcept = default;
+
+void TileRenderer::set_settings(const RenderSettings& settings) {
+  set_settings(settings, SpectralPalette(settings, palette_.pigment_names()));
+}
+
+void TileRenderer::set_settings(const RenderSettings& settings, SpectralPalette palette) {
+  validate(settings);
+  settings_ = settings;
+  palette_ = std::move(palette);
+  display_ = std::make_unique<DisplayTransform>(settings_.display);
+  needs_full_render_ = true;
+}
+
+std::uint64_t TileRenderer::shade_count(int tile_index) const {
+  return tiles_.at(static_cast<std::size_t>(tile_index)).shade_count;
+}
+
+template <typename Work>
+void TileRenderer::run_parallel(std::size_t count, const Work& work) const {
+  const auto body = [&] {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 1),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                        for (std::size_t i = range.begin(); i != range.end(); ++i) work(i);
+                      });
+  };
+  if (settings_.threads > 0) {
+    tbb::task_arena arena(settings_.threads);
+    arena.execute(body);
+  } else {
+    body();
+  }
+}
+
+void TileRenderer::reset_caches(const paintcore::Canvas& canvas) {
+  width_ = canvas.width_cells();
+  height_ = canvas.height_cells();
+  tiles_x_ = canvas.tiles_x();
+  tiles_y_ = canvas.tiles_y();
+  cell_mm_ = canvas.cell_mm();
+  std::vector<TileCache> fresh(static_cast<std::size_t>(canvas.tile_count()));
+  for (std::size_t i = 0; i < fresh.size() && i < tiles_.size(); ++i) {
+    fresh[i].shade_count = tiles_[i].shade_count;
+  }
+  tiles_ = std::move(fresh);
+}
+
+RenderStats TileRenderer::render_all(const paintcore::Canvas& canvas) {
+  if (canvas.width_cells() != width_ || canvas.height_cells() != height_ ||
+      canvas.cell_mm() != cell_mm_) {
+    reset_caches(canvas);
+  }
+  for (auto& cache : tiles_) cache.baked = false;  // the light or the nodes may have changed
+  RenderStats stats;
+  run_parallel(tiles_.size(), [&](std::size_t i) {
+    const int index = static_cast<int>(i);
+    bake_dry_stack(canvas, index, tiles_[i]);
+    shade_region(canvas, index, 0, 0, kTileSize, kTileSize, tiles_[i]);
+    ++tiles_[i].shade_count;
+  });
+  stats.tiles_shaded = stats.tiles_baked = static_cast<int>(tiles_.size());
+  needs_full_render_ = false;
+  return stats;
+}
+
+RenderStats TileRenderer::update(const paintcore::Canvas& canvas,
+                                 std::span<const int> changed_tiles) {
+  if (needs_full_render_ || canvas.width_cells() != width_ || canvas.height_cells() != height_ ||
+      canvas.cell_mm() != cell_mm_) {
+    return render_all(canvas);
+  }
+  std::vector<std::uint8_t> changed(tiles_.size(), 0);
+  std::vector<int> order;
+  for (int index : changed_tiles) {
+    if (index < 0 || index >= static_cast<int>(tiles_.size())) {
+      throw std::runtime_error("render update: tile index " + std::to_string(index) +
+                               " is outside the canvas's " + std::to_string(tiles_.size()) +
+                               " tiles");
+    }
+    if (!changed[static_cast<std::size_t>(index)]) order.push_back(index);
+    changed[static_cast<std::size_t>(index)] = 1;
+  }
+
+  RenderStats stats;
+  std::vector<int> baked(order.size(), 0);
+  run_parallel(order.size(), [&](std::size_t k) {
+    const int index = order[k];
+    TileCache& cache = tiles_[static_cast<std::size_t>(index)];
+    const bool was_baked = cache.baked;
+    const std::uint64_t signature = cache.dry_signature;
+    cache.baked = false;
+    bake_dry_stack(canvas, index, cache);
+    baked[k] = !was_baked || cache.dry_signature != signature;
+    shade_region(canvas, index, 0, 0, kTileSize, kTileSize, cache);
+    ++cache.shade_count;
+  });
+  stats.tiles_shaded = static_cast<int>(order.size());
+  for (int b : baked) stats.tiles_baked += b;
+
+  // The rims of unchanged neighbours: their normals read heights of the changed tiles.
+  std::vector<std::vector<CellRect>> rims(tiles_.size());
+  const int last = kTileSize - 1;
+  for (int index : order) {
+    const int tx = index % tiles_x_;
+    const int ty = index / tiles_x_;
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int nx = tx + dx;
+        const int ny = ty + dy;
+        if ((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= tiles_x_ || ny >= tiles_y_) {
+          continue;
+        }
+        const int neighbour = ny * tiles_x_ + nx;
+        if (changed[static_cast<std::size_t>(neighbour)]) continue;
+        // The neighbour's cells touching this tile: its edge column/row facing us.
+        const int x0 = dx < 0 ? last : 0;
+        const int x1 = dx > 0 ? 1 : kTileSize;
+        const int y0 = dy < 0 ? last : 0;
+        const int y1 = dy > 0 ? 1 : kTileSize;
+        rims[static_cast<std::size_t>(neighbour)].push_back({dx == 0 ? 0 : x0, dy == 0 ? 0 : y0,
+                                                             dx == 0 ? kTileSize : x1,
+                                                             dy == 0 ? kTileSize : y1});
+      }
+    }
+  }
+  std::vector<int> rim_tiles;
+  for (std::size_t i = 0; i < rims.size(); ++i) {
+    if (!rims[i].empty()) rim_tiles.push_back(static_cast<int>(i));
+  }
+  run_parallel(rim_tiles.size(), [&](std::size_t k) {
+    const int index = rim_tiles[k];
+    TileCache& cache = tiles_[static_cast<std::size_t>(index)];
+    for (const CellRect& r : rims[static_cast<std::size_t>(index)]) {
+      shade_region(canvas, index, r.x0, r.y0, r.x1, r.y1, cache);
+    }
+  });
+  for (int index : rim_tiles) {
+    for (const CellRect& r : rims[static_cast<std::size_t>(index)]) stats.border_cells += r.area();
+  }
+  return stats;
+}
+
+void TileRenderer::bake_dry_stack(const paintcore::Canvas& canvas, int tile_index,
+                                  TileCache& cache) const {
+  // The dry layers with paint in this tile, bottom first, and their signature.
+  std::vector<const paintcore::DryTile*> layers;
+  Fnv1a hash;
+  const auto& dry_layers = canvas.dry_layers();
+  for (std::size_t l = 0; l < dry_layers.size(); ++l) {
+    const paintcore::DryTile* dry = dry_layers[l].find(tile_index);
+    if (dry == nullptr) continue;
+    if (dry->volume_mm.size() != static_cast<std::size_t>(kTileCells) ||
+        dry->pigment_mm.size() != dry->slots.size() * static_cast<std::size_t>(kTileCells)) {
+      throw std::runtime_error("render: dry layer " + std::to_string(l) + " of tile " +
+                               std::to_string(tile_index) + " has inconsistent sizes");
+    }
+    for (std::uint8_t slot : dry->slots) {
+      if (slot >= palette_.pigment_count()) {
+        throw std::runtime_error("render: dry layer " + std::to_string(l) + " uses pigment slot " +
+                                 std::to_string(slot) + " but the palette has " +
+                                 std::to_string(palette_.pigment_count()) + " pigments");
+      }
+    }
+    layers.push_back(dry);
+    hash.add(&l, sizeof l);
+    hash.add(dry->volume_mm.data(), dry->volume_mm.size() * sizeof(float));
+    hash.add(dry->slots.data(), dry->slots.size());
+    hash.add(dry->pigment_mm.data(), dry->pigment_mm.size() * sizeof(float));
+  }
+  const std::uint64_t signature = layers.empty() ? 0 : hash.state;
+  if (cache.baked && signature == cache.dry_signature) return;
+  cache.dry_signature = signature;
+  cache.baked = true;
+  cache.dry_f32.clear();
+  cache.dry_f16.clear();
+  if (layers.empty()) return;  // the ground alone: nothing stored
+
+  const int nodes = palette_.nodes();
+  const auto values = static_cast<std::size_t>(kTileCells) * static_cast<std::size_t>(nodes);
+  const bool half = settings_.storage == ReflectanceStorage::float16;
+  if (half) {
+    cache.dry_f16.resize(values);
+  } else {
+    cache.dry_f32.resize(values);
+  }
+  const auto inverse_scale = static_cast<float>(1.0 / settings_.thickness_scale_mm);
+  std::array<PigmentShare, paintcore::kMaxPigmentSlots> shares{};
+  float reflectance[kMaxNodes];
+  for (int c = 0; c < kTileCells; ++c) {
+    std::copy(palette_.ground(), palette_.ground() + nodes, reflectance);
+    for (const paintcore::DryTile* dry : layers) {
+      const float volume = dry->volume_mm[static_cast<std::size_t>(c)];
+      if (!(volume > 0.0f)) continue;
+      const int count = gather_shares(
+          static_cast<int>(dry->slots.size()), volume,
+          [&](int k) {
+            return std::pair{static_cast<int>(dry->slots[static_cast<std::size_t>(k)]),
+                             dry->pigment_mm[static_cast<std::size_t>(k) * kTileCells +
+                                             static_cast<std::size_t>(c)]};
+          },
+          shares);
+      composite_paint_layer(palette_, std::span(shares.data(), static_cast<std::size_t>(count)),
+                            volume * inverse_scale, reflectance);
+    }
+    const std::size_t base = static_cast<std::size_t>(c) * static_cast<std::size_t>(nodes);
+    for (int i = 0; i < nodes; ++i) {
+      if (half) {
+        cache.dry_f16[base + static_cast<std::size_t>(i)] = Imath::half(reflectance[i]);
+      } else {
+        cache.dry_f32[base + static_cast<std::size_t>(i)] = reflectance[i];
+      }
+    }
+  }
+}
+
+void TileRenderer::shade_region(const paintcore::Canvas& canvas, int tile_index, int x0, int y0,
+                                int x1, int y1, TileCache& cache) const {
+  const paintcore::Tile* tile = canvas.tile(tile_index);
+  if (tile != nullptr && tile->slot_count() > palette_.pigment_count()) {
+    throw std::runtime_error("render: tile " + std::to_string(tile_index) + " holds " +
+                             std::to_string(tile->slot_count()) +
+                             " pigment slots but the palette has " +
+                             std::to_string(palette_.pigment_count()) + " pigments");
+  }
+  const int origin_x = (tile_index % tiles_x_) * kTileSize;
+  const int origin_y = (tile_index / tiles_x_) * kTileSize;
+
+  // Total height (mm) of the region grown by one cell, edges clamped to the canvas.
+  const int patch_w = x1 - x0 + 2;
+  const int patch_h = y1 - y0 + 2;
+  std::vector<float> height(static_cast<std::size_t>(patch_w) * static_cast<std::size_t>(patch_h));
+  for (int py = 0; py < patch_h; ++py) {
+    const int gy = std::clamp(origin_y + y0 - 1 + py, 0, height_ - 1);
+    for (int px = 0; px < patch_w; ++px) {
+      const int gx = std::clamp(origin_x + x0 - 1 + px, 0, width_ - 1);
+      const int lx = gx - origin_x;
+      const int ly = gy - origin_y;
+      float h;
+      if (tile != nullptr && lx >= 0 && lx < kTileSize && ly >= 0 && ly < kTileSize) {
+        const auto c = static_cast<std::size_t>(ly * kTileSize + lx);
+        h = tile->base_height_mm[c] + tile->dry_height_mm[c] + tile->wet_volume_mm[c];
+      } else {
+        h = canvas.base_height_mm(gx, gy) + canvas.dry_height_mm(gx, gy) +
+            canvas.wet_volume_mm(gx, gy);
+      }
+      height[static_cast<std::size_t>(py * patch_w + px)] = h;
+    }
+  }
+
+  if (cache.rgb.empty()) cache.rgb.assign(3 * static_cast<std::size_t>(kTileCells), 0.0f);
+  const int nodes = palette_.nodes();
+  const auto inverse_scale = static_cast<float>(1.0 / settings_.thickness_scale_mm);
+  const auto inverse_gloss = static_cast<float>(1.0 / settings_.wet_gloss_mm);
+  const auto cell_mm = static_cast<float>(cell_mm_);
+  const auto ambient = static_cast<float>(settings_.ambient);
+  const auto k1 = static_cast<float>(settings_.saunderson_k1);
+  const auto k2 = static_cast<float>(settings_.saunderson_k2);
+  const shade::Vec3 to_light =
+      shade::light_direction(static_cast<float>(settings_.light_azimuth_deg * kDegreesToRadians),
+                             static_cast<float>(settings_.light_elevation_deg * kDegreesToRadians));
+  const std::array<float, 3>& white = palette_.white_xyz();
+  const bool has_dry = !cache.dry_f32.empty() || !cache.dry_f16.empty();
+
+  std::array<PigmentShare, paintcore::kMaxPigmentSlots> shares{};
+  float reflectance[kMaxNodes];
+  for (int y = y0; y < y1; ++y) {
+    for (int x = x0; x < x1; ++x) {
+      const int c = y * kTileSize + x;
+      const auto cell = static_cast<std::size_t>(c);
+      // The dry stack over the ground, baked for this light.
+      const std::size_t base = cell * static_cast<std::size_t>(nodes);
+      for (int i = 0; i < nodes; ++i) {
+        const auto k = base + static_cast<std::size_t>(i);
+        reflectance[i] = !has_dry                ? palette_.ground()[i]
+                         : cache.dry_f32.empty() ? static_cast<float>(cache.dry_f16[k])
+                                                 : cache.dry_f32[k];
+      }
+      // The wet layer on top.
+      float wet_volume = 0.0f;
+      if (tile != nullptr) {
+        wet_volume = tile->wet_volume_mm[cell];
+        if (wet_volume > 0.0f) {
+          const int count = gather_shares(
+              tile->slot_count(), wet_volume,
+              [&](int slot) {
+                return std::pair{slot, tile->pigment(slot)[cell]};
+              },
+              shares);
+          composite_paint_layer(palette_, std::span(shares.data(), static_cast<std::size_t>(count)),
+                                wet_volume * inverse_scale, reflectance);
+        }
+      }
+      if (settings_.saunderson) {
+        for (int i = 0; i < nodes; ++i) reflectance[i] = km::saunderson(reflectance[i], k1, k2);
+      }
+      float xyz[3];
+      node_reflectance_to_xyz(palette_, reflectance, xyz);
+
+      // Shading from the total height around the cell.
+      const int px = x - x0 + 1;
+      const int py = y - y0 + 1;
+      const auto at = [&](int ix, int iy) {
+        return height[static_cast<std::size_t>(iy * patch_w + ix)];
+      };
+      const shade::Vec3 normal = shade::height_normal(at(px - 1, py), at(px + 1, py),
+                                                      at(px, py - 1), at(px, py + 1), cell_mm);
+      const shade::Material material =
+          shade::blend(settings_.dry_material, settings_.wet_material, wet_volume * inverse_gloss);
+      const shade::Shading shading = shade::blinn_phong(normal, to_light, ambient, material);
+      float* out = &cache.rgb[3 * cell];
+      for (int ch = 0; ch < 3; ++ch) {
+        out[ch] =
+            xyz[ch] * shading.diffuse + white[static_cast<std::size_t>(ch)] * shading.specular;
+      }
+    }
+    // XYZ to the display, one row of the region at a time (one call for a whole tile).
+    if (x0 == 0 && x1 == kTileSize && y == y1 - 1) {
+      display_->apply(&cache.rgb[3 * static_cast<std::size_t>(y0 * kTileSize)],
+                      static_cast<std::size_t>((y1 - y0) * kTileSize));
+    } else if (!(x0 == 0 && x1 == kTileSize)) {
+      display_->apply(&cache.rgb[3 * static_cast<std::size_t>(y * kTileSize + x0)],
+                      static_cast<std::size_t>(x1 - x0));
+    }
+  }
+}
+
+Image TileRenderer::image() const {
+  Image image;
+  image.width = width_;
+  image.height = height_;
+  image.rgb.assign(3 * static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_), 0.0f);
+  for (int ty = 0; ty < tiles_y_; ++ty) {
+    for (int tx = 0; tx < tiles_x_; ++tx) {
+      const TileCache& cache = tiles_[static_cast<std::size_t>(ty * tiles_x_ + tx)];
+      if (cache.rgb.empty()) continue;
+      for (int y = 0; y < kTileSize && ty * kTileSize + y < height_; ++y) {
+        const int columns = std::min(kTileSize, width_ - tx * kTileSize);
+        std::copy_n(&cache.rgb[3 * static_cast<std::size_t>(y * kTileSize)], 3 * columns,
+                    image.pixel(tx * kTileSize, ty * kTileSize + y));
+      }
+    }
+  }
+  return image;
+}
+
+}  // namespace impasto::render
