@@ -1,0 +1,45 @@
+#pragma once
+// Conservative cell-centred advection (IMPaSTo section 4.1.1, Fig. 4) on a window of cells.
+// Each cell's column of paint is translated by its velocity (vx, vy) in cells/step, |v| <= 1,
+// so it overlaps its own cell and up to three neighbours; the overlap areas are the shares
+// it sends. A cell never gives away so much that less than the minimum film remains
+// (adhesion). Each cell GATHERS what its neighbours send it, so rows are independent: the
+// result is the same for any number of threads.
+//
+// Layout: padded row-major grids of (width + 2) x (height + 2) values; the one-cell border is
+// outside the window, holds zeros and is never written. Real cell (x, y) is at
+// (y + 1) * (width + 2) + x + 1.
+#include <cstddef>
+#include <vector>
+
+namespace impasto::paintcore {
+
+class Advection {
+ public:
+  // Computes the shares each cell sends from its velocity and volume. Velocities on the
+  // border must be zero.
+  void prepare(int width, int height, const float* vx, const float* vy, const float* volume,
+               float min_film_mm);
+  // out = advected q, for the real cells (out's border is left alone). q is any quantity that
+  // moves with the paint (volume, a pigment amount). q and out must not overlap.
+  void apply(const float* q, float* out) const;
+  // Advects several quantities in one pass: out[i] = advected q[i].
+  void apply(const float* const* q, float* const* out, int count) const;
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  std::size_t padded_size() const {
+    return static_cast<std::size_t>(width_ + 2) * static_cast<std::size_t>(height_ + 2);
+  }
+
+ private:
+  void apply_rows(const float* const* q, float* const* out, int count, int y0, int y1) const;
+
+  int width_ = 0;
+  int height_ = 0;
+  // Shares sent by each cell (padded grids): to itself and to its 8 neighbours.
+  std::vector<float> stay_, east_, west_, south_, north_, south_east_, south_west_, north_east_,
+      north_west_;
+};
+
+}  // namespace impasto::paintcore

@@ -1,0 +1,63 @@
+#pragma once
+// The brush: a head (its footprint, a height field in brush space) rasterised at the canvas
+// cell size, and the brush's own paint grid (volume + pigment amounts per brush cell). Brush
+// cells have the canvas cell area, so volume moves between brush and canvas cells 1:1.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "impasto/paintcore/brush_head.hpp"
+
+namespace impasto::paintcore {
+
+inline constexpr int kMaxBrushCells = 1024;  // cells across the brush grid
+
+struct BrushSettings {
+  std::string head = "round";  // head file name in the brushes folder (without .brush)
+  double size_mm = 4.0;        // width of the head
+  double stiffness = 0.5;      // 0 (soft, sinks deep) .. 1 (stiff, shallow contact)
+};
+
+// Throws std::runtime_error naming the field when settings are unusable.
+void validate(const BrushSettings& settings);
+
+class Brush {
+ public:
+  Brush() = default;  // no brush: covers nothing
+  Brush(BrushHead head, BrushSettings settings, double cell_mm, int slot_count);
+
+  bool empty() const { return cells_ == 0; }
+  int cells_across() const { return cells_; }  // the grid is cells_across^2, row-major
+  std::size_t cell_count() const { return static_cast<std::size_t>(cells_) * cells_; }
+  const BrushHead& head() const { return head_; }
+  const BrushSettings& settings() const { return settings_; }
+
+  // Height of the head's underside above its tip (mm) and whether the head covers a cell.
+  const std::vector<float>& footprint_mm() const { return footprint_mm_; }
+  const std::vector<std::uint8_t>& covers() const { return covers_; }
+  std::size_t covered_cells() const { return covered_; }
+  // Penetration depth (mm) below the paint surface at pressure 1; softer heads sink deeper.
+  double max_depth_mm() const;
+
+  // The paint grid: height (mm) per cell and pigment amounts, slot-major.
+  std::vector<float>& volume_mm() { return volume_mm_; }
+  const std::vector<float>& volume_mm() const { return volume_mm_; }
+  std::vector<float>& pigment_mm() { return pigment_mm_; }
+  const std::vector<float>& pigment_mm() const { return pigment_mm_; }
+  int slot_count() const {
+    return cells_ ? static_cast<int>(pigment_mm_.size() / cell_count()) : 0;
+  }
+  void ensure_slots(int slot_count);
+
+ private:
+  BrushHead head_;
+  BrushSettings settings_;
+  int cells_ = 0;
+  std::size_t covered_ = 0;
+  std::vector<float> footprint_mm_;
+  std::vector<std::uint8_t> covers_;
+  std::vector<float> volume_mm_;
+  std::vector<float> pigment_mm_;
+};
+
+}  // namespace impasto::paintcore

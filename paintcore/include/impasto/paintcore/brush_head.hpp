@@ -1,0 +1,56 @@
+#pragma once
+// Brush head shapes, read from data files (one head per file, e.g. brushes/round.brush).
+// A head is a perturbation-function shape over the unit square of brush space (u, v in
+// [-1, 1], scaled by half the brush size): a base quadric plus cubed perturbation quadrics,
+//   F'(u, v) = F(u, v) + sum_i f_i * max(Q_i(u, v), 0)^3.
+// The head covers the cells where F' > 0; its underside rises above the tip by
+//   rise * (1 - min(F', 1))   (in half brush sizes),
+// so where F' >= 1 the head is flat and touches first. The format is in docs/brushes.md.
+#include <filesystem>
+#include <istream>
+#include <string>
+#include <vector>
+
+namespace impasto::paintcore {
+
+// q(u, v) = uu*u^2 + vv*v^2 + uv*u*v + u_lin*u + v_lin*v + constant
+struct Quadric2 {
+  double uu = 0, vv = 0, uv = 0, u_lin = 0, v_lin = 0, constant = 0;
+  double operator()(double u, double v) const {
+    return uu * u * u + vv * v * v + uv * u * v + u_lin * u + v_lin * v + constant;
+  }
+};
+
+struct Perturbation {
+  double factor = 0;  // f_i, the form factor
+  Quadric2 shape;     // Q_i
+};
+
+struct BrushHead {
+  std::string name;
+  std::string description;
+  double rise = 0.5;  // rise of the underside where F' reaches 0, in half brush sizes
+  Quadric2 base;
+  std::vector<Perturbation> perturbations;
+
+  double field(double u, double v) const;  // F'(u, v)
+  bool covers(double u, double v) const { return field(u, v) > 0.0; }
+  // Height of the underside above the tip at (u, v), in half brush sizes.
+  double height(double u, double v) const;
+};
+
+inline constexpr int kMaxPerturbations = 64;
+
+// Parses a head file's text; errors name `source` and the line ("round.brush:4: ...").
+BrushHead parse_brush_head(std::istream& in, const std::string& source);
+// Reads and parses one file; throws std::runtime_error naming the file when it can't.
+BrushHead load_brush_head(const std::filesystem::path& file);
+
+// The brushes folder: $IMPASTO_DATA_DIR/brushes when that variable is set, else the source
+// tree's data/brushes.
+std::filesystem::path default_brushes_dir();
+// Loads head `name` (letters, digits, '_' and '-' only) from `dir`/<name>.brush.
+BrushHead load_named_brush_head(const std::string& name,
+                                const std::filesystem::path& dir = default_brushes_dir());
+
+}  // namespace impasto::paintcore

@@ -1,0 +1,100 @@
+#pragma once
+// A painting: the canvas (wet layer + dry layers), the brush, the pigment slot table, the
+// load/wipe ledger and the undo history, driven by pen samples. The public face of paintcore.
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "impasto/paintcore/brush.hpp"
+#include "impasto/paintcore/canvas.hpp"
+#include "impasto/paintcore/pen_sample.hpp"
+#include "impasto/paintcore/simulation_params.hpp"
+
+namespace impasto::paintcore {
+
+struct PigmentMixPart {
+  std::string pigment;  // by name; a slot is found or allocated for it
+  double parts = 0;     // relative amount (any positive scale)
+};
+
+// Paint volumes in mm^3: the total, and per pigment slot.
+struct PaintTotals {
+  double volume = 0;
+  std::vector<double> pigment;  // indexed by slot
+};
+
+class Painting {
+ public:
+  explicit Painting(CanvasSpec spec, int threads = 0);  // threads 0: all cores
+  ~Painting();
+  Painting(Painting&&) noexcept;
+  Painting& operator=(Painting&&) noexcept;
+
+  int threads() const;
+
+  // Pigment slots: slot index -> pigment name (paintcore does not interpret names).
+  int slot_for(const std::string& pigment);  // finds or allocates; throws beyond 16 slots
+  const std::vector<std::string>& pigment_slots() const;
+  int slot_count() const { return static_cast<int>(pigment_slots().size()); }
+
+  void set_params(const SimulationParams& params);  // validated
+  const SimulationParams& params() const;
+
+  // Brush. set_brush loads head `settings.head` from the brushes folder (default_brushes_dir())
+  // and keeps the brush's paint only if the grid keeps its size; otherwise the old brush's
+  // paint is wiped (and counted as wiped in the ledger).
+  void set_brush(const BrushSettings& settings);
+  void set_brush(const BrushSettings& settings, const std::filesystem::path& brushes_dir);
+  void set_brush(const BrushSettings& settings, const BrushHead& head);
+  const Brush& brush() const;
+  // Adds volume_mm3 of paint, mixed by parts, spread evenly over the head's cells.
+  void load_brush(const std::vector<PigmentMixPart>& mix, double volume_mm3);
+  // Removes all paint from the brush; returns what was removed.
+  PaintTotals wipe_brush();
+
+  // Strokes: samples in canvas mm. Each segment between samples is cut into steps of at most
+  // one cell (CFL), with the pose interpolated. Throws on NaN/Inf samples (nothing changes).
+  void begin_stroke();
+  void stroke_to(const PenSample& sample);
+  void end_stroke();
+  bool in_stroke() const;
+
+  // Dries the bottom `fraction` (0..1) of the wet layer into a new dry layer.
+  void dry(double fraction);
+
+  // Undo/redo of whole operations (stroke, dry, load, wipe, brush change).
+  bool undo();
+  bool redo();
+  void set_undo_budget_bytes(std::size_t bytes);  // oldest steps go first; never the last
+  std::size_t undo_depth() const;
+  std::size_t redo_depth() const;
+  std::size_t undo_bytes() const;
+
+  // Inspection. Totals are in mm^3, summed in double in a fixed order.
+  PaintTotals canvas_totals() const;  // wet + all dry layers
+  PaintTotals wet_totals() const;
+  PaintTotals dry_totals() const;
+  PaintTotals brush_totals() const;
+  PaintTotals loaded_totals() const;  // put on the brush by load_brush
+  PaintTotals wiped_totals() const;   // taken off by wipe_brush (and brush changes)
+  std::uint64_t state_hash() const;   // canvas, dry layers, brush, ledger, slots, params
+  std::size_t nonfinite_count() const;
+  std::uint64_t steps() const;          // simulation steps that touched paint
+  std::uint64_t cells_updated() const;  // window cells processed by those steps
+  std::size_t memory_bytes() const;     // canvas, dry layers, brush and undo history
+  const Canvas& canvas() const;
+
+  // The native .impasto file (docs/painting-format.md). save() writes atomically.
+  void save(const std::filesystem::path& file) const;
+  static Painting load(const std::filesystem::path& file, int threads = 0);
+
+ private:
+  struct Impl;
+  explicit Painting(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+  friend struct PaintingFile;
+};
+
+}  // namespace impasto::paintcore

@@ -1,0 +1,54 @@
+#include "impasto/paintcore/brush.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace impasto::paintcore {
+
+void validate(const BrushSettings& settings) {
+  if (!std::isfinite(settings.size_mm) || settings.size_mm <= 0.0 || settings.size_mm > 1000.0)
+    throw std::runtime_error("brush settings: field 'size_mm' must be in (0, 1000] mm, got " +
+                             std::to_string(settings.size_mm));
+  if (!std::isfinite(settings.stiffness) || settings.stiffness < 0.0 || settings.stiffness > 1.0)
+    throw std::runtime_error("brush settings: field 'stiffness' must be in [0, 1], got " +
+                             std::to_string(settings.stiffness));
+}
+
+Brush::Brush(BrushHead head, BrushSettings settings, double cell_mm, int slot_count)
+    : head_(std::move(head)), settings_(std::move(settings)) {
+  validate(settings_);
+  const double across = std::round(settings_.size_mm / cell_mm);
+  if (across > kMaxBrushCells)
+    throw std::runtime_error(
+        "brush settings: field 'size_mm' " + std::to_string(settings_.size_mm) + " mm is " +
+        std::to_string(static_cast<long long>(across)) + " cells at this DPI; at most " +
+        std::to_string(kMaxBrushCells) + " are allowed");
+  cells_ = std::max(1, static_cast<int>(across));
+  const double half_size_mm = 0.5 * settings_.size_mm;
+  footprint_mm_.assign(cell_count(), 0.0f);
+  covers_.assign(cell_count(), 0);
+  for (int j = 0; j < cells_; ++j)
+    for (int i = 0; i < cells_; ++i) {
+      // Cell centre in brush space, u and v in [-1, 1].
+      const double u = (i + 0.5) / cells_ * 2.0 - 1.0;
+      const double v = (j + 0.5) / cells_ * 2.0 - 1.0;
+      const std::size_t k = static_cast<std::size_t>(j) * cells_ + i;
+      // A one-cell brush covers its only cell whatever the shape.
+      covers_[k] = cells_ == 1 || head_.covers(u, v);
+      footprint_mm_[k] = static_cast<float>(head_.height(u, v) * half_size_mm);
+      covered_ += covers_[k];
+    }
+  volume_mm_.assign(cell_count(), 0.0f);
+  ensure_slots(slot_count);
+}
+
+double Brush::max_depth_mm() const {
+  return head_.rise * 0.5 * settings_.size_mm * (1.25 - 0.75 * settings_.stiffness);
+}
+
+void Brush::ensure_slots(int slot_count) {
+  if (cells_ && this->slot_count() < slot_count)
+    pigment_mm_.resize(static_cast<std::size_t>(slot_count) * cell_count(), 0.0f);
+}
+
+}  // namespace impasto::paintcore

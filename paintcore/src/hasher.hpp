@@ -1,0 +1,50 @@
+#pragma once
+// A fast 64-bit hash of byte ranges, used for state hashes and file checksums. Not
+// cryptographic; stable across runs and platforms of the same endianness.
+#include <cstdint>
+#include <cstring>
+#include <string>
+
+namespace impasto::paintcore {
+
+class Hasher {
+ public:
+  void bytes(const void* data, std::size_t size) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    while (size >= 8) {
+      std::uint64_t word;
+      std::memcpy(&word, p, 8);
+      add(word);
+      p += 8;
+      size -= 8;
+    }
+    std::uint64_t tail = 0;
+    std::memcpy(&tail, p, size);
+    add(tail ^ (static_cast<std::uint64_t>(size) << 56));
+  }
+  template <typename T>
+  void value(const T& v) {
+    bytes(&v, sizeof(T));
+  }
+  void string(const std::string& s) {
+    value(s.size());
+    bytes(s.data(), s.size());
+  }
+  std::uint64_t digest() const {
+    std::uint64_t h = state_;
+    h ^= h >> 33;
+    h *= 0xff51afd7ed558ccdull;
+    h ^= h >> 33;
+    h *= 0xc4ceb9fe1a85ec53ull;
+    return h ^ (h >> 33);
+  }
+
+ private:
+  void add(std::uint64_t word) {
+    state_ = (state_ ^ (word * 0x9e3779b97f4a7c15ull)) * 0xbf58476d1ce4e5b9ull;
+    state_ ^= state_ >> 29;
+  }
+  std::uint64_t state_ = 0x6a09e667f3bcc909ull;
+};
+
+}  // namespace impasto::paintcore

@@ -1,0 +1,349 @@
+#include "impasto/paintcore/painting.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include <tbb/parallel_for.h>
+
+#include "painting_impl.hpp"
+
+namespace impasto::paintcore {
+
+Painting::Painting(CanvasSpec spec, int threads) : impl_(std::make_unique<Impl>(spec, threads)) {
+  if (threads < 0)
+    throw std::runtime_error("painting: field 'threads' must be >= 0, got " +
+                             std::to_string(threads));
+}
+Painting::Painting(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
+Painting::~Painting() = default;
+Painting::Painting(Painting&&) noexcept = default;
+Painting& Painting::operator=(Painting&&) noexcept = default;
+
+int Painting::threads() const {
+  return impl_->threads;
+}
+const Canvas& Painting::canvas() const {
+  return impl_->canvas;
+}
+const std::vector<std::string>& Painting::pigment_slots() const {
+  return impl_->slots;
+}
+const SimulationParams& Painting::params() const {
+  return impl_->params;
+}
+const Brush& Painting::brush() const {
+  return impl_->brush;
+}
+bool Painting::in_stroke() const {
+  return impl_->in_stroke;
+}
+std::uint64_t Painting::steps() const {
+  return impl_->steps;
+}
+std::uint64_t Painting::cells_updated() const {
+  return impl_->cells_updated;
+}
+
+int Painting::slot_for(const std::string& pigment) {
+  auto& slots = impl_->slots;
+  if (pigment.empty()) throw std::runtime_error("pigment mix: field 'pigment' is empty");
+  const auto it = std::find(slots.begin(), slots.end(), pigment);
+  if (it != slots.end()) return static_cast<int>(it - slots.begin());
+  if (slots.size() >= kMaxPigmentSlots)
+    throw std::runtime_error("pigment '" + pigment + "': a painting holds at most " +
+                             std::to_string(kMaxPigmentSlots) + " pigments");
+  slots.push_back(pigment);
+  return static_cast<int>(slots.size()) - 1;
+}
+
+void Painting::set_params(const SimulationParams& params) {
+  validate(params);
+  impl_->params = params;
+}
+
+// --- brush -------------------------------------------------------------------------------
+
+void Painting::set_brush(const BrushSettings& settings) {
+  set_brush(settings, default_brushes_dir());
+}
+
+void Painting::set_brush(const BrushSettings& settings, const std::filesystem::path& dir) {
+  validate(settings);
+  set_brush(settings, load_named_brush_head(settings.head, dir));
+}
+
+void Painting::set_brush(const BrushSettings& settings, const BrushHead& head) {
+  Impl& p = *impl_;
+  end_stroke();
+  Brush next(head, settings, p.canvas.cell_mm(), slot_count());
+  p.history.begin(p.brush, p.ledger, p.slots, p.canvas.dry_layers().size(), p.canvas.tile_count());
+  if (!p.brush.empty() && next.cell_count() == p.brush.cell_count()) {
+    next.volume_mm() = p.brush.volume_mm();  // same grid: the paint stays on the brush
+    next.pigment_mm() = p.brush.pigment_mm();
+    next.ensure_slots(slot_count());
+  } else if (!p.brush.empty()) {
+    wipe_brush();  // a new grid cannot hold the old paint (part of this undo step)
+  }
+  p.brush = std::move(next);
+  p.history.commit();
+}
+
+void Painting::load_brush(const std::vector<PigmentMixPart>& mix, double volume_mm3) {
+  Impl& p = *impl_;
+  if (p.brush.empty()) throw std::runtime_error("load_brush: no brush is set (call set_brush)");
+  if (!std::isfinite(volume_mm3) || volume_mm3 < 0.0 || volume_mm3 > 1e9)
+    throw std::runtime_error("load_brush: field 'volume_mm3' must be in [0, 1e9], got " +
+                             std::to_string(volume_mm3));
+  if (mix.empty()) throw std::runtime_error("load_brush: field 'mix' is empty");
+  double total_parts = 0.0;
+  for (const PigmentMixPart& part : mix) {
+    if (!std::isfinite(part.parts) || part.parts < 0.0)
+      throw std::runtime_error("load_brush: field 'parts' of pigment '" + part.pigment +
+                               "' must be finite and >= 0");
+    total_parts += part.parts;
+  }
+  if (!(total_parts > 0.0) || !std::isfinite(total_parts))
+    throw std::runtime_error("load_brush: the mix's 'parts' must add up to a positive number");
+  std::vector<std::string> new_names;  // slots must suffice before anything changes
+  for (const PigmentMixPart& part : mix) {
+    if (part.pigment.empty()) throw std::runtime_error("load_brush: field 'pigment' is empty");
+    if (std::find(p.slots.begin(), p.slots.end(), part.pigment) == p.slots.end() &&
+        std::find(new_names.begin(), new_names.end(), part.pigment) == new_names.end())
+      new_names.push_back(part.pigment);
+  }
+  if (p.slots.size() + new_names.size() > kMaxPigmentSlots)
+    throw std::runtime_error("load_brush: the mix needs more than " +
+                             std::to_string(kMaxPigmentSlots) + " pigment slots in all");
+  end_stroke();
+  // Slots allocated here belong to this operation: undo forgets them again.
+  p.history.begin(p.brush, p.ledger, p.slots, p.canvas.dry_layers().size(), p.canvas.tile_count());
+  std::vector<double> fraction;
+  for (const PigmentMixPart& part : mix) {
+    const auto slot = static_cast<std::size_t>(slot_for(part.pigment));
+    if (fraction.size() <= slot) fraction.resize(slot + 1, 0.0);
+    fraction[slot] += part.parts / total_parts;
+  }
+  p.brush.ensure_slots(slot_count());
+  const double area = p.canvas.spec().cell_area_mm2();
+  const double height = volume_mm3 / (static_cast<double>(p.brush.covered_cells()) * area);
+  const std::size_t cells = p.brush.cell_count();
+  auto& volume = p.brush.volume_mm();
+  auto& pigment = p.brush.pigment_mm();
+  PaintTotals added{0.0, std::vector<double>(static_cast<std::size_t>(slot_count()), 0.0)};
+  // The ledger counts what each float cell really gained, so ledger and brush agree.
+  for (std::size_t c = 0; c < cells; ++c) {
+    if (!p.brush.covers()[c]) continue;
+    const float before = volume[c];
+    volume[c] += static_cast<float>(height);
+    added.volume += (static_cast<double>(volume[c]) - before) * area;
+    for (std::size_t s = 0; s < fraction.size(); ++s) {
+      if (fraction[s] == 0.0) continue;
+      float& amount = pigment[s * cells + c];
+      const float old = amount;
+      amount += static_cast<float>(height * fraction[s]);
+      added.pigment[s] += (static_cast<double>(amount) - old) * area;
+    }
+  }
+  accumulate(p.ledger.loaded, added);
+  p.history.commit();
+}
+
+PaintTotals Painting::wipe_brush() {
+  Impl& p = *impl_;
+  end_stroke();
+  const PaintTotals removed = brush_totals();
+  const bool nested = p.history.recording();  // inside set_brush
+  if (!nested)
+    p.history.begin(p.brush, p.ledger, p.slots, p.canvas.dry_layers().size(),
+                    p.canvas.tile_count());
+  std::fill(p.brush.volume_mm().begin(), p.brush.volume_mm().end(), 0.0f);
+  std::fill(p.brush.pigment_mm().begin(), p.brush.pigment_mm().end(), 0.0f);
+  accumulate(p.ledger.wiped, removed);
+  if (!nested) p.history.commit();
+  return removed;
+}
+
+// --- strokes -----------------------------------------------------------------------------
+
+void Painting::begin_stroke() {
+  Impl& p = *impl_;
+  end_stroke();
+  p.history.begin(p.brush, p.ledger, p.slots, p.canvas.dry_layers().size(), p.canvas.tile_count());
+  p.in_stroke = true;
+  p.stroke_touched = false;
+  p.last_pose.reset();
+}
+
+void Painting::end_stroke() {
+  Impl& p = *impl_;
+  if (!p.in_stroke) return;
+  p.in_stroke = false;
+  p.last_pose.reset();
+  if (p.stroke_touched)
+    p.history.commit();
+  else
+    p.history.discard();  // nothing changed: nothing to undo
+}
+
+namespace {
+
+// Clips segment a + t (b - a), t in [0, 1], to the box; returns false when it misses.
+bool clip_segment(double ax, double ay, double bx, double by, double lo_x, double lo_y, double hi_x,
+                  double hi_y, double& t0, double& t1) {
+  t0 = 0.0;
+  t1 = 1.0;
+  const double d[2] = {bx - ax, by - ay};
+  const double a[2] = {ax, ay};
+  const double lo[2] = {lo_x, lo_y};
+  const double hi[2] = {hi_x, hi_y};
+  for (int k = 0; k < 2; ++k) {
+    if (d[k] == 0.0) {
+      if (a[k] < lo[k] || a[k] > hi[k]) return false;
+      continue;
+    }
+    double ta = (lo[k] - a[k]) / d[k];
+    double tb = (hi[k] - a[k]) / d[k];
+    if (ta > tb) std::swap(ta, tb);
+    t0 = std::max(t0, ta);
+    t1 = std::min(t1, tb);
+  }
+  return t0 <= t1;
+}
+
+BrushPose lerp(const BrushPose& a, const BrushPose& b, double t) {
+  const auto mix = [t](double u, double v) { return u + (v - u) * t; };
+  BrushPose pose;
+  pose.x_cells = mix(a.x_cells, b.x_cells);
+  pose.y_cells = mix(a.y_cells, b.y_cells);
+  pose.depth_mm = mix(a.depth_mm, b.depth_mm);
+  // The twist turns the short way round.
+  pose.twist_rad =
+      a.twist_rad + std::remainder(b.twist_rad - a.twist_rad, 2.0 * std::numbers::pi) * t;
+  pose.tilt_x_rad = mix(a.tilt_x_rad, b.tilt_x_rad);
+  pose.tilt_y_rad = mix(a.tilt_y_rad, b.tilt_y_rad);
+  return pose;
+}
+
+}  // namespace
+
+void Painting::stroke_to(const PenSample& sample) {
+  Impl& p = *impl_;
+  validate(sample);  // before anything changes
+  if (!p.in_stroke) throw std::runtime_error("stroke_to: no stroke begun (call begin_stroke)");
+  if (p.brush.empty()) throw std::runtime_error("stroke_to: no brush is set (call set_brush)");
+  const BrushPose target = pose_from_sample(sample, p.canvas.cell_mm(), p.brush.max_depth_mm());
+  const BrushPose from = p.last_pose.value_or(target);
+  p.last_pose = target;
+  // Only the part of the segment where the brush can reach the canvas is simulated: beyond
+  // a margin of two brush widths nothing can touch.
+  const double margin = 2.0 * p.brush.cells_across() + 4.0;
+  double t0 = 0.0, t1 = 1.0;
+  if (!clip_segment(from.x_cells, from.y_cells, target.x_cells, target.y_cells, -margin, -margin,
+                    p.canvas.width_cells() + margin, p.canvas.height_cells() + margin, t0, t1))
+    return;
+  const double dx = (target.x_cells - from.x_cells) * (t1 - t0);
+  const double dy = (target.y_cells - from.y_cells) * (t1 - t0);
+  // CFL: the brush moves at most one cell per step.
+  const auto count = static_cast<std::int64_t>(std::max(1.0, std::ceil(std::hypot(dx, dy))));
+  const double move_x = dx / static_cast<double>(count);
+  const double move_y = dy / static_cast<double>(count);
+  const bool moving = dx != 0.0 || dy != 0.0;
+  const auto before_change = [&p](int index) {
+    p.history.before_tile_change(index, p.canvas.tile(index));
+  };
+  p.arena.execute([&] {
+    for (std::int64_t k = 1; k <= count; ++k) {
+      const double t =
+          moving ? t0 + (t1 - t0) * static_cast<double>(k) / static_cast<double>(count) : 1.0;
+      if (p.stepper.step(p.canvas, p.brush, slot_count(), p.params, lerp(from, target, t), move_x,
+                         move_y, before_change)) {
+        p.stroke_touched = true;
+        ++p.steps;
+        p.cells_updated += p.stepper.last_window_cells();
+      }
+    }
+  });
+}
+
+// --- drying ------------------------------------------------------------------------------
+
+void Painting::dry(double fraction) {
+  Impl& p = *impl_;
+  if (!std::isfinite(fraction) || fraction < 0.0 || fraction > 1.0)
+    throw std::runtime_error("dry: field 'fraction' must be in [0, 1], got " +
+                             std::to_string(fraction));
+  end_stroke();
+  p.history.begin(p.brush, p.ledger, p.slots, p.canvas.dry_layers().size(), p.canvas.tile_count());
+  const int slots = slot_count();
+  const auto f = static_cast<float>(fraction);
+  DryLayer layer;
+  std::vector<Tile*> wet_tiles;
+  for (int index = 0; index < p.canvas.tile_count(); ++index) {
+    const Tile* tile = p.canvas.tile(index);
+    if (!tile || std::none_of(tile->wet_volume_mm.begin(), tile->wet_volume_mm.end(),
+                              [](float v) { return v != 0.0f; }))
+      continue;
+    p.history.before_tile_change(index, tile);
+    p.canvas.mark_dirty(index);
+    wet_tiles.push_back(&p.canvas.ensure_tile(index, slots));
+    layer.tiles.emplace_back();
+    layer.tiles.back().tile_index = index;
+  }
+  // The bottom fraction of each cell, with the same fraction of every pigment, dries.
+  p.arena.execute([&] {
+    tbb::parallel_for(std::size_t{0}, wet_tiles.size(), [&](std::size_t k) {
+      Tile& tile = *wet_tiles[k];
+      DryTile& dry = layer.tiles[k];
+      dry.volume_mm.resize(kTileCells);
+      for (int c = 0; c < kTileCells; ++c) {
+        const float dried = tile.wet_volume_mm[c] * f;
+        dry.volume_mm[c] = dried;
+        tile.wet_volume_mm[c] -= dried;
+        tile.dry_height_mm[c] += dried;
+      }
+      for (int s = 0; s < slots; ++s) {
+        float* wet = tile.pigment(s);
+        if (std::none_of(wet, wet + kTileCells, [](float v) { return v != 0.0f; })) continue;
+        dry.slots.push_back(static_cast<std::uint8_t>(s));
+        const std::size_t offset = dry.pigment_mm.size();
+        dry.pigment_mm.resize(offset + kTileCells);
+        for (int c = 0; c < kTileCells; ++c) {
+          const float dried = wet[c] * f;
+          dry.pigment_mm[offset + static_cast<std::size_t>(c)] = dried;
+          wet[c] -= dried;
+        }
+      }
+    });
+  });
+  p.canvas.dry_layers().push_back(std::move(layer));
+  p.history.commit();
+}
+
+// --- undo --------------------------------------------------------------------------------
+
+bool Painting::undo() {
+  end_stroke();
+  return impl_->history.undo(impl_->canvas, impl_->brush, impl_->ledger, impl_->slots);
+}
+
+bool Painting::redo() {
+  end_stroke();
+  return impl_->history.redo(impl_->canvas, impl_->brush, impl_->ledger, impl_->slots);
+}
+
+void Painting::set_undo_budget_bytes(std::size_t bytes) {
+  impl_->history.set_budget_bytes(bytes);
+}
+std::size_t Painting::undo_depth() const {
+  return impl_->history.undo_depth();
+}
+std::size_t Painting::redo_depth() const {
+  return impl_->history.redo_depth();
+}
+std::size_t Painting::undo_bytes() const {
+  return impl_->history.bytes();
+}
+
+}  // namespace impasto::paintcore

@@ -1,0 +1,38 @@
+#pragma once
+// The state behind a Painting (shared by painting.cpp and painting_file.cpp).
+#include <tbb/task_arena.h>
+
+#include <optional>
+
+#include "impasto/paintcore/brush_pose.hpp"
+#include "impasto/paintcore/painting.hpp"
+#include "ledger.hpp"
+#include "stepper.hpp"
+#include "undo_history.hpp"
+
+namespace impasto::paintcore {
+
+struct Painting::Impl {
+  Impl(CanvasSpec spec, int thread_count)
+      : canvas(spec),
+        threads(thread_count > 0 ? thread_count : tbb::this_task_arena::max_concurrency()),
+        arena(threads) {}
+
+  Canvas canvas;
+  int threads;
+  tbb::task_arena arena;
+  std::vector<std::string> slots;
+  SimulationParams params;
+  Brush brush;
+  Ledger ledger;
+  UndoHistory history;
+  Stepper stepper;
+  std::uint64_t steps = 0;
+  std::uint64_t cells_updated = 0;
+  // The stroke in progress.
+  bool in_stroke = false;
+  bool stroke_touched = false;
+  std::optional<BrushPose> last_pose;
+};
+
+}  // namespace impasto::paintcore

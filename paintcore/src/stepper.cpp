@@ -1,0 +1,339 @@
+#include "stepper.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "impasto/paintcore/transfer.hpp"
+#include "parallel_rows.hpp"
+
+namespace impasto::paintcore {
+namespace {
+
+constexpr std::size_t kBaseCacheTiles = 256;
+
+// Sets the one-cell border of a padded grid to zero.
+void zero_border(float* grid, int width, int height) {
+  const int stride = width + 2;
+  std::fill(grid, grid + stride, 0.0f);
+  float* last = grid + static_cast<std::ptrdiff_t>(height + 1) * stride;
+  std::fill(last, last + stride, 0.0f);
+  for (int y = 1; y <= height; ++y) {
+    grid[static_cast<std::ptrdiff_t>(y) * stride] = 0.0f;
+    grid[static_cast<std::ptrdiff_t>(y) * stride + width + 1] = 0.0f;
+  }
+}
+
+}  // namespace
+
+void Stepper::resize(const Window& w, int slot_count, std::size_t brush_cells) {
+  const std::size_t n = w.padded();
+  const std::size_t cells = static_cast<std::size_t>(w.width) * w.height;
+  const std::size_t slots = static_cast<std::size_t>(slot_count);
+  for (auto* grid : {&ground_, &wet_, &pen_, &vx_, &vy_, &new_wet_})
+    if (grid->size() < n) grid->resize(n);
+  if (pigment_.size() < n * slots) pigment_.resize(n * slots);
+  if (new_pigment_.size() < n * slots) new_pigment_.resize(n * slots);
+  if (brush_cell_.size() < cells) brush_cell_.resize(cells);
+  if (xfer_.size() < cells) xfer_.resize(cells);
+  if (xfer_pigment_.size() < cells * slots) xfer_pigment_.resize(cells * slots);
+  brush_share_.assign(brush_cells, 0);
+  row_contacts_.assign(static_cast<std::size_t>(w.height), 0);
+  for (auto* grid : {&ground_, &wet_, &pen_, &vx_, &vy_, &new_wet_})
+    zero_border(grid->data(), w.width, w.height);
+  for (std::size_t s = 0; s < slots; ++s) {
+    zero_border(pigment_.data() + s * n, w.width, w.height);
+    zero_border(new_pigment_.data() + s * n, w.width, w.height);
+  }
+}
+
+const float* Stepper::base_heights(const Canvas& canvas, int tile_index) {
+  if (const Tile* tile = canvas.tile(tile_index)) return tile->base_height_mm.data();
+  auto it = base_cache_.find(tile_index);
+  if (it == base_cache_.end()) {
+    if (base_cache_.size() >= kBaseCacheTiles) base_cache_.clear();
+    it = base_cache_.emplace(tile_index, std::vector<float>(kTileCells)).first;
+    canvas.compute_base_heights(tile_index, it->second.data());
+  }
+  return it->second.data();
+}
+
+void Stepper::gather(const Canvas& canvas, int slot_count) {
+  const Window w = win_;
+  const int tx0 = w.x0 / kTileSize, tx1 = (w.x0 + w.width - 1) / kTileSize;
+  const int ty0 = w.y0 / kTileSize, ty1 = (w.y0 + w.height - 1) / kTileSize;
+  // Base heights of the window's tiles, found (or computed) before the parallel part.
+  std::vector<const float*> bases;
+  for (int ty = ty0; ty <= ty1; ++ty)
+    for (int tx = tx0; tx <= tx1; ++tx)
+      bases.push_back(base_heights(canvas, canvas.tile_index(tx, ty)));
+  const std::size_t n = w.padded();
+  const int tiles_across = tx1 - tx0 + 1;
+  parallel_rows(w.height, w.width, [&](int r0, int r1) {
+    for (int y = r0; y < r1; ++y) {
+      const int cy = w.y0 + y;
+      const int ty = cy / kTileSize;
+      for (int tx = tx0; tx <= tx1; ++tx) {
+        const int begin = std::max(w.x0, tx * kTileSize);
+        const int end = std::min(w.x0 + w.width, (tx + 1) * kTileSize);
+        const std::size_t local =
+            static_cast<std::size_t>((cy % kTileSize) * kTileSize + begin - tx * kTileSize);
+        const std::size_t dst = static_cast<std::size_t>(y + 1) * w.stride() +
+                                static_cast<std::size_t>(begin - w.x0 + 1);
+        const std::size_t len = static_cast<std::size_t>(end - begin);
+        const float* base =
+            bases[static_cast<std::size_t>((ty - ty0) * tiles_across + tx - tx0)] + local;
+        const Tile* tile = canvas.tile(tx, ty);
+        if (tile) {
+          const float* dry = tile->dry_height_mm.data() + local;
+          for (std::size_t i = 0; i < len; ++i) ground_[dst + i] = base[i] + dry[i];
+          std::copy_n(tile->wet_volume_mm.data() + local, len,
+                      wet_.begin() + static_cast<std::ptrdiff_t>(dst));
+        } else {
+          std::copy_n(base, len, ground_.begin() + static_cast<std::ptrdiff_t>(dst));
+          std::fill_n(wet_.begin() + static_cast<std::ptrdiff_t>(dst), len, 0.0f);
+        }
+        for (int s = 0; s < slot_count; ++s) {
+          float* out = pigment_.data() + static_cast<std::size_t>(s) * n + dst;
+          const float* in = tile ? tile->pigment(s) : nullptr;
+          if (in)
+            std::copy_n(in + local, len, out);
+          else
+            std::fill_n(out, len, 0.0f);
+        }
+      }
+    }
+  });
+}
+
+int Stepper::penetrate(const Canvas& canvas, const Brush& brush, const BrushPlacement& placement,
+                       double depth_mm) {
+  const Window w = win_;
+  // The tip sinks depth_mm below the paint surface under the brush centre.
+  const int cx =
+      std::clamp(static_cast<int>(std::floor(placement.centre_x)), 0, canvas.width_cells() - 1);
+  const int cy =
+      std::clamp(static_cast<int>(std::floor(placement.centre_y)), 0, canvas.height_cells() - 1);
+  const double surface = static_cast<double>(canvas.base_height_mm(cx, cy)) +
+                         canvas.dry_height_mm(cx, cy) + canvas.wet_volume_mm(cx, cy);
+  const float tip_mm = static_cast<float>(surface - depth_mm);
+  const int n = brush.cells_across();
+  const float* footprint = brush.footprint_mm().data();
+  const std::uint8_t* covers = brush.covers().data();
+  parallel_rows(w.height, w.width, [&](int r0, int r1) {
+    for (int y = r0; y < r1; ++y) {
+      int contacts = 0;
+      for (int x = 0; x < w.width; ++x) {
+        const std::size_t i = static_cast<std::size_t>(y + 1) * w.stride() + x + 1;
+        const std::size_t c = static_cast<std::size_t>(y) * w.width + x;
+        double bx, by;
+        placement.brush_coords(w.x0 + x + 0.5, w.y0 + y + 0.5, bx, by);
+        const int bi = static_cast<int>(std::floor(bx));
+        const int bj = static_cast<int>(std::floor(by));
+        pen_[i] = 0.0f;
+        brush_cell_[c] = -1;
+        if (bi < 0 || bj < 0 || bi >= n || bj >= n) continue;
+        const std::int32_t b = bj * n + bi;
+        if (!covers[b]) continue;
+        const float penetration = ground_[i] + wet_[i] - (tip_mm + footprint[b]);
+        if (penetration > 0.0f) {
+          pen_[i] = penetration;
+          brush_cell_[c] = b;
+          ++contacts;
+        }
+      }
+      row_contacts_[static_cast<std::size_t>(y)] = contacts;
+    }
+  });
+  int contacts = 0;
+  for (int count : row_contacts_) contacts += count;
+  return contacts;
+}
+
+void Stepper::velocity(const Canvas& canvas, const SimulationParams& params, double move_x,
+                       double move_y) {
+  const Window w = win_;
+  const float brush_vx = static_cast<float>(0.5 * move_x);
+  const float brush_vy = static_cast<float>(0.5 * move_y);
+  // v_p = -c grad p, with grad p as a slope: mm of penetration per mm across.
+  const float gradient_scale = static_cast<float>(params.pressure_coeff * 0.5 / canvas.cell_mm());
+  const int last_x = canvas.width_cells() - 1, last_y = canvas.height_cells() - 1;
+  const std::ptrdiff_t s = w.stride();
+  parallel_rows(w.height, w.width, [&](int r0, int r1) {
+    for (int y = r0; y < r1; ++y)
+      for (int x = 0; x < w.width; ++x) {
+        const std::ptrdiff_t i = (y + 1) * s + x + 1;
+        const std::size_t c = static_cast<std::size_t>(y) * w.width + x;
+        float vx = 0.0f, vy = 0.0f;
+        if (brush_cell_[c] >= 0) {  // only paint under the brush moves
+          vx = std::clamp(brush_vx - gradient_scale * (pen_[i + 1] - pen_[i - 1]), -1.0f, 1.0f);
+          vy = std::clamp(brush_vy - gradient_scale * (pen_[i + s] - pen_[i - s]), -1.0f, 1.0f);
+          // Cells beyond the canvas do not exist: paint at the edge cannot leave.
+          const int cx = w.x0 + x, cy = w.y0 + y;
+          if (cx == 0) vx = std::max(vx, 0.0f);
+          if (cx == last_x) vx = std::min(vx, 0.0f);
+          if (cy == 0) vy = std::max(vy, 0.0f);
+          if (cy == last_y) vy = std::min(vy, 0.0f);
+        }
+        vx_[static_cast<std::size_t>(i)] = vx;
+        vy_[static_cast<std::size_t>(i)] = vy;
+      }
+  });
+}
+
+void Stepper::transfer(Brush& brush, int slot_count, const SimulationParams& params, double speed) {
+  const Window w = win_;
+  const std::size_t n = w.padded();
+  const std::size_t cells = static_cast<std::size_t>(w.width) * w.height;
+  const std::size_t brush_cells = brush.cell_count();
+  // A brush cell may touch several canvas cells (rotation, tilt): each gets an equal share
+  // of its paint, so together they never take more than the brush cell holds.
+  for (std::size_t c = 0; c < cells; ++c)
+    if (brush_cell_[c] >= 0) ++brush_share_[static_cast<std::size_t>(brush_cell_[c])];
+  const TransferConstants<float> constants(params);
+  const float brush_speed = static_cast<float>(speed);
+  const float* brush_volume = brush.volume_mm().data();
+  const float* brush_pigment = brush.pigment_mm().data();
+  parallel_rows(w.height, w.width, [&](int r0, int r1) {
+    for (int y = r0; y < r1; ++y)
+      for (int x = 0; x < w.width; ++x) {
+        const std::size_t c = static_cast<std::size_t>(y) * w.width + x;
+        const std::int32_t b = brush_cell_[c];
+        xfer_[c] = 0.0f;
+        if (b < 0) continue;
+        const std::size_t i = static_cast<std::size_t>(y + 1) * w.stride() + x + 1;
+        const std::size_t bc = static_cast<std::size_t>(b);
+        // a_c: the canvas paint the brush penetrates (fraction of the wet layer's depth).
+        const float penetrated = wet_[i] > 0.0f ? std::min(pen_[i] / wet_[i], 1.0f) : 0.0f;
+        const float a_c = new_wet_[i] * penetrated;
+        const float a_b = brush_volume[bc] / static_cast<float>(brush_share_[bc]);
+        const float amount = brush_transfer_amount(a_c, a_b, brush_speed, constants);
+        if (amount == 0.0f) continue;
+        // Pigments go with the paint in the source's proportions (volume-weighted mixing).
+        const bool deposit = amount > 0.0f;
+        const float ratio_base = deposit ? amount / brush_volume[bc] : amount / new_wet_[i];
+        for (int s = 0; s < slot_count; ++s) {
+          const std::size_t k = static_cast<std::size_t>(s);
+          float& canvas_amount = new_pigment_[k * n + i];
+          const float source = deposit ? brush_pigment[k * brush_cells + bc] : canvas_amount;
+          const float moved = source * ratio_base;  // signed like amount
+          canvas_amount += moved;
+          xfer_pigment_[k * cells + c] = moved;
+        }
+        new_wet_[i] += amount;
+        xfer_[c] = amount;
+      }
+  });
+  // The brush side, in a fixed order: exactly what each canvas cell gained, the brush lost.
+  float* volume = brush.volume_mm().data();
+  float* pigment = brush.pigment_mm().data();
+  for (std::size_t c = 0; c < cells; ++c) {
+    if (xfer_[c] == 0.0f) continue;
+    const std::size_t bc = static_cast<std::size_t>(brush_cell_[c]);
+    volume[bc] -= xfer_[c];
+    for (std::size_t k = 0; k < static_cast<std::size_t>(slot_count); ++k)
+      pigment[k * brush_cells + bc] -= xfer_pigment_[k * cells + c];
+  }
+}
+
+void Stepper::scatter(Canvas& canvas, int slot_count, const BeforeTileChange& before_change) {
+  const Window w = win_;
+  const std::size_t n = w.padded();
+  const int tx0 = w.x0 / kTileSize, tx1 = (w.x0 + w.width - 1) / kTileSize;
+  const int ty0 = w.y0 / kTileSize, ty1 = (w.y0 + w.height - 1) / kTileSize;
+  // Tiles are made (and every tile recorded for undo) before the parallel writes.
+  for (int ty = ty0; ty <= ty1; ++ty)
+    for (int tx = tx0; tx <= tx1; ++tx) {
+      const int index = canvas.tile_index(tx, ty);
+      const Tile* tile = canvas.tile(index);
+      if (!tile) {
+        // A tile that was never painted is made only if paint arrived in it.
+        const int bx0 = std::max(w.x0, tx * kTileSize),
+                  bx1 = std::min(w.x0 + w.width, (tx + 1) * kTileSize);
+        const int by0 = std::max(w.y0, ty * kTileSize),
+                  by1 = std::min(w.y0 + w.height, (ty + 1) * kTileSize);
+        bool has_paint = false;
+        for (int y = by0; y < by1 && !has_paint; ++y)
+          for (int x = bx0; x < bx1 && !has_paint; ++x) {
+            const std::size_t i =
+                static_cast<std::size_t>(y - w.y0 + 1) * w.stride() + (x - w.x0 + 1);
+            has_paint = new_wet_[i] != 0.0f;
+            for (int s = 0; s < slot_count && !has_paint; ++s)
+              has_paint = new_pigment_[static_cast<std::size_t>(s) * n + i] != 0.0f;
+          }
+        if (!has_paint) continue;
+      }
+      before_change(index);
+      canvas.ensure_tile(index, slot_count);
+      canvas.mark_dirty(index);
+    }
+  parallel_rows(w.height, w.width, [&](int r0, int r1) {
+    for (int y = r0; y < r1; ++y) {
+      const int cy = w.y0 + y;
+      const int ty = cy / kTileSize;
+      for (int tx = tx0; tx <= tx1; ++tx) {
+        Tile* tile = canvas.tile_slot(canvas.tile_index(tx, ty)).get();
+        if (!tile) continue;
+        const int begin = std::max(w.x0, tx * kTileSize);
+        const int end = std::min(w.x0 + w.width, (tx + 1) * kTileSize);
+        const std::size_t local =
+            static_cast<std::size_t>((cy % kTileSize) * kTileSize + begin - tx * kTileSize);
+        const std::size_t src = static_cast<std::size_t>(y + 1) * w.stride() +
+                                static_cast<std::size_t>(begin - w.x0 + 1);
+        const std::size_t len = static_cast<std::size_t>(end - begin);
+        std::copy_n(new_wet_.data() + src, len, tile->wet_volume_mm.data() + local);
+        for (int s = 0; s < slot_count; ++s)
+          std::copy_n(new_pigment_.data() + static_cast<std::size_t>(s) * n + src, len,
+                      tile->pigment(s) + local);
+      }
+    }
+  });
+}
+
+bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const SimulationParams& params,
+                   const BrushPose& pose, double move_x, double move_y,
+                   const BeforeTileChange& before_change) {
+  last_window_cells_ = 0;
+  if (brush.empty()) return false;
+  brush.ensure_slots(slot_count);
+  const int n = brush.cells_across();
+  const BrushPlacement placement = place_brush(pose, n);
+  // The window: the canvas cells the brush grid can cover, plus one cell that advection
+  // can push paint into, clipped to the canvas.
+  double min_x = placement.centre_x, max_x = min_x, min_y = placement.centre_y, max_y = min_y;
+  for (const double bx : {-placement.half_cells, placement.half_cells})
+    for (const double by : {-placement.half_cells, placement.half_cells}) {
+      const auto& m = placement.to_canvas;
+      const double x = placement.centre_x + m[0] * bx + m[1] * by;
+      const double y = placement.centre_y + m[2] * bx + m[3] * by;
+      min_x = std::min(min_x, x), max_x = std::max(max_x, x);
+      min_y = std::min(min_y, y), max_y = std::max(max_y, y);
+    }
+  const double width = canvas.width_cells(), height = canvas.height_cells();
+  const int x0 = static_cast<int>(std::clamp(std::floor(min_x) - 1.0, 0.0, width));
+  const int x1 = static_cast<int>(std::clamp(std::ceil(max_x) + 1.0, 0.0, width));
+  const int y0 = static_cast<int>(std::clamp(std::floor(min_y) - 1.0, 0.0, height));
+  const int y1 = static_cast<int>(std::clamp(std::ceil(max_y) + 1.0, 0.0, height));
+  if (x1 <= x0 || y1 <= y0) return false;  // the brush is off the canvas
+  win_ = Window{x0, y0, x1 - x0, y1 - y0};
+  resize(win_, slot_count, brush.cell_count());
+
+  gather(canvas, slot_count);
+  if (penetrate(canvas, brush, placement, pose.depth_mm) == 0) return false;  // no contact
+  velocity(canvas, params, move_x, move_y);
+  advection_.prepare(win_.width, win_.height, vx_.data(), vy_.data(), wet_.data(),
+                     static_cast<float>(params.min_film_mm));
+  // Volume and every active pigment slot move with the same shares.
+  std::vector<const float*> from{wet_.data()};
+  std::vector<float*> to{new_wet_.data()};
+  for (int s = 0; s < slot_count; ++s) {
+    from.push_back(pigment_.data() + static_cast<std::size_t>(s) * win_.padded());
+    to.push_back(new_pigment_.data() + static_cast<std::size_t>(s) * win_.padded());
+  }
+  advection_.apply(from.data(), to.data(), static_cast<int>(from.size()));
+  transfer(brush, slot_count, params, std::hypot(move_x, move_y));
+  scatter(canvas, slot_count, before_change);
+  last_window_cells_ = static_cast<std::size_t>(win_.width) * win_.height;
+  return true;
+}
+
+}  // namespace impasto::paintcore

@@ -1,0 +1,117 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include "impasto/paintcore/brush.hpp"
+#include "impasto/paintcore/brush_head.hpp"
+
+namespace impasto::paintcore {
+namespace {
+
+const std::filesystem::path kBrushes = std::filesystem::path(IMPASTO_SOURCE_DIR) / "data/brushes";
+
+std::string parse_error(const std::string& text) {
+  std::istringstream in(text);
+  try {
+    parse_brush_head(in, "test.brush");
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(BrushHead, RoundIsAParaboloid) {
+  const BrushHead head = load_named_brush_head("round", kBrushes);
+  EXPECT_EQ(head.name, "round");
+  EXPECT_DOUBLE_EQ(head.field(0, 0), 1.0);
+  EXPECT_DOUBLE_EQ(head.height(0, 0), 0.0);
+  // height = rise * (u^2 + v^2) inside the unit disc.
+  EXPECT_NEAR(head.height(0.5, 0.0), head.rise * 0.25, 1e-12);
+  EXPECT_NEAR(head.height(0.3, 0.4), head.rise * 0.25, 1e-12);
+  EXPECT_TRUE(head.covers(0.7, 0.7));
+  EXPECT_FALSE(head.covers(0.75, 0.75));
+}
+
+TEST(BrushHead, PerturbationsAddCubedPositivePart) {
+  std::istringstream in("impasto-brush 1\nname t\nbase 0 0 0 0 0 1\nperturb 2  -1 0 0 0 0 0.25\n");
+  const BrushHead head = parse_brush_head(in, "t.brush");
+  // Q = 0.25 - u^2: at u = 0, F' = 1 + 2 * 0.25^3; beyond |u| = 0.5, Q < 0 adds nothing.
+  EXPECT_NEAR(head.field(0.0, 0.3), 1.0 + 2.0 * 0.015625, 1e-12);
+  EXPECT_DOUBLE_EQ(head.field(0.8, 0.0), 1.0);
+}
+
+TEST(BrushHead, ShippedHeadsLoadAndDiffer) {
+  const BrushHead flat = load_named_brush_head("flat", kBrushes);
+  const BrushHead filbert = load_named_brush_head("filbert", kBrushes);
+  // A flat head is wide along u and thin along v, with square ends.
+  EXPECT_TRUE(flat.covers(0.85, 0.0));
+  EXPECT_FALSE(flat.covers(0.0, 0.5));
+  EXPECT_FALSE(flat.covers(0.99, 0.0));
+  EXPECT_TRUE(flat.covers(0.85, 0.15));
+  // A filbert's oval tip: narrower toward its ends.
+  EXPECT_TRUE(filbert.covers(0.0, 0.35));
+  EXPECT_FALSE(filbert.covers(0.8, 0.35));
+}
+
+TEST(BrushHead, ErrorsNameFileAndLine) {
+  EXPECT_NE(parse_error("").find("test.brush: empty"), std::string::npos);
+  EXPECT_NE(parse_error("brush 1\n").find("test.brush:1:"), std::string::npos);
+  EXPECT_NE(parse_error("impasto-brush 2\n").find("version"), std::string::npos);
+  const std::string bad_number = parse_error("impasto-brush 1\nname x\nbase 1 2 x 0 0 1\n");
+  EXPECT_NE(bad_number.find("test.brush:3:"), std::string::npos) << bad_number;
+  EXPECT_NE(bad_number.find("'x'"), std::string::npos);
+  EXPECT_NE(parse_error("impasto-brush 1\nname x\nbase 1 2\n").find("expects 6 numbers"),
+            std::string::npos);
+  EXPECT_NE(parse_error("impasto-brush 1\n# c\n\nfoo 1\n").find("test.brush:4: unknown key 'foo'"),
+            std::string::npos);
+  EXPECT_NE(parse_error("impasto-brush 1\nname x\n").find("missing 'base'"), std::string::npos);
+  EXPECT_NE(parse_error("impasto-brush 1\nname x\nbase 0 0 0 0 0 -1\n").find("centre"),
+            std::string::npos);
+  EXPECT_NE(parse_error("impasto-brush 1\nname x\nbase 0 0 0 0 0 inf\n").find("finite"),
+            std::string::npos);
+}
+
+TEST(BrushHead, MissingFileAndBadNamesAreClearErrors) {
+  try {
+    load_named_brush_head("no_such_head", kBrushes);
+    FAIL() << "expected an error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("no_such_head.brush"), std::string::npos);
+  }
+  EXPECT_THROW(load_named_brush_head("../secret", kBrushes), std::runtime_error);
+}
+
+TEST(Brush, RasterisesTheHeadAtTheCellSize) {
+  BrushSettings settings;
+  settings.size_mm = 4.0;
+  const Brush brush(load_named_brush_head("round", kBrushes), settings, 0.1, 2);
+  EXPECT_EQ(brush.cells_across(), 40);
+  EXPECT_EQ(brush.slot_count(), 2);
+  const double disc = std::numbers::pi / 4.0 * 40 * 40;
+  EXPECT_NEAR(static_cast<double>(brush.covered_cells()), disc, 0.02 * disc);
+  // The underside rises towards the rim: rise * (size / 2) * r^2.
+  const float centre = brush.footprint_mm()[20 * 40 + 20];
+  EXPECT_NEAR(centre, 0.5 * 2.0 * (0.025 * 0.025 * 2), 1e-6);
+  EXPECT_GT(brush.footprint_mm()[20 * 40 + 38], brush.footprint_mm()[20 * 40 + 30]);
+  // Softer brushes sink deeper at the same pressure.
+  settings.stiffness = 0.0;
+  const Brush soft(load_named_brush_head("round", kBrushes), settings, 0.1, 0);
+  EXPECT_GT(soft.max_depth_mm(), brush.max_depth_mm());
+}
+
+TEST(Brush, RejectsAbsurdSettings) {
+  const BrushHead head = load_named_brush_head("round", kBrushes);
+  BrushSettings settings;
+  settings.size_mm = std::nan("");
+  EXPECT_THROW(Brush(head, settings, 0.1, 0), std::runtime_error);
+  settings.size_mm = 200.0;  // 2000 cells at 0.1 mm
+  EXPECT_THROW(Brush(head, settings, 0.1, 0), std::runtime_error);
+  settings.size_mm = 2.0;
+  settings.stiffness = 1.5;
+  EXPECT_THROW(Brush(head, settings, 0.1, 0), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace impasto::paintcore
