@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# Builds the fuzz targets with clang's libFuzzer (plus AddressSanitizer and
+# UndefinedBehaviorSanitizer) and runs each one for a while over the seed corpus.
+#
+#   tests/fuzz/run.sh [SECONDS_PER_TARGET]      (default 20)
+#
+# Needs clang++ and the libFuzzer runtime (Debian: clang, libclang-rt-14-dev). Builds in
+# build/fuzz (or $IMPASTO_FUZZ_BUILD); new corpus entries and crash files stay there.
+set -euo pipefail
+
+seconds="${1:-20}"
+repo="$(cd "$(dirname "$0")/../.." && pwd)"
+shared="$(cd "$repo/.." && pwd)/shared/data"
+build="${IMPASTO_FUZZ_BUILD:-$repo/build/fuzz}"
+cxx="${CXX_FUZZ:-clang++}"
+flags=(-std=c++20 -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined
+       -fno-sanitize-recover=undefined -I"$repo/input/include" -I"$repo/paintcore/include")
+
+mkdir -p "$build/obj"
+echo "building the input library with $cxx"
+objects=()
+for source in "$repo"/input/src/*.cpp; do
+  object="$build/obj/$(basename "${source%.cpp}").o"
+  "$cxx" "${flags[@]}" -fsanitize=fuzzer-no-link -I"$repo/input/src" -c "$source" -o "$object"
+  objects+=("$object")
+done
+
+declare -A seeds=(
+  [hid_descriptor]="$repo/tests/fuzz/corpus/hid $shared/hid"
+  [hid_recording]="$repo/tests/fuzz/corpus/hid_recording $shared/hid"
+  [stroke_reader]="$repo/tests/fuzz/corpus/strokes $shared/strokes"
+)
+
+status=0
+for target in hid_descriptor hid_recording stroke_reader; do
+  binary="$build/fuzz_$target"
+  "$cxx" "${flags[@]}" -fsanitize=fuzzer "$repo/tests/fuzz/fuzz_$target.cpp" "${objects[@]}" \
+    -o "$binary"
+  corpus="$build/corpus_$target"  # the fuzzer adds what it finds here, not in the repo
+  mkdir -p "$corpus"
+  existing=()
+  for dir in ${seeds[$target]}; do
+    [[ -d "$dir" ]] && existing+=("$dir")
+  done
+  echo "fuzzing $target for ${seconds}s"
+  if ! "$binary" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \
+      -artifact_prefix="$build/crash_${target}_" -print_final_stats=1 \
+      "$corpus" "${existing[@]}" 2>"$build/fuzz_$target.log"; then
+    echo "FAILED: $target (see $build/fuzz_$target.log and $build/crash_${target}_*)"
+    tail -40 "$build/fuzz_$target.log"
+    status=1
+  else
+    grep -E "stat::number_of_executed_units|stat::peak_rss_mb" "$build/fuzz_$target.log" || true
+  fi
+done
+exit $status
