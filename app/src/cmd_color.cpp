@@ -1,0 +1,83 @@
+// impasto color: colorimetry of spectral CSV files (XYZ and L*a*b* under a light).
+#include <impasto/data/colorimetry.hpp>
+#include <impasto/data/lights.hpp>
+#include <impasto/data/spectral_csv.hpp>
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <string>
+
+#include "command.hpp"
+
+namespace impasto::app {
+namespace {
+
+using namespace impasto::data;
+
+struct XyzArgs {
+  std::string file;
+  std::string illuminant = "D65";
+  bool json = false;
+};
+
+void run_xyz(const XyzArgs& args) {
+  const SpectralTable table = read_spectral_csv(args.file);
+  if (table.quantity != SpectralQuantity::reflectance &&
+      table.quantity != SpectralQuantity::transmittance &&
+      table.quantity != SpectralQuantity::unspecified) {
+    throw std::runtime_error(args.file + ": expected reflectance or transmittance, not " +
+                             std::string(to_string(table.quantity)));
+  }
+  const Spectrum light = light_from_spec(args.illuminant);
+  const Xyz white = white_point(light);
+  nlohmann::json out = {{"illuminant", light.name},
+                        {"observer", "CIE 1931 2 degree"},
+                        {"white", {white.X, white.Y, white.Z}},
+                        {"samples", nlohmann::json::array()}};
+  if (!args.json) {
+    std::printf("illuminant %s, CIE 1931 2° observer, white X Y Z = %.4f %.4f %.4f\n",
+                light.name.c_str(), white.X, white.Y, white.Z);
+    std::printf("%-24s %9s %9s %9s %9s %9s %9s\n", "sample", "X", "Y", "Z", "L*", "a*", "b*");
+  }
+  for (const Spectrum& column : table.columns) {
+    const Xyz xyz = reflectance_to_xyz(column, light);
+    const Lab lab = xyz_to_lab(xyz, white);
+    if (args.json) {
+      out["samples"].push_back(
+          {{"name", column.name}, {"XYZ", {xyz.X, xyz.Y, xyz.Z}}, {"Lab", {lab.L, lab.a, lab.b}}});
+    } else {
+      std::printf("%-24s %9.4f %9.4f %9.4f %9.4f %9.4f %9.4f\n", column.name.c_str(), xyz.X, xyz.Y,
+                  xyz.Z, lab.L, lab.a, lab.b);
+    }
+  }
+  if (args.json) std::cout << out.dump(2) << "\n";
+}
+
+const CommandRegistrar registrar("color", [](CLI::App& root) {
+  CLI::App* group = command_group(root, "color", "Colorimetry of spectral CSV files");
+
+  auto xyz = std::make_shared<XyzArgs>();
+  CLI::App* x =
+      group->add_subcommand("xyz", "X, Y, Z (white Y = 100) and L*a*b* of each reflectance column");
+  x->add_option("spectrum", xyz->file, "Spectral CSV (docs/spectral-csv.md)")->required();
+  x->add_option("--illuminant,-i", xyz->illuminant,
+                "CIE illuminant (D65, A, F11, ...), blackbody:KELVIN or a light CSV")
+      ->capture_default_str();
+  x->add_flag("--json", xyz->json, "Print JSON instead of a table");
+  x->callback([xyz] { run_xyz(*xyz); });
+
+  CLI::App* lights = group->add_subcommand("illuminants", "List the CIE illuminants shipped");
+  lights->callback([] {
+    for (const auto& name : illuminant_names()) {
+      const Xyz white = white_point(cie_illuminant(name));
+      const Chromaticity xy = chromaticity(white);
+      std::printf("%-4s x = %.4f  y = %.4f\n", name.c_str(), xy.x, xy.y);
+    }
+  });
+});
+
+}  // namespace
+}  // namespace impasto::app
