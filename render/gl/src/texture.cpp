@@ -18,6 +18,8 @@ GlFormat gl_format(TexelFormat format) {
   switch (format) {
     case TexelFormat::kR32F:
       return {GL_R32F, GL_RED, GL_FLOAT};
+    case TexelFormat::kRG32F:
+      return {GL_RG32F, GL_RG, GL_FLOAT};
     case TexelFormat::kRGBA32F:
       return {GL_RGBA32F, GL_RGBA, GL_FLOAT};
     case TexelFormat::kRGBA8:

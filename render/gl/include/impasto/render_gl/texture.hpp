@@ -6,7 +6,8 @@
 namespace impasto::render_gl {
 
 enum class TexelFormat {
-  kR32F,     // one float per texel (volume, height)
+  kR32F,     // one float per texel
+  kRG32F,    // two floats per texel (wet volume, total height)
   kRGBA32F,  // four floats per texel (four pigment slots, four reflectance nodes)
   kRGBA8,    // display colour
 };

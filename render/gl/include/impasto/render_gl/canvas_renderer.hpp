@@ -1,0 +1,70 @@
+#pragma once
+// The canvas on the GPU: its cell data as textures, updated tile by tile, and the K-M
+// shading pass that draws it through a CanvasView. Needs a current GL 3.3+ context.
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "impasto/paintcore/canvas.hpp"
+#include "impasto/render/render_settings.hpp"
+#include "impasto/render/spectral_palette.hpp"
+#include "impasto/render_gl/canvas_view.hpp"
+#include "impasto/render_gl/fullscreen_pass.hpp"
+#include "impasto/render_gl/gpu_display_transform.hpp"
+#include "impasto/render_gl/gpu_view_options.hpp"
+#include "impasto/render_gl/texture.hpp"
+
+namespace impasto::render_gl {
+
+class CanvasRenderer {
+ public:
+  // Allocates textures for a canvas of this size and compiles the shaders for the settings'
+  // display encoding. Pigment i of the palette is painting slot i (as for the CPU's
+  // render::TileRenderer). Throws std::runtime_error on invalid settings or GL failure.
+  CanvasRenderer(int width_cells, int height_cells, const render::RenderSettings& settings,
+                 render::SpectralPalette palette, GpuViewOptions options = {});
+  ~CanvasRenderer();
+  CanvasRenderer(const CanvasRenderer&) = delete;
+  CanvasRenderer& operator=(const CanvasRenderer&) = delete;
+
+  // New light, pigments, materials or display: call upload_all afterwards (the dry stack is
+  // baked per node, so its reflectance changes with the light).
+  void set_settings(const render::RenderSettings& settings, render::SpectralPalette palette);
+  // Exposure and background only: nothing to upload.
+  void set_view_options(const GpuViewOptions& options) { options_ = options; }
+  const render::RenderSettings& settings() const { return settings_; }
+  const render::SpectralPalette& palette() const { return palette_; }
+  const GpuViewOptions& view_options() const { return options_; }
+
+  // Copies every tile of the canvas to the GPU (after load, resize or new inputs).
+  void upload_all(const paintcore::Canvas& canvas);
+  // Copies only these tiles (Canvas::take_dirty_tiles()).
+  void upload_tiles(const paintcore::Canvas& canvas, std::span<const int> tile_indices);
+
+  // Draws the shaded canvas into the bound framebuffer's viewport of the given size.
+  void draw(const CanvasView& view, int viewport_w, int viewport_h);
+
+  int width_cells() const { return width_; }
+  int height_cells() const { return height_; }
+  double cell_mm() const { return cell_mm_; }
+
+ private:
+  struct TileScratch;
+  void build_program();
+  void allocate_textures();
+  void upload_tile(const paintcore::Canvas& canvas, int tile_index, TileScratch& scratch);
+
+  int width_, height_;
+  double cell_mm_ = 0.1;
+  render::RenderSettings settings_;
+  render::SpectralPalette palette_;
+  GpuViewOptions options_;
+  std::unique_ptr<GpuDisplayTransform> display_;
+  std::unique_ptr<FullscreenPass> pass_;
+  Texture pigments_;         // ceil(slots / 4) layers of 4 slot amounts (mm)
+  Texture surface_;          // wet volume, total height (mm)
+  Texture dry_reflectance_;  // ceil(nodes / 4) layers of 4 node reflectances
+  int pigment_layers_ = 0, node_layers_ = 0;
+};
+
+}  // namespace impasto::render_gl

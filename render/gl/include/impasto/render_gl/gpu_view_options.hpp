@@ -1,0 +1,14 @@
+#pragma once
+// What only the GPU view adds to render::RenderSettings: exposure and the colour around the
+// canvas. Everything that decides how paint looks stays in RenderSettings, shared with the
+// CPU reference.
+#include <array>
+
+namespace impasto::render_gl {
+
+struct GpuViewOptions {
+  float light_intensity = 1.0f;                              // exposure, 1 = as the CPU renders
+  std::array<float, 3> background_rgb{0.16f, 0.16f, 0.18f};  // display RGB outside the canvas
+};
+
+}  // namespace impasto::render_gl

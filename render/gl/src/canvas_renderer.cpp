@@ -1,0 +1,238 @@
+#include "impasto/render_gl/canvas_renderer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "embedded_shaders.hpp"
+#include "impasto/render/shading.hpp"
+#include "impasto/render_gl/dry_reflectance.hpp"
+
+namespace impasto::render_gl {
+
+using paintcore::kTileCells;
+using paintcore::kTileSize;
+
+namespace {
+
+constexpr double kRadiansPerDegree = 3.14159265358979323846 / 180.0;
+
+int layers_for(int count) {
+  return std::max(1, (count + 3) / 4);
+}
+
+void check_palette(const render::SpectralPalette& palette) {
+  if (palette.nodes() < 1 || palette.nodes() > render::kMaxNodes) {
+    throw std::runtime_error("GPU renderer: " + std::to_string(palette.nodes()) +
+                             " wavelength nodes; the shaders take 1.." +
+                             std::to_string(render::kMaxNodes) +
+                             " (full-spectrum rendering is CPU only)");
+  }
+  if (palette.pigment_count() > paintcore::kMaxPigmentSlots) {
+    throw std::runtime_error("GPU renderer: more than " +
+                             std::to_string(paintcore::kMaxPigmentSlots) + " pigments");
+  }
+}
+
+}  // namespace
+
+// Staging memory for one tile, interleaved the way the textures store it.
+struct CanvasRenderer::TileScratch {
+  std::vector<float> pigments;         // [layer][cell][4]
+  std::vector<float> surface;          // [cell][2]
+  std::vector<float> dry_node_major;   // [node][cell]
+  std::vector<float> dry_interleaved;  // [layer][cell][4]
+};
+
+CanvasRenderer::CanvasRenderer(int width_cells, int height_cells,
+                               const render::RenderSettings& settings,
+                               render::SpectralPalette palette, GpuViewOptions options)
+    : width_(width_cells),
+      height_(height_cells),
+      settings_(settings),
+      palette_(std::move(palette)),
+      options_(options) {
+  render::validate(settings_);
+  check_palette(palette_);
+  surface_ = Texture(width_, height_, 0, TexelFormat::kRG32F);
+  allocate_textures();
+  build_program();
+}
+
+CanvasRenderer::~CanvasRenderer() = default;
+
+void CanvasRenderer::allocate_textures() {
+  if (layers_for(palette_.pigment_count()) != pigment_layers_) {
+    pigment_layers_ = layers_for(palette_.pigment_count());
+    pigments_ = Texture(width_, height_, pigment_layers_, TexelFormat::kRGBA32F);
+  }
+  if (layers_for(palette_.nodes()) != node_layers_) {
+    node_layers_ = layers_for(palette_.nodes());
+    dry_reflectance_ = Texture(width_, height_, node_layers_, TexelFormat::kRGBA32F);
+  }
+}
+
+void CanvasRenderer::build_program() {
+  if (!display_ || display_->encoding() != settings_.display) {
+    display_ = std::make_unique<GpuDisplayTransform>(settings_.display);
+  }
+  std::string source = "#version 330 core\n#define MAX_NODES " + std::to_string(render::kMaxNodes) +
+                       "\n#define MAX_SLOTS " + std::to_string(paintcore::kMaxPigmentSlots) + "\n";
+  source += shaders::km_lib;
+  source += shaders::shading_lib;
+  source += display_->glsl();
+  source += shaders::canvas_km_frag;
+  pass_ = std::make_unique<FullscreenPass>("canvas_km_frag.glsl", std::move(source));
+}
+
+void CanvasRenderer::set_settings(const render::RenderSettings& settings,
+                                  render::SpectralPalette palette) {
+  render::validate(settings);
+  check_palette(palette);
+  const bool encoding_changed = settings.display != settings_.display;
+  settings_ = settings;
+  palette_ = std::move(palette);
+  allocate_textures();
+  if (encoding_changed) build_program();
+}
+
+void CanvasRenderer::upload_tile(const paintcore::Canvas& canvas, int tile_index,
+                                 TileScratch& scratch) {
+  const int tx = tile_index % canvas.tiles_x();
+  const int ty = tile_index / canvas.tiles_x();
+  const int x0 = tx * kTileSize, y0 = ty * kTileSize;
+  const int w = std::min(kTileSize, width_ - x0);
+  const int h = std::min(kTileSize, height_ - y0);
+  const paintcore::Tile* tile = canvas.tile(tile_index);
+
+  scratch.surface.assign(2 * kTileCells, 0.0f);
+  scratch.pigments.assign(static_cast<size_t>(pigment_layers_) * 4 * kTileCells, 0.0f);
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      const int cell = y * kTileSize + x;
+      if (tile != nullptr) {
+        const float wet = tile->wet_volume_mm[cell];
+        scratch.surface[2 * cell] = wet;
+        scratch.surface[2 * cell + 1] =
+            tile->base_height_mm[cell] + tile->dry_height_mm[cell] + wet;
+      } else {
+        scratch.surface[2 * cell + 1] = canvas.base_height_mm(x0 + x, y0 + y);
+      }
+    }
+  }
+  if (tile != nullptr) {
+    for (int slot = 0; slot < std::min(tile->slot_count(), palette_.pigment_count()); ++slot) {
+      const float* amounts = tile->pigment(slot);
+      float* layer = scratch.pigments.data() + static_cast<size_t>(slot / 4) * 4 * kTileCells;
+      for (int cell = 0; cell < kTileCells; ++cell) layer[4 * cell + slot % 4] = amounts[cell];
+    }
+  }
+  bake_dry_reflectance(canvas, tile_index, settings_, palette_, scratch.dry_node_major);
+  scratch.dry_interleaved.assign(static_cast<size_t>(node_layers_) * 4 * kTileCells, 0.0f);
+  for (int node = 0; node < palette_.nodes(); ++node) {
+    const float* values = scratch.dry_node_major.data() + static_cast<size_t>(node) * kTileCells;
+    float* layer = scratch.dry_interleaved.data() + static_cast<size_t>(node / 4) * 4 * kTileCells;
+    for (int cell = 0; cell < kTileCells; ++cell) layer[4 * cell + node % 4] = values[cell];
+  }
+
+  surface_.upload(x0, y0, w, h, 0, scratch.surface.data(), kTileSize);
+  for (int layer = 0; layer < pigment_layers_; ++layer) {
+    pigments_.upload(x0, y0, w, h, layer,
+                     scratch.pigments.data() + static_cast<size_t>(layer) * 4 * kTileCells,
+                     kTileSize);
+  }
+  for (int layer = 0; layer < node_layers_; ++layer) {
+    dry_reflectance_.upload(
+        x0, y0, w, h, layer,
+        scratch.dry_interleaved.data() + static_cast<size_t>(layer) * 4 * kTileCells, kTileSize);
+  }
+}
+
+void CanvasRenderer::upload_all(const paintcore::Canvas& canvas) {
+  if (canvas.width_cells() != width_ || canvas.height_cells() != height_) {
+    throw std::runtime_error("CanvasRenderer: canvas is " + std::to_string(canvas.width_cells()) +
+                             "x" + std::to_string(canvas.height_cells()) + " cells, renderer " +
+                             std::to_string(width_) + "x" + std::to_string(height_));
+  }
+  cell_mm_ = canvas.cell_mm();
+  TileScratch scratch;
+  for (int index = 0; index < canvas.tile_count(); ++index) upload_tile(canvas, index, scratch);
+}
+
+void CanvasRenderer::upload_tiles(const paintcore::Canvas& canvas,
+                                  std::span<const int> tile_indices) {
+  cell_mm_ = canvas.cell_mm();
+  TileScratch scratch;
+  for (int index : tile_indices) {
+    if (index < 0 || index >= canvas.tile_count()) {
+      throw std::out_of_range("CanvasRenderer: tile index " + std::to_string(index));
+    }
+    upload_tile(canvas, index, scratch);
+  }
+}
+
+void CanvasRenderer::draw(const CanvasView& view, int viewport_w, int viewport_h) {
+  const ShaderProgram& program = pass_->program();
+  program.use();
+  pigments_.bind(0);
+  surface_.bind(1);
+  dry_reflectance_.bind(2);
+  glUniform1i(program.uniform("pigments"), 0);
+  glUniform1i(program.uniform("surface"), 1);
+  glUniform1i(program.uniform("dry_reflectance"), 2);
+  display_->bind(program, 3);
+
+  glUniform2i(program.uniform("canvas_cells"), width_, height_);
+  const auto matrix = view.screen_to_cell(viewport_w, viewport_h);
+  glUniformMatrix3fv(program.uniform("screen_to_cell"), 1, GL_FALSE, matrix.data());
+  glUniform3fv(program.uniform("background"), 1, options_.background_rgb.data());
+
+  // Pigment K and S, slot-major with MAX_NODES per slot, as the shader indexes them.
+  const int nodes = palette_.nodes();
+  const int slots = palette_.pigment_count();
+  glUniform1i(program.uniform("node_count"), nodes);
+  glUniform1i(program.uniform("slot_count"), slots);
+  std::vector<float> absorption(static_cast<size_t>(paintcore::kMaxPigmentSlots) *
+                                render::kMaxNodes);
+  std::vector<float> scattering(absorption.size());
+  for (int s = 0; s < slots; ++s) {
+    std::copy_n(palette_.absorption(s), nodes, absorption.begin() + s * render::kMaxNodes);
+    std::copy_n(palette_.scattering(s), nodes, scattering.begin() + s * render::kMaxNodes);
+  }
+  glUniform1fv(program.uniform("slot_absorption"), static_cast<GLsizei>(absorption.size()),
+               absorption.data());
+  glUniform1fv(program.uniform("slot_scattering"), static_cast<GLsizei>(scattering.size()),
+               scattering.data());
+  std::vector<float> to_xyz(static_cast<size_t>(3 * nodes));
+  for (int n = 0; n < nodes; ++n) {
+    for (int c = 0; c < 3; ++c)
+      to_xyz[static_cast<size_t>(3 * n + c)] = palette_.to_display_xyz(c)[n];
+  }
+  glUniform3fv(program.uniform("node_to_xyz"), nodes, to_xyz.data());
+  glUniform3fv(program.uniform("white_xyz"), 1, palette_.white_xyz().data());
+  glUniform1f(program.uniform("optical_per_mm"),
+              static_cast<float>(1.0 / settings_.thickness_scale_mm));
+  glUniform2f(program.uniform("saunderson_k"),
+              settings_.saunderson ? static_cast<float>(settings_.saunderson_k1) : -1.0f,
+              static_cast<float>(settings_.saunderson_k2));
+
+  const render::shade::Vec3 to_light = render::shade::light_direction(
+      static_cast<float>(settings_.light_azimuth_deg * kRadiansPerDegree),
+      static_cast<float>(settings_.light_elevation_deg * kRadiansPerDegree));
+  glUniform3f(program.uniform("to_light"), to_light.x, to_light.y, to_light.z);
+  glUniform1f(program.uniform("light_intensity"), options_.light_intensity);
+  glUniform1f(program.uniform("ambient"), static_cast<float>(settings_.ambient));
+  glUniform2f(program.uniform("dry_material"), settings_.dry_material.specular,
+              settings_.dry_material.shininess);
+  glUniform2f(program.uniform("wet_material"), settings_.wet_material.specular,
+              settings_.wet_material.shininess);
+  glUniform1f(program.uniform("inverse_gloss_mm"),
+              static_cast<float>(1.0 / settings_.wet_gloss_mm));
+  glUniform1f(program.uniform("cell_mm"), static_cast<float>(cell_mm_));
+
+  pass_->draw();
+  check_gl_error("canvas K-M pass");
+}
+
+}  // namespace impasto::render_gl

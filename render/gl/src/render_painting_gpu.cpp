@@ -1,0 +1,52 @@
+#include "impasto/render_gl/render_painting_gpu.hpp"
+
+#include "impasto/render_gl/canvas_renderer.hpp"
+#include "impasto/render_gl/framebuffer.hpp"
+
+namespace impasto::render_gl {
+
+render::Image render_canvas_in_current_context(const paintcore::Canvas& canvas,
+                                               const render::RenderSettings& settings,
+                                               render::SpectralPalette palette) {
+  const int width = canvas.width_cells();
+  const int height = canvas.height_cells();
+  CanvasRenderer renderer(width, height, settings, std::move(palette));
+  renderer.upload_all(canvas);
+  Framebuffer target(width, height, TexelFormat::kRGBA32F);
+  target.bind();
+  renderer.draw(one_pixel_per_cell(width, height), width, height);
+  const std::vector<float> rgba = target.read_rgba_float();
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+
+  render::Image image;
+  image.width = width;
+  image.height = height;
+  image.rgb.resize(static_cast<size_t>(width) * static_cast<size_t>(height) * 3);
+  for (int y = 0; y < height; ++y) {
+    const float* row =
+        rgba.data() + static_cast<size_t>(height - 1 - y) * width * 4;  // GL: bottom row first
+    for (int x = 0; x < width; ++x) {
+      float* out = image.pixel(x, y);
+      out[0] = row[4 * x];
+      out[1] = row[4 * x + 1];
+      out[2] = row[4 * x + 2];
+    }
+  }
+  return image;
+}
+
+render::Image render_painting_gpu(const paintcore::Canvas& canvas,
+                                  const render::RenderSettings& settings,
+                                  render::SpectralPalette palette, HeadlessBackend backend) {
+  auto context = create_headless_context(backend);
+  return render_canvas_in_current_context(canvas, settings, std::move(palette));
+}
+
+render::Image render_painting_gpu(const paintcore::Canvas& canvas,
+                                  std::span<const std::string> pigment_slots,
+                                  const render::RenderSettings& settings, HeadlessBackend backend) {
+  return render_painting_gpu(canvas, settings, render::SpectralPalette(settings, pigment_slots),
+                             backend);
+}
+
+}  // namespace impasto::render_gl
