@@ -1,5 +1,6 @@
 #include "impasto/flakes/flake_tables.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -66,7 +67,7 @@ FlakeTables::FlakeTables(const FlakePaint& paint, std::span<const double> wavele
   if (transmits) {
     constexpr int kGreyNodes = 31;
     for (int j = 0; j < kAngleSamples; ++j) {
-      const double c = std::fmax(kMinCos, cos_at(j, kAngleSamples));
+      const double c = std::max(kMinCos, cos_at(j, kAngleSamples));
       double sum = 0;
       for (int w = 0; w < kGreyNodes; ++w) {
         sum += paint.coating.optics(400.0 + 10.0 * w, c, paint.binder_index).transmittance;
@@ -106,7 +107,7 @@ FlakeTables::FlakeTables(const FlakePaint& paint, std::span<const double> wavele
   reflectance_.resize(wavelengths_nm_.size() * kAngleSamples);
   for (std::size_t w = 0; w < wavelengths_nm_.size(); ++w) {
     for (int j = 0; j < kAngleSamples; ++j) {
-      const double c = std::fmax(kMinCos, cos_at(j, kAngleSamples));
+      const double c = std::max(kMinCos, cos_at(j, kAngleSamples));
       reflectance_[w * kAngleSamples + j] =
           paint.coating.optics(wavelengths_nm_[w], c, paint.binder_index).reflectance;
     }
@@ -114,7 +115,7 @@ FlakeTables::FlakeTables(const FlakePaint& paint, std::span<const double> wavele
 }
 
 double FlakeTables::orientation_density(double cos_beta) const {
-  const double half_sin = std::sqrt(std::fmax(0.0, 0.5 * (1.0 - cos_beta)));
+  const double half_sin = std::sqrt(std::max(0.0, 0.5 * (1.0 - cos_beta)));
   if (half_sin > kMaxHalfSin) return 0.0;
   return lerp_table(orientation_, half_sin, kMaxHalfSin);
 }

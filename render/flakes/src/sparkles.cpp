@@ -12,14 +12,18 @@
 
 namespace impasto::flakes {
 
-// What one cell under one light needs before any random number is drawn.
+// What one cell under one light needs before any random number is drawn. The energy
+// factors are only worked out for the few cells that do sparkle.
 struct SparkleRenderer::Setup {
-  double mean_count = 0;         // ⟨N⟩
-  double radiance_per_area = 0;  // visible radiance per mm² of sparkling flake, r_p and E⊥ aside
+  double mean_count = 0;  // ⟨N⟩
+  double cos_light = 1, cos_view = 1, cos_light_in = 1, cos_view_in = 1;
   double cos_alpha = 1;
-  double t_per_depth = 0;  // optical thickness of the way in and out, 1/mm
-  double depth = 0;        // H along the normal, mm
-  Uint4 key{};             // (canvas cell, flake orientation cell, seed)
+  double delta_in = 0;  // the light's angular radius inside the binder
+  double beam = 1;      // light.spectral × beam = irradiance normal to the beam
+  double concentration = 0;
+  double depth = 0;         // H along the normal, mm
+  double surface_area = 0;  // Σ of the tilted surface, mm²
+  Uint4 key{};              // (canvas cell, flake orientation cell, seed)
 };
 
 namespace {
@@ -101,37 +105,25 @@ bool SparkleRenderer::prepare(const FlakeCell& cell, const Light& light, const V
   if (!(density > 0.0)) return false;
 
   // 5. The light's angular radius inside the binder (Eq. 7).
-  const double delta_in =
-      binder_angular_size(0.5 * light.angular_diameter_rad, cos_light, cos_light_in, eta);
-
-  // 6. Optical thickness per unit depth of the way in and out (flakes scale with their
-  // concentration in the cell, the binder's absorption does not).
-  const double c = cell.flake_concentration;
-  const double area_density = c * paint.area_density_per_mm;
-  auto thickness = [&](double cos_in) {
-    return optical_thickness_per_depth(
-        area_density, tables_.projected_area(cos_in), tables_.projected_transmittance(cos_in),
-        paint.binder_absorption_per_mm, c * paint.rayleigh_weight_per_mm, cos_in);
-  };
-  s.t_per_depth = thickness(cos_light_in) + thickness(cos_view_in);
-  s.depth = cell.thickness_mm * n.z;
+  s.delta_in = binder_angular_size(0.5 * light.angular_diameter_rad, cos_light, cos_light_in, eta);
 
   // 7. Expected count (Eq. 5 or 6) among the D·Σ·H flakes of the cell.
-  const double flakes =
-      area_density / paint.flake_area_mean_mm2 * cell.area_mm2 * cell.thickness_mm;
-  const double probability = mirror_probability(density, delta_in, flake.cos_alpha);
+  s.concentration = cell.flake_concentration;
+  s.depth = cell.thickness_mm * n.z;
+  const double flakes = s.concentration * paint.area_density_per_mm / paint.flake_area_mean_mm2 *
+                        cell.area_mm2 * cell.thickness_mm;
+  const double probability = mirror_probability(density, s.delta_in, flake.cos_alpha);
+  s.cos_light = cos_light;
+  s.cos_view = cos_view;
+  s.cos_light_in = cos_light_in;
+  s.cos_view_in = cos_view_in;
+  s.cos_alpha = flake.cos_alpha;
   s.mean_count =
       settings_.depth_model == SparkleSettings::DepthModel::with_masking
           ? expected_sparkles_with_masking(flakes, probability)
-          : expected_sparkles_without_masking(flakes, probability, s.t_per_depth, s.depth);
-
-  // Eqs. 9–10 per unit flake area and unit E⊥, then spread over the cell's surface.
-  const double energy = sparkle_energy_per_area(
-      beam * cos_light, cos_light_in, 1.0 - fresnel_dielectric(cos_light, eta),
-      1.0 - fresnel_dielectric(cos_view, eta), 1.0, flake.cos_alpha);
-  const double surface_area = cell.area_mm2 / n.z;
-  s.radiance_per_area = visible_radiance(energy, delta_in, eta, cos_view_in, surface_area);
-  s.cos_alpha = flake.cos_alpha;
+          : expected_sparkles_without_masking(flakes, probability, optical_thickness(s), s.depth);
+  s.beam = beam;
+  s.surface_area = cell.area_mm2 / n.z;
 
   const double step = settings_.orientation_cell;
   s.key = {
@@ -139,6 +131,29 @@ bool SparkleRenderer::prepare(const FlakeCell& cell, const Light& light, const V
       orientation_cell(flake.normal.x / flake.normal.z, step),
       orientation_cell(flake.normal.y / flake.normal.z, step) ^ (settings_.seed * 0x9E3779B9u)};
   return s.mean_count > 0.0;
+}
+
+// 6. Optical thickness per unit depth of the way in and out, 1/mm (flakes and their pigment
+// scale with the concentration in the cell, the binder's absorption does not).
+double SparkleRenderer::optical_thickness(const Setup& s) const {
+  const FlakePaint& paint = tables_.paint();
+  const double c = s.concentration;
+  auto one_way = [&](double cos_in) {
+    return optical_thickness_per_depth(
+        c * paint.area_density_per_mm, tables_.projected_area(cos_in),
+        tables_.projected_transmittance(cos_in), paint.binder_absorption_per_mm,
+        c * paint.rayleigh_weight_per_mm, cos_in);
+  };
+  return one_way(s.cos_light_in) + one_way(s.cos_view_in);
+}
+
+// Eqs. 9–10 per unit flake area and unit light.spectral, spread over the cell's surface.
+double SparkleRenderer::radiance_per_area(const Setup& s) const {
+  const double eta = tables_.paint().binder_index;
+  const double energy = sparkle_energy_per_area(
+      s.beam * s.cos_light, s.cos_light_in, 1.0 - fresnel_dielectric(s.cos_light, eta),
+      1.0 - fresnel_dielectric(s.cos_view, eta), 1.0, s.cos_alpha);
+  return visible_radiance(energy, s.delta_in, eta, s.cos_view_in, s.surface_area);
 }
 
 double SparkleRenderer::expected_count(const FlakeCell& cell, const Light& light,
@@ -158,8 +173,8 @@ double SparkleRenderer::flake_weight(CounterRng& rng, int count, double t_per_de
     const double a1 = attenuated ? direct_fraction(t_per_depth, depth) : 1.0;
     const double a2 = attenuated ? direct_fraction(2.0 * t_per_depth, depth) : 1.0;
     const double mean = mean_s * a1;
-    const double variance = std::fmax(0.0, (sd_s * sd_s + mean_s * mean_s) * a2 - mean * mean);
-    return std::fmax(0.0, count * mean + std::sqrt(count * variance) * rng.normal());
+    const double variance = std::max(0.0, (sd_s * sd_s + mean_s * mean_s) * a2 - mean * mean);
+    return std::max(0.0, count * mean + std::sqrt(count * variance) * rng.normal());
   }
   double sum = 0;
   for (int i = 0; i < count; ++i) {
@@ -178,7 +193,8 @@ int SparkleRenderer::add_cell(const FlakeCell& cell, const Light& light, const V
   CounterRng rng(s.key);
   const int count = sample_sparkle_count(rng, s.mean_count);
   if (count == 0) return 0;
-  const double scale = s.radiance_per_area * flake_weight(rng, count, s.t_per_depth, s.depth);
+  const double scale =
+      radiance_per_area(s) * flake_weight(rng, count, optical_thickness(s), s.depth);
   for (std::size_t w = 0; w < radiance.size(); ++w) {
     radiance[w] += scale * light.spectral[w] * tables_.flake_reflectance(w, s.cos_alpha);
   }
@@ -191,9 +207,10 @@ void SparkleRenderer::add_mean_radiance(const FlakeCell& cell, const Light& ligh
   if (!prepare(cell, light, view, s)) return;
   double mean_weight = tables_.paint().flake_area_mean_mm2;
   if (settings_.depth_model == SparkleSettings::DepthModel::with_masking) {
-    mean_weight *= direct_fraction(s.t_per_depth, s.depth);  // ⟨e^{−tz}⟩, z uniform in [0, H]
+    // ⟨e^{−tz}⟩ over z uniform in [0, H]
+    mean_weight *= direct_fraction(optical_thickness(s), s.depth);
   }
-  const double scale = s.mean_count * mean_weight * s.radiance_per_area;
+  const double scale = s.mean_count * mean_weight * radiance_per_area(s);
   for (std::size_t w = 0; w < radiance.size(); ++w) {
     radiance[w] += scale * light.spectral[w] * tables_.flake_reflectance(w, s.cos_alpha);
   }

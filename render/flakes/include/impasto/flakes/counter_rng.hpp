@@ -26,16 +26,17 @@ inline Uint4 pcg4d(Uint4 v) {
   return v;
 }
 
-// A stream of uniform deviates for one key: block b of four numbers is pcg4d(key + b).
+// A stream of uniform deviates for one key: the first block of four numbers is pcg4d(key),
+// block b > 0 is pcg4d(first block + (b, 0, 0, 0)). Most cells need one number only.
 class CounterRng {
  public:
-  explicit CounterRng(Uint4 key) : key_(pcg4d(key)) {}
+  explicit CounterRng(Uint4 key) : first_(pcg4d(key)), block_(first_) {}
 
   // Uniform in (0, 1), never exactly 0 or 1.
   double uniform() {
     if (used_ == 4) {
-      block_ = pcg4d({key_[0] + counter_, key_[1], key_[2], key_[3]});
       ++counter_;
+      block_ = pcg4d({first_[0] + counter_, first_[1], first_[2], first_[3]});
       used_ = 0;
     }
     return (static_cast<double>(block_[used_++]) + 0.5) * 0x1p-32;
@@ -49,10 +50,10 @@ class CounterRng {
   }
 
  private:
-  Uint4 key_;
-  Uint4 block_{};
+  Uint4 first_;
+  Uint4 block_;
   std::uint32_t counter_ = 0;
-  int used_ = 4;
+  int used_ = 0;
 };
 
 // Number of sparkles for an expected count `mean` ≥ 0 (Ershov et al. §5.3.5): a Bernoulli

@@ -1,6 +1,7 @@
 #pragma once
 // The per-pixel maths of sparkles (Ershov, Khodulev, Kolchin §5.3), as small inline functions
 // that the GLSL port mirrors line by line. Angles are cosines; lengths mm; areas mm².
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -13,14 +14,14 @@ namespace impasto::flakes {
 inline Vec3 refract_into_binder(Vec3 V, Vec3 n, double eta) {
   const double cos_out = dot(n, V);
   const double sin2_out = 1.0 - cos_out * cos_out;
-  const double cos_in = std::sqrt(std::fmax(0.0, eta * eta - sin2_out)) / eta;
+  const double cos_in = std::sqrt(std::max(0.0, eta * eta - sin2_out)) / eta;
   return (1.0 / eta) * V + (cos_in - cos_out / eta) * n;
 }
 
 // Snell's law for the polar cosine inside the binder.
 inline double cos_inside_binder(double cos_out, double eta) {
   const double sin2_out = 1.0 - cos_out * cos_out;
-  return std::sqrt(std::fmax(0.0, 1.0 - sin2_out / (eta * eta)));
+  return std::sqrt(std::max(0.0, 1.0 - sin2_out / (eta * eta)));
 }
 
 // Eq. 7: angular (or linear) size of a round object seen from inside the binder, from its

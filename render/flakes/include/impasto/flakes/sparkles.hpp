@@ -81,6 +81,8 @@ class SparkleRenderer {
  private:
   struct Setup;
   bool prepare(const FlakeCell& cell, const Light& light, const View& view, Setup& s) const;
+  double optical_thickness(const Setup& s) const;
+  double radiance_per_area(const Setup& s) const;
   // Σ S·e^{−tz} over `count` sparkles: areas log-normal with the paint's mean and deviation,
   // depths uniform in [0, depth] (with masking only).
   double flake_weight(CounterRng& rng, int count, double t_per_depth, double depth) const;

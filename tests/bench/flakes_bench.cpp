@@ -1,0 +1,73 @@
+// Cost of sparkles per cell (one per pixel at 100 % zoom): a tile full of flake paint under
+// the sun, and the same tile without flakes, which must cost next to nothing.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "impasto/data/data_dir.hpp"
+#include "impasto/flakes/flake_file.hpp"
+#include "impasto/flakes/sparkles.hpp"
+
+namespace {
+
+using namespace impasto::flakes;
+
+constexpr int kTile = 128;
+const std::vector<double> kNodes{430.0, 470.0, 510.0, 550.0, 590.0, 630.0, 670.0, 710.0};
+
+const SparkleRenderer& renderer() {
+  static const SparkleRenderer r(
+      load_flake_paint(impasto::data::data_dir() / "flakes" / "aluminium_flakes.flake"), kNodes);
+  return r;
+}
+
+void sparkle_tile(benchmark::State& state, float concentration) {
+  const std::size_t cells = kTile * kTile;
+  std::vector<float> c(cells, concentration), thickness(cells, 0.05f), normals;
+  for (int y = 0; y < kTile; ++y) {
+    for (int x = 0; x < kTile; ++x) {
+      const Vec3 n = normalize(Vec3{0.05 * std::sin(0.3 * x), 0.05 * std::cos(0.2 * y), 1});
+      normals.insert(normals.end(), {float(n.x), float(n.y), float(n.z)});
+    }
+  }
+  const FlakeTile tile{.first_ix = 0,
+                       .first_iy = 0,
+                       .width = kTile,
+                       .height = kTile,
+                       .cell_size_mm = 0.1,
+                       .concentration = c,
+                       .thickness_mm = thickness,
+                       .surface_height_mm = {},
+                       .normals = normals};
+  Light sun;
+  const double polar = 30 * std::numbers::pi / 180;
+  sun.direction = {-std::sin(polar), 0, -std::cos(polar)};
+  sun.spectral.assign(kNodes.size(), 1.0);
+  const Light lights[] = {sun};
+  View view;
+  view.direction = normalize(Vec3{-0.3, 0.1, 1});
+  std::vector<float> out(cells * kNodes.size());
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(renderer().add_tile(tile, lights, view, out));
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations() * cells));
+  // A rate of 1e-9 × cells per second, inverted: nanoseconds per cell.
+  state.counters["ns_per_cell"] =
+      benchmark::Counter(1e-9 * static_cast<double>(state.iterations() * cells),
+                         benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+void BM_FlakesOn(benchmark::State& state) {
+  sparkle_tile(state, 1.0f);
+}
+void BM_FlakesOff(benchmark::State& state) {
+  sparkle_tile(state, 0.0f);
+}
+
+}  // namespace
+
+BENCHMARK(BM_FlakesOn)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_FlakesOff)->Unit(benchmark::kMicrosecond);
