@@ -45,7 +45,8 @@ void SpectralPalette::build(const RenderSettings& settings, const data::Spectrum
                             const data::Spectrum& ground) {
   validate(settings);
   sampling_ =
-      make_spectral_sampling(light, data::cie1931_2deg(), settings.wavelengths, settings.range);
+      make_spectral_sampling(light, data::cie1931_2deg(), settings.wavelengths, settings.range,
+                             settings.node_weights);
   const auto n = static_cast<std::size_t>(nodes());
 
   pigment_names_.clear();

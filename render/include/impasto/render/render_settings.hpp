@@ -22,6 +22,7 @@ struct RenderSettings {
   std::string light = "D65";  // data::light_from_spec: "D65", "A", "F11", "blackbody:5600", file
   int wavelengths = 8;        // Gaussian nodes 1..16, or 0 for every nm (the reference)
   WavelengthRange range;      // the measure the nodes are chosen on
+  NodeWeights node_weights = NodeWeights::interpolatory;
   ChromaticAdaptation adaptation = ChromaticAdaptation::bradford;
   DisplayEncoding display = DisplayEncoding::srgb;
 

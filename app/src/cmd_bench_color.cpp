@@ -1,0 +1,98 @@
+// impasto bench color: colour error of N-wavelength Gaussian rendering against the 1-nm
+// full spectrum (CIEDE2000 over masstones, tints, 50/50 mixes and glazes of every pigment),
+// and the cost per cell of each N, for float and half storage of the baked reflectance.
+#include <impasto/data/lights.hpp>
+#include <impasto/data/pigments.hpp>
+#include <impasto/render/color_accuracy.hpp>
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "command.hpp"
+
+namespace impasto::app {
+namespace {
+
+using namespace impasto::render;
+
+struct BenchColorArgs {
+  bool json = false;
+  std::vector<int> nodes{3, 4, 6, 8, 12, 16};
+  std::vector<std::string> lights{"D65", "A", "F11"};
+  std::string weights = "interpolatory";
+  int timing_cells = 20000;
+  bool half = true;
+};
+
+void run(const BenchColorArgs& args) {
+  const NodeWeights weights = parse_node_weights(args.weights);
+  const std::vector<data::Pigment>& pigments = data::PigmentDatabase::defaults().all();
+  const std::vector<ColorSample> samples = standard_color_samples(pigments);
+
+  std::vector<AccuracyResult> rows;
+  for (const std::string& light_name : args.lights) {
+    const data::Spectrum light = data::light_from_spec(light_name);
+    std::vector<int> node_counts = args.nodes;
+    node_counts.push_back(0);  // the full spectrum: its cost (its error is 0 by definition)
+    for (int n : node_counts) {
+      rows.push_back(evaluate_color_accuracy(light, light_name, n, pigments, samples,
+                                             ReflectanceStorage::float32, weights,
+                                             args.timing_cells));
+      if (args.half && n != 0) {
+        rows.push_back(evaluate_color_accuracy(light, light_name, n, pigments, samples,
+                                               ReflectanceStorage::float16, weights,
+                                               args.timing_cells));
+      }
+    }
+  }
+
+  if (args.json) {
+    for (const AccuracyResult& r : rows) {
+      nlohmann::json row{{"n", r.nodes},
+                         {"light", r.light},
+                         {"mean_de00", r.mean_de00},
+                         {"max_de00", r.max_de00},
+                         {"ns_per_cell", r.ns_per_cell},
+                         {"storage", r.storage == ReflectanceStorage::float16 ? "half" : "float"},
+                         {"worst", r.worst_sample}};
+      std::cout << row.dump() << "\n";
+    }
+    return;
+  }
+  std::printf("%zu samples (%zu pigments), node weights: %s\n", samples.size(), pigments.size(),
+              args.weights.c_str());
+  std::printf("%-6s %4s %-6s %10s %10s %12s  %s\n", "light", "N", "store", "mean dE00", "max dE00",
+              "ns/cell", "worst sample");
+  for (const AccuracyResult& r : rows) {
+    std::printf("%-6s %4s %-6s %10.4f %10.4f %12.1f  %s\n", r.light.c_str(),
+                r.nodes == 0 ? "full" : std::to_string(r.nodes).c_str(),
+                r.storage == ReflectanceStorage::float16 ? "half" : "float", r.mean_de00,
+                r.max_de00, r.ns_per_cell, r.nodes == 0 ? "-" : r.worst_sample.c_str());
+  }
+}
+
+const CommandRegistrar registrar("bench color", [](CLI::App& root) {
+  CLI::App* bench = command_group(root, "bench", "Measure accuracy and speed");
+  CLI::App* cmd = bench->add_subcommand(
+      "color", "CIEDE2000 of N-wavelength rendering vs the 1-nm spectrum, and ns per cell");
+  auto args = std::make_shared<BenchColorArgs>();
+  cmd->add_flag("--json", args->json,
+                "One JSON object per row: n, light, mean_de00, max_de00, ns_per_cell (n = 0: "
+                "full spectrum), storage, worst");
+  cmd->add_option("--nodes", args->nodes, "Wavelength counts to test (1..16)")
+      ->check(CLI::Range(1, 16));
+  cmd->add_option("--lights", args->lights, "Lights (D65, A, F11, blackbody:K, FILE.csv)");
+  cmd->add_option("--weights", args->weights, "Per-node XYZ weights: interpolatory or impasto")
+      ->check(CLI::IsMember({"interpolatory", "impasto"}));
+  cmd->add_option("--cells", args->timing_cells, "Cells per timing run (0: no timing)")
+      ->check(CLI::Range(0, 10000000));
+  cmd->add_flag("!--no-half", args->half, "Skip the half-storage rows");
+  cmd->callback([args] { run(*args); });
+});
+
+}  // namespace
+}  // namespace impasto::app

@@ -1,0 +1,115 @@
+// impasto render: a painting file to a PNG or EXR image, spectrally rendered under a light.
+#include <impasto/paintcore/painting.hpp>
+#include <impasto/render/render_painting.hpp>
+
+#include <cmath>
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "command.hpp"
+
+namespace impasto::app {
+namespace {
+
+using namespace impasto::render;
+
+struct RenderArgs {
+  std::string painting;
+  std::string out;
+  std::string light = "D65";
+  std::string wavelengths = "8";
+  std::string light_dir = "225,60";
+  std::string display = "srgb";
+  std::string adaptation = "bradford";
+  std::string weights = "interpolatory";
+  std::string storage = "float";
+  double thickness_scale_mm = RenderSettings{}.thickness_scale_mm;
+  bool saunderson = false;
+  int threads = 0;
+};
+
+int parse_wavelengths(const std::string& text) {
+  if (text == "full") return 0;
+  std::size_t used = 0;
+  int n = -1;
+  try {
+    n = std::stoi(text, &used);
+  } catch (const std::exception&) {
+  }
+  if (used != text.size() || n < 1 || n > kMaxNodes) {
+    throw std::runtime_error("--wavelengths " + text + ": expected 1..16 or full");
+  }
+  return n;
+}
+
+// "AZ,EL" in degrees.
+void parse_light_dir(const std::string& text, RenderSettings& settings) {
+  const auto comma = text.find(',');
+  try {
+    if (comma == std::string::npos) throw std::invalid_argument("no comma");
+    std::size_t used_az = 0, used_el = 0;
+    const std::string az = text.substr(0, comma);
+    const std::string el = text.substr(comma + 1);
+    settings.light_azimuth_deg = std::stod(az, &used_az);
+    settings.light_elevation_deg = std::stod(el, &used_el);
+    if (used_az != az.size() || used_el != el.size()) throw std::invalid_argument("junk");
+  } catch (const std::exception&) {
+    throw std::runtime_error("--light-dir " + text +
+                             ": expected AZIMUTH,ELEVATION in degrees, e.g. 225,60");
+  }
+}
+
+void run(const RenderArgs& args) {
+  RenderSettings settings;
+  settings.light = args.light;
+  settings.wavelengths = parse_wavelengths(args.wavelengths);
+  parse_light_dir(args.light_dir, settings);
+  settings.display = parse_display_encoding(args.display);
+  settings.adaptation = parse_chromatic_adaptation(args.adaptation);
+  settings.node_weights = parse_node_weights(args.weights);
+  settings.storage = parse_reflectance_storage(args.storage);
+  settings.thickness_scale_mm = args.thickness_scale_mm;
+  settings.saunderson = args.saunderson;
+  settings.threads = args.threads;
+  validate(settings);
+  const paintcore::Painting painting = paintcore::Painting::load(args.painting, args.threads);
+  render_painting_to_file(painting, settings, args.out);
+  std::cout << "wrote " << args.out << " (" << painting.canvas().width_cells() << "x"
+            << painting.canvas().height_cells() << ")\n";
+}
+
+const CommandRegistrar registrar("render", [](CLI::App& root) {
+  CLI::App* cmd = root.add_subcommand(
+      "render", "Render a painting to PNG (sRGB) or EXR (linear) under a light");
+  auto args = std::make_shared<RenderArgs>();
+  cmd->add_option("painting", args->painting, "The .impasto painting file")->required();
+  cmd->add_option("--out,-o", args->out, "Output image, FILE.png or FILE.exr")->required();
+  cmd->add_option("--light", args->light, "D65, A, F11, ..., blackbody:KELVIN or a spectral CSV")
+      ->capture_default_str();
+  cmd->add_option("--wavelengths", args->wavelengths, "Gaussian nodes 1..16, or full (every nm)")
+      ->capture_default_str();
+  cmd->add_option("--light-dir", args->light_dir,
+                  "Light azimuth,elevation in degrees (azimuth from +x toward +y, down)")
+      ->capture_default_str();
+  cmd->add_option("--display", args->display,
+                  "PNG encoding: srgb, display-p3, rec709, rec2020, linear-srgb")
+      ->capture_default_str();
+  cmd->add_option("--adaptation", args->adaptation, "bradford (light white -> D65) or none")
+      ->capture_default_str();
+  cmd->add_option("--weights", args->weights, "Per-node XYZ weights: interpolatory or impasto")
+      ->capture_default_str();
+  cmd->add_option("--storage", args->storage, "Baked reflectance storage: float or half")
+      ->capture_default_str();
+  cmd->add_option("--thickness-scale", args->thickness_scale_mm,
+                  "mm of paint per unit of K-M optical thickness")
+      ->capture_default_str();
+  cmd->add_flag("--saunderson", args->saunderson, "Apply the Saunderson surface correction");
+  cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)")
+      ->check(CLI::Range(0, 1024));
+  cmd->callback([args] { run(*args); });
+});
+
+}  // namespace
+}  // namespace impasto::app

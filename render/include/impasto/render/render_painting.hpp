@@ -1,0 +1,21 @@
+#pragma once
+// One-call rendering of a whole painting to an image or a file.
+#include <filesystem>
+
+#include "impasto/paintcore/painting.hpp"
+#include "impasto/render/image.hpp"
+#include "impasto/render/render_settings.hpp"
+
+namespace impasto::render {
+
+// Every tile of the painting rendered with `settings` (pigments from the default database,
+// named by the painting's slots).
+Image render_painting(const paintcore::Painting& painting, const RenderSettings& settings);
+
+// Renders and writes by extension: .png (8-bit, settings.display, sRGB by default) or .exr
+// (linear sRGB primaries, full range; settings.display is ignored). Throws
+// std::runtime_error naming the file for another extension or a write error.
+void render_painting_to_file(const paintcore::Painting& painting, const RenderSettings& settings,
+                             const std::filesystem::path& path);
+
+}  // namespace impasto::render

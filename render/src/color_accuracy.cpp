@@ -1,0 +1,186 @@
+#include "impasto/render/color_accuracy.hpp"
+
+#include <Imath/half.h>
+
+#include <algorithm>
+#include <chrono>
+#include <stdexcept>
+
+#include "impasto/data/colorimetry.hpp"
+#include "impasto/render/paint_layer.hpp"
+#include "impasto/render/spectral_palette.hpp"
+
+namespace impasto::render {
+namespace {
+
+constexpr float kOpaqueMm = 5.0f;
+constexpr float kGlazeMm = 0.01f;
+constexpr float kTintPigmentShare = 0.1f;
+
+int index_of(const std::vector<data::Pigment>& pigments, const std::string& name) {
+  for (std::size_t i = 0; i < pigments.size(); ++i) {
+    if (pigments[i].name == name) return static_cast<int>(i);
+  }
+  throw std::runtime_error("colour accuracy: the pigment set lacks '" + name + "'");
+}
+
+const data::Pigment& find_pigment(const std::vector<data::Pigment>& pigments,
+                                  const std::string& name) {
+  return pigments[static_cast<std::size_t>(index_of(pigments, name))];
+}
+
+// Everything one node count needs: its palette and both grounds at its nodes.
+struct SampledScene {
+  SpectralPalette palette;
+  std::vector<float> white_ground, black_ground;
+};
+
+SampledScene sample_scene(const data::Spectrum& light, int nodes, NodeWeights weights,
+                          const std::vector<data::Pigment>& pigments) {
+  RenderSettings settings;
+  settings.wavelengths = nodes;
+  settings.node_weights = weights;
+  settings.adaptation = ChromaticAdaptation::none;  // Lab below is relative to own white
+  const data::Spectrum white = hiding_reflectance(find_pigment(pigments, "Titanium White"));
+  const data::Spectrum black = hiding_reflectance(find_pigment(pigments, "Carbon Black"));
+  SpectralPalette palette(settings, light, pigments, white);
+  std::vector<float> black_ground = sample_at_nodes(black, palette.sampling());
+  std::vector<float> white_ground(palette.ground(), palette.ground() + palette.nodes());
+  return {std::move(palette), std::move(white_ground), std::move(black_ground)};
+}
+
+float round_to_half(float value) {
+  return static_cast<float>(Imath::half(value));
+}
+
+data::Lab render_sample(const SampledScene& scene, const ColorSample& sample,
+                        ReflectanceStorage storage, double thickness_scale_mm) {
+  const SpectralPalette& palette = scene.palette;
+  // Up to one value per grid wavelength (the full spectrum), so on the heap.
+  std::vector<float> reflectance(static_cast<std::size_t>(palette.nodes()));
+  float* r = reflectance.data();
+  const auto& ground = sample.over_black ? scene.black_ground : scene.white_ground;
+  for (int i = 0; i < palette.nodes(); ++i) {
+    const float g = ground[static_cast<std::size_t>(i)];
+    r[i] = storage == ReflectanceStorage::float16 ? round_to_half(g) : g;
+  }
+  std::vector<PigmentShare> shares;
+  for (const auto& [pigment, concentration] : sample.mix)
+    shares.push_back({pigment, concentration});
+  composite_paint_layer(palette, shares,
+                        static_cast<float>(sample.thickness_mm / thickness_scale_mm), r);
+  float xyz[3];
+  node_reflectance_to_xyz(palette, r, xyz);
+  const auto& white = palette.white_xyz();
+  return data::xyz_to_lab({xyz[0], xyz[1], xyz[2]}, {white[0], white[1], white[2]});
+}
+
+// Nanoseconds per cell of the per-frame work: substrate load, a two-pigment wet layer,
+// XYZ. Best of three runs, so a busy machine disturbs it less.
+double time_cells(const SampledScene& scene, ReflectanceStorage storage, int cells,
+                  double thickness_scale_mm) {
+  const SpectralPalette& palette = scene.palette;
+  const int nodes = palette.nodes();
+  const auto count = static_cast<std::size_t>(cells);
+  std::vector<float> substrate_f32(count * static_cast<std::size_t>(nodes));
+  for (std::size_t k = 0; k < substrate_f32.size(); ++k) {
+    substrate_f32[k] = scene.white_ground[k % static_cast<std::size_t>(nodes)] *
+                       (0.5f + 0.5f * static_cast<float>(k % 7) / 7.0f);
+  }
+  std::vector<Imath::half> substrate_f16(substrate_f32.begin(), substrate_f32.end());
+  const int pigments = palette.pigment_count();
+  std::vector<float> row(static_cast<std::size_t>(nodes));
+  double best = 1e300;
+  for (int run = 0; run < 3; ++run) {
+    float checksum = 0.0f;
+    const auto start = std::chrono::steady_clock::now();
+    for (std::size_t c = 0; c < count; ++c) {
+      const std::size_t base = c * static_cast<std::size_t>(nodes);
+      for (int i = 0; i < nodes; ++i) {
+        const std::size_t k = base + static_cast<std::size_t>(i);
+        row[static_cast<std::size_t>(i)] = storage == ReflectanceStorage::float16
+                                               ? static_cast<float>(substrate_f16[k])
+                                               : substrate_f32[k];
+      }
+      const int first = static_cast<int>(c % static_cast<std::size_t>(pigments));
+      const PigmentShare shares[2] = {{first, 0.7f}, {(first + 1) % pigments, 0.3f}};
+      const float thickness =
+          (0.005f + 0.001f * static_cast<float>(c % 100)) / static_cast<float>(thickness_scale_mm);
+      composite_paint_layer(palette, shares, thickness, row.data());
+      float xyz[3];
+      node_reflectance_to_xyz(palette, row.data(), xyz);
+      checksum += xyz[1];
+    }
+    const auto elapsed = std::chrono::steady_clock::now() - start;
+    best = std::min(best, std::chrono::duration<double, std::nano>(elapsed).count() /
+                              static_cast<double>(cells));
+    if (!(checksum >= 0.0f)) throw std::runtime_error("colour timing: non-finite result");
+  }
+  return best;
+}
+
+}  // namespace
+
+std::vector<ColorSample> standard_color_samples(const std::vector<data::Pigment>& pigments) {
+  const int white = index_of(pigments, "Titanium White");
+  index_of(pigments, "Carbon Black");
+  std::vector<ColorSample> samples;
+  const int count = static_cast<int>(pigments.size());
+  for (int p = 0; p < count; ++p) {
+    const std::string& name = pigments[static_cast<std::size_t>(p)].name;
+    samples.push_back({name + " masstone", {{p, 1.0f}}, kOpaqueMm, false});
+    if (p != white) {
+      samples.push_back({name + " tint",
+                         {{p, kTintPigmentShare}, {white, 1.0f - kTintPigmentShare}},
+                         kOpaqueMm,
+                         false});
+    }
+    samples.push_back({name + " glaze over white", {{p, 1.0f}}, kGlazeMm, false});
+    samples.push_back({name + " glaze over black", {{p, 1.0f}}, kGlazeMm, true});
+  }
+  for (int p = 0; p < count; ++p) {
+    for (int q = p + 1; q < count; ++q) {
+      samples.push_back({pigments[static_cast<std::size_t>(p)].name + " + " +
+                             pigments[static_cast<std::size_t>(q)].name,
+                         {{p, 0.5f}, {q, 0.5f}},
+                         kOpaqueMm,
+                         false});
+    }
+  }
+  return samples;
+}
+
+AccuracyResult evaluate_color_accuracy(const data::Spectrum& light, const std::string& light_name,
+                                       int nodes, const std::vector<data::Pigment>& pigments,
+                                       const std::vector<ColorSample>& samples,
+                                       ReflectanceStorage storage, NodeWeights weights,
+                                       int timing_cells) {
+  if (samples.empty()) throw std::runtime_error("colour accuracy: no samples");
+  const double thickness_scale_mm = RenderSettings{}.thickness_scale_mm;
+  const SampledScene reference = sample_scene(light, 0, weights, pigments);
+  const SampledScene scene = nodes == 0 ? reference : sample_scene(light, nodes, weights, pigments);
+
+  AccuracyResult result;
+  result.nodes = nodes;
+  result.light = light_name;
+  result.storage = storage;
+  double sum = 0.0;
+  for (const ColorSample& sample : samples) {
+    const data::Lab expected =
+        render_sample(reference, sample, ReflectanceStorage::float32, thickness_scale_mm);
+    const data::Lab got = render_sample(scene, sample, storage, thickness_scale_mm);
+    const double difference = data::ciede2000(expected, got);
+    sum += difference;
+    if (difference > result.max_de00 || result.worst_sample.empty()) {
+      result.max_de00 = std::max(result.max_de00, difference);
+      result.worst_sample = sample.name;
+    }
+  }
+  result.mean_de00 = sum / static_cast<double>(samples.size());
+  if (timing_cells > 0) {
+    result.ns_per_cell = time_cells(scene, storage, timing_cells, thickness_scale_mm);
+  }
+  return result;
+}
+
+}  // namespace impasto::render
