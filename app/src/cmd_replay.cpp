@@ -1,0 +1,82 @@
+// impasto replay: paint a recorded session headless.
+#include <impasto/input/stroke_import.hpp>
+
+#include <iostream>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include "command.hpp"
+#include "session/preview.hpp"
+#include "session/replay.hpp"
+
+namespace impasto::app {
+namespace {
+
+struct ReplayArgs {
+  std::string strokes;
+  std::optional<double> dpi;
+  std::string size;
+  int threads = 0;
+  double source_dpi = 150.0;
+  bool no_auto_load = false;
+  std::string out, preview;
+  bool stats = false;
+};
+
+// "WxH" in cells.
+void parse_size(const std::string& text, ReplayOptions& options) {
+  const auto x = text.find('x');
+  try {
+    if (x == std::string::npos) throw std::invalid_argument("no x");
+    std::size_t used_w = 0, used_h = 0;
+    const int w = std::stoi(text.substr(0, x), &used_w);
+    const int h = std::stoi(text.substr(x + 1), &used_h);
+    if (used_w != x || used_h != text.size() - x - 1) throw std::invalid_argument("junk");
+    options.width_cells = w;
+    options.height_cells = h;
+  } catch (const std::logic_error&) {
+    throw std::runtime_error("--size: expected WIDTHxHEIGHT in cells, got '" + text + "'");
+  }
+}
+
+void run_replay(const ReplayArgs& args) {
+  ReplayOptions options;
+  options.dpi = args.dpi;
+  if (!args.size.empty()) parse_size(args.size, options);
+  options.threads = args.threads;
+  options.auto_load = !args.no_auto_load;
+  input::ImportOptions import;
+  import.source_dpi = args.source_dpi;
+  const input::StrokeFile file = input::load_strokes_any(args.strokes, import);
+
+  ReplayReport report;
+  paintcore::Painting painting = replay(file, options, &report);
+  if (!args.out.empty()) painting.save(args.out);
+  if (!args.preview.empty()) render::write_png(args.preview, render_preview(painting));
+  if (args.stats) std::cout << replay_stats(painting, report).dump() << "\n";
+}
+
+const CommandRegistrar registrar("replay", [](CLI::App& root) {
+  auto args = std::make_shared<ReplayArgs>();
+  CLI::App* cmd = root.add_subcommand(
+      "replay", "Replay a stroke file (.strokes, libmypaint .dat, BDALab .svc) headless");
+  cmd->add_option("strokes", args->strokes, "Stroke file to replay")->required();
+  cmd->add_option("--dpi", args->dpi, "Canvas resolution in cells per inch")
+      ->check(CLI::Range(1.0, 20000.0));
+  cmd->add_option("--size", args->size, "Canvas size in cells, WIDTHxHEIGHT");
+  cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)")
+      ->check(CLI::Range(0, 256));
+  cmd->add_option("--source-dpi", args->source_dpi,
+                  "Pixels per inch of a libmypaint .dat recording")
+      ->check(CLI::Range(1.0, 20000.0));
+  cmd->add_flag("--no-auto-load", args->no_auto_load,
+                "Do not load the brush for recordings that carry no paint");
+  cmd->add_option("--out", args->out, "Save the painting (.impasto)");
+  cmd->add_option("--preview", args->preview, "Write a false-colour relief preview (.png)");
+  cmd->add_flag("--stats", args->stats, "Print statistics as one JSON object");
+  cmd->callback([args] { run_replay(*args); });
+});
+
+}  // namespace
+}  // namespace impasto::app

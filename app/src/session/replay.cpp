@@ -1,0 +1,198 @@
+#include "session/replay.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <type_traits>
+
+namespace impasto::app {
+namespace {
+
+template <class... F>
+struct Overloaded : F... {
+  using F::operator()...;
+};
+template <class... F>
+Overloaded(F...) -> Overloaded<F...>;
+
+bool has_load_record(const input::StrokeFile& file) {
+  for (const auto& event : file.events) {
+    if (std::holds_alternative<input::LoadEvent>(event)) return true;
+  }
+  return false;
+}
+
+std::string hex64(std::uint64_t value) {
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
+  return text;
+}
+
+}  // namespace
+
+const std::vector<std::string>& demo_palette() {
+  static const std::vector<std::string> palette = {
+      "Ultramarine Blue",     "Cadmium Yellow Medium Hue",
+      "Quinacridone Magenta", "Phthalo Green (Blue Shade)",
+      "Titanium White",       "Burnt Sienna",
+      "Cobalt Blue",          "Red Oxide"};
+  return palette;
+}
+
+SessionPlayer::SessionPlayer(paintcore::Painting& painting, const ReplayOptions& options,
+                             bool auto_load)
+    : painting_(painting), options_(options), auto_load_(auto_load) {
+  if (painting_.brush().empty()) painting_.set_brush(options_.default_brush);
+}
+
+void SessionPlayer::begin_auto_stroke() {
+  if (painting_.brush_totals().volume > 0) painting_.wipe_brush();
+  const auto& palette = demo_palette();
+  const std::string& pigment = palette[palette_index_++ % palette.size()];
+  double volume = options_.auto_load_mm3;
+  if (volume <= 0) {
+    const double width = painting_.brush().settings().size_mm;
+    volume = 0.3 * width * width;  // a 0.3 mm film over the head's square
+  }
+  painting_.load_brush({{pigment, 1.0}}, volume);
+}
+
+void SessionPlayer::on_sample(const paintcore::PenSample& sample) {
+  ++report_.samples;
+  const bool down = sample.tip_down();
+  if (down && !painting_.in_stroke()) {
+    if (auto_load_) begin_auto_stroke();
+    if (erasing_ && painting_.brush_totals().volume > 0) painting_.wipe_brush();
+    painting_.begin_stroke();
+    ++report_.strokes;
+  }
+  if (painting_.in_stroke()) painting_.stroke_to(sample);
+  if (!down && painting_.in_stroke()) {
+    painting_.end_stroke();
+    // An eraser is a brush that is cleaned after each stroke: what it picked up is gone.
+    if (erasing_ && painting_.brush_totals().volume > 0) painting_.wipe_brush();
+  }
+}
+
+void SessionPlayer::apply(const input::StrokeEvent& event) {
+  // Records other than samples end an open stroke first, as a live session would.
+  if (!std::holds_alternative<input::SampleEvent>(event)) finish();
+  std::visit(
+      Overloaded{
+          [&](const input::SampleEvent& e) { on_sample(e.sample); },
+          [&](const input::CanvasEvent&) {},  // consumed by replay_canvas()
+          [&](const input::ToolEvent& e) {
+            if (e.name == "brush") {
+              erasing_ = false;
+            } else if (e.name == "eraser") {
+              erasing_ = true;
+            } else {
+              throw std::runtime_error("unknown tool '" + e.name + "' (known: brush, eraser)");
+            }
+          },
+          [&](const input::BrushEvent& e) {
+            paintcore::BrushSettings settings;
+            settings.head = e.head;
+            settings.size_mm = e.size_mm;
+            settings.stiffness = e.stiffness;
+            painting_.set_brush(settings);
+          },
+          [&](const input::LoadEvent& e) {
+            std::vector<paintcore::PigmentMixPart> mix;
+            for (const auto& part : e.mix) mix.push_back({part.pigment, part.parts});
+            painting_.load_brush(mix, e.volume_mm3);
+          },
+          [&](const input::WipeEvent&) { painting_.wipe_brush(); },
+          [&](const input::DryEvent& e) { painting_.dry(e.fraction); },
+          [&](const input::UndoEvent&) { painting_.undo(); },
+          [&](const input::RedoEvent&) { painting_.redo(); },
+      },
+      event);
+}
+
+void SessionPlayer::finish() {
+  if (painting_.in_stroke()) {
+    painting_.end_stroke();
+    if (erasing_ && painting_.brush_totals().volume > 0) painting_.wipe_brush();
+  }
+}
+
+paintcore::CanvasSpec replay_canvas(const input::StrokeFile& file, const ReplayOptions& options) {
+  paintcore::CanvasSpec spec = options.default_canvas;
+  for (const auto& event : file.events) {
+    if (const auto* canvas = std::get_if<input::CanvasEvent>(&event)) {
+      spec.width_cells = canvas->width_cells;
+      spec.height_cells = canvas->height_cells;
+      spec.dpi = canvas->dpi;
+      break;
+    }
+  }
+  if (options.width_cells) spec.width_cells = *options.width_cells;
+  if (options.height_cells) spec.height_cells = *options.height_cells;
+  if (options.dpi) spec.dpi = *options.dpi;
+  paintcore::validate(spec);
+  return spec;
+}
+
+paintcore::Painting replay(const input::StrokeFile& file, const ReplayOptions& options,
+                           ReplayReport* report) {
+  paintcore::Painting painting(replay_canvas(file, options), options.threads);
+  SessionPlayer player(painting, options, options.auto_load && !has_load_record(file));
+  const auto start = std::chrono::steady_clock::now();
+  for (std::size_t i = 0; i < file.events.size(); ++i) {
+    try {
+      player.apply(file.events[i]);
+    } catch (const std::exception& e) {
+      throw std::runtime_error("record " + std::to_string(i + 1) + ": " + e.what());
+    }
+  }
+  player.finish();
+  if (report) {
+    *report = player.report();
+    report->seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  }
+  return painting;
+}
+
+nlohmann::json replay_stats(const paintcore::Painting& painting, const ReplayReport& report) {
+  const auto canvas = painting.canvas_totals();
+  const auto brush = painting.brush_totals();
+  const auto loaded = painting.loaded_totals();
+  const auto wiped = painting.wiped_totals();
+  auto slot_value = [](const paintcore::PaintTotals& totals, std::size_t slot) {
+    return slot < totals.pigment.size() ? totals.pigment[slot] : 0.0;
+  };
+  nlohmann::json pigments = nlohmann::json::array();
+  const auto& slots = painting.pigment_slots();
+  for (std::size_t s = 0; s < slots.size(); ++s) {
+    pigments.push_back({{"slot", s},
+                        {"pigment", slots[s]},
+                        {"canvas", slot_value(canvas, s)},
+                        {"brush", slot_value(brush, s)},
+                        {"loaded", slot_value(loaded, s)},
+                        {"wiped", slot_value(wiped, s)}});
+  }
+  const auto& spec = painting.canvas().spec();
+  return {
+      {"canvas",
+       {{"width_cells", spec.width_cells}, {"height_cells", spec.height_cells}, {"dpi", spec.dpi}}},
+      {"canvas_volume", canvas.volume},
+      {"brush_volume", brush.volume},
+      {"loaded_volume", loaded.volume},
+      {"wiped_volume", wiped.volume},
+      {"pigment_amounts", pigments},
+      {"samples", report.samples},
+      {"strokes", report.strokes},
+      {"steps", painting.steps()},
+      {"cells_updated", painting.cells_updated()},
+      {"seconds", report.seconds},
+      {"dry_layers", painting.canvas().dry_layers().size()},
+      {"allocated_tiles", painting.canvas().allocated_tiles()},
+      {"memory_bytes", painting.memory_bytes()},
+      {"nonfinite", painting.nonfinite_count()},
+      {"state_hash", hex64(painting.state_hash())}};
+}
+
+}  // namespace impasto::app
