@@ -10,46 +10,93 @@
 
 namespace impasto::paintcore {
 
+namespace {
+
+// The shares one row of cells sends. Branch-free so that it vectorises.
+void prepare_row(int width, const float* __restrict vx, const float* __restrict vy,
+                 const float* __restrict volume, float min_film_mm, float* __restrict stay,
+                 float* __restrict east, float* __restrict west, float* __restrict south,
+                 float* __restrict north, float* __restrict south_east,
+                 float* __restrict south_west, float* __restrict north_east,
+                 float* __restrict north_west) {
+  for (int x = 0; x < width; ++x) {
+    const float ax = std::abs(vx[x]);
+    const float ay = std::abs(vy[x]);
+    // The translated column overlaps the neighbours by these areas (Fig. 4, in 2D).
+    const float leaving_share = ax + ay - ax * ay;
+    const float leaving = volume[x] * leaving_share;
+    // Scale the shares that leave so that at least the minimum film stays (adhesion).
+    const float room = volume[x] - min_film_mm;
+    const bool moves = leaving > 0.0f;
+    const float ratio = room / (moves ? leaving : 1.0f);  // never divides by zero
+    const float scale = moves ? std::min(std::max(ratio, 0.0f), 1.0f) : 0.0f;
+    const float px = std::max(vx[x], 0.0f) * scale;
+    const float mx = std::max(-vx[x], 0.0f) * scale;
+    const float py = std::max(vy[x], 0.0f);
+    const float my = std::max(-vy[x], 0.0f);
+    stay[x] = 1.0f - scale * leaving_share;
+    east[x] = px * (1.0f - ay);
+    west[x] = mx * (1.0f - ay);
+    south[x] = scale * py * (1.0f - ax);
+    north[x] = scale * my * (1.0f - ax);
+    south_east[x] = px * py;
+    south_west[x] = mx * py;
+    north_east[x] = px * my;
+    north_west[x] = mx * my;
+  }
+}
+
+// One row of the gather: each cell sums the shares its neighbours send it, in a fixed order
+// of terms, so that the sum is the same on any thread.
+void gather_row(int width, std::ptrdiff_t s, const float* __restrict c, float* __restrict o,
+                const float* __restrict from_self, const float* __restrict from_w,
+                const float* __restrict from_e, const float* __restrict from_n,
+                const float* __restrict from_s, const float* __restrict from_nw,
+                const float* __restrict from_ne, const float* __restrict from_sw,
+                const float* __restrict from_se) {
+  for (int x = 0; x < width; ++x) {
+    float sum = from_self[x] * c[x];
+    sum += from_w[x] * c[x - 1];
+    sum += from_e[x] * c[x + 1];
+    sum += from_n[x] * c[x - s];
+    sum += from_s[x] * c[x + s];
+    sum += from_nw[x] * c[x - s - 1];
+    sum += from_ne[x] * c[x - s + 1];
+    sum += from_sw[x] * c[x + s - 1];
+    sum += from_se[x] * c[x + s + 1];
+    o[x] = sum;
+  }
+}
+
+}  // namespace
+
 void Advection::prepare(int width, int height, const float* vx, const float* vy,
                         const float* volume, float min_film_mm) {
   width_ = width;
   height_ = height;
   const std::size_t n = padded_size();
-  for (auto* grid : {&stay_, &east_, &west_, &south_, &north_, &south_east_, &south_west_,
-                     &north_east_, &north_west_})
-    grid->assign(n, 0.0f);
   const int stride = width + 2;
+  // Every real cell is written below; only the border needs clearing.
+  for (auto* grid : {&stay_, &east_, &west_, &south_, &north_, &south_east_, &south_west_,
+                     &north_east_, &north_west_}) {
+    if (grid->size() < n) grid->resize(n);
+    float* g = grid->data();
+    std::fill(g, g + stride, 0.0f);
+    std::fill(g + static_cast<std::ptrdiff_t>(height + 1) * stride,
+              g + static_cast<std::ptrdiff_t>(height + 2) * stride, 0.0f);
+    for (int y = 1; y <= height; ++y) {
+      g[static_cast<std::ptrdiff_t>(y) * stride] = 0.0f;
+      g[static_cast<std::ptrdiff_t>(y) * stride + width + 1] = 0.0f;
+    }
+  }
   parallel_rows(height, width, [&](int y0, int y1) {
-    for (int y = y0; y < y1; ++y)
-      for (int x = 0; x < width; ++x) {
-        const std::size_t i = static_cast<std::size_t>(y + 1) * stride + x + 1;
-        const float ax = std::abs(vx[i]);
-        const float ay = std::abs(vy[i]);
-        // The translated column overlaps the neighbours by these areas (Fig. 4, in 2D).
-        const float leaving_share = ax + ay - ax * ay;
-        float scale = 1.0f;  // of the shares that leave; < 1 keeps the minimum film
-        const float q = volume[i];
-        if (leaving_share > 0.0f) {
-          const float leaving = q * leaving_share;
-          if (q <= min_film_mm || leaving <= 0.0f)
-            scale = 0.0f;
-          else if (q - leaving < min_film_mm)
-            scale = (q - min_film_mm) / leaving;
-        }
-        const float px = std::max(vx[i], 0.0f) * scale;
-        const float mx = std::max(-vx[i], 0.0f) * scale;
-        const float py = std::max(vy[i], 0.0f);
-        const float my = std::max(-vy[i], 0.0f);
-        stay_[i] = 1.0f - scale * leaving_share;
-        east_[i] = px * (1.0f - ay);
-        west_[i] = mx * (1.0f - ay);
-        south_[i] = scale * py * (1.0f - ax);
-        north_[i] = scale * my * (1.0f - ax);
-        south_east_[i] = px * py;
-        south_west_[i] = mx * py;
-        north_east_[i] = px * my;
-        north_west_[i] = mx * my;
-      }
+    for (int y = y0; y < y1; ++y) {
+      const std::size_t i = static_cast<std::size_t>(y + 1) * stride + 1;
+      prepare_row(width, vx + i, vy + i, volume + i, min_film_mm, stay_.data() + i,
+                  east_.data() + i, west_.data() + i, south_.data() + i, north_.data() + i,
+                  south_east_.data() + i, south_west_.data() + i, north_east_.data() + i,
+                  north_west_.data() + i);
+    }
   });
 }
 
@@ -63,36 +110,16 @@ void Advection::apply(const float* const* q, float* const* out, int count) const
 
 void Advection::apply_rows(const float* const* q, float* const* out, int count, int y0,
                            int y1) const {
-  const std::ptrdiff_t s = width_ + 2;
+  const int width = width_;
+  const std::ptrdiff_t s = width + 2;
   for (int y = y0; y < y1; ++y) {
     const std::ptrdiff_t row = (y + 1) * s + 1;
     // Shares arriving from each neighbour: the neighbour to the west sends east, etc.
-    const float* from_self = stay_.data() + row;
-    const float* from_w = east_.data() + row - 1;
-    const float* from_e = west_.data() + row + 1;
-    const float* from_n = south_.data() + row - s;
-    const float* from_s = north_.data() + row + s;
-    const float* from_nw = south_east_.data() + row - s - 1;
-    const float* from_ne = south_west_.data() + row - s + 1;
-    const float* from_sw = north_east_.data() + row + s - 1;
-    const float* from_se = north_west_.data() + row + s + 1;
-    for (int k = 0; k < count; ++k) {
-      const float* c = q[k] + row;
-      float* o = out[k] + row;
-      for (int x = 0; x < width_; ++x) {
-        // A fixed order of terms: the same sum on any thread.
-        float sum = from_self[x] * c[x];
-        sum += from_w[x] * c[x - 1];
-        sum += from_e[x] * c[x + 1];
-        sum += from_n[x] * c[x - s];
-        sum += from_s[x] * c[x + s];
-        sum += from_nw[x] * c[x - s - 1];
-        sum += from_ne[x] * c[x - s + 1];
-        sum += from_sw[x] * c[x + s - 1];
-        sum += from_se[x] * c[x + s + 1];
-        o[x] = sum;
-      }
-    }
+    for (int k = 0; k < count; ++k)
+      gather_row(width, s, q[k] + row, out[k] + row, stay_.data() + row, east_.data() + row - 1,
+                 west_.data() + row + 1, south_.data() + row - s, north_.data() + row + s,
+                 south_east_.data() + row - s - 1, south_west_.data() + row - s + 1,
+                 north_east_.data() + row + s - 1, north_west_.data() + row + s + 1);
   }
 }
 

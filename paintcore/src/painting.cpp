@@ -246,7 +246,8 @@ void Painting::stroke_to(const PenSample& sample) {
   const double dx = (target.x_cells - from.x_cells) * (t1 - t0);
   const double dy = (target.y_cells - from.y_cells) * (t1 - t0);
   // CFL: the brush moves at most one cell per step.
-  const auto count = static_cast<std::int64_t>(std::max(1.0, std::ceil(std::hypot(dx, dy))));
+  // (A hair under a whole cell counts as one: positions come from mm and carry rounding.)
+  const auto count = static_cast<std::int64_t>(std::max(1.0, std::ceil(std::hypot(dx, dy) - 1e-9)));
   const double move_x = dx / static_cast<double>(count);
   const double move_y = dy / static_cast<double>(count);
   const bool moving = dx != 0.0 || dy != 0.0;

@@ -35,6 +35,7 @@ void Stepper::resize(const Window& w, int slot_count, std::size_t brush_cells) {
   if (new_pigment_.size() < n * slots) new_pigment_.resize(n * slots);
   if (brush_cell_.size() < cells) brush_cell_.resize(cells);
   if (xfer_.size() < cells) xfer_.resize(cells);
+  if (xfer_ratio_.size() < cells) xfer_ratio_.resize(cells);
   if (xfer_pigment_.size() < cells * slots) xfer_pigment_.resize(cells * slots);
   brush_share_.assign(brush_cells, 0);
   row_contacts_.assign(static_cast<std::size_t>(w.height), 0);
@@ -119,25 +120,29 @@ int Stepper::penetrate(const Canvas& canvas, const Brush& brush, const BrushPlac
   const int n = brush.cells_across();
   const float* footprint = brush.footprint_mm().data();
   const std::uint8_t* covers = brush.covers().data();
+  const double n_limit = n;
   parallel_rows(w.height, w.width, [&](int r0, int r1) {
     for (int y = r0; y < r1; ++y) {
       int contacts = 0;
-      for (int x = 0; x < w.width; ++x) {
-        const std::size_t i = static_cast<std::size_t>(y + 1) * w.stride() + x + 1;
-        const std::size_t c = static_cast<std::size_t>(y) * w.width + x;
-        double bx, by;
-        placement.brush_coords(w.x0 + x + 0.5, w.y0 + y + 0.5, bx, by);
-        const int bi = static_cast<int>(std::floor(bx));
-        const int bj = static_cast<int>(std::floor(by));
-        pen_[i] = 0.0f;
-        brush_cell_[c] = -1;
-        if (bi < 0 || bj < 0 || bi >= n || bj >= n) continue;
-        const std::int32_t b = bj * n + bi;
+      // Brush coordinates are affine in x: start at the row's first cell centre and step.
+      double bx, by;
+      placement.brush_coords(w.x0 + 0.5, w.y0 + y + 0.5, bx, by);
+      const double step_x = placement.to_brush[0], step_y = placement.to_brush[2];
+      float* pen = pen_.data() + static_cast<std::size_t>(y + 1) * w.stride() + 1;
+      const float* ground = ground_.data() + static_cast<std::size_t>(y + 1) * w.stride() + 1;
+      const float* wet = wet_.data() + static_cast<std::size_t>(y + 1) * w.stride() + 1;
+      std::int32_t* cell = brush_cell_.data() + static_cast<std::size_t>(y) * w.width;
+      for (int x = 0; x < w.width; ++x, bx += step_x, by += step_y) {
+        pen[x] = 0.0f;
+        cell[x] = -1;
+        // (Tested before the cast, which truncates towards zero.)
+        if (!(bx >= 0.0 && by >= 0.0 && bx < n_limit && by < n_limit)) continue;
+        const std::int32_t b = static_cast<int>(by) * n + static_cast<int>(bx);
         if (!covers[b]) continue;
-        const float penetration = ground_[i] + wet_[i] - (tip_mm + footprint[b]);
+        const float penetration = ground[x] + wet[x] - (tip_mm + footprint[b]);
         if (penetration > 0.0f) {
-          pen_[i] = penetration;
-          brush_cell_[c] = b;
+          pen[x] = penetration;
+          cell[x] = b;
           ++contacts;
         }
       }
@@ -159,24 +164,29 @@ void Stepper::velocity(const Canvas& canvas, const SimulationParams& params, dou
   const int last_x = canvas.width_cells() - 1, last_y = canvas.height_cells() - 1;
   const std::ptrdiff_t s = w.stride();
   parallel_rows(w.height, w.width, [&](int r0, int r1) {
-    for (int y = r0; y < r1; ++y)
+    for (int y = r0; y < r1; ++y) {
+      const std::ptrdiff_t row = (y + 1) * s + 1;
+      const float* __restrict pen = pen_.data() + row;
+      const std::int32_t* __restrict cell =
+          brush_cell_.data() + static_cast<std::ptrdiff_t>(y) * w.width;
+      float* __restrict vx = vx_.data() + row;
+      float* __restrict vy = vy_.data() + row;
+      // Only paint under the brush moves (branch-free, so that it vectorises).
       for (int x = 0; x < w.width; ++x) {
-        const std::ptrdiff_t i = (y + 1) * s + x + 1;
-        const std::size_t c = static_cast<std::size_t>(y) * w.width + x;
-        float vx = 0.0f, vy = 0.0f;
-        if (brush_cell_[c] >= 0) {  // only paint under the brush moves
-          vx = std::clamp(brush_vx - gradient_scale * (pen_[i + 1] - pen_[i - 1]), -1.0f, 1.0f);
-          vy = std::clamp(brush_vy - gradient_scale * (pen_[i + s] - pen_[i - s]), -1.0f, 1.0f);
-          // Cells beyond the canvas do not exist: paint at the edge cannot leave.
-          const int cx = w.x0 + x, cy = w.y0 + y;
-          if (cx == 0) vx = std::max(vx, 0.0f);
-          if (cx == last_x) vx = std::min(vx, 0.0f);
-          if (cy == 0) vy = std::max(vy, 0.0f);
-          if (cy == last_y) vy = std::min(vy, 0.0f);
-        }
-        vx_[static_cast<std::size_t>(i)] = vx;
-        vy_[static_cast<std::size_t>(i)] = vy;
+        const bool touches = cell[x] >= 0;
+        const float ux = brush_vx - gradient_scale * (pen[x + 1] - pen[x - 1]);
+        const float uy = brush_vy - gradient_scale * (pen[x + s] - pen[x - s]);
+        vx[x] = touches ? std::min(std::max(ux, -1.0f), 1.0f) : 0.0f;
+        vy[x] = touches ? std::min(std::max(uy, -1.0f), 1.0f) : 0.0f;
       }
+      // Cells beyond the canvas do not exist: paint at the edge cannot leave.
+      if (w.x0 == 0) vx[0] = std::max(vx[0], 0.0f);
+      if (w.x0 + w.width - 1 == last_x) vx[w.width - 1] = std::min(vx[w.width - 1], 0.0f);
+      if (w.y0 + y == 0)
+        for (int x = 0; x < w.width; ++x) vy[x] = std::max(vy[x], 0.0f);
+      if (w.y0 + y == last_y)
+        for (int x = 0; x < w.width; ++x) vy[x] = std::min(vy[x], 0.0f);
+    }
   });
 }
 
@@ -185,43 +195,63 @@ void Stepper::transfer(Brush& brush, int slot_count, const SimulationParams& par
   const std::size_t n = w.padded();
   const std::size_t cells = static_cast<std::size_t>(w.width) * w.height;
   const std::size_t brush_cells = brush.cell_count();
+  // Algorithm 1 with the velocity cut-off, the same for every cell, folded into one factor.
+  const TransferConstants<float> constants(params);
+  const float source_share =
+      constants.xfer_fraction *
+      smoothstep(constants.velocity_low, constants.velocity_high, static_cast<float>(speed));
+  if (source_share == 0.0f) return;  // too slow to pull paint off the brush or canvas
   // A brush cell may touch several canvas cells (rotation, tilt): each gets an equal share
   // of its paint, so together they never take more than the brush cell holds.
   for (std::size_t c = 0; c < cells; ++c)
     if (brush_cell_[c] >= 0) ++brush_share_[static_cast<std::size_t>(brush_cell_[c])];
-  const TransferConstants<float> constants(params);
-  const float brush_speed = static_cast<float>(speed);
   const float* brush_volume = brush.volume_mm().data();
   const float* brush_pigment = brush.pigment_mm().data();
+  const std::int32_t* share = brush_share_.data();
   parallel_rows(w.height, w.width, [&](int r0, int r1) {
-    for (int y = r0; y < r1; ++y)
+    for (int y = r0; y < r1; ++y) {
+      const std::size_t row = static_cast<std::size_t>(y + 1) * w.stride() + 1;
+      const std::size_t first = static_cast<std::size_t>(y) * w.width;
+      const std::int32_t* cell = brush_cell_.data() + first;
+      const float* pen = pen_.data() + row;
+      const float* wet = wet_.data() + row;
+      float* new_wet = new_wet_.data() + row;
+      float* xfer = xfer_.data() + first;
+      float* ratio = xfer_ratio_.data() + first;
+      // Branch-free: which way paint flows differs from cell to cell.
       for (int x = 0; x < w.width; ++x) {
-        const std::size_t c = static_cast<std::size_t>(y) * w.width + x;
-        const std::int32_t b = brush_cell_[c];
-        xfer_[c] = 0.0f;
-        if (b < 0) continue;
-        const std::size_t i = static_cast<std::size_t>(y + 1) * w.stride() + x + 1;
-        const std::size_t bc = static_cast<std::size_t>(b);
+        const std::int32_t b = cell[x] >= 0 ? cell[x] : 0;
+        const bool touches = cell[x] >= 0;
         // a_c: the canvas paint the brush penetrates (fraction of the wet layer's depth).
-        const float penetrated = wet_[i] > 0.0f ? std::min(pen_[i] / wet_[i], 1.0f) : 0.0f;
-        const float a_c = new_wet_[i] * penetrated;
-        const float a_b = brush_volume[bc] / static_cast<float>(brush_share_[bc]);
-        const float amount = brush_transfer_amount(a_c, a_b, brush_speed, constants);
-        if (amount == 0.0f) continue;
-        // Pigments go with the paint in the source's proportions (volume-weighted mixing).
-        const bool deposit = amount > 0.0f;
-        const float ratio_base = deposit ? amount / brush_volume[bc] : amount / new_wet_[i];
-        for (int s = 0; s < slot_count; ++s) {
-          const std::size_t k = static_cast<std::size_t>(s);
-          float& canvas_amount = new_pigment_[k * n + i];
-          const float source = deposit ? brush_pigment[k * brush_cells + bc] : canvas_amount;
-          const float moved = source * ratio_base;  // signed like amount
-          canvas_amount += moved;
-          xfer_pigment_[k * cells + c] = moved;
-        }
-        new_wet_[i] += amount;
-        xfer_[c] = amount;
+        const float depth = wet[x] > 0.0f ? wet[x] : 1.0f;
+        const float a_c = wet[x] > 0.0f ? new_wet[x] * std::min(pen[x] / depth, 1.0f) : 0.0f;
+        const float a_b = brush_volume[b] / static_cast<float>(touches ? share[b] : 1);
+        const float paint_diff = a_b - a_c;
+        const bool deposit = paint_diff > 0.0f;
+        const float equal_paint_cutoff =
+            std::min(std::abs(paint_diff) * constants.inv_equal_paint_cutoff, 1.0f);
+        const float magnitude =
+            std::min((deposit ? a_b : a_c) * source_share * equal_paint_cutoff, constants.max_xfer);
+        const float amount = touches ? (deposit ? magnitude : -magnitude) : 0.0f;
+        // Pigments go in the source's proportions: moved = source amount * ratio.
+        const float source = deposit ? brush_volume[b] : new_wet[x];
+        ratio[x] = amount / (source > 0.0f ? source : 1.0f);
+        xfer[x] = amount;
+        new_wet[x] += amount;
       }
+      for (int s = 0; s < slot_count; ++s) {
+        const std::size_t k = static_cast<std::size_t>(s);
+        float* canvas_amount = new_pigment_.data() + k * n + row;
+        float* moved = xfer_pigment_.data() + k * cells + first;
+        const float* from_brush = brush_pigment + k * brush_cells;
+        for (int x = 0; x < w.width; ++x) {
+          const std::int32_t b = cell[x] >= 0 ? cell[x] : 0;
+          const float source = xfer[x] > 0.0f ? from_brush[b] : canvas_amount[x];
+          moved[x] = source * ratio[x];  // signed like the paint; 0 where nothing moves
+          canvas_amount[x] += moved[x];
+        }
+      }
+    }
   });
   // The brush side, in a fixed order: exactly what each canvas cell gained, the brush lost.
   float* volume = brush.volume_mm().data();

@@ -54,6 +54,7 @@ class Stepper {
   // Unpadded per-cell data of the transfer.
   std::vector<std::int32_t> brush_cell_;   // brush cell touching each window cell, or -1
   std::vector<float> xfer_;                // paint height moved brush -> canvas (signed)
+  std::vector<float> xfer_ratio_;          // xfer_ / the source's paint height
   std::vector<float> xfer_pigment_;        // pigment moved brush -> canvas, slot-major
   std::vector<std::int32_t> brush_share_;  // canvas cells touching each brush cell
   std::vector<int> row_contacts_;
