@@ -46,36 +46,27 @@ void validate(const CavityDims& dims) {
   }
 }
 
-namespace {
-
-// Half-angle beta of the arc of a circular segment of chord 2R and sagitta L, seen from the
-// circle's centre and measured from the deepest point: cos(beta) = 1 - L / r.
-double arc_half_angle(double L, double R) {
-  return 2.0 * std::atan2(L, R);
-}
-
-}  // namespace
-
 CavityAreas cavity_areas(CavityShape shape, const CavityDims& d) {
   const double L = d.depth_mm;
   const double R = d.half_width_mm;
   const double pi = std::numbers::pi;
   switch (shape) {
     case CavityShape::ArcGroove: {
-      // Circle through (+-R, 0) and (0, -L): radius r = (R^2 + L^2) / 2L; arc = 2 r beta.
-      // For L -> 0 the arc tends to the chord; r beta = R beta / sin(beta) keeps precision.
-      const double beta = arc_half_angle(L, R);
-      const double r_beta = beta > 1e-12 ? R * beta / std::sin(beta) : R;
-      return {2.0 * R, 2.0 * r_beta};
+      // Circle through (+-R, 0) and (0, -L): radius r = (R^2 + L^2) / 2L, arc = 2 r beta with
+      // beta = 2 atan(L / R). Written as r beta = beta (R^2 + L^2) / 2L, which tends to R as
+      // L -> 0 (the arc becomes the chord); below 1e-8 R that limit is used directly.
+      if (L < 1e-8 * R) return {2.0 * R, 2.0 * R};
+      const double beta = 2.0 * std::atan(L / R);
+      return {2.0 * R, beta * (R * R + L * L) / L};
     }
     case CavityShape::VGroove:
-      return {2.0 * R, 2.0 * std::hypot(R, L)};
+      return {2.0 * R, 2.0 * std::sqrt(R * R + L * L)};
     case CavityShape::BoxGroove:
       return {2.0 * R, 2.0 * R + 2.0 * L};
     case CavityShape::SpherePit:
       return {pi * R * R, pi * (R * R + L * L)};
     case CavityShape::ConePit:
-      return {pi * R * R, pi * R * std::hypot(R, L)};
+      return {pi * R * R, pi * R * std::sqrt(R * R + L * L)};
     case CavityShape::CylinderPit:
       return {pi * R * R, pi * R * R + 2.0 * pi * R * L};
   }
@@ -92,7 +83,7 @@ ViewFactors view_factors(CavityShape shape, const CavityDims& dims) {
   // F: the deepest element, facing +z, sees the opening (half-width R) at height L.
   // Grooves (2-D): F = (sin phi2 - sin phi1) / 2 with phi = +-atan(R/L): R / sqrt(R^2+L^2).
   // Pits (disc of radius R on the axis): F = sin^2(atan(R/L)) = R^2 / (R^2 + L^2).
-  const double sin_half_angle = R / std::hypot(R, L);
+  const double sin_half_angle = R / std::sqrt(R * R + L * L);
   vf.F = is_groove(shape) ? sin_half_angle : sin_half_angle * sin_half_angle;
   return vf;
 }
