@@ -5,6 +5,7 @@
 #include <map>
 #include <mutex>
 #include <stdexcept>
+#include <tuple>
 
 #include "impasto/data/data_dir.hpp"
 #include "impasto/data/spectral_csv.hpp"
@@ -14,6 +15,17 @@ namespace {
 
 std::filesystem::path illuminant_folder() {
   return data_dir() / "spectra" / "illuminants";
+}
+
+// "F2" before "F10": compare the letters, then the number that follows them.
+bool natural_less(const std::string& a, const std::string& b) {
+  auto split = [](const std::string& s) {
+    const auto digits = s.find_first_of("0123456789");
+    const std::string letters = s.substr(0, digits);
+    const std::string number = digits == std::string::npos ? "" : s.substr(digits);
+    return std::make_tuple(letters, number.size(), number);
+  };
+  return split(a) < split(b);
 }
 
 std::string upper(std::string_view text) {
@@ -47,7 +59,7 @@ std::vector<std::string> illuminant_names() {
   for (const auto& entry : std::filesystem::directory_iterator(illuminant_folder())) {
     if (entry.path().extension() == ".csv") names.push_back(entry.path().stem().string());
   }
-  std::sort(names.begin(), names.end());
+  std::sort(names.begin(), names.end(), natural_less);
   return names;
 }
 

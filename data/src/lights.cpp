@@ -83,9 +83,9 @@ Spectrum light_from_spec(std::string_view spec) {
     }
     return blackbody(kelvin, wavelength_grid(300.0, 830.0, 1.0));
   }
-  const std::filesystem::path path(spec);
-  if (std::filesystem::is_regular_file(path)) return light_from_csv(path);
-  for (const auto& name : illuminant_names()) {
+  // Illuminant names win over files of the same name in the working folder.
+  const auto names = illuminant_names();
+  for (const auto& name : names) {
     if (name.size() == spec.size() &&
         std::equal(name.begin(), name.end(), spec.begin(), [](char a, char b) {
           return std::toupper(static_cast<unsigned char>(a)) ==
@@ -94,8 +94,10 @@ Spectrum light_from_spec(std::string_view spec) {
       return cie_illuminant(name);
     }
   }
+  const std::filesystem::path path(spec);
+  if (std::filesystem::exists(path) || path.extension() == ".csv") return light_from_csv(path);
   std::string known;
-  for (const auto& name : illuminant_names()) known += (known.empty() ? "" : ", ") + name;
+  for (const auto& name : names) known += (known.empty() ? "" : ", ") + name;
   throw std::runtime_error("unknown light '" + std::string(spec) +
                            "': expected a CIE illuminant (" + known +
                            "), blackbody:KELVIN, or the path of a light CSV");

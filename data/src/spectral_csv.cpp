@@ -283,7 +283,12 @@ std::string format_spectral_csv(const SpectralTable& table) {
     out += "# quantity: " + std::string(to_string(table.quantity)) + "\n";
   }
   for (const auto& [key, value] : table.metadata) {
-    if (key != "quantity") out += "# " + key + ": " + value + "\n";
+    if (key == "quantity") continue;
+    if (trim(key).empty() || key.find_first_of(":\n\r") != std::string::npos ||
+        value.find_first_of("\n\r") != std::string::npos) {
+      throw std::runtime_error("metadata '" + key + "' cannot be written as '# key: value'");
+    }
+    out += "# " + key + ": " + value + "\n";
   }
   out += "wavelength_nm";
   for (const auto& column : table.columns) {

@@ -115,6 +115,26 @@ TEST(KsFit, RejectsInconsistentProblems) {
   EXPECT_THROW(fit_kubelka_munk(problem), std::runtime_error);
 }
 
+TEST(KsFit, ShippedExampleGivesBackTheShippedPigments) {
+  // The example's reflectances were computed from the shipped K and S and rounded to 6
+  // decimals, so the fit returns them up to that rounding.
+  const KsFitProblem problem =
+      read_ks_measurements(std::filesystem::path(IMPASTO_SOURCE_DIR) /
+                           "data/measurements/golden_synthetic_mixtures.csv");
+  ASSERT_TRUE(problem.saunderson.has_value());
+  const KsFitResult fit = fit_kubelka_munk(problem);
+  const PigmentDatabase& db = PigmentDatabase::defaults();
+  for (const Pigment& p : fit.pigments) {
+    const Pigment& shipped = db.get(p.name);
+    for (std::size_t w = 0; w < p.K.values.size(); ++w) {
+      const double nm = p.K.wavelengths_nm[w];
+      EXPECT_NEAR(p.K.values[w], shipped.K.at(nm), 2e-3 * (1 + shipped.K.at(nm))) << p.name << nm;
+      EXPECT_NEAR(p.S.values[w], shipped.S.at(nm), 2e-3 * (1 + shipped.S.at(nm))) << p.name << nm;
+    }
+  }
+  for (const KsSampleResidual& r : fit.residuals) EXPECT_LT(r.max_reflectance, 1e-3) << r.name;
+}
+
 class KsMeasurementsFile : public testing::Test {
  protected:
   std::filesystem::path path_ =

@@ -77,6 +77,15 @@ TEST(LightFromSpec, NamesBlackbodiesAndFiles) {
   std::filesystem::remove(path);
 }
 
+TEST(LightFromSpec, AMissingCsvIsNamedInTheError) {
+  try {
+    light_from_spec("no_such_lamp.csv");
+    FAIL() << "a missing file was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("no_such_lamp.csv"), std::string::npos) << e.what();
+  }
+}
+
 TEST(LightFromSpec, RejectsUnknownSpecsWithTheChoices) {
   for (const char* spec :
        {"blackbody:", "blackbody:-3", "blackbody:50", "blackbody:5k", "sunlight"}) {

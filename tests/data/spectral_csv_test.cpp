@@ -110,6 +110,15 @@ TEST(SpectralCsv, RejectsEachKindOfBadFileWithFileLineColumn) {
   }
 }
 
+TEST(SpectralCsv, WriterRefusesMetadataThatWouldNotReadBack) {
+  SpectralTable t = parse_spectral_csv(kGood, "good.csv");
+  t.metadata["note"] = "two\nlines";
+  EXPECT_THROW(format_spectral_csv(t), std::runtime_error);
+  t.metadata.erase("note");
+  t.metadata["a: b"] = "c";
+  EXPECT_THROW(format_spectral_csv(t), std::runtime_error);
+}
+
 TEST(SpectralCsv, WithoutQuantityAcceptsAnyFiniteValue) {
   const SpectralTable t = parse_spectral_csv("wavelength_nm,a\n400,-7\n410,1e5\n", "any.csv");
   EXPECT_EQ(t.quantity, SpectralQuantity::unspecified);

@@ -15,7 +15,7 @@ const ColorMatchingFunctions& cie1931_2deg();
 // "F2", "F7", "F11", ...; case-insensitive). Throws std::runtime_error listing the names.
 Spectrum cie_illuminant(std::string_view name);
 
-// The illuminants cie_illuminant() knows, sorted.
+// The illuminants cie_illuminant() knows, in natural order (A, B, ..., F2, F3, ..., F12).
 std::vector<std::string> illuminant_names();
 
 }  // namespace impasto::data
