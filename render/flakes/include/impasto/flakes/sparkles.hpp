@@ -51,6 +51,7 @@ struct FlakeTile {
   std::span<const float> normals;            // 3 per cell (x, y, z); empty: (0, 0, 1)
 };
 
+// Immutable after construction: its const methods may run on many threads at once.
 class SparkleRenderer {
  public:
   SparkleRenderer(const FlakePaint& paint, std::span<const double> wavelengths_nm,
