@@ -137,8 +137,11 @@ TEST(KsFit, ShippedExampleGivesBackTheShippedPigments) {
 
 class KsMeasurementsFile : public testing::Test {
  protected:
+  // One file per test, so that tests run in parallel do not share it.
   std::filesystem::path path_ =
-      std::filesystem::path(testing::TempDir()) / "impasto_ks_measurements_test.csv";
+      std::filesystem::path(testing::TempDir()) /
+      (std::string("impasto_ks_") + testing::UnitTest::GetInstance()->current_test_info()->name() +
+       ".csv");
   void TearDown() override { std::filesystem::remove(path_); }
   void write(const std::string& text) { std::ofstream(path_) << text; }
   std::string error() {
