@@ -70,13 +70,12 @@ void gather_row(int width, std::ptrdiff_t s, const float* __restrict c, float* _
 
 }  // namespace
 
-void Advection::prepare(int width, int height, const float* vx, const float* vy,
-                        const float* volume, float min_film_mm) {
+void Advection::resize(int width, int height) {
   width_ = width;
   height_ = height;
   const std::size_t n = padded_size();
   const int stride = width + 2;
-  // Every real cell is written below; only the border needs clearing.
+  // Every real cell is written by prepare_rows; only the border needs clearing.
   for (auto* grid : {&stay_, &east_, &west_, &south_, &north_, &south_east_, &south_west_,
                      &north_east_, &north_west_}) {
     if (grid->size() < n) grid->resize(n);
@@ -89,15 +88,24 @@ void Advection::prepare(int width, int height, const float* vx, const float* vy,
       g[static_cast<std::ptrdiff_t>(y) * stride + width + 1] = 0.0f;
     }
   }
-  parallel_rows(height, width, [&](int y0, int y1) {
-    for (int y = y0; y < y1; ++y) {
-      const std::size_t i = static_cast<std::size_t>(y + 1) * stride + 1;
-      prepare_row(width, vx + i, vy + i, volume + i, min_film_mm, stay_.data() + i,
-                  east_.data() + i, west_.data() + i, south_.data() + i, north_.data() + i,
-                  south_east_.data() + i, south_west_.data() + i, north_east_.data() + i,
-                  north_west_.data() + i);
-    }
-  });
+}
+
+void Advection::prepare_rows(int y0, int y1, const float* vx, const float* vy, const float* volume,
+                             float min_film_mm) {
+  const int stride = width_ + 2;
+  for (int y = y0; y < y1; ++y) {
+    const std::size_t i = static_cast<std::size_t>(y + 1) * stride + 1;
+    prepare_row(width_, vx + i, vy + i, volume + i, min_film_mm, stay_.data() + i, east_.data() + i,
+                west_.data() + i, south_.data() + i, north_.data() + i, south_east_.data() + i,
+                south_west_.data() + i, north_east_.data() + i, north_west_.data() + i);
+  }
+}
+
+void Advection::prepare(int width, int height, const float* vx, const float* vy,
+                        const float* volume, float min_film_mm) {
+  resize(width, height);
+  parallel_rows(height, width,
+                [&](int y0, int y1) { prepare_rows(y0, y1, vx, vy, volume, min_film_mm); });
 }
 
 void Advection::apply(const float* q, float* out) const {

@@ -25,7 +25,8 @@ void zero_border(float* grid, int width, int height) {
 
 }  // namespace
 
-void Stepper::resize(const Window& w, int slot_count, std::size_t brush_cells) {
+void Stepper::resize(int slot_count, std::size_t brush_cells) {
+  const Window& w = win_;
   const std::size_t n = w.padded();
   const std::size_t cells = static_cast<std::size_t>(w.width) * w.height;
   const std::size_t slots = static_cast<std::size_t>(slot_count);
@@ -58,202 +59,177 @@ const float* Stepper::base_heights(const Canvas& canvas, int tile_index) {
   return it->second.data();
 }
 
-void Stepper::gather(const Canvas& canvas, int slot_count) {
-  const Window w = win_;
-  const int tx0 = w.x0 / kTileSize, tx1 = (w.x0 + w.width - 1) / kTileSize;
-  const int ty0 = w.y0 / kTileSize, ty1 = (w.y0 + w.height - 1) / kTileSize;
-  // Base heights of the window's tiles, found (or computed) before the parallel part.
-  std::vector<const float*> bases;
-  for (int ty = ty0; ty <= ty1; ++ty)
-    for (int tx = tx0; tx <= tx1; ++tx)
-      bases.push_back(base_heights(canvas, canvas.tile_index(tx, ty)));
+void Stepper::find_bases(const Canvas& canvas) {
+  const Window& w = win_;
+  tx0_ = w.x0 / kTileSize;
+  ty0_ = w.y0 / kTileSize;
+  const int tx1 = (w.x0 + w.width - 1) / kTileSize, ty1 = (w.y0 + w.height - 1) / kTileSize;
+  tiles_across_ = tx1 - tx0_ + 1;
+  bases_.clear();
+  for (int ty = ty0_; ty <= ty1; ++ty)
+    for (int tx = tx0_; tx <= tx1; ++tx)
+      bases_.push_back(base_heights(canvas, canvas.tile_index(tx, ty)));
+}
+
+void Stepper::gather_rows(const StepInputs& in, int r0, int r1) {
+  const Window& w = win_;
   const std::size_t n = w.padded();
-  const int tiles_across = tx1 - tx0 + 1;
-  parallel_rows(w.height, w.width, [&](int r0, int r1) {
-    for (int y = r0; y < r1; ++y) {
-      const int cy = w.y0 + y;
-      const int ty = cy / kTileSize;
-      for (int tx = tx0; tx <= tx1; ++tx) {
-        const int begin = std::max(w.x0, tx * kTileSize);
-        const int end = std::min(w.x0 + w.width, (tx + 1) * kTileSize);
-        const std::size_t local =
-            static_cast<std::size_t>((cy % kTileSize) * kTileSize + begin - tx * kTileSize);
-        const std::size_t dst = static_cast<std::size_t>(y + 1) * w.stride() +
-                                static_cast<std::size_t>(begin - w.x0 + 1);
-        const std::size_t len = static_cast<std::size_t>(end - begin);
-        const float* base =
-            bases[static_cast<std::size_t>((ty - ty0) * tiles_across + tx - tx0)] + local;
-        const Tile* tile = canvas.tile(tx, ty);
-        if (tile) {
-          const float* dry = tile->dry_height_mm.data() + local;
-          for (std::size_t i = 0; i < len; ++i) ground_[dst + i] = base[i] + dry[i];
-          std::copy_n(tile->wet_volume_mm.data() + local, len,
-                      wet_.begin() + static_cast<std::ptrdiff_t>(dst));
-        } else {
-          std::copy_n(base, len, ground_.begin() + static_cast<std::ptrdiff_t>(dst));
-          std::fill_n(wet_.begin() + static_cast<std::ptrdiff_t>(dst), len, 0.0f);
-        }
-        for (int s = 0; s < slot_count; ++s) {
-          float* out = pigment_.data() + static_cast<std::size_t>(s) * n + dst;
-          const float* in = tile ? tile->pigment(s) : nullptr;
-          if (in)
-            std::copy_n(in + local, len, out);
-          else
-            std::fill_n(out, len, 0.0f);
-        }
+  for (int y = r0; y < r1; ++y) {
+    const int cy = w.y0 + y;
+    const int ty = cy / kTileSize;
+    for (int k = 0; k < tiles_across_; ++k) {
+      const int tx = tx0_ + k;
+      const int begin = std::max(w.x0, tx * kTileSize);
+      const int end = std::min(w.x0 + w.width, (tx + 1) * kTileSize);
+      const std::size_t local =
+          static_cast<std::size_t>((cy % kTileSize) * kTileSize + begin - tx * kTileSize);
+      const std::size_t dst =
+          static_cast<std::size_t>(y + 1) * w.stride() + static_cast<std::size_t>(begin - w.x0 + 1);
+      const std::size_t len = static_cast<std::size_t>(end - begin);
+      const float* base = bases_[static_cast<std::size_t>((ty - ty0_) * tiles_across_ + k)] + local;
+      const Tile* tile = in.canvas->tile(tx, ty);
+      if (tile) {
+        const float* dry = tile->dry_height_mm.data() + local;
+        for (std::size_t i = 0; i < len; ++i) ground_[dst + i] = base[i] + dry[i];
+        std::copy_n(tile->wet_volume_mm.data() + local, len, wet_.data() + dst);
+      } else {
+        std::copy_n(base, len, ground_.data() + dst);
+        std::fill_n(wet_.data() + dst, len, 0.0f);
+      }
+      for (int s = 0; s < in.slot_count; ++s) {
+        float* out = pigment_.data() + static_cast<std::size_t>(s) * n + dst;
+        const float* from = tile ? tile->pigment(s) : nullptr;
+        if (from)
+          std::copy_n(from + local, len, out);
+        else
+          std::fill_n(out, len, 0.0f);
       }
     }
-  });
+  }
 }
 
-int Stepper::penetrate(const Canvas& canvas, const Brush& brush, const BrushPlacement& placement,
-                       double depth_mm) {
-  const Window w = win_;
-  // The tip sinks depth_mm below the paint surface under the brush centre.
-  const int cx =
-      std::clamp(static_cast<int>(std::floor(placement.centre_x)), 0, canvas.width_cells() - 1);
-  const int cy =
-      std::clamp(static_cast<int>(std::floor(placement.centre_y)), 0, canvas.height_cells() - 1);
-  const double surface = static_cast<double>(canvas.base_height_mm(cx, cy)) +
-                         canvas.dry_height_mm(cx, cy) + canvas.wet_volume_mm(cx, cy);
-  const float tip_mm = static_cast<float>(surface - depth_mm);
-  const int n = brush.cells_across();
-  const float* footprint = brush.footprint_mm().data();
-  const std::uint8_t* covers = brush.covers().data();
+void Stepper::penetrate_rows(const StepInputs& in, int r0, int r1) {
+  const Window& w = win_;
+  const int n = in.brush->cells_across();
   const double n_limit = n;
-  parallel_rows(w.height, w.width, [&](int r0, int r1) {
-    for (int y = r0; y < r1; ++y) {
-      int contacts = 0;
-      // Brush coordinates are affine in x: start at the row's first cell centre and step.
-      double bx, by;
-      placement.brush_coords(w.x0 + 0.5, w.y0 + y + 0.5, bx, by);
-      const double step_x = placement.to_brush[0], step_y = placement.to_brush[2];
-      float* pen = pen_.data() + static_cast<std::size_t>(y + 1) * w.stride() + 1;
-      const float* ground = ground_.data() + static_cast<std::size_t>(y + 1) * w.stride() + 1;
-      const float* wet = wet_.data() + static_cast<std::size_t>(y + 1) * w.stride() + 1;
-      std::int32_t* cell = brush_cell_.data() + static_cast<std::size_t>(y) * w.width;
-      for (int x = 0; x < w.width; ++x, bx += step_x, by += step_y) {
-        pen[x] = 0.0f;
-        cell[x] = -1;
-        // (Tested before the cast, which truncates towards zero.)
-        if (!(bx >= 0.0 && by >= 0.0 && bx < n_limit && by < n_limit)) continue;
-        const std::int32_t b = static_cast<int>(by) * n + static_cast<int>(bx);
-        if (!covers[b]) continue;
-        const float penetration = ground[x] + wet[x] - (tip_mm + footprint[b]);
-        if (penetration > 0.0f) {
-          pen[x] = penetration;
-          cell[x] = b;
-          ++contacts;
-        }
+  const float* footprint = in.brush->footprint_mm().data();
+  const std::uint8_t* covers = in.brush->covers().data();
+  for (int y = r0; y < r1; ++y) {
+    int contacts = 0;
+    // Brush coordinates are affine in x: start at the row's first cell centre and step.
+    double bx, by;
+    in.placement.brush_coords(w.x0 + 0.5, w.y0 + y + 0.5, bx, by);
+    const double step_x = in.placement.to_brush[0], step_y = in.placement.to_brush[2];
+    const std::size_t row = static_cast<std::size_t>(y + 1) * w.stride() + 1;
+    float* pen = pen_.data() + row;
+    const float* ground = ground_.data() + row;
+    const float* wet = wet_.data() + row;
+    std::int32_t* cell = brush_cell_.data() + static_cast<std::size_t>(y) * w.width;
+    for (int x = 0; x < w.width; ++x, bx += step_x, by += step_y) {
+      pen[x] = 0.0f;
+      cell[x] = -1;
+      // (Tested before the cast, which truncates towards zero.)
+      if (!(bx >= 0.0 && by >= 0.0 && bx < n_limit && by < n_limit)) continue;
+      const std::int32_t b = static_cast<int>(by) * n + static_cast<int>(bx);
+      if (!covers[b]) continue;
+      const float penetration = ground[x] + wet[x] - (in.tip_mm + footprint[b]);
+      if (penetration > 0.0f) {
+        pen[x] = penetration;
+        cell[x] = b;
+        ++contacts;
       }
-      row_contacts_[static_cast<std::size_t>(y)] = contacts;
     }
-  });
-  int contacts = 0;
-  for (int count : row_contacts_) contacts += count;
-  return contacts;
+    row_contacts_[static_cast<std::size_t>(y)] = contacts;
+  }
 }
 
-void Stepper::velocity(const Canvas& canvas, const SimulationParams& params, double move_x,
-                       double move_y) {
-  const Window w = win_;
-  const float brush_vx = static_cast<float>(0.5 * move_x);
-  const float brush_vy = static_cast<float>(0.5 * move_y);
-  // v_p = -c grad p, with grad p as a slope: mm of penetration per mm across.
-  const float gradient_scale = static_cast<float>(params.pressure_coeff * 0.5 / canvas.cell_mm());
-  const int last_x = canvas.width_cells() - 1, last_y = canvas.height_cells() - 1;
+void Stepper::velocity_rows(const StepInputs& in, int r0, int r1) {
+  const Window& w = win_;
   const std::ptrdiff_t s = w.stride();
-  parallel_rows(w.height, w.width, [&](int r0, int r1) {
-    for (int y = r0; y < r1; ++y) {
-      const std::ptrdiff_t row = (y + 1) * s + 1;
-      const float* __restrict pen = pen_.data() + row;
-      const std::int32_t* __restrict cell =
-          brush_cell_.data() + static_cast<std::ptrdiff_t>(y) * w.width;
-      float* __restrict vx = vx_.data() + row;
-      float* __restrict vy = vy_.data() + row;
-      // Only paint under the brush moves (branch-free, so that it vectorises).
-      for (int x = 0; x < w.width; ++x) {
-        const bool touches = cell[x] >= 0;
-        const float ux = brush_vx - gradient_scale * (pen[x + 1] - pen[x - 1]);
-        const float uy = brush_vy - gradient_scale * (pen[x + s] - pen[x - s]);
-        vx[x] = touches ? std::min(std::max(ux, -1.0f), 1.0f) : 0.0f;
-        vy[x] = touches ? std::min(std::max(uy, -1.0f), 1.0f) : 0.0f;
-      }
-      // Cells beyond the canvas do not exist: paint at the edge cannot leave.
-      if (w.x0 == 0) vx[0] = std::max(vx[0], 0.0f);
-      if (w.x0 + w.width - 1 == last_x) vx[w.width - 1] = std::min(vx[w.width - 1], 0.0f);
-      if (w.y0 + y == 0)
-        for (int x = 0; x < w.width; ++x) vy[x] = std::max(vy[x], 0.0f);
-      if (w.y0 + y == last_y)
-        for (int x = 0; x < w.width; ++x) vy[x] = std::min(vy[x], 0.0f);
+  const int last_x = in.canvas->width_cells() - 1, last_y = in.canvas->height_cells() - 1;
+  for (int y = r0; y < r1; ++y) {
+    const std::ptrdiff_t row = (y + 1) * s + 1;
+    const float* __restrict pen = pen_.data() + row;
+    const std::int32_t* __restrict cell =
+        brush_cell_.data() + static_cast<std::ptrdiff_t>(y) * w.width;
+    float* __restrict vx = vx_.data() + row;
+    float* __restrict vy = vy_.data() + row;
+    // v = 1/2 brush motion - c grad p under the brush, 0 elsewhere (branch-free: vectorises).
+    for (int x = 0; x < w.width; ++x) {
+      const bool touches = cell[x] >= 0;
+      const float ux = in.brush_vx - in.gradient_scale * (pen[x + 1] - pen[x - 1]);
+      const float uy = in.brush_vy - in.gradient_scale * (pen[x + s] - pen[x - s]);
+      vx[x] = touches ? std::min(std::max(ux, -1.0f), 1.0f) : 0.0f;
+      vy[x] = touches ? std::min(std::max(uy, -1.0f), 1.0f) : 0.0f;
     }
-  });
+    // Cells beyond the canvas do not exist: paint at the edge cannot leave.
+    if (w.x0 == 0) vx[0] = std::max(vx[0], 0.0f);
+    if (w.x0 + w.width - 1 == last_x) vx[w.width - 1] = std::min(vx[w.width - 1], 0.0f);
+    if (w.y0 + y == 0)
+      for (int x = 0; x < w.width; ++x) vy[x] = std::max(vy[x], 0.0f);
+    if (w.y0 + y == last_y)
+      for (int x = 0; x < w.width; ++x) vy[x] = std::min(vy[x], 0.0f);
+  }
 }
 
-void Stepper::transfer(Brush& brush, int slot_count, const SimulationParams& params, double speed) {
-  const Window w = win_;
+void Stepper::transfer_rows(const StepInputs& in, int r0, int r1) {
+  const Window& w = win_;
   const std::size_t n = w.padded();
   const std::size_t cells = static_cast<std::size_t>(w.width) * w.height;
-  const std::size_t brush_cells = brush.cell_count();
-  // Algorithm 1 with the velocity cut-off, the same for every cell, folded into one factor.
-  const TransferConstants<float> constants(params);
-  const float source_share =
-      constants.xfer_fraction *
-      smoothstep(constants.velocity_low, constants.velocity_high, static_cast<float>(speed));
-  if (source_share == 0.0f) return;  // too slow to pull paint off the brush or canvas
-  // A brush cell may touch several canvas cells (rotation, tilt): each gets an equal share
-  // of its paint, so together they never take more than the brush cell holds.
-  for (std::size_t c = 0; c < cells; ++c)
-    if (brush_cell_[c] >= 0) ++brush_share_[static_cast<std::size_t>(brush_cell_[c])];
-  const float* brush_volume = brush.volume_mm().data();
-  const float* brush_pigment = brush.pigment_mm().data();
+  const std::size_t brush_cells = in.brush->cell_count();
+  const float* brush_volume = in.brush->volume_mm().data();
+  const float* brush_pigment = in.brush->pigment_mm().data();
   const std::int32_t* share = brush_share_.data();
-  parallel_rows(w.height, w.width, [&](int r0, int r1) {
-    for (int y = r0; y < r1; ++y) {
-      const std::size_t row = static_cast<std::size_t>(y + 1) * w.stride() + 1;
-      const std::size_t first = static_cast<std::size_t>(y) * w.width;
-      const std::int32_t* cell = brush_cell_.data() + first;
-      const float* pen = pen_.data() + row;
-      const float* wet = wet_.data() + row;
-      float* new_wet = new_wet_.data() + row;
-      float* xfer = xfer_.data() + first;
-      float* ratio = xfer_ratio_.data() + first;
-      // Branch-free: which way paint flows differs from cell to cell.
+  for (int y = r0; y < r1; ++y) {
+    const std::size_t row = static_cast<std::size_t>(y + 1) * w.stride() + 1;
+    const std::size_t first = static_cast<std::size_t>(y) * w.width;
+    const std::int32_t* cell = brush_cell_.data() + first;
+    const float* pen = pen_.data() + row;
+    const float* wet = wet_.data() + row;
+    float* new_wet = new_wet_.data() + row;
+    float* xfer = xfer_.data() + first;
+    float* ratio = xfer_ratio_.data() + first;
+    // Algorithm 1 per touching cell; branch-free, as the direction varies from cell to cell.
+    for (int x = 0; x < w.width; ++x) {
+      const bool touches = cell[x] >= 0;
+      const std::int32_t b = touches ? cell[x] : 0;
+      // a_c: the canvas paint the brush penetrates (fraction of the wet layer's depth).
+      const float depth = wet[x] > 0.0f ? wet[x] : 1.0f;
+      const float a_c = wet[x] > 0.0f ? new_wet[x] * std::min(pen[x] / depth, 1.0f) : 0.0f;
+      // a_b: this cell's share of the paint on the brush cell it touches.
+      const float a_b = brush_volume[b] / static_cast<float>(touches ? share[b] : 1);
+      const float paint_diff = a_b - a_c;
+      const bool deposit = paint_diff > 0.0f;
+      const float equal_paint_cutoff =
+          std::min(std::abs(paint_diff) * in.inv_equal_paint_cutoff, 1.0f);
+      const float magnitude =
+          std::min((deposit ? a_b : a_c) * in.source_share * equal_paint_cutoff, in.max_xfer);
+      const float amount = touches ? (deposit ? magnitude : -magnitude) : 0.0f;
+      // Pigments go in the source's proportions (volume-weighted mixing).
+      const float source = deposit ? brush_volume[b] : new_wet[x];
+      ratio[x] = amount / (source > 0.0f ? source : 1.0f);
+      xfer[x] = amount;
+      new_wet[x] += amount;
+    }
+    for (int s = 0; s < in.slot_count; ++s) {
+      const std::size_t k = static_cast<std::size_t>(s);
+      float* canvas_amount = new_pigment_.data() + k * n + row;
+      float* moved = xfer_pigment_.data() + k * cells + first;
+      const float* from_brush = brush_pigment + k * brush_cells;
       for (int x = 0; x < w.width; ++x) {
         const std::int32_t b = cell[x] >= 0 ? cell[x] : 0;
-        const bool touches = cell[x] >= 0;
-        // a_c: the canvas paint the brush penetrates (fraction of the wet layer's depth).
-        const float depth = wet[x] > 0.0f ? wet[x] : 1.0f;
-        const float a_c = wet[x] > 0.0f ? new_wet[x] * std::min(pen[x] / depth, 1.0f) : 0.0f;
-        const float a_b = brush_volume[b] / static_cast<float>(touches ? share[b] : 1);
-        const float paint_diff = a_b - a_c;
-        const bool deposit = paint_diff > 0.0f;
-        const float equal_paint_cutoff =
-            std::min(std::abs(paint_diff) * constants.inv_equal_paint_cutoff, 1.0f);
-        const float magnitude =
-            std::min((deposit ? a_b : a_c) * source_share * equal_paint_cutoff, constants.max_xfer);
-        const float amount = touches ? (deposit ? magnitude : -magnitude) : 0.0f;
-        // Pigments go in the source's proportions: moved = source amount * ratio.
-        const float source = deposit ? brush_volume[b] : new_wet[x];
-        ratio[x] = amount / (source > 0.0f ? source : 1.0f);
-        xfer[x] = amount;
-        new_wet[x] += amount;
-      }
-      for (int s = 0; s < slot_count; ++s) {
-        const std::size_t k = static_cast<std::size_t>(s);
-        float* canvas_amount = new_pigment_.data() + k * n + row;
-        float* moved = xfer_pigment_.data() + k * cells + first;
-        const float* from_brush = brush_pigment + k * brush_cells;
-        for (int x = 0; x < w.width; ++x) {
-          const std::int32_t b = cell[x] >= 0 ? cell[x] : 0;
-          const float source = xfer[x] > 0.0f ? from_brush[b] : canvas_amount[x];
-          moved[x] = source * ratio[x];  // signed like the paint; 0 where nothing moves
-          canvas_amount[x] += moved[x];
-        }
+        const float source = xfer[x] > 0.0f ? from_brush[b] : canvas_amount[x];
+        moved[x] = source * ratio[x];  // signed like the paint; 0 where nothing moves
+        canvas_amount[x] += moved[x];
       }
     }
-  });
-  // The brush side, in a fixed order: exactly what each canvas cell gained, the brush lost.
+  }
+}
+
+void Stepper::transfer_to_brush(Brush& brush, int slot_count) {
+  // In a fixed order: exactly what each canvas cell gained, its brush cell lost.
+  const std::size_t cells = static_cast<std::size_t>(win_.width) * win_.height;
+  const std::size_t brush_cells = brush.cell_count();
   float* volume = brush.volume_mm().data();
   float* pigment = brush.pigment_mm().data();
   for (std::size_t c = 0; c < cells; ++c) {
@@ -266,21 +242,20 @@ void Stepper::transfer(Brush& brush, int slot_count, const SimulationParams& par
 }
 
 void Stepper::scatter(Canvas& canvas, int slot_count, const BeforeTileChange& before_change) {
-  const Window w = win_;
+  const Window& w = win_;
   const std::size_t n = w.padded();
-  const int tx0 = w.x0 / kTileSize, tx1 = (w.x0 + w.width - 1) / kTileSize;
-  const int ty0 = w.y0 / kTileSize, ty1 = (w.y0 + w.height - 1) / kTileSize;
+  const int tx1 = tx0_ + tiles_across_ - 1;
+  const int ty1 = (w.y0 + w.height - 1) / kTileSize;
   // Tiles are made (and every tile recorded for undo) before the parallel writes.
-  for (int ty = ty0; ty <= ty1; ++ty)
-    for (int tx = tx0; tx <= tx1; ++tx) {
+  for (int ty = ty0_; ty <= ty1; ++ty)
+    for (int tx = tx0_; tx <= tx1; ++tx) {
       const int index = canvas.tile_index(tx, ty);
-      const Tile* tile = canvas.tile(index);
-      if (!tile) {
+      if (!canvas.tile(index)) {
         // A tile that was never painted is made only if paint arrived in it.
-        const int bx0 = std::max(w.x0, tx * kTileSize),
-                  bx1 = std::min(w.x0 + w.width, (tx + 1) * kTileSize);
-        const int by0 = std::max(w.y0, ty * kTileSize),
-                  by1 = std::min(w.y0 + w.height, (ty + 1) * kTileSize);
+        const int bx0 = std::max(w.x0, tx * kTileSize);
+        const int bx1 = std::min(w.x0 + w.width, (tx + 1) * kTileSize);
+        const int by0 = std::max(w.y0, ty * kTileSize);
+        const int by1 = std::min(w.y0 + w.height, (ty + 1) * kTileSize);
         bool has_paint = false;
         for (int y = by0; y < by1 && !has_paint; ++y)
           for (int x = bx0; x < bx1 && !has_paint; ++x) {
@@ -300,7 +275,7 @@ void Stepper::scatter(Canvas& canvas, int slot_count, const BeforeTileChange& be
     for (int y = r0; y < r1; ++y) {
       const int cy = w.y0 + y;
       const int ty = cy / kTileSize;
-      for (int tx = tx0; tx <= tx1; ++tx) {
+      for (int tx = tx0_; tx <= tx1; ++tx) {
         Tile* tile = canvas.tile_slot(canvas.tile_index(tx, ty)).get();
         if (!tile) continue;
         const int begin = std::max(w.x0, tx * kTileSize);
@@ -325,8 +300,12 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   last_window_cells_ = 0;
   if (brush.empty()) return false;
   brush.ensure_slots(slot_count);
-  const int n = brush.cells_across();
-  const BrushPlacement placement = place_brush(pose, n);
+  StepInputs in{};
+  in.canvas = &canvas;
+  in.brush = &brush;
+  in.slot_count = slot_count;
+  in.placement = place_brush(pose, brush.cells_across());
+  const BrushPlacement& placement = in.placement;
   // The window: the canvas cells the brush grid can cover, plus one cell that advection
   // can push paint into, clipped to the canvas.
   double min_x = placement.centre_x, max_x = min_x, min_y = placement.centre_y, max_y = min_y;
@@ -345,24 +324,69 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   const int y1 = static_cast<int>(std::clamp(std::ceil(max_y) + 1.0, 0.0, height));
   if (x1 <= x0 || y1 <= y0) return false;  // the brush is off the canvas
   win_ = Window{x0, y0, x1 - x0, y1 - y0};
-  resize(win_, slot_count, brush.cell_count());
+  resize(slot_count, brush.cell_count());
+  find_bases(canvas);
 
-  gather(canvas, slot_count);
-  if (penetrate(canvas, brush, placement, pose.depth_mm) == 0) return false;  // no contact
-  velocity(canvas, params, move_x, move_y);
-  advection_.prepare(win_.width, win_.height, vx_.data(), vy_.data(), wet_.data(),
-                     static_cast<float>(params.min_film_mm));
-  // Volume and every active pigment slot move with the same shares.
-  std::vector<const float*> from{wet_.data()};
-  std::vector<float*> to{new_wet_.data()};
+  // The tip sinks depth_mm below the paint surface under the brush centre.
+  const int cx =
+      std::clamp(static_cast<int>(std::floor(placement.centre_x)), 0, canvas.width_cells() - 1);
+  const int cy =
+      std::clamp(static_cast<int>(std::floor(placement.centre_y)), 0, canvas.height_cells() - 1);
+  const double surface = static_cast<double>(canvas.base_height_mm(cx, cy)) +
+                         canvas.dry_height_mm(cx, cy) + canvas.wet_volume_mm(cx, cy);
+  in.tip_mm = static_cast<float>(surface - pose.depth_mm);
+  in.brush_vx = static_cast<float>(0.5 * move_x);
+  in.brush_vy = static_cast<float>(0.5 * move_y);
+  // v_p = -c grad p, with grad p as a slope: mm of penetration per mm across.
+  in.gradient_scale = static_cast<float>(params.pressure_coeff * 0.5 / canvas.cell_mm());
+  in.min_film_mm = static_cast<float>(params.min_film_mm);
+  // Algorithm 1's constants, with the velocity cut-off (the same for all cells) folded in.
+  const TransferConstants<float> constants(params);
+  in.source_share =
+      constants.xfer_fraction * smoothstep(constants.velocity_low, constants.velocity_high,
+                                           static_cast<float>(std::hypot(move_x, move_y)));
+  in.inv_equal_paint_cutoff = constants.inv_equal_paint_cutoff;
+  in.max_xfer = constants.max_xfer;
+
+  const int rows = win_.height, cols = win_.width;
+  // 1. Gather the window and find where the brush penetrates the paint surface.
+  parallel_rows(rows, cols, [&](int r0, int r1) {
+    gather_rows(in, r0, r1);
+    penetrate_rows(in, r0, r1);
+  });
+  int contacts = 0;
+  for (const int count : row_contacts_) contacts += count;
+  if (contacts == 0) return false;  // nothing touches: nothing changes
+
+  // 2. Velocity, and the shares advection will move.
+  advection_.resize(cols, rows);
+  parallel_rows(rows, cols, [&](int r0, int r1) {
+    velocity_rows(in, r0, r1);
+    advection_.prepare_rows(r0, r1, vx_.data(), vy_.data(), wet_.data(), in.min_film_mm);
+  });
+
+  // A brush cell may touch several canvas cells (rotation, tilt): each gets an equal share
+  // of its paint, so together they never take more than the brush cell holds.
+  const std::size_t cells = static_cast<std::size_t>(cols) * rows;
+  for (std::size_t c = 0; c < cells; ++c)
+    if (brush_cell_[c] >= 0) ++brush_share_[static_cast<std::size_t>(brush_cell_[c])];
+
+  // 3. Advect volume and every active pigment with the same shares, then the transfer.
+  from_.assign({wet_.data()});
+  to_.assign({new_wet_.data()});
   for (int s = 0; s < slot_count; ++s) {
-    from.push_back(pigment_.data() + static_cast<std::size_t>(s) * win_.padded());
-    to.push_back(new_pigment_.data() + static_cast<std::size_t>(s) * win_.padded());
+    from_.push_back(pigment_.data() + static_cast<std::size_t>(s) * win_.padded());
+    to_.push_back(new_pigment_.data() + static_cast<std::size_t>(s) * win_.padded());
   }
-  advection_.apply(from.data(), to.data(), static_cast<int>(from.size()));
-  transfer(brush, slot_count, params, std::hypot(move_x, move_y));
+  const bool transfers = in.source_share > 0.0f;  // else too slow to pull paint across
+  parallel_rows(rows, cols, [&](int r0, int r1) {
+    advection_.apply_rows(from_.data(), to_.data(), static_cast<int>(from_.size()), r0, r1);
+    if (transfers) transfer_rows(in, r0, r1);
+  });
+  if (transfers) transfer_to_brush(brush, slot_count);
+
   scatter(canvas, slot_count, before_change);
-  last_window_cells_ = static_cast<std::size_t>(win_.width) * win_.height;
+  last_window_cells_ = cells;
   return true;
 }
 

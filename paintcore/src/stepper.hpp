@@ -1,6 +1,8 @@
 #pragma once
 // One IMPaSTo simulation step on the brush's window of canvas cells (Fig. 5):
 // gather the window from the tiles, penetration, velocity, advection, transfer, scatter.
+// Stages that need only their own row run fused in one row-parallel pass, so a step has
+// three parallel passes plus the scatter.
 #include <cstdint>
 #include <functional>
 #include <unordered_map>
@@ -36,14 +38,28 @@ class Stepper {
       return static_cast<std::size_t>(width + 2) * static_cast<std::size_t>(height + 2);
     }
   };
+  // What the row passes of one step share.
+  struct StepInputs {
+    const Canvas* canvas;
+    const Brush* brush;
+    BrushPlacement placement;
+    int slot_count;
+    float tip_mm;              // height of the brush tip
+    float brush_vx, brush_vy;  // 1/2 the brush motion, cells/step
+    float gradient_scale;      // pressure_coeff / (2 cell_mm): turns penetration differences into v
+    float min_film_mm;
+    float source_share;  // XFER_FRACTION times the velocity cut-off
+    float inv_equal_paint_cutoff, max_xfer;
+  };
 
-  void resize(const Window& w, int slot_count, std::size_t brush_cells);
+  void resize(int slot_count, std::size_t brush_cells);
   const float* base_heights(const Canvas& canvas, int tile_index);
-  void gather(const Canvas& canvas, int slot_count);
-  int penetrate(const Canvas& canvas, const Brush& brush, const BrushPlacement& placement,
-                double depth_mm);
-  void velocity(const Canvas& canvas, const SimulationParams& params, double move_x, double move_y);
-  void transfer(Brush& brush, int slot_count, const SimulationParams& params, double speed);
+  void find_bases(const Canvas& canvas);
+  void gather_rows(const StepInputs& in, int r0, int r1);
+  void penetrate_rows(const StepInputs& in, int r0, int r1);
+  void velocity_rows(const StepInputs& in, int r0, int r1);
+  void transfer_rows(const StepInputs& in, int r0, int r1);
+  void transfer_to_brush(Brush& brush, int slot_count);
   void scatter(Canvas& canvas, int slot_count, const BeforeTileChange& before_change);
 
   Window win_;
@@ -58,8 +74,13 @@ class Stepper {
   std::vector<float> xfer_pigment_;        // pigment moved brush -> canvas, slot-major
   std::vector<std::int32_t> brush_share_;  // canvas cells touching each brush cell
   std::vector<int> row_contacts_;
+  std::vector<const float*> from_;  // the quantities advection moves
+  std::vector<float*> to_;          // and where they go
   Advection advection_;
-  // Weave heights of tiles that were never painted, so hovering costs no tile memory.
+  // Weave heights of the window's tiles; tiles never painted are cached here, so hovering
+  // costs no tile memory.
+  std::vector<const float*> bases_;
+  int tx0_ = 0, ty0_ = 0, tiles_across_ = 0;
   std::unordered_map<int, std::vector<float>> base_cache_;
 };
 

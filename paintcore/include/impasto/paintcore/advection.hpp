@@ -26,6 +26,14 @@ class Advection {
   // Advects several quantities in one pass: out[i] = advected q[i].
   void apply(const float* const* q, float* const* out, int count) const;
 
+  // The same in pieces, for callers that fuse stages into their own row-parallel loops:
+  // resize once, then prepare_rows over all rows, then (after all rows are prepared)
+  // apply_rows over all rows.
+  void resize(int width, int height);
+  void prepare_rows(int y0, int y1, const float* vx, const float* vy, const float* volume,
+                    float min_film_mm);
+  void apply_rows(const float* const* q, float* const* out, int count, int y0, int y1) const;
+
   int width() const { return width_; }
   int height() const { return height_; }
   std::size_t padded_size() const {
@@ -33,8 +41,6 @@ class Advection {
   }
 
  private:
-  void apply_rows(const float* const* q, float* const* out, int count, int y0, int y1) const;
-
   int width_ = 0;
   int height_ = 0;
   // Shares sent by each cell (padded grids): to itself and to its 8 neighbours.
