@@ -160,6 +160,16 @@ double analytic_mean_radiance(const SparkleRenderer& r, double thickness_mm) {
          (8 * kPi * eta * eta * std::cos(light_in) * std::cos(view_in));
 }
 
+// Optical thickness per unit depth of the way in and out for the sun and viewer above, for
+// flakes without binder absorption or pigment: D⟨S⟩ Σ ⟨s⟩(ϑ_p) / cos ϑ_p.
+double path_thickness(const SparkleRenderer& r) {
+  const double eta = r.tables().paint().binder_index;
+  const double light_in = cos_inside_binder(std::cos(40 * kDegree), eta);
+  const double view_in = cos_inside_binder(std::cos(25 * kDegree), eta);
+  return r.tables().paint().area_density_per_mm * (r.tables().projected_area(light_in) / light_in +
+                                                   r.tables().projected_area(view_in) / view_in);
+}
+
 TEST(SparkleStatistics, MeanRadianceIsTheFlakeBrdfInBothDepthModels) {
   for (auto model :
        {SparkleSettings::DepthModel::with_masking, SparkleSettings::DepthModel::without_masking}) {
@@ -187,6 +197,46 @@ TEST(SparkleStatistics, MeanRadianceIsTheFlakeBrdfInBothDepthModels) {
   }
 }
 
+TEST(SparkleStatistics, AFootprintOfManySparklesKeepsTheMean) {
+  // Thousands of sparkles in one footprint: their summed area is drawn at once, with the
+  // exact mean, and the relative spread falls as 1 / √⟨N⟩.
+  const SparkleRenderer r(test::grey_metal_paint(1.5), kNodes);
+  const double area = area_for_mean(r, 2000.0);
+  std::vector<double> expected(kNodes.size());
+  r.add_mean_radiance(cell_at(0, area), sun(), viewer(), expected);
+  double sum = 0, sum2 = 0;
+  const int footprints = 2000;
+  for (int i = 0; i < footprints; ++i) {
+    std::vector<double> radiance(kNodes.size(), 0.0);
+    EXPECT_GT(r.add_cell(cell_at(i, area), sun(), viewer(), radiance), 256);
+    sum += radiance[1];
+    sum2 += radiance[1] * radiance[1];
+  }
+  const double m = sum / footprints, cv = std::sqrt(sum2 / footprints - m * m) / m;
+  EXPECT_NEAR(m / expected[1], 1.0, 4 * cv / std::sqrt(footprints));
+  // For a Poisson number of sparkles of weight W = S e^{−tz}, Var / mean² = E[W²] / (⟨N⟩E[W]²)
+  // with E[S²] / E[S]² = 1 + (sd/mean)² and E[e^{−2tz}] / E[e^{−tz}]² from the depth factor.
+  const FlakePaint& paint = r.tables().paint();
+  const double t = path_thickness(r), h = 0.05;
+  const double spread = paint.flake_area_sd_mm2 / paint.flake_area_mean_mm2;
+  const double f1 = (1 - std::exp(-t * h)) / (t * h), f2 = (1 - std::exp(-2 * t * h)) / (2 * t * h);
+  const double expected_cv = std::sqrt((1 + spread * spread) * f2 / (f1 * f1) / 2000.0);
+  EXPECT_NEAR(cv / expected_cv, 1.0, 0.1);
+}
+
+TEST(SparkleStatistics, PearlSparklesHaveTheFlakeColour) {
+  const SparkleRenderer r(test::shipped_pearl(), kNodes);
+  const double area = area_for_mean(r, 0.5);
+  int sparkling = 0;
+  for (int i = 0; i < 200; ++i) {
+    std::vector<double> radiance(kNodes.size(), 0.0);
+    if (r.add_cell(cell_at(i, area), sun(), viewer(), radiance) == 0) continue;
+    ++sparkling;
+    EXPECT_GT(radiance[0], 5 * radiance[2]);  // 450 nm against 650 nm: a blue sparkle
+  }
+  EXPECT_GT(sparkling, 20);
+}
+
 TEST(SparkleStatistics, ExpectedCountGrowsAsTheLightSizeSquared) {
   const SparkleRenderer r(test::shipped_aluminium(), kNodes);
   const FlakeCell cell = cell_at(0, 0.01);
@@ -208,12 +258,7 @@ TEST(SparkleStatistics, DepthModelsDifferAsTheFormulasSay) {
   const SparkleRenderer ro(test::grey_metal_paint(1.5), kNodes, without);
   const double thickness = 0.1;  // deep enough that few flakes are seen directly
   const FlakeCell cell = cell_at(0, 0.01, thickness);
-  const FlakePaint& paint = rw.tables().paint();
-  const double light_in = std::acos(cos_inside_binder(std::cos(40 * kDegree), 1.5));
-  const double view_in = std::acos(cos_inside_binder(std::cos(25 * kDegree), 1.5));
-  const double t = paint.area_density_per_mm *
-                   (rw.tables().projected_area(std::cos(light_in)) / std::cos(light_in) +
-                    rw.tables().projected_area(std::cos(view_in)) / std::cos(view_in));
+  const double t = path_thickness(rw);
   const double direct = (1 - std::exp(-t * thickness)) / (t * thickness);
   ASSERT_LT(direct, 0.3);
   // Eq. 6 / Eq. 5: fewer sparkles without masking ...
