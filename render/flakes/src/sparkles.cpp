@@ -56,6 +56,7 @@ SparkleRenderer::SparkleRenderer(const FlakePaint& paint, std::span<const double
   log_area_mean_ = std::log(paint.flake_area_mean_mm2) - 0.5 * log_area_sd_ * log_area_sd_;
 }
 
+// The numbered steps are those of the paper's §5.3.5.
 bool SparkleRenderer::prepare(const FlakeCell& cell, const Light& light, const View& view,
                               Setup& s) const {
   if (!(cell.flake_concentration > 0.0) || !(cell.thickness_mm > 0.0)) return false;
@@ -81,6 +82,7 @@ bool SparkleRenderer::prepare(const FlakeCell& cell, const Light& light, const V
   const Vec3 to_view =
       view.orthographic ? normalize(view.direction) : normalize(view.position_mm - cell.center_mm);
   const Vec3 n = cell.normal;
+  if (!(n.z > 0.0)) return false;  // a surface facing away from the viewer's side of the canvas
   const double cos_light = dot(n, to_light), cos_view = dot(n, to_view);
   if (!(beam > 0.0) || !(cos_light > 0.0) || !(cos_view > 0.0)) return false;
 
