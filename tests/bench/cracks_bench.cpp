@@ -1,0 +1,66 @@
+// Cost of the crack effect's pieces: the closed form per wavelength, the view factors per
+// cell, a cell's spectrum, the Monte Carlo reference and the craquelure generator.
+#include <benchmark/benchmark.h>
+
+#include <vector>
+
+#include "impasto/cracks/crack_shading.hpp"
+#include "impasto/cracks/craquelure.hpp"
+#include "impasto/cracks/gouffe.hpp"
+#include "impasto/cracks/monte_carlo.hpp"
+
+namespace {
+using namespace impasto::cracks;
+
+void BM_CracksApparentReflectance(benchmark::State& state) {
+  const ViewFactors vf = view_factors(CavityShape::VGroove, {0.2, 0.04});
+  double rho0 = 0.1;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(apparent_reflectance(rho0, vf));
+    rho0 = rho0 < 0.9 ? rho0 + 1e-3 : 0.1;
+  }
+}
+BENCHMARK(BM_CracksApparentReflectance);
+
+void BM_CracksViewFactors(benchmark::State& state) {
+  const auto shape = static_cast<CavityShape>(state.range(0));
+  double depth = 0.1;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(view_factors(shape, {depth, 0.05}));
+    depth = depth < 1.0 ? depth + 1e-3 : 0.1;
+  }
+  state.SetLabel(std::string(shape_name(shape)));
+}
+BENCHMARK(BM_CracksViewFactors)->DenseRange(0, 5);
+
+void BM_CracksCellSpectrum16(benchmark::State& state) {
+  const CrackCell cell{0.2f, 0.03f, CavityShape::VGroove, kCanvasGround};
+  std::vector<float> surface(16, 0.7f), wall(16, 0.4f), out(16);
+  for (auto _ : state) {
+    crack_cell_reflectance(cell, 0.1, surface, wall, out);
+    benchmark::DoNotOptimize(out.data());
+  }
+}
+BENCHMARK(BM_CracksCellSpectrum16);
+
+void BM_CracksMonteCarloReference(benchmark::State& state) {
+  MonteCarloSettings settings;
+  settings.paths = 10000;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(
+        trace_cavity(CavityShape::CylinderPit, {2.0, 1.0}, Illumination::diffuse(), settings));
+  }
+  state.SetItemsProcessed(state.iterations() * 10000);
+}
+BENCHMARK(BM_CracksMonteCarloReference)->Unit(benchmark::kMillisecond);
+
+void BM_CracksCraquelure512(benchmark::State& state) {
+  for (auto _ : state) {
+    CrackMap map(512, 512, 0.1);
+    generate_craquelure(map, PaintFilm{}, CraquelureSettings{});
+    benchmark::DoNotOptimize(map.crack_cells());
+  }
+}
+BENCHMARK(BM_CracksCraquelure512)->Unit(benchmark::kMillisecond);
+
+}  // namespace
