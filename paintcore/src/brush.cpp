@@ -38,6 +38,10 @@ Brush::Brush(BrushHead head, BrushSettings settings, double cell_mm, int slot_co
       footprint_mm_[k] = static_cast<float>(head_.height(u, v) * half_size_mm);
       covered_ += covers_[k];
     }
+  if (covered_ == 0) {  // a thin head on a coarse grid: its centre cell still holds paint
+    covers_[static_cast<std::size_t>(cells_ / 2) * cells_ + cells_ / 2] = 1;
+    covered_ = 1;
+  }
   volume_mm_.assign(cell_count(), 0.0f);
   ensure_slots(slot_count);
 }

@@ -52,8 +52,11 @@ BrushPose pose_from_sample(const PenSample& sample, double cell_mm, double max_d
   validate(sample);
   constexpr double deg = 3.14159265358979323846 / 180.0;
   BrushPose pose;
-  pose.x_cells = sample.x_mm / cell_mm;
-  pose.y_cells = sample.y_mm / cell_mm;
+  // Positions absurdly far off the canvas are pulled in (still far off) so that no
+  // arithmetic on them overflows.
+  constexpr double kFarCells = 1e15;
+  pose.x_cells = std::clamp(sample.x_mm / cell_mm, -kFarCells, kFarCells);
+  pose.y_cells = std::clamp(sample.y_mm / cell_mm, -kFarCells, kFarCells);
   pose.depth_mm = std::clamp(static_cast<double>(sample.pressure), 0.0, 1.0) * max_depth_mm;
   pose.twist_rad = std::fmod(static_cast<double>(sample.rotation_deg), 360.0) * deg;
   pose.tilt_x_rad = std::clamp(static_cast<double>(sample.tilt_x_deg), -90.0, 90.0) * deg;

@@ -192,12 +192,14 @@ void Stepper::transfer_rows(const StepInputs& in, int r0, int r1) {
     // Algorithm 1 per touching cell; branch-free, as the direction varies from cell to cell.
     for (int x = 0; x < w.width; ++x) {
       const bool touches = cell[x] >= 0;
-      const std::int32_t b = touches ? cell[x] : 0;
+      const std::int32_t b = cell[x];
+      // (Brush cells are read only where touched: other rows may own the rest.)
+      const float on_brush = touches ? brush_volume[b] : 0.0f;
       // a_c: the canvas paint the brush penetrates (fraction of the wet layer's depth).
       const float depth = wet[x] > 0.0f ? wet[x] : 1.0f;
       const float a_c = wet[x] > 0.0f ? new_wet[x] * std::min(pen[x] / depth, 1.0f) : 0.0f;
       // a_b: this cell's share of the paint on the brush cell it touches.
-      const float a_b = brush_volume[b] / static_cast<float>(touches ? share[b] : 1);
+      const float a_b = on_brush / static_cast<float>(touches ? share[b] : 1);
       const float paint_diff = a_b - a_c;
       const bool deposit = paint_diff > 0.0f;
       const float equal_paint_cutoff =
@@ -206,7 +208,7 @@ void Stepper::transfer_rows(const StepInputs& in, int r0, int r1) {
           std::min((deposit ? a_b : a_c) * in.source_share * equal_paint_cutoff, in.max_xfer);
       const float amount = touches ? (deposit ? magnitude : -magnitude) : 0.0f;
       // Pigments go in the source's proportions (volume-weighted mixing).
-      const float source = deposit ? brush_volume[b] : new_wet[x];
+      const float source = deposit ? on_brush : new_wet[x];
       ratio[x] = amount / (source > 0.0f ? source : 1.0f);
       xfer[x] = amount;
       new_wet[x] += amount;
@@ -217,8 +219,7 @@ void Stepper::transfer_rows(const StepInputs& in, int r0, int r1) {
       float* moved = xfer_pigment_.data() + k * cells + first;
       const float* from_brush = brush_pigment + k * brush_cells;
       for (int x = 0; x < w.width; ++x) {
-        const std::int32_t b = cell[x] >= 0 ? cell[x] : 0;
-        const float source = xfer[x] > 0.0f ? from_brush[b] : canvas_amount[x];
+        const float source = xfer[x] > 0.0f ? from_brush[cell[x]] : canvas_amount[x];
         moved[x] = source * ratio[x];  // signed like the paint; 0 where nothing moves
         canvas_amount[x] += moved[x];
       }
@@ -226,13 +227,14 @@ void Stepper::transfer_rows(const StepInputs& in, int r0, int r1) {
   }
 }
 
-void Stepper::transfer_to_brush(Brush& brush, int slot_count) {
+void Stepper::transfer_to_brush(Brush& brush, int slot_count, std::size_t first_cell,
+                                std::size_t end_cell) {
   // In a fixed order: exactly what each canvas cell gained, its brush cell lost.
   const std::size_t cells = static_cast<std::size_t>(win_.width) * win_.height;
   const std::size_t brush_cells = brush.cell_count();
   float* volume = brush.volume_mm().data();
   float* pigment = brush.pigment_mm().data();
-  for (std::size_t c = 0; c < cells; ++c) {
+  for (std::size_t c = first_cell; c < end_cell; ++c) {
     if (xfer_[c] == 0.0f) continue;
     const std::size_t bc = static_cast<std::size_t>(brush_cell_[c]);
     volume[bc] -= xfer_[c];
@@ -368,8 +370,11 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   // A brush cell may touch several canvas cells (rotation, tilt): each gets an equal share
   // of its paint, so together they never take more than the brush cell holds.
   const std::size_t cells = static_cast<std::size_t>(cols) * rows;
+  std::int32_t most_shared = 0;
   for (std::size_t c = 0; c < cells; ++c)
-    if (brush_cell_[c] >= 0) ++brush_share_[static_cast<std::size_t>(brush_cell_[c])];
+    if (brush_cell_[c] >= 0)
+      most_shared = std::max(most_shared, ++brush_share_[static_cast<std::size_t>(brush_cell_[c])]);
+  in.brush_cells_unique = most_shared <= 1;
 
   // 3. Advect volume and every active pigment with the same shares, then the transfer.
   from_.assign({wet_.data()});
@@ -381,9 +386,15 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   const bool transfers = in.source_share > 0.0f;  // else too slow to pull paint across
   parallel_rows(rows, cols, [&](int r0, int r1) {
     advection_.apply_rows(from_.data(), to_.data(), static_cast<int>(from_.size()), r0, r1);
-    if (transfers) transfer_rows(in, r0, r1);
+    if (!transfers) return;
+    transfer_rows(in, r0, r1);
+    // Where no two canvas cells share a brush cell, rows own their brush cells: the brush
+    // side is done here, with the same arithmetic as the serial path below.
+    if (in.brush_cells_unique)
+      transfer_to_brush(brush, slot_count, static_cast<std::size_t>(r0) * cols,
+                        static_cast<std::size_t>(r1) * cols);
   });
-  if (transfers) transfer_to_brush(brush, slot_count);
+  if (transfers && !in.brush_cells_unique) transfer_to_brush(brush, slot_count, 0, cells);
 
   scatter(canvas, slot_count, before_change);
   last_window_cells_ = cells;

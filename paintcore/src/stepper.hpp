@@ -50,6 +50,8 @@ class Stepper {
     float min_film_mm;
     float source_share;  // XFER_FRACTION times the velocity cut-off
     float inv_equal_paint_cutoff, max_xfer;
+    // Each brush cell touches at most one canvas cell: rows may update the brush themselves.
+    bool brush_cells_unique;
   };
 
   void resize(int slot_count, std::size_t brush_cells);
@@ -59,7 +61,8 @@ class Stepper {
   void penetrate_rows(const StepInputs& in, int r0, int r1);
   void velocity_rows(const StepInputs& in, int r0, int r1);
   void transfer_rows(const StepInputs& in, int r0, int r1);
-  void transfer_to_brush(Brush& brush, int slot_count);
+  void transfer_to_brush(Brush& brush, int slot_count, std::size_t first_cell,
+                         std::size_t end_cell);
   void scatter(Canvas& canvas, int slot_count, const BeforeTileChange& before_change);
 
   Window win_;

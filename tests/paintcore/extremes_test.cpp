@@ -81,6 +81,10 @@ TEST(Extremes, StrokesLeavingTheCanvasLoseNoPaint) {
   test::stroke_line(p, -2.0, 1.0, 9.0, 1.0, 1.0f);    // along the edge from outside
   test::stroke_line(p, 1e9, 1e9, 3.0, 3.0, 1.0f, 3);  // from absurdly far away
   test::stroke_line(p, 6.0, 6.0, 6.0, 1e12, 1.0f, 2);
+  p.begin_stroke();  // positions whose cell coordinates overflow to infinity
+  p.stroke_to(test::pen(-1.7e308, 3.0, 1.0f));
+  p.stroke_to(test::pen(1.7e308, 3.0, 1.0f));
+  p.end_stroke();
   EXPECT_GT(p.canvas_totals().volume, 0.0);
   expect_conserved(p);
 }
@@ -126,6 +130,15 @@ TEST(Extremes, ZeroPaintStaysZero) {
   EXPECT_EQ(p.canvas().allocated_tiles(), 0u);  // and made no tile for nothing
   p.load_brush({{"red", 1.0}}, 0.0);
   EXPECT_EQ(p.brush_totals().volume, 0.0);
+}
+
+TEST(Extremes, ThinHeadOnACoarseGridStillHoldsPaint) {
+  Painting p(CanvasSpec{32, 32, 12.7, 1});  // 2 mm cells: a 4 mm flat head is 2 x 2 cells
+  p.set_brush(BrushSettings{"flat", 4.0, 0.5});
+  EXPECT_GT(p.brush().covered_cells(), 0u);
+  p.load_brush({{"red", 1.0}}, 5.0);
+  EXPECT_EQ(p.nonfinite_count(), 0u);
+  EXPECT_NEAR(p.brush_totals().volume, 5.0, 1e-5);
 }
 
 TEST(Extremes, AtMostSixteenPigments) {
