@@ -40,8 +40,9 @@ double lagrange_basis(const std::vector<double>& nodes, std::size_t i, double t)
 NodeWeights parse_node_weights(std::string_view text) {
   if (text == "impasto") return NodeWeights::impasto;
   if (text == "interpolatory") return NodeWeights::interpolatory;
+  if (text == "fitted") return NodeWeights::fitted;
   throw std::runtime_error("unknown node weights '" + std::string(text) +
-                           "' (expected impasto or interpolatory)");
+                           "' (expected impasto, interpolatory or fitted)");
 }
 
 SpectralSampling make_spectral_sampling(const data::Spectrum& light,
@@ -84,7 +85,7 @@ SpectralSampling make_spectral_sampling(const data::Spectrum& light,
   for (std::size_t j = 0; j < grid.size(); ++j) masses[j] = power[j] * cmf_sum[j] * range.step_nm;
   const QuadratureRule rule = gauss_rule(grid, masses, nodes);
 
-  if (weights == NodeWeights::interpolatory) {
+  if (weights != NodeWeights::impasto) {  // fitted starts from interpolatory
     for (std::size_t i = 0; i < rule.nodes.size(); ++i) {
       std::array<double, 3> w{0.0, 0.0, 0.0};
       for (std::size_t j = 0; j < grid.size(); ++j) {

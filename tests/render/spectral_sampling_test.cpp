@@ -101,3 +101,26 @@ TEST(SpectralSampling, RejectsBadRequests) {
   Spectrum broken{"broken", {300.0, 900.0}, {1.0, NAN}};
   EXPECT_THROW(make_spectral_sampling(broken, cmf, 8), std::runtime_error);
 }
+
+TEST(SpectralSampling, ParsesNodeWeightNames) {
+  using impasto::render::NodeWeights;
+  EXPECT_EQ(impasto::render::parse_node_weights("impasto"), NodeWeights::impasto);
+  EXPECT_EQ(impasto::render::parse_node_weights("interpolatory"), NodeWeights::interpolatory);
+  EXPECT_EQ(impasto::render::parse_node_weights("fitted"), NodeWeights::fitted);
+  EXPECT_THROW(impasto::render::parse_node_weights("chebyshev"), std::runtime_error);
+}
+
+TEST(SpectralSampling, InterpolatoryWeightsAreExactForLowDegreeReflectance) {
+  // A cubic reflectance is interpolated exactly by 4 or more nodes, so its XYZ is exact.
+  const auto& cmf = impasto::data::cie1931_2deg();
+  const Spectrum a = impasto::data::cie_illuminant("A");
+  const SpectralSampling full = make_spectral_sampling(a, cmf, 0);
+  const auto full_values = reflectance_at(full, cubic_reflectance);
+  const auto reference = reflectance_to_xyz(full, full_values.data());
+  for (int n : {4, 8}) {
+    const SpectralSampling rule = make_spectral_sampling(a, cmf, n);
+    const auto values = reflectance_at(rule, cubic_reflectance);
+    const auto xyz = reflectance_to_xyz(rule, values.data());
+    for (std::size_t c = 0; c < 3; ++c) EXPECT_NEAR(xyz[c], reference[c], 1e-5) << "N=" << n;
+  }
+}

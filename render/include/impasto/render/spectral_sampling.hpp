@@ -31,9 +31,14 @@ enum class NodeWeights {
   // through the nodes and that is integrated exactly. Same nodes; the three rules still sum
   // to the Gaussian one; a white (any constant) comes out exact.
   interpolatory,
+  // Interpolatory, then refitted to the palette's own paints (SpectralPalette; see
+  // fitted_weights.hpp): least squares on mixes, tints and glazes of the pigments, so the
+  // nodes' values predict XYZ of real paint spectra rather than of polynomials.
+  fitted,
 };
 
-// Parses "impasto" or "interpolatory"; throws std::runtime_error naming the accepted values.
+// Parses "impasto", "interpolatory" or "fitted"; throws std::runtime_error naming the
+// accepted values.
 NodeWeights parse_node_weights(std::string_view text);
 
 // X, Y, Z = Σ_i to_xyz[i] · R(wavelengths_nm[i]) for a reflectance spectrum R.

@@ -1,0 +1,91 @@
+// Rendering cost: relighting a whole 4096×4096 painting (every tile re-baked and re-shaded)
+// and re-shading one 64×64 tile after a stroke touched it.
+#include <benchmark/benchmark.h>
+
+#include <impasto/data/lights.hpp>
+#include <impasto/data/pigments.hpp>
+#include <impasto/render/tile_renderer.hpp>
+
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace impasto;
+using paintcore::kTileCells;
+using paintcore::kTileSize;
+
+const std::vector<std::string> kSlots{"Titanium White", "Ultramarine Blue", "Yellow Ochre"};
+
+// A painting covered everywhere: one dry layer and a wet layer of two pigments per tile.
+paintcore::Canvas covered_canvas(int cells) {
+  paintcore::Canvas canvas({cells, cells, 300.0, 1});
+  for (int t = 0; t < canvas.tile_count(); ++t) {
+    paintcore::Tile& tile = canvas.ensure_tile(t, 3);
+    paintcore::DryTile dry;
+    dry.tile_index = t;
+    dry.volume_mm.assign(kTileCells, 0.05f);
+    dry.slots = {0, 2};
+    dry.pigment_mm.assign(2 * kTileCells, 0.02f);
+    for (int c = 0; c < kTileCells; ++c) {
+      const float wave = 0.1f + 0.05f * static_cast<float>((c * 7 + t) % 13) / 13.0f;
+      tile.wet_volume_mm[static_cast<std::size_t>(c)] = wave;
+      tile.pigment(0)[c] = 0.5f * wave;
+      tile.pigment(1)[c] = 0.2f * wave;
+      tile.dry_height_mm[static_cast<std::size_t>(c)] = 0.05f;
+    }
+    if (canvas.dry_layers().empty()) canvas.dry_layers().emplace_back();
+    canvas.dry_layers()[0].tiles.push_back(std::move(dry));
+  }
+  return canvas;
+}
+
+render::RenderSettings settings_for(int nodes, bool half) {
+  render::RenderSettings settings;
+  settings.wavelengths = nodes;
+  settings.storage =
+      half ? render::ReflectanceStorage::float16 : render::ReflectanceStorage::float32;
+  return settings;
+}
+
+// Args: nodes, half storage (0/1). Each iteration switches light, so everything re-bakes.
+void BM_RelightPainting4096(benchmark::State& state) {
+  const paintcore::Canvas canvas = covered_canvas(4096);
+  render::RenderSettings settings = settings_for(static_cast<int>(state.range(0)), state.range(1));
+  render::TileRenderer renderer(settings, kSlots);
+  renderer.render_all(canvas);
+  const char* lights[] = {"A", "D65"};
+  int which = 0;
+  std::vector<render::SpectralPalette> palettes;
+  for (const char* light : lights) {
+    settings.light = light;
+    palettes.emplace_back(settings, kSlots);
+  }
+  for (auto _ : state) {
+    settings.light = lights[which];
+    renderer.set_settings(settings, palettes[static_cast<std::size_t>(which)]);
+    which = 1 - which;
+    benchmark::DoNotOptimize(renderer.render_all(canvas));
+  }
+  state.counters["cells"] = 4096.0 * 4096.0;
+}
+BENCHMARK(BM_RelightPainting4096)
+    ->Args({8, 0})
+    ->Args({8, 1})
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(2)
+    ->UseRealTime();
+
+// Args: nodes. A 3×3-tile painting; the middle tile changes and is re-shaded (with the
+// one-cell rims of its eight neighbours), its dry stack unchanged.
+void BM_ReshadeTile64(benchmark::State& state) {
+  const paintcore::Canvas canvas = covered_canvas(3 * kTileSize);
+  render::TileRenderer renderer(settings_for(static_cast<int>(state.range(0)), false), kSlots);
+  renderer.render_all(canvas);
+  const int middle[] = {4};
+  for (auto _ : state) benchmark::DoNotOptimize(renderer.update(canvas, middle));
+  state.counters["cells"] = kTileCells;
+}
+BENCHMARK(BM_ReshadeTile64)->Arg(3)->Arg(8)->Arg(16)->Unit(benchmark::kMicrosecond)->UseRealTime();
+
+}  // namespace
