@@ -97,8 +97,8 @@ struct Tolerance {
 };
 constexpr Tolerance kMeasured[] = {
     {CavityShape::ArcGroove, 0.014, 0.006}, {CavityShape::VGroove, 0.017, 0.017},
-    {CavityShape::BoxGroove, 0.043, 0.016}, {CavityShape::SpherePit, 0.002, 0.002},
-    {CavityShape::ConePit, 0.077, 0.020},   {CavityShape::CylinderPit, 0.075, 0.033}};
+    {CavityShape::BoxGroove, 0.043, 0.016}, {CavityShape::SpherePit, 0.001, 0.001},
+    {CavityShape::ConePit, 0.077, 0.021},   {CavityShape::CylinderPit, 0.075, 0.033}};
 
 TEST(MonteCarlo, GouffeWithinTheMeasuredToleranceForModerateDepths) {
   for (const Tolerance& tol : kMeasured) {
