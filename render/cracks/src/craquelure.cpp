@@ -87,23 +87,23 @@ class SiteGrid {
   std::vector<std::array<double, 2>> sites_;
 };
 
-// Total film thickness and the layer reached at depth L below the top.
-struct FilmColumn {
-  double thickness_mm;
-  std::uint8_t layer_at(const PaintFilm& film, std::size_t cell, double depth_mm) const {
-    double below_top = 0.0;
-    for (std::size_t k = film.layer_thickness_mm.size(); k-- > 0;) {
-      below_top += film.layer_thickness_mm[k][cell];
-      if (depth_mm < below_top) return static_cast<std::uint8_t>(std::min<std::size_t>(k, 254));
-    }
-    return kCanvasGround;
+// The dry layer reached at depth_mm below the top of the film (or the canvas ground).
+std::uint8_t layer_at_depth(const PaintFilm& film, std::size_t cell, double depth_mm) {
+  if (film.layer_thickness_mm.empty()) {
+    return depth_mm < film.uniform_thickness_mm ? 0 : kCanvasGround;
   }
-};
+  double below_top = 0.0;
+  for (std::size_t k = film.layer_thickness_mm.size(); k-- > 0;) {
+    below_top += film.layer_thickness_mm[k][cell];
+    if (depth_mm < below_top) return static_cast<std::uint8_t>(std::min<std::size_t>(k, 254));
+  }
+  return kCanvasGround;
+}
 
 double film_thickness(const PaintFilm& film, std::size_t cell) {
   if (film.layer_thickness_mm.empty()) return film.uniform_thickness_mm;
   double t = 0.0;
-  for (const auto& layer : film.layer_thickness_mm) t += std::max(0.0f, layer[cell]);
+  for (const auto& layer : film.layer_thickness_mm) t += layer[cell];
   return t;
 }
 
@@ -165,6 +165,16 @@ void generate_craquelure(CrackMap& map, const PaintFilm& film, const CraquelureS
                                " cells, the crack map " + std::to_string(cells));
     }
   }
+  for (std::size_t k = 0; k < film.layer_thickness_mm.size(); ++k) {
+    const auto& layer = film.layer_thickness_mm[k];
+    for (std::size_t i = 0; i < layer.size(); ++i) {
+      if (!(layer[i] >= 0.0f) || !std::isfinite(layer[i])) {
+        throw std::runtime_error(
+            "paint film layer " + std::to_string(k) + " cell (" + std::to_string(i % map.width()) +
+            ", " + std::to_string(i / map.width()) + "): thickness must be finite and >= 0");
+      }
+    }
+  }
   if (film.layer_thickness_mm.empty() &&
       (!(film.uniform_thickness_mm >= 0.0) || !std::isfinite(film.uniform_thickness_mm))) {
     throw std::runtime_error("paint film uniform_thickness_mm must be finite and >= 0");
@@ -199,20 +209,24 @@ void generate_craquelure(CrackMap& map, const PaintFilm& film, const CraquelureS
             1.0 + s.width_variation * (2.0 * uniforms(s.seed, kStreamEdges, pair, 0).u[0] - 1.0);
         const CrackSize size = craquelure_crack_size(s, t, v);
         if (!(size.depth_mm > 0.0) || !(size.half_width_mm > 0.0)) continue;
-        const FilmColumn column{t};
-        CrackCell crack{static_cast<float>(size.depth_mm), static_cast<float>(size.half_width_mm),
-                        s.shape, column.layer_at(film, cell, size.depth_mm)};
-        if (film.layer_thickness_mm.empty())
-          crack.exposed_layer = size.depth_mm < t ? 0 : kCanvasGround;
-        found[band].push_back({x, y, crack});
+        found[band].push_back(
+            {x, y,
+             CrackCell{static_cast<float>(size.depth_mm), static_cast<float>(size.half_width_mm),
+                       s.shape, layer_at_depth(film, cell, size.depth_mm)}});
       }
       std::swap(above, below);
     }
   });
+  // The new network is pruned on its own, so cracks already in the map are kept; where the
+  // two meet the deeper crack stays.
+  CrackMap fresh(map.width(), map.height(), map.cell_mm());
   for (const auto& band : found) {
-    for (const Found& f : band) map.set(f.x, f.y, f.cell);
+    for (const Found& f : band) fresh.set(f.x, f.y, f.cell);
   }
-  keep_largest_network(map);
+  keep_largest_network(fresh);
+  fresh.for_each_crack([&](int x, int y, const CrackCell& c) {
+    if (map.at(x, y).depth_mm < c.depth_mm) map.set(x, y, c);
+  });
 }
 
 void stamp_crack(CrackMap& map, const CrackStroke& stroke) {

@@ -46,9 +46,10 @@ CrackSize craquelure_crack_size(const CraquelureSettings& s, double thickness_mm
 // Fills `map` with a craquelure network: the edges of a jittered Voronoi diagram of island
 // sites. A cell is cracked when an edge crosses it (its four corners do not all lie in the
 // same island, exact since islands are convex). Fragments cut off by the canvas border are
-// dropped, so the network is one 8-connected piece. Cells where the film is thinner than
-// 1 um stay uncracked. Throws std::runtime_error for bad settings or a film whose size does
-// not match the map.
+// dropped, so the new network is one 8-connected piece; cracks already in the map stay
+// (where they meet, the deeper wins). Cells where the film is thinner than 1 um stay
+// uncracked. Throws std::runtime_error for bad settings, a film whose size does not match
+// the map, or a thickness that is negative or not finite.
 void generate_craquelure(CrackMap& map, const PaintFilm& film, const CraquelureSettings& s);
 
 // A crack drawn by hand: cells within R + cell/2 of the polyline (points in mm on the
