@@ -1,5 +1,6 @@
 // impasto replay: paint a recorded session headless.
 #include <impasto/input/stroke_import.hpp>
+#include <impasto/render/render_painting.hpp>
 
 #include <iostream>
 #include <optional>
@@ -20,7 +21,8 @@ struct ReplayArgs {
   int threads = 0;
   double source_dpi = 150.0;
   bool no_auto_load = false;
-  std::string out, preview;
+  std::string out, preview, png, light = "D65";
+  int wavelengths = 8;
   bool stats = false;
 };
 
@@ -54,6 +56,13 @@ void run_replay(const ReplayArgs& args) {
   paintcore::Painting painting = replay(file, options, &report);
   if (!args.out.empty()) painting.save(args.out);
   if (!args.preview.empty()) render::write_png(args.preview, render_preview(painting));
+  if (!args.png.empty()) {
+    render::RenderSettings settings;
+    settings.light = args.light;
+    settings.wavelengths = args.wavelengths;
+    settings.threads = args.threads;
+    render::render_painting_to_file(painting, settings, args.png);
+  }
   if (args.stats) std::cout << replay_stats(painting, report).dump() << "\n";
 }
 
@@ -74,6 +83,12 @@ const CommandRegistrar registrar("replay", [](CLI::App& root) {
                 "Do not load the brush for recordings that carry no paint");
   cmd->add_option("--out", args->out, "Save the painting (.impasto)");
   cmd->add_option("--preview", args->preview, "Write a false-colour relief preview (.png)");
+  cmd->add_option("--png", args->png,
+                  "Render the painting in true colour (spectral Kubelka-Munk) to .png or .exr");
+  cmd->add_option("--light", args->light, "Light for --png: D65, A, F11, blackbody:5600, FILE.csv");
+  cmd->add_option("--wavelengths", args->wavelengths,
+                  "Gaussian quadrature nodes for --png (1-16; 0: every nm)")
+      ->check(CLI::Range(0, 16));
   cmd->add_flag("--stats", args->stats, "Print statistics as one JSON object");
   cmd->callback([args] { run_replay(*args); });
 });

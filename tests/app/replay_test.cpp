@@ -80,7 +80,7 @@ pen 0.05 30 20 0.8 0 0 0 17
 pen 0.10 50 30 0.8 0 0 0 17
 pen 0.15 50 30 0 0 0 0 16
 dry 0.5
-load 10 "Cadmium Yellow Medium Hue":1
+load 10 "Hansa Yellow Opaque":1
 pen 0.20 10 50 0.7 10 -5 30 17
 pen 0.25 50 10 0.9 10 -5 30 17
 pen 0.30 50 10 0 0 0 0 16
@@ -109,6 +109,18 @@ TEST(Replay, UnknownToolNamesTheRecord) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("record 1"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("trowel"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Replay, UnknownPigmentNamesTheRecordAndThePigment) {
+  std::istringstream text("impasto-strokes 1\nwipe\nload 5 \"Unobtainium Blue\" 1\n");
+  const auto file = input::parse_strokes(text, "bad.strokes");
+  try {
+    replay(file, {});
+    FAIL() << "expected an error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("record 2"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("Unobtainium Blue"), std::string::npos) << e.what();
   }
 }
 

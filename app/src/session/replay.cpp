@@ -1,5 +1,7 @@
 #include "session/replay.hpp"
 
+#include <impasto/data/pigments.hpp>
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -33,10 +35,10 @@ std::string hex64(std::uint64_t value) {
 
 const std::vector<std::string>& demo_palette() {
   static const std::vector<std::string> palette = {
-      "Ultramarine Blue",     "Cadmium Yellow Medium Hue",
+      "Ultramarine Blue",     "Hansa Yellow Opaque",
       "Quinacridone Magenta", "Phthalo Green (Blue Shade)",
       "Titanium White",       "Burnt Sienna",
-      "Cobalt Blue",          "Red Oxide"};
+      "Cobalt Blue",          "Pyrrole Red"};
   return palette;
 }
 
@@ -100,7 +102,10 @@ void SessionPlayer::apply(const input::StrokeEvent& event) {
           },
           [&](const input::LoadEvent& e) {
             std::vector<paintcore::PigmentMixPart> mix;
-            for (const auto& part : e.mix) mix.push_back({part.pigment, part.parts});
+            for (const auto& part : e.mix) {
+              data::PigmentDatabase::defaults().get(part.pigment);  // throws for unknown names
+              mix.push_back({part.pigment, part.parts});
+            }
             painting_.load_brush(mix, e.volume_mm3);
           },
           [&](const input::WipeEvent&) { painting_.wipe_brush(); },
