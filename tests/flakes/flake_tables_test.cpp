@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 #include <vector>
 
 #include "impasto/flakes/flake_tables.hpp"
@@ -82,6 +83,19 @@ TEST(FlakeTables, PearlFlakesTransmitPartOfTheirProjectedArea) {
   }
   EXPECT_NEAR(tables.flake_transmittance(1.0), 1.0 - mean_reflectance, 1e-9);
   EXPECT_GT(tables.flake_reflectance(0, 1.0), tables.flake_reflectance(2, 1.0));  // blue pearl
+}
+
+TEST(FlakeTables, PaintsBuiltInCodeAreValidated) {
+  FlakePaint paint = test::grey_metal_paint(1.5);
+  paint.flake_area_mean_mm2 = std::nan("");
+  try {
+    FlakeTables tables(paint, kNodes);
+    FAIL() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "flake paint 'grey': bad flake_area_mean_mm2");
+  }
+  const std::vector<double> bad_nodes{450.0, -1.0};
+  EXPECT_THROW(FlakeTables(test::grey_metal_paint(1.5), bad_nodes), std::runtime_error);
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 
 #include "impasto/flakes/fresnel.hpp"
 
@@ -62,6 +64,35 @@ FilmOptics FlakeCoating::optics(double wavelength_nm, double cos_alpha, double b
   const double r =
       fresnel_conductor(cos_alpha, std::complex<double>(nn, kk) / binder_index).unpolarised();
   return {r, 0.0};
+}
+
+void validate(const FlakePaint& paint) {
+  auto require = [&](bool ok, const char* field) {
+    if (!ok) throw std::runtime_error("flake paint '" + paint.name + "': bad " + field);
+  };
+  auto positive = [](double x) { return x > 0.0 && std::isfinite(x); };
+  auto non_negative = [](double x) { return x >= 0.0 && std::isfinite(x); };
+  require(positive(paint.area_density_per_mm), "area_density_per_mm");
+  require(positive(paint.flake_area_mean_mm2), "flake_area_mean_mm2");
+  require(non_negative(paint.flake_area_sd_mm2), "flake_area_sd_mm2");
+  require(paint.binder_index >= 1.0 && paint.binder_index <= 3.0, "binder_ior");
+  require(non_negative(paint.binder_absorption_per_mm), "binder_absorption_per_mm");
+  require(non_negative(paint.rayleigh_weight_per_mm), "rayleigh_weight_per_mm");
+  const OrientationDistribution& o = paint.orientation;
+  if (o.kind == OrientationDistribution::Kind::gaussian) {
+    require(positive(o.gaussian_sd_rad), "orientation_sd_deg");
+  } else {
+    require(o.table_beta_rad.size() >= 2 && o.table_beta_rad.size() == o.table_density.size(),
+            "orientation table");
+  }
+  const FlakeCoating& c = paint.coating;
+  if (c.kind == FlakeCoating::Kind::metal) {
+    require(!c.wavelengths_nm.empty() && c.n.size() == c.wavelengths_nm.size() &&
+                c.k.size() == c.wavelengths_nm.size(),
+            "nk_table");
+  } else {
+    require(!c.layers.empty(), "film_layer");
+  }
 }
 
 }  // namespace impasto::flakes

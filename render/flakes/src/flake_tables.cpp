@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 
 namespace impasto::flakes {
 
@@ -28,6 +29,13 @@ double cos_at(int i, int samples) {
 
 FlakeTables::FlakeTables(const FlakePaint& paint, std::span<const double> wavelengths_nm)
     : paint_(paint), wavelengths_nm_(wavelengths_nm.begin(), wavelengths_nm.end()) {
+  validate(paint);
+  for (double nm : wavelengths_nm_) {
+    if (!(nm > 0.0) || !std::isfinite(nm)) {
+      throw std::runtime_error("flake tables: wavelength node " + std::to_string(nm) +
+                               " nm is not a positive, finite wavelength");
+    }
+  }
   const OrientationDistribution& orientation = paint.orientation;
   const double support = orientation.support_rad();
   if (!(support > 0.0)) throw std::runtime_error("flake orientation distribution is empty");

@@ -66,4 +66,8 @@ struct FlakePaint {
   double rayleigh_weight_per_mm = 0;    // c₁: pigment scattering per steradian, σ = 16π/3 c₁
 };
 
+// Throws std::runtime_error naming the first field of a paint built in code (not read from
+// a file, which is checked as it is read) that is not finite or out of its range.
+void validate(const FlakePaint& paint);
+
 }  // namespace impasto::flakes
