@@ -11,6 +11,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <optional>
 #include <stdexcept>
 
 #include "command.hpp"
@@ -33,11 +34,15 @@ void list_tablets() {
   }
   const auto tablets = hid::find_pen_tablets();
   if (tablets.empty()) {
-    std::cout << "No pen tablets found (no HID device declares a pen digitizer).\n";
+    const std::size_t devices = hid::enumerate_hid_devices().size();
+    std::cout << "No pen tablets found: " << devices << " HID device(s) seen"
+              << (devices == 0 ? " (no /dev/hidraw nodes, or hidapi cannot list them)" : "")
+              << ", none declares a pen digitizer.\n";
     return;
   }
   bool any_unreadable = false;
   for (const hid::PenTabletInfo& t : tablets) {
+    any_unreadable = any_unreadable || !t.readable;
     std::cout << t.device.path << "  " << hex4(t.device.vendor_id) << ":"
               << hex4(t.device.product_id) << "  " << t.device.manufacturer << " "
               << t.device.product << "\n";
@@ -47,10 +52,7 @@ void list_tablets() {
     }
     const hid::TabletDecoder decoder(t.descriptor, t.device.vendor_id, t.device.product_id);
     std::cout << "  " << decoder.describe();
-    if (!t.readable) {
-      any_unreadable = true;
-      std::cout << "  no permission to read " << t.device.path << "\n";
-    }
+    if (!t.readable) std::cout << "  no permission to read " << t.device.path << "\n";
   }
   if (any_unreadable) {
     std::cout << "Install packaging/udev/70-impasto-tablets.rules in /etc/udev/rules.d, then "
@@ -63,7 +65,16 @@ void describe(const std::string& path) {
   const hid::ReportDescriptor descriptor = hid::parse_report_descriptor(bytes, path);
   std::cout << path << ": " << bytes.size() << " bytes, " << hid::describe_reports(descriptor);
   const std::string reason = hid::unsupported_reason(descriptor);
-  if (reason.empty()) {
+  std::optional<hid::GraphireTablet> vendor_protocol;
+  try {  // a capture names its device, which may speak a known vendor protocol
+    const hid::HidRecording capture = hid::read_hid_recording(path);
+    vendor_protocol = hid::find_graphire_tablet(capture.vendor_id, capture.product_id);
+  } catch (const std::runtime_error&) {
+  }
+  if (vendor_protocol) {
+    std::cout << "pen: "
+              << hid::TabletDecoder(bytes, 0x056A, vendor_protocol->product_id).describe();
+  } else if (reason.empty()) {
     std::cout << hid::describe_pen(hid::PenDecoder(descriptor));
   } else {
     std::cout << "pen: unsupported: " << reason << "\n";
@@ -73,31 +84,35 @@ void describe(const std::string& path) {
 void decode(const std::string& descriptor_path, const std::string& reports_path) {
   const auto descriptor = hid::load_descriptor_bytes(descriptor_path);
   const auto reports = hid::load_reports(reports_path);
-  // A capture names its device: a tablet with a known vendor protocol is decoded by it.
+  // A capture names its device: when the descriptor is the capture's own, a tablet with a
+  // known vendor protocol is decoded by that protocol.
   std::uint16_t vendor = 0;
   std::uint16_t product = 0;
   try {
     const hid::HidRecording capture = hid::read_hid_recording(reports_path);
-    vendor = capture.vendor_id;
-    product = capture.product_id;
+    if (capture.descriptor == descriptor) {
+      vendor = capture.vendor_id;
+      product = capture.product_id;
+    }
   } catch (const std::runtime_error&) {
     // plain hex lines: the descriptor alone decides
   }
   const hid::TabletDecoder decoder(descriptor, vendor, product);
   std::printf("time\tx_mm\ty_mm\tpressure\ttilt_x\ttilt_y\ttip\tin_range\tbuttons\n");
+  std::size_t rows = 0;
   for (std::size_t i = 0; i < reports.size(); ++i) {
-    std::optional<paintcore::PenSample> s;
-    try {
-      s = decoder.decode(reports[i].bytes, reports[i].time_s);
-    } catch (const std::runtime_error& e) {
-      throw std::runtime_error(reports_path + ": report " + std::to_string(i + 1) + ": " +
-                               e.what());
-    }
+    const auto s = decoder.decode(reports[i].bytes, reports[i].time_s,
+                                  reports_path + ": report " + std::to_string(i + 1));
     if (!s) continue;
+    ++rows;
     std::printf("%.6f\t%.4f\t%.4f\t%.5f\t%.2f\t%.2f\t%d\t%d\t%u\n", s->time_s, s->x_mm, s->y_mm,
                 static_cast<double>(s->pressure), static_cast<double>(s->tilt_x_deg),
                 static_cast<double>(s->tilt_y_deg), s->tip_down() ? 1 : 0,
                 (s->buttons & paintcore::kPenInRange) ? 1 : 0, s->buttons);
+  }
+  if (rows == 0) {
+    std::cerr << reports_path << ": none of its " << reports.size()
+              << " reports is a pen report of this descriptor\n";
   }
 }
 

@@ -120,10 +120,15 @@ std::vector<PenTabletInfo> find_pen_tablets() {
   for (const HidDeviceInfo& device : enumerate_hid_devices()) {
     PenTabletInfo info;
     info.device = device;
+    info.readable = ::access(device.path.c_str(), R_OK) == 0;
     try {
       info.descriptor = read_report_descriptor(device.path);
-    } catch (const std::runtime_error&) {
-      continue;  // no descriptor: not something we could read anyway
+    } catch (const std::runtime_error& e) {
+      // Only a tablet maker's device is worth reporting without its descriptor.
+      if (!is_tablet_vendor(device.vendor_id)) continue;
+      info.unsupported_reason = e.what();
+      tablets.push_back(std::move(info));
+      continue;
     }
     const bool known_protocol =
         find_graphire_tablet(device.vendor_id, device.product_id).has_value();
@@ -138,7 +143,6 @@ std::vector<PenTabletInfo> find_pen_tablets() {
         info.unsupported_reason = std::string("malformed descriptor: ") + e.what();
       }
     }
-    info.readable = ::access(device.path.c_str(), R_OK) == 0;
     tablets.push_back(std::move(info));
   }
   return tablets;

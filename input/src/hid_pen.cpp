@@ -128,12 +128,6 @@ bool switch_on(const PenAxis& axis, std::span<const std::uint8_t> data, const Re
   return field_value(field, axis.element, data) != 0;
 }
 
-std::string hex4(unsigned value) {
-  char text[8];
-  std::snprintf(text, sizeof text, "%04X", value & 0xFFFFu);
-  return text;
-}
-
 }  // namespace
 
 double PenAxis::normalised(std::int64_t value) const {
@@ -154,11 +148,22 @@ double PenAxis::physical(std::int64_t value, double scale) const {
 
 std::string unsupported_reason(const ReportDescriptor& descriptor) {
   if (!find_pen_layouts(descriptor).empty()) return "";
+  const auto vendor_defined = [](std::uint16_t page, const std::string& where) {
+    return "its pen reports are vendor-defined (" + where + usage_page_name(page) +
+           "); Impasto reads only standard HID digitizer reports";
+  };
+  // Vendor usages inside a digitizer collection (the Wacom PenPartner) ...
+  for (const ReportField& f : descriptor.fields) {
+    if (f.type != ReportType::kInput || f.is_constant() || f.usages.empty()) continue;
+    const std::uint16_t page = usage_page(f.usage_at(0));
+    if (page >= page::kVendorFirst && in_pen_collection(descriptor, f)) {
+      return vendor_defined(page, "usage page ");
+    }
+  }
+  // ... or a whole vendor-defined application collection (the Wacom Intuos S 3rd gen).
   for (const Collection& c : descriptor.collections) {
     if (c.parent < 0 && usage_page(c.usage) >= page::kVendorFirst) {
-      return "its pen reports are vendor-defined (application collection " +
-             usage_page_name(usage_page(c.usage)) + " usage 0x" + hex4(usage_id(c.usage)) +
-             "); Impasto reads only standard HID digitizer reports";
+      return vendor_defined(usage_page(c.usage), "application collection of ");
     }
   }
   return "it has no pen report (X and Y in a Digitizer Pen or Stylus collection)";
@@ -182,8 +187,8 @@ PenDecoder::PenDecoder(ReportDescriptor descriptor, DecoderOptions options)
   area_.height_mm = static_cast<double>(first.y.logical_max - first.y.logical_min) * mm_per_y_;
 }
 
-std::optional<PenSample> PenDecoder::decode(std::span<const std::uint8_t> report,
-                                            double time_s) const {
+std::optional<PenSample> PenDecoder::decode(std::span<const std::uint8_t> report, double time_s,
+                                            const std::string& source) const {
   if (report.empty()) return std::nullopt;
   const std::uint8_t id = descriptor_.has_report_ids ? report[0] : 0;
   const PenReportLayout* layout = nullptr;
@@ -191,7 +196,13 @@ std::optional<PenSample> PenDecoder::decode(std::span<const std::uint8_t> report
     if (l.report_id == id) layout = &l;
   }
   if (layout == nullptr) return std::nullopt;
-  const ReportView view = split_input_report(descriptor_, report);
+  if (report.size() < layout->bytes) {
+    throw InputFormatError(source, 0, "length",
+                           "pen report " + std::to_string(id) + " has " +
+                               std::to_string(report.size()) + " bytes, the descriptor declares " +
+                               std::to_string(layout->bytes));
+  }
+  const ReportView view{id, descriptor_.has_report_ids ? report.subspan(1) : report};
   const auto value = [&](const PenAxis& axis) {
     return field_value(descriptor_.fields[static_cast<std::size_t>(axis.field)], axis.element,
                        view.data);

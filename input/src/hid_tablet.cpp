@@ -22,8 +22,11 @@ TabletDecoder::TabletDecoder(std::span<const std::uint8_t> descriptor, std::uint
     : decoder_(choose(descriptor, vendor_id, product_id, options)) {}
 
 std::optional<paintcore::PenSample> TabletDecoder::decode(std::span<const std::uint8_t> report,
-                                                          double time_s) const {
-  if (const auto* pen = std::get_if<PenDecoder>(&decoder_)) return pen->decode(report, time_s);
+                                                          double time_s,
+                                                          const std::string& source) const {
+  if (const auto* pen = std::get_if<PenDecoder>(&decoder_)) {
+    return pen->decode(report, time_s, source);
+  }
   return decode_graphire_report(std::get<GraphireTablet>(decoder_), report, time_s);
 }
 

@@ -66,9 +66,10 @@ class PenDecoder {
 
   // Decodes one raw input report taken at time_s. Reports that are not pen reports (pad
   // buttons, vendor reports) give nullopt. Positions are mm on the tablet from the top left
-  // of its active area. Throws InputFormatError for a pen report shorter than declared.
-  std::optional<paintcore::PenSample> decode(std::span<const std::uint8_t> report,
-                                             double time_s) const;
+  // of its active area. Throws InputFormatError, naming `source`, for a pen report shorter
+  // than declared.
+  std::optional<paintcore::PenSample> decode(std::span<const std::uint8_t> report, double time_s,
+                                             const std::string& source = "report") const;
 
   const ReportDescriptor& descriptor() const { return descriptor_; }
   const std::vector<PenReportLayout>& layouts() const { return layouts_; }

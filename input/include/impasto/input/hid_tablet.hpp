@@ -20,9 +20,10 @@ class TabletDecoder {
   TabletDecoder(std::span<const std::uint8_t> descriptor, std::uint16_t vendor_id,
                 std::uint16_t product_id, DecoderOptions options = {});
 
-  // A pen sample in tablet mm, or nullopt for reports that carry no pen state.
-  std::optional<paintcore::PenSample> decode(std::span<const std::uint8_t> report,
-                                             double time_s) const;
+  // A pen sample in tablet mm, or nullopt for reports that carry no pen state. Throws
+  // InputFormatError, naming `source`, for a malformed pen report.
+  std::optional<paintcore::PenSample> decode(std::span<const std::uint8_t> report, double time_s,
+                                             const std::string& source = "report") const;
   TabletArea area() const;
   // What `impasto hid list` shows about the pen.
   std::string describe() const;
