@@ -2,6 +2,7 @@
 #include <impasto/cracks/craquelure.hpp>
 #include <impasto/cracks/gouffe.hpp>
 
+#include <algorithm>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -25,6 +26,23 @@ struct GenerateArgs {
   CraquelureSettings settings;
 };
 
+// Statistics of a crack map, printed as one JSON line.
+void print_stats(const CrackMap& map) {
+  double max_depth = 0.0, max_half_width = 0.0;
+  map.for_each_crack([&](int, int, const CrackCell& c) {
+    max_depth = std::max(max_depth, static_cast<double>(c.depth_mm));
+    max_half_width = std::max(max_half_width, static_cast<double>(c.half_width_mm));
+  });
+  const nlohmann::json stats = {{"crack_cells", map.crack_cells()},
+                                {"tiles_with_cracks", map.allocated_tiles()},
+                                {"tiles", map.tiles_x() * map.tiles_y()},
+                                {"networks", count_crack_networks(map)},
+                                {"max_depth_mm", max_depth},
+                                {"max_half_width_mm", max_half_width},
+                                {"memory_bytes", map.memory_bytes()}};
+  std::cout << stats.dump() << "\n";
+}
+
 void run_generate(const GenerateArgs& args) {
   CrackMap map(args.width, args.height, args.cell_mm);
   CraquelureSettings settings = args.settings;
@@ -33,19 +51,19 @@ void run_generate(const GenerateArgs& args) {
   film.uniform_thickness_mm = args.thickness_mm;
   generate_craquelure(map, film, settings);
   if (!args.out.empty()) write_crack_png(map, args.out, args.max_depth_mm);
-  double max_depth = 0.0, max_half_width = 0.0;
-  map.for_each_crack([&](int, int, const CrackCell& c) {
-    max_depth = std::max(max_depth, static_cast<double>(c.depth_mm));
-    max_half_width = std::max(max_half_width, static_cast<double>(c.half_width_mm));
-  });
-  nlohmann::json stats = {{"crack_cells", map.crack_cells()},
-                          {"tiles_with_cracks", map.allocated_tiles()},
-                          {"tiles", map.tiles_x() * map.tiles_y()},
-                          {"networks", count_crack_networks(map)},
-                          {"max_depth_mm", max_depth},
-                          {"max_half_width_mm", max_half_width},
-                          {"memory_bytes", map.memory_bytes()}};
-  std::cout << stats.dump() << "\n";
+  print_stats(map);
+}
+
+struct ImportArgs {
+  std::string png;
+  std::string shape = "v-groove";
+  CrackImageSettings settings;
+};
+
+void run_import(const ImportArgs& args) {
+  CrackImageSettings settings = args.settings;
+  settings.shape = shape_from_name(args.shape);
+  print_stats(read_crack_png(args.png, settings));
 }
 
 struct CavityArgs {
@@ -89,6 +107,17 @@ const CommandRegistrar registrar("cracks", [](CLI::App& root) {
   g->add_option("--max-depth-mm", gen->max_depth_mm, "Depth drawn white in --out (mm)")
       ->check(CLI::PositiveNumber);
   g->callback([gen] { run_generate(*gen); });
+
+  auto imp = std::make_shared<ImportArgs>();
+  CLI::App* i = group->add_subcommand("import", "Read a crack map from a grey PNG (grey = depth)");
+  i->add_option("png", imp->png, "PNG file")->required();
+  i->add_option("--cell-mm", imp->settings.cell_mm, "Cell size (mm)")->check(CLI::PositiveNumber);
+  i->add_option("--max-depth-mm", imp->settings.max_depth_mm, "Depth of white (mm)")
+      ->check(CLI::PositiveNumber);
+  i->add_option("--depth-to-half-width", imp->settings.depth_to_half_width, "L / R")
+      ->check(CLI::PositiveNumber);
+  i->add_option("--shape", imp->shape, "Crack section: arc-groove, v-groove, box-groove, ...");
+  i->callback([imp] { run_import(*imp); });
 
   auto cav = std::make_shared<CavityArgs>();
   CLI::App* c = group->add_subcommand("cavity", "F, G and apparent reflectance of one cavity");
