@@ -164,6 +164,9 @@ double seed_view_factor_cylinder_wall(const CavityDims& dims, double depth_below
 
 double first_reflection_view_factor(CavityShape shape, const CavityDims& dims, double zenith_rad) {
   validate(dims);
+  if (!(std::abs(zenith_rad) < kPi / 2)) {
+    throw std::runtime_error("first_reflection_view_factor: zenith_rad must be in (-pi/2, pi/2)");
+  }
   if (!(dims.depth_mm > 0.0)) return 1.0;
   const detail::CavityGeometry geo(shape, dims);
   const Vec3 beam{std::sin(zenith_rad), 0.0, -std::cos(zenith_rad)};
