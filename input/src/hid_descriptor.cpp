@@ -348,13 +348,19 @@ std::string Unit::name() const {
   std::string text;
   if (system() >= 1 && system() <= 4 && code <= 0xFF) {
     text = kLength[system()];
-    if (nibble_exponent(1) != 1) text += "^" + std::to_string(nibble_exponent(1));
+    if (nibble_exponent(1) != 1) {
+      text += '^';  // appended piecewise: GCC 12 -O3 warns falsely on "..." + std::string
+      text += std::to_string(nibble_exponent(1));
+    }
   } else {
     char hex[16];
     std::snprintf(hex, sizeof hex, "0x%X", static_cast<unsigned>(code));
     text = std::string("unit ") + hex;
   }
-  if (exponent != 0) text += " x10^" + std::to_string(exponent);
+  if (exponent != 0) {
+    text += " x10^";
+    text += std::to_string(exponent);
+  }
   return text;
 }
 
