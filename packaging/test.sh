@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds Impasto and runs every test twice: a Release build with warnings as errors, then a
-# build under AddressSanitizer + UndefinedBehaviorSanitizer.
+# build under AddressSanitizer + UndefinedBehaviorSanitizer; then a short libFuzzer run of the
+# file and HID parsers (IMPASTO_FUZZ_SECONDS per target, default 10; 0 skips it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash packaging/deps.sh
@@ -11,10 +12,15 @@ cmake -S . -B build/release -G Ninja -DCMAKE_BUILD_TYPE=Release -DIMPASTO_WERROR
 cmake --build build/release -j "$jobs"
 ctest --test-dir build/release -j "$jobs" --timeout 600
 
-cmake -S . -B build/sanitize -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS="-O1 -g" \
+cmake -S . -B build/sanitize -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS="-O1 -g1" \
   -DIMPASTO_WERROR=ON -DIMPASTO_SANITIZE=ON -DIMPASTO_BUILD_BENCHMARKS=OFF
 cmake --build build/sanitize -j "$jobs"
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"
 export LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 ctest --test-dir build/sanitize -j "$jobs" --timeout 900 -LE "no-sanitize"
+
+fuzz_seconds="${IMPASTO_FUZZ_SECONDS:-10}"
+if [ "$fuzz_seconds" -gt 0 ]; then
+  bash tests/fuzz/run.sh "$fuzz_seconds"
+fi
