@@ -356,6 +356,7 @@ std::unique_ptr<Painting::Impl> PaintingFile::load(const std::filesystem::path& 
     head.name = r.get_string("brush.head.name");
     head.description = r.get_string("brush.head.description");
     head.rise = r.get_finite("brush.head.rise");
+    if (head.rise < 0.0 || head.rise > 100.0) r.fail("brush.head.rise", "must be in 0..100");
     head.base = read_quadric(r, "brush.head.base");
     const auto perturbations =
         r.get_count("brush.head.perturbations", static_cast<std::uint32_t>(kMaxPerturbations));
