@@ -86,7 +86,8 @@ const CommandRegistrar registrar("bench color", [](CLI::App& root) {
   cmd->add_option("--nodes", args->nodes, "Wavelength counts to test (1..16)")
       ->check(CLI::Range(1, 16));
   cmd->add_option("--lights", args->lights, "Lights (D65, A, F11, blackbody:K, FILE.csv)");
-  cmd->add_option("--weights", args->weights, "Per-node XYZ weights: interpolatory, impasto or fitted")
+  cmd->add_option("--weights", args->weights,
+                  "Per-node XYZ weights: interpolatory, impasto or fitted")
       ->check(CLI::IsMember({"interpolatory", "impasto", "fitted"}));
   cmd->add_option("--cells", args->timing_cells, "Cells per timing run (0: no timing)")
       ->check(CLI::Range(0, 10000000));

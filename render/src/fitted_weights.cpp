@@ -99,8 +99,8 @@ void fit_node_weights(SpectralSampling& sampling, const data::Spectrum& light,
   const Eigen::MatrixXd weighted_a = row_weight.asDiagonal() * a;
   const Eigen::MatrixXd normal = a.transpose() * weighted_a;
   // λ relative to the paints' part of AᵀWA (the white row's weight would swamp it).
-  const Eigen::MatrixXd paints_only = a.topRows(rows - 1).transpose() *
-                                      weighted_a.topRows(rows - 1);
+  const Eigen::MatrixXd paints_only =
+      a.topRows(rows - 1).transpose() * weighted_a.topRows(rows - 1);
   const double lambda = kRidge * paints_only.trace() / static_cast<double>(n);
   Eigen::MatrixXd prior(n, 3);
   for (Eigen::Index i = 0; i < n; ++i) {

@@ -112,7 +112,8 @@ TEST(TileRenderer, D65GroundOfPerfectWhiteIsDisplayWhite) {
     TileRenderer renderer(
         settings, SpectralPalette(settings, data::light_from_spec("A"), test_pigments(), white));
     renderer.render_all(paintcore::Canvas({70, 70, 100.0, 0}));
-    const float* pixel = renderer.image().pixel(30, 40);
+    const Image image = renderer.image();
+    const float* pixel = image.pixel(30, 40);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(pixel[c], 1.0f, 1e-3f) << "N=" << nodes;
   }
 }
@@ -158,7 +159,7 @@ TEST(TileRenderer, DryStackIsBakedOnceAndRebakedForANewLight) {
 
   // A new light re-bakes every tile.
   RenderSettings warm = settings;
-  warm.light = "A";
+  warm.light = std::string("A");  // (a literal here trips GCC 12's -Wrestrict false positive)
   renderer.set_settings(warm, make_palette(warm, "A"));
   const RenderStats relit = renderer.update(canvas, {});
   EXPECT_EQ(relit.tiles_baked, canvas.tile_count());
