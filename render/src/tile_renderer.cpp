@@ -264,7 +264,9 @@ void TileRenderer::bake_dry_stack(const paintcore::Canvas& canvas, int tile_inde
   }
   const auto inverse_scale = static_cast<float>(1.0 / settings_.thickness_scale_mm);
   std::array<PigmentShare, paintcore::kMaxPigmentSlots> shares{};
-  float reflectance[kMaxNodes];
+  // One value per node; the full spectrum has hundreds, so on the heap, once per tile.
+  std::vector<float> node_values(static_cast<std::size_t>(nodes));
+  float* reflectance = node_values.data();
   for (int c = 0; c < kTileCells; ++c) {
     std::copy(palette_.ground(), palette_.ground() + nodes, reflectance);
     for (const paintcore::DryTile* dry : layers) {
@@ -341,7 +343,8 @@ void TileRenderer::shade_region(const paintcore::Canvas& canvas, int tile_index,
   const bool has_dry = !cache.dry_f32.empty() || !cache.dry_f16.empty();
 
   std::array<PigmentShare, paintcore::kMaxPigmentSlots> shares{};
-  float reflectance[kMaxNodes];
+  std::vector<float> node_values(static_cast<std::size_t>(nodes));
+  float* reflectance = node_values.data();
   for (int y = y0; y < y1; ++y) {
     for (int x = x0; x < x1; ++x) {
       const int c = y * kTileSize + x;

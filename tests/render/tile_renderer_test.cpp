@@ -107,7 +107,7 @@ TEST(TileRenderer, FlatPaintShowsItsKubelkaMunkColour) {
 TEST(TileRenderer, D65GroundOfPerfectWhiteIsDisplayWhite) {
   RenderSettings settings = matte_settings();
   const data::Spectrum white{"white", {300.0, 900.0}, {1.0, 1.0}};
-  for (int nodes : {1, 8, 16}) {
+  for (int nodes : {1, 8, 16, 0}) {  // 0: every nanometre
     settings.wavelengths = nodes;
     TileRenderer renderer(
         settings, SpectralPalette(settings, data::light_from_spec("A"), test_pigments(), white));
