@@ -176,8 +176,8 @@ AccuracyResult evaluate_color_accuracy(const data::Spectrum& light, const std::s
     const data::Lab got = render_sample(scene, sample, storage, thickness_scale_mm);
     const double difference = data::ciede2000(expected, got);
     sum += difference;
-    if (difference > result.max_de00 || result.worst_sample.empty()) {
-      result.max_de00 = std::max(result.max_de00, difference);
+    if (difference > result.max_de00) {  // stays empty when every sample is exact
+      result.max_de00 = difference;
       result.worst_sample = sample.name;
     }
   }
