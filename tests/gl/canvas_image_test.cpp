@@ -10,7 +10,10 @@
 #include <vector>
 
 #include "impasto/paintcore/canvas.hpp"
+#include "impasto/paintcore/painting.hpp"
 #include "impasto/render/tile_renderer.hpp"
+#include "impasto/render_gl/canvas_renderer.hpp"
+#include "impasto/render_gl/framebuffer.hpp"
 #include "impasto/render_gl/render_painting_gpu.hpp"
 
 namespace impasto::render_gl {
@@ -86,6 +89,11 @@ struct Case {
   render::ReflectanceStorage storage;
 };
 
+// Test names show the case's name rather than its bytes.
+void PrintTo(const Case& c, std::ostream* os) {
+  *os << c.name;
+}
+
 class CanvasImage : public ::testing::TestWithParam<Case> {};
 
 TEST_P(CanvasImage, GpuMatchesCpuWithinTwoLevelsOf255) {
@@ -144,6 +152,82 @@ INSTANTIATE_TEST_SUITE_P(
                            render::DisplayEncoding::linear_srgb, false,
                            render::ReflectanceStorage::float32}),
     [](const ::testing::TestParamInfo<Case>& info) { return info.param.name; });
+
+// Max |GPU - CPU| over every channel of two images of the same size.
+double max_difference(const render::Image& a, const render::Image& b) {
+  double worst = 0.0;
+  for (std::size_t i = 0; i < a.rgb.size(); ++i) {
+    worst = std::max(worst, std::abs(double(a.rgb[i]) - b.rgb[i]));
+  }
+  return worst;
+}
+
+render::Image read_back(const Framebuffer& target) {
+  const auto rgba = target.read_rgba_float();
+  render::Image image{target.width(), target.height(), {}};
+  image.rgb.resize(static_cast<size_t>(3 * target.width() * target.height()));
+  for (int y = 0; y < target.height(); ++y) {
+    for (int x = 0; x < target.width(); ++x) {
+      const float* p =
+          &rgba[static_cast<size_t>(((target.height() - 1 - y) * target.width() + x) * 4)];
+      std::copy_n(p, 3, image.pixel(x, y));
+    }
+  }
+  return image;
+}
+
+// The window's path: a real stroke on a Painting, then only the dirty tiles uploaded. The
+// GPU image must follow the CPU reference after every change, and tiles the stroke did not
+// touch must not be re-sent.
+TEST(CanvasTiles, DirtyTileUploadsFollowStrokesUndoAndDry) {
+  paintcore::Painting painting({200, 140, 150.0, 3}, 1);
+  painting.set_brush({"round", 5.0, 0.5});
+  painting.load_brush({{"Ultramarine Blue", 2.0}, {"Titanium White", 1.0}}, 60.0);
+  render::RenderSettings settings;
+  auto context = create_headless_context();
+  const paintcore::Canvas& canvas = painting.canvas();
+  (void)canvas.take_dirty_tiles();
+
+  std::unique_ptr<CanvasRenderer> gpu;
+  Framebuffer target(canvas.width_cells(), canvas.height_cells(), TexelFormat::kRGBA32F);
+  auto check = [&](const char* step, bool full) {
+    const std::vector<int> dirty = canvas.take_dirty_tiles();
+    render::SpectralPalette palette(settings, painting.pigment_slots());
+    if (full || !gpu) {
+      gpu = std::make_unique<CanvasRenderer>(canvas.width_cells(), canvas.height_cells(), settings,
+                                             palette);
+      gpu->upload_all(canvas);
+    } else {
+      EXPECT_LT(dirty.size(), static_cast<size_t>(canvas.tile_count())) << step;
+      gpu->upload_tiles(canvas, dirty);
+    }
+    target.bind();
+    gpu->draw(one_pixel_per_cell(canvas.width_cells(), canvas.height_cells()), canvas.width_cells(),
+              canvas.height_cells());
+    render::TileRenderer cpu(settings, palette);
+    cpu.render_all(canvas);
+    const double worst = max_difference(read_back(target), cpu.image());
+    std::cout << "[ " << step << " ] max " << worst * 255 << "/255\n";
+    EXPECT_LE(worst, 2.0 / 255.0) << step;
+  };
+
+  painting.begin_stroke();
+  for (int i = 0; i <= 40; ++i) {
+    paintcore::PenSample sample;
+    sample.time_s = 0.01 * i;
+    sample.x_mm = 4.0 + 0.5 * i;
+    sample.y_mm = 8.0 + 3.0 * std::sin(0.2 * i);
+    sample.pressure = 0.7f;
+    sample.buttons = paintcore::kPenTip | paintcore::kPenInRange;
+    painting.stroke_to(sample);
+  }
+  painting.end_stroke();
+  check("stroke", true);  // first pigments: the palette is new
+  painting.dry(0.5);
+  check("dry half", false);
+  painting.undo();
+  check("undo dry", false);
+}
 
 TEST(CanvasImageErrors, FullSpectrumIsRefusedWithAClearMessage) {
   render::RenderSettings settings;

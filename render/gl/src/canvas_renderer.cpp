@@ -97,6 +97,19 @@ void CanvasRenderer::set_settings(const render::RenderSettings& settings,
   if (encoding_changed) build_program();
 }
 
+void CanvasRenderer::set_shading(const render::RenderSettings& settings) {
+  settings_.light_azimuth_deg = settings.light_azimuth_deg;
+  settings_.light_elevation_deg = settings.light_elevation_deg;
+  settings_.ambient = settings.ambient;
+  settings_.dry_material = settings.dry_material;
+  settings_.wet_material = settings.wet_material;
+  settings_.wet_gloss_mm = settings.wet_gloss_mm;
+  settings_.saunderson = settings.saunderson;
+  settings_.saunderson_k1 = settings.saunderson_k1;
+  settings_.saunderson_k2 = settings.saunderson_k2;
+  render::validate(settings_);
+}
+
 void CanvasRenderer::upload_tile(const paintcore::Canvas& canvas, int tile_index,
                                  TileScratch& scratch) {
   const int tx = tile_index % canvas.tiles_x();
@@ -128,7 +141,8 @@ void CanvasRenderer::upload_tile(const paintcore::Canvas& canvas, int tile_index
       for (int cell = 0; cell < kTileCells; ++cell) layer[4 * cell + slot % 4] = amounts[cell];
     }
   }
-  bake_dry_reflectance(canvas, tile_index, settings_, palette_, scratch.dry_node_major);
+  bake_dry_reflectance(canvas, tile_index, settings_, palette_, scratch.dry_node_major,
+                       hidden_dry_layers_);
   scratch.dry_interleaved.assign(static_cast<size_t>(node_layers_) * 4 * kTileCells, 0.0f);
   for (int node = 0; node < palette_.nodes(); ++node) {
     const float* values = scratch.dry_node_major.data() + static_cast<size_t>(node) * kTileCells;

@@ -12,7 +12,8 @@ using paintcore::kTileCells;
 
 void bake_dry_reflectance(const paintcore::Canvas& canvas, int tile_index,
                           const render::RenderSettings& settings,
-                          const render::SpectralPalette& palette, std::vector<float>& out) {
+                          const render::SpectralPalette& palette, std::vector<float>& out,
+                          const std::vector<bool>& hidden) {
   const int nodes = palette.nodes();
   out.resize(static_cast<size_t>(nodes) * kTileCells);
   std::vector<float> reflectance(static_cast<size_t>(nodes));
@@ -22,8 +23,10 @@ void bake_dry_reflectance(const paintcore::Canvas& canvas, int tile_index,
   const bool half = settings.storage == render::ReflectanceStorage::float16;
   for (int cell = 0; cell < kTileCells; ++cell) {
     std::copy_n(palette.ground(), nodes, reflectance.begin());
-    for (const paintcore::DryLayer& layer : canvas.dry_layers()) {  // bottom first
-      const paintcore::DryTile* tile = layer.find(tile_index);
+    const auto& layers = canvas.dry_layers();
+    for (size_t l = 0; l < layers.size(); ++l) {  // bottom first
+      if (l < hidden.size() && hidden[l]) continue;
+      const paintcore::DryTile* tile = layers[l].find(tile_index);
       if (tile == nullptr) continue;
       const float volume = tile->volume_mm[static_cast<size_t>(cell)];
       if (!(volume > 0.0f)) continue;

@@ -30,6 +30,12 @@ class CanvasRenderer {
   // New light, pigments, materials or display: call upload_all afterwards (the dry stack is
   // baked per node, so its reflectance changes with the light).
   void set_settings(const render::RenderSettings& settings, render::SpectralPalette palette);
+  // Takes only what the shader reads as uniforms (light direction, ambient, materials,
+  // gloss, Saunderson) from `settings`: no re-bake, no upload. For dragging the light.
+  void set_shading(const render::RenderSettings& settings);
+  // Dry layer i is not shown where hidden[i] (colour only; heights keep every layer). Call
+  // upload_all afterwards.
+  void set_hidden_dry_layers(std::vector<bool> hidden) { hidden_dry_layers_ = std::move(hidden); }
   // Exposure and background only: nothing to upload.
   void set_view_options(const GpuViewOptions& options) { options_ = options; }
   const render::RenderSettings& settings() const { return settings_; }
@@ -59,6 +65,7 @@ class CanvasRenderer {
   render::RenderSettings settings_;
   render::SpectralPalette palette_;
   GpuViewOptions options_;
+  std::vector<bool> hidden_dry_layers_;
   std::unique_ptr<GpuDisplayTransform> display_;
   std::unique_ptr<FullscreenPass> pass_;
   Texture pigments_;         // ceil(slots / 4) layers of 4 slot amounts (mm)

@@ -11,9 +11,11 @@
 
 namespace impasto::render_gl {
 
-// Node-major: out[node * kTileCells + cell] for the tile `tile_index` of `canvas`.
+// Node-major: out[node * kTileCells + cell] for the tile `tile_index` of `canvas`. Dry
+// layer i is left out where hidden[i] is true (the window's layer visibility).
 void bake_dry_reflectance(const paintcore::Canvas& canvas, int tile_index,
                           const render::RenderSettings& settings,
-                          const render::SpectralPalette& palette, std::vector<float>& out);
+                          const render::SpectralPalette& palette, std::vector<float>& out,
+                          const std::vector<bool>& hidden = {});
 
 }  // namespace impasto::render_gl

@@ -1,0 +1,157 @@
+// impasto bench gpu: what the painting window costs on this machine's OpenGL — the frame
+// time of a large canvas, and the latency from one pen sample to the updated frame.
+#include <impasto/paintcore/painting.hpp>
+#include <impasto/render/spectral_palette.hpp>
+#include <impasto/render_gl/canvas_renderer.hpp>
+#include <impasto/render_gl/framebuffer.hpp>
+#include <impasto/render_gl/gl_context.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <iostream>
+#include <memory>
+#include <vector>
+
+#include "command.hpp"
+
+namespace impasto::app {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+double median(std::vector<double> values) {
+  std::sort(values.begin(), values.end());
+  return values.empty() ? 0.0 : values[values.size() / 2];
+}
+
+struct BenchGpuArgs {
+  int size = 4096;  // canvas cells per side for the frame time
+  int frames = 5;
+  int viewport_w = 1400;  // the window's canvas view for the latency
+  int viewport_h = 900;
+  int brush_px = 128;  // brush width in cells for the latency
+  int samples = 20;
+  int wavelengths = 8;
+};
+
+// A painting with four pigment slots: the shader runs its per-slot loops for every pixel,
+// painted or not, so the frame time does not depend on where the paint is.
+paintcore::Painting striped_painting(int size, int slots) {
+  paintcore::Painting painting({size, size, 300.0, 1});
+  const char* names[] = {"Titanium White", "Ultramarine Blue", "Pyrrole Red",
+                         "Hansa Yellow Opaque"};
+  for (int s = 0; s < slots; ++s) painting.slot_for(names[s]);
+  return painting;
+}
+
+void run(const BenchGpuArgs& args) {
+  auto context = render_gl::create_headless_context();
+  std::cout << "OpenGL: " << render_gl::gl_description() << " (" << context->backend_name()
+            << ")\n";
+  render::RenderSettings settings;
+  settings.wavelengths = args.wavelengths;
+
+  // 1. A full frame of a size x size canvas, one pixel per cell.
+  {
+    paintcore::Painting painting = striped_painting(args.size, 4);
+    painting.set_brush({"round", 20.0, 0.5});
+    painting.load_brush({{"Ultramarine Blue", 1.0}, {"Titanium White", 1.0}}, 400.0);
+    painting.begin_stroke();
+    for (int i = 0; i <= 20; ++i) {
+      paintcore::PenSample sample;
+      sample.time_s = 0.01 * i;
+      sample.x_mm = 10.0 + 4.0 * i;
+      sample.y_mm = 40.0;
+      sample.pressure = 0.8f;
+      sample.buttons = paintcore::kPenTip;
+      painting.stroke_to(sample);
+    }
+    painting.end_stroke();
+    render::SpectralPalette palette(settings, painting.pigment_slots());
+    const auto upload_start = Clock::now();
+    render_gl::CanvasRenderer renderer(args.size, args.size, settings, palette);
+    renderer.upload_all(painting.canvas());
+    glFinish();
+    const double upload_ms = ms_since(upload_start);
+    render_gl::Framebuffer target(args.size, args.size, render_gl::TexelFormat::kRGBA8);
+    std::vector<double> frame_ms;
+    for (int f = 0; f < args.frames; ++f) {
+      target.bind();
+      const auto start = Clock::now();
+      renderer.draw(render_gl::one_pixel_per_cell(args.size, args.size), args.size, args.size);
+      glFinish();
+      frame_ms.push_back(ms_since(start));
+    }
+    std::cout << "frame " << args.size << "x" << args.size << " cells, " << args.wavelengths
+              << " nodes, 4 pigments: median " << median(frame_ms) << " ms over " << args.frames
+              << " frames (first upload of all tiles " << upload_ms << " ms)\n";
+  }
+
+  // 2. Pen sample to updated frame with a brush_px-wide brush: simulation step, dirty tiles
+  //    to the GPU, the window-sized view redrawn (glFinish: the frame is done).
+  {
+    const int size = 2048;
+    paintcore::Painting painting({size, size, 300.0, 1});
+    const double cell_mm = painting.canvas().cell_mm();
+    painting.set_brush({"round", args.brush_px * cell_mm, 0.5});
+    painting.load_brush({{"Pyrrole Red", 1.0}, {"Titanium White", 1.0}}, 20000.0);
+    render::SpectralPalette palette(settings, painting.pigment_slots());
+    render_gl::CanvasRenderer renderer(size, size, settings, palette);
+    renderer.upload_all(painting.canvas());
+    (void)painting.canvas().take_dirty_tiles();
+    render_gl::Framebuffer target(args.viewport_w, args.viewport_h, render_gl::TexelFormat::kRGBA8);
+    const render_gl::CanvasView view{size / 2.0, size / 2.0, 1.0, 0.0};
+    std::vector<double> sim_ms, upload_ms, draw_ms, total_ms;
+    painting.begin_stroke();
+    for (int i = 0; i < args.samples; ++i) {
+      paintcore::PenSample sample;
+      sample.time_s = 0.008 * i;
+      sample.x_mm = (size / 2.0 - 300 + 8.0 * i) * cell_mm;  // 8 cells per sample, ~125 Hz
+      sample.y_mm = size / 2.0 * cell_mm;
+      sample.pressure = 0.7f;
+      sample.buttons = paintcore::kPenTip;
+      const auto start = Clock::now();
+      painting.stroke_to(sample);
+      const auto simulated = Clock::now();
+      renderer.upload_tiles(painting.canvas(), painting.canvas().take_dirty_tiles());
+      const auto uploaded = Clock::now();
+      target.bind();
+      renderer.draw(view, args.viewport_w, args.viewport_h);
+      glFinish();
+      if (i == 0) continue;  // the first sample only places the brush
+      sim_ms.push_back(std::chrono::duration<double, std::milli>(simulated - start).count());
+      upload_ms.push_back(std::chrono::duration<double, std::milli>(uploaded - simulated).count());
+      draw_ms.push_back(ms_since(uploaded));
+      total_ms.push_back(ms_since(start));
+    }
+    painting.end_stroke();
+    std::cout << "latency, pen sample to frame, " << args.brush_px << "-cell brush, "
+              << args.viewport_w << "x" << args.viewport_h << " view: median " << median(total_ms)
+              << " ms (simulation " << median(sim_ms) << ", upload " << median(upload_ms)
+              << ", draw " << median(draw_ms) << ") over " << total_ms.size() << " samples\n";
+  }
+}
+
+void setup(CLI::App& root) {
+  auto args = std::make_shared<BenchGpuArgs>();
+  CLI::App* bench = command_group(root, "bench", "Measure performance");
+  CLI::App* cmd = bench->add_subcommand("gpu", "Frame time and pen-to-frame latency on OpenGL");
+  cmd->add_option("--size", args->size, "Canvas cells per side for the frame time")
+      ->check(CLI::Range(64, 16384));
+  cmd->add_option("--frames", args->frames, "Frames to time")->check(CLI::Range(1, 1000));
+  cmd->add_option("--brush", args->brush_px, "Brush width in cells for the latency")
+      ->check(CLI::Range(4, 1000));
+  cmd->add_option("--samples", args->samples, "Pen samples to time")->check(CLI::Range(2, 10000));
+  cmd->add_option("--wavelengths", args->wavelengths, "Gaussian wavelength nodes")
+      ->check(CLI::Range(1, 16));
+  cmd->callback([args] { run(*args); });
+}
+
+const CommandRegistrar registrar("bench gpu", setup);
+
+}  // namespace
+}  // namespace impasto::app

@@ -1,0 +1,60 @@
+// impasto paint [PAINTING]: the painting window. With --replay, --screenshot and --exit it
+// runs a recorded session through the window and captures it (scripted use, tests).
+#include <impasto/render/spectral_sampling.hpp>
+
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "command.hpp"
+#include "window/paint_options.hpp"
+
+namespace impasto::app {
+namespace {
+
+struct PaintArgs {
+  std::string painting, replay, screenshot, record;
+  window::PaintOptions options;
+};
+
+void setup(CLI::App& root) {
+  auto args = std::make_shared<PaintArgs>();
+  CLI::App* cmd = root.add_subcommand("paint", "Open the painting window");
+  cmd->add_option("painting", args->painting, "An .impasto painting to open")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--replay", args->replay,
+                  "Replay a stroke file (native, libmypaint .dat or BDALab .svc) through the "
+                  "window's input path")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--screenshot", args->screenshot,
+                  "Save a PNG of the whole window once the replay is applied");
+  cmd->add_flag("--exit", args->options.exit_after, "Quit after the replay and screenshot");
+  cmd->add_option("--record", args->record,
+                  "Record this session's input here (default: beside the painting)");
+  cmd->add_flag("--no-record", args->options.no_record, "Do not record this session's input");
+  cmd->add_option("--window-width", args->options.window_width, "Window width in pixels")
+      ->check(CLI::Range(320, 8192));
+  cmd->add_option("--window-height", args->options.window_height, "Window height in pixels")
+      ->check(CLI::Range(240, 8192));
+  cmd->add_option("--width", args->options.new_canvas.width_cells, "New canvas width (cells)")
+      ->check(CLI::Range(1, 1 << 17));
+  cmd->add_option("--height", args->options.new_canvas.height_cells, "New canvas height (cells)")
+      ->check(CLI::Range(1, 1 << 17));
+  cmd->add_option("--dpi", args->options.new_canvas.dpi, "New canvas cells per inch")
+      ->check(CLI::Range(1.0, 10000.0));
+  cmd->add_option("--wavelengths", args->options.wavelengths, "Gaussian wavelength nodes")
+      ->check(CLI::Range(1, render::kMaxNodes));
+  cmd->callback([args] {
+    window::PaintOptions options = args->options;
+    if (!args->painting.empty()) options.painting = args->painting;
+    if (!args->replay.empty()) options.replay = args->replay;
+    if (!args->screenshot.empty()) options.screenshot = args->screenshot;
+    if (!args->record.empty()) options.record = args->record;
+    window::run_paint_window(options);
+  });
+}
+
+const CommandRegistrar registrar("paint", setup);
+
+}  // namespace
+}  // namespace impasto::app

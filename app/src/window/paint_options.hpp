@@ -1,0 +1,27 @@
+#pragma once
+// What `impasto paint` was asked to do.
+#include <impasto/paintcore/canvas.hpp>
+
+#include <filesystem>
+#include <optional>
+
+namespace impasto::app::window {
+
+struct PaintOptions {
+  std::optional<std::filesystem::path> painting;    // open this .impasto file
+  std::optional<std::filesystem::path> replay;      // stroke file replayed at start
+  std::optional<std::filesystem::path> screenshot;  // PNG of the whole window once replayed
+  std::optional<std::filesystem::path> record;      // session stroke file (default: beside)
+  bool no_record = false;
+  bool exit_after = false;  // quit once the replay and screenshot are done
+  int window_width = 1400;
+  int window_height = 900;
+  paintcore::CanvasSpec new_canvas{1024, 768, 150.0, 1};  // when no painting is opened
+  int wavelengths = 8;
+};
+
+// Opens the window and runs until it is closed. Throws std::runtime_error when no window
+// can be made (no display) or a file cannot be read.
+void run_paint_window(const PaintOptions& options);
+
+}  // namespace impasto::app::window

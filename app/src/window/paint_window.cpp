@@ -1,0 +1,532 @@
+// The painting window: GLFW + OpenGL 3.3 core (glad) + Dear ImGui. The canvas is shaded on
+// the GPU by render_gl::CanvasRenderer, fed with the tiles the simulation dirtied; the
+// simulation runs on SimWorker's thread.
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+#include <impasto/data/cie.hpp>
+#include <impasto/data/pigments.hpp>
+#include <impasto/input/stroke_import.hpp>
+#include <impasto/paintcore/brush_head.hpp>
+#include <impasto/render/display.hpp>
+#include <impasto/render/kubelka_munk.hpp>
+#include <impasto/render/render_painting.hpp>
+#include <impasto/render_gl/canvas_renderer.hpp>
+#include <impasto/render_gl/gl.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <ctime>
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+
+#include "window/paint_options.hpp"
+#include "window/panels.hpp"
+#include "window/recent_files.hpp"
+#include "window/screenshot.hpp"
+#include "window/sim_worker.hpp"
+
+namespace impasto::app::window {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// Where a session's input is recorded: beside the painting (or in the working folder for a
+// painting not saved yet), named by the time the session started.
+std::filesystem::path session_record_path(const std::optional<std::filesystem::path>& painting) {
+  char stamp[32];
+  const std::time_t now = std::time(nullptr);
+  std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", std::localtime(&now));
+  const std::string name = (painting ? painting->stem().string() : std::string("untitled")) +
+                           ".session-" + stamp + ".strokes";
+  return painting ? painting->parent_path() / name : std::filesystem::path(name);
+}
+
+std::vector<std::string> brush_heads() {
+  std::vector<std::string> heads;
+  std::error_code error;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(paintcore::default_brushes_dir(), error)) {
+    if (entry.path().extension() == ".brush") heads.push_back(entry.path().stem().string());
+  }
+  std::sort(heads.begin(), heads.end());
+  return heads;
+}
+
+struct GlfwLibrary {
+  GlfwLibrary() {
+    glfwSetErrorCallback([](int code, const char* text) {
+      std::cerr << "impasto: GLFW error " << code << ": " << text << "\n";
+    });
+    if (!glfwInit()) {
+      throw std::runtime_error(
+          "cannot open a window: GLFW found no display (set DISPLAY, or "
+          "run under xvfb-run)");
+    }
+  }
+  ~GlfwLibrary() { glfwTerminate(); }
+};
+
+class PaintWindow {
+ public:
+  explicit PaintWindow(const PaintOptions& options);
+  ~PaintWindow();
+  void run();
+
+ private:
+  void create_window();
+  void start_session();
+  void sync_gpu();
+  void handle_canvas_input();
+  void handle_shortcuts();
+  void run_pending_action();
+  void update_swatch();
+  void draw_frame(bool take_screenshot);
+  void pen_sample(double x, double y, bool tip_down);
+  PaintingSnapshot snapshot();
+  std::optional<std::filesystem::path> record_path_for(
+      const std::optional<std::filesystem::path>& painting) const;
+  FileActions file_actions();
+
+  PaintOptions options_;
+  GlfwLibrary glfw_;
+  GLFWwindow* window_ = nullptr;
+  WindowState state_;
+  std::unique_ptr<SimWorker> worker_;
+  std::unique_ptr<render_gl::CanvasRenderer> renderer_;
+  std::unique_ptr<render::SpectralPalette> palette_;
+  std::vector<std::string> rendered_slots_;
+  int canvas_w_ = 0, canvas_h_ = 0;
+  bool full_upload_ = true;
+
+  // Pen from the mouse.
+  bool painting_stroke_ = false;
+  double last_x_ = 0, last_y_ = 0, last_t_ = 0;
+  bool panning_ = false, rotating_ = false;
+  double drag_x_ = 0, drag_y_ = 0;
+  double session_start_s_ = 0;
+};
+
+PaintWindow::PaintWindow(const PaintOptions& options) : options_(options) {
+  state_.settings.wavelengths = options.wavelengths;
+  state_.illuminants = data::illuminant_names();
+  const auto d65 = std::find(state_.illuminants.begin(), state_.illuminants.end(), "D65");
+  state_.illuminant =
+      d65 == state_.illuminants.end() ? 0 : static_cast<int>(d65 - state_.illuminants.begin());
+  state_.brush_heads = brush_heads();
+  state_.recent = load_recent_files();
+  create_window();
+  start_session();
+}
+
+PaintWindow::~PaintWindow() {
+  worker_.reset();
+  renderer_.reset();
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  if (window_) glfwDestroyWindow(window_);
+}
+
+void PaintWindow::create_window() {
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  window_ =
+      glfwCreateWindow(options_.window_width, options_.window_height, "Impasto", nullptr, nullptr);
+  if (!window_) throw std::runtime_error("cannot open a window with OpenGL 3.3 core");
+  glfwMakeContextCurrent(window_);
+  glfwSwapInterval(1);
+  render_gl::load_gl(reinterpret_cast<GLADloadfunc>(&glfwGetProcAddress));
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;  // panels are laid out in code, nothing to remember
+  ImGui::StyleColorsDark();
+  ImGui_ImplGlfw_InitForOpenGL(window_, true);
+  ImGui_ImplOpenGL3_Init("#version 330 core");
+  session_start_s_ = glfwGetTime();
+}
+
+std::optional<std::filesystem::path> PaintWindow::record_path_for(
+    const std::optional<std::filesystem::path>& painting) const {
+  if (options_.no_record) return std::nullopt;
+  if (options_.record) return options_.record;
+  return session_record_path(painting);
+}
+
+void PaintWindow::start_session() {
+  std::optional<input::StrokeFile> strokes;
+  if (options_.replay) strokes = input::load_strokes_any(*options_.replay);
+  paintcore::Painting painting = [&] {
+    if (options_.painting) return paintcore::Painting::load(*options_.painting);
+    if (strokes) return paintcore::Painting(replay_canvas(*strokes, ReplayOptions{}));
+    return paintcore::Painting(options_.new_canvas);
+  }();
+  if (options_.painting) {
+    state_.file = options_.painting;
+    remember_recent_file(*options_.painting);
+  }
+  worker_ = std::make_unique<SimWorker>(std::move(painting), record_path_for(options_.painting));
+  if (strokes) {
+    // The recorded events take the same path as live input: the worker's queue.
+    const bool has_load = std::any_of(
+        strokes->events.begin(), strokes->events.end(),
+        [](const input::StrokeEvent& e) { return std::holds_alternative<input::LoadEvent>(e); });
+    worker_->set_auto_load(!has_load);
+    for (auto& event : strokes->events) {
+      if (!std::holds_alternative<input::CanvasEvent>(event)) worker_->submit(std::move(event));
+    }
+    worker_->finish_stroke();
+    worker_->set_auto_load(false);
+  }
+}
+
+PaintingSnapshot PaintWindow::snapshot() {
+  return worker_->with_painting([](const paintcore::Painting& p) {
+    PaintingSnapshot s;
+    s.width_cells = p.canvas().width_cells();
+    s.height_cells = p.canvas().height_cells();
+    s.dpi = p.canvas().spec().dpi;
+    s.undo_depth = p.undo_depth();
+    s.redo_depth = p.redo_depth();
+    s.dry_layers = p.canvas().dry_layers().size();
+    s.slots = p.pigment_slots();
+    s.brush_volume_mm3 = p.brush_totals().volume;
+    return s;
+  });
+}
+
+// Brings the GPU textures up to date: every tile after a new painting, light or slot table;
+// otherwise only the tiles the simulation dirtied since the last frame.
+void PaintWindow::sync_gpu() {
+  const auto start = Clock::now();
+  worker_->with_painting([&](const paintcore::Painting& painting) {
+    const paintcore::Canvas& canvas = painting.canvas();
+    const bool resized = canvas.width_cells() != canvas_w_ || canvas.height_cells() != canvas_h_;
+    const bool slots_changed = painting.pigment_slots() != rendered_slots_;
+    if (resized || slots_changed || state_.settings_changed || !palette_) {
+      palette_ =
+          std::make_unique<render::SpectralPalette>(state_.settings, painting.pigment_slots());
+      rendered_slots_ = painting.pigment_slots();
+      if (resized || !renderer_) {
+        renderer_ = std::make_unique<render_gl::CanvasRenderer>(
+            canvas.width_cells(), canvas.height_cells(), state_.settings, *palette_,
+            state_.view_options);
+        canvas_w_ = canvas.width_cells();
+        canvas_h_ = canvas.height_cells();
+        state_.fit_requested = true;
+      } else {
+        renderer_->set_settings(state_.settings, *palette_);
+      }
+      state_.settings_changed = false;
+      state_.mix_changed = true;  // the swatch depends on the light
+      full_upload_ = true;
+    }
+    if (state_.visibility_changed) {
+      renderer_->set_hidden_dry_layers(state_.hidden_dry_layers);
+      state_.visibility_changed = false;
+      full_upload_ = true;
+    }
+    const std::vector<int> dirty = canvas.take_dirty_tiles();
+    if (full_upload_) {
+      renderer_->upload_all(canvas);
+      state_.tiles_uploaded = canvas.tile_count();
+      full_upload_ = false;
+    } else {
+      renderer_->upload_tiles(canvas, dirty);
+      state_.tiles_uploaded = static_cast<int>(dirty.size());
+    }
+  });
+  state_.upload_ms = ms_since(start);
+}
+
+// The brush's mix as an opaque swatch: R∞ of the mixed K and S at the light's nodes, to the
+// display like the canvas.
+void PaintWindow::update_swatch() {
+  if (!state_.mix_changed) return;
+  state_.mix_changed = false;
+  const auto& pigments = data::PigmentDatabase::defaults().all();
+  std::vector<std::string> names;
+  std::vector<float> parts;
+  float total = 0.0f;
+  for (std::size_t i = 0; i < pigments.size() && i < state_.mix_parts.size(); ++i) {
+    if (state_.mix_parts[i] > 0.0f) {
+      names.push_back(pigments[i].name);
+      parts.push_back(state_.mix_parts[i]);
+      total += state_.mix_parts[i];
+    }
+  }
+  if (names.empty()) return;
+  const render::SpectralPalette mix(state_.settings, names);
+  std::vector<float> reflectance(static_cast<std::size_t>(mix.nodes()));
+  for (int n = 0; n < mix.nodes(); ++n) {
+    float K = 0.0f, S = 0.0f;
+    for (int p = 0; p < mix.pigment_count(); ++p) {
+      render::km::accumulate_pigment(parts[static_cast<std::size_t>(p)] / total,
+                                     mix.absorption(p)[n], mix.scattering(p)[n], K, S);
+    }
+    reflectance[static_cast<std::size_t>(n)] = render::km::reflectance_infinite(K, S);
+  }
+  float xyz[3] = {0, 0, 0};
+  for (int c = 0; c < 3; ++c) {
+    for (int n = 0; n < mix.nodes(); ++n)
+      xyz[c] += mix.to_display_xyz(c)[n] * reflectance[static_cast<std::size_t>(n)];
+  }
+  render::DisplayTransform(state_.settings.display).apply(xyz, 1);
+  for (int c = 0; c < 3; ++c)
+    state_.swatch_rgb[static_cast<std::size_t>(c)] = std::clamp(xyz[c], 0.0f, 1.0f);
+}
+
+void PaintWindow::pen_sample(double x, double y, bool tip_down) {
+  int w = 0, h = 0;
+  glfwGetWindowSize(window_, &w, &h);
+  const auto cell = state_.view.window_to_cell(x, y, w, h);
+  const double cell_mm = renderer_ ? renderer_->cell_mm() : 0.1;
+  const double t = glfwGetTime() - session_start_s_;
+  float pressure = state_.mouse_pressure;
+  if (state_.pressure_from_speed) {
+    // Fast strokes press lightly: full pressure at rest, a fifth at 300 mm/s.
+    const double distance_mm =
+        std::hypot(x - last_x_, y - last_y_) / state_.view.pixels_per_cell * cell_mm;
+    const double speed = t > last_t_ ? distance_mm / (t - last_t_) : 0.0;
+    pressure = static_cast<float>(std::clamp(1.0 - speed / 375.0, 0.2, 1.0));
+  }
+  paintcore::PenSample sample;
+  sample.time_s = t;
+  sample.x_mm = cell[0] * cell_mm;
+  sample.y_mm = cell[1] * cell_mm;
+  sample.pressure = tip_down ? pressure : 0.0f;
+  sample.buttons = paintcore::kPenInRange | (tip_down ? paintcore::kPenTip : 0u);
+  worker_->submit(input::SampleEvent{sample});
+  last_x_ = x;
+  last_y_ = y;
+  last_t_ = t;
+}
+
+void PaintWindow::handle_canvas_input() {
+  const ImGuiIO& io = ImGui::GetIO();
+  double x = 0, y = 0;
+  glfwGetCursorPos(window_, &x, &y);
+  int w = 0, h = 0;
+  glfwGetWindowSize(window_, &w, &h);
+  state_.cursor_cell = state_.view.window_to_cell(x, y, w, h);
+  const bool over_canvas = !io.WantCaptureMouse;
+  const bool left = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+  const bool middle = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS;
+  const bool right = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
+  const bool space = glfwGetKey(window_, GLFW_KEY_SPACE) == GLFW_PRESS;
+
+  // Paint with the left button.
+  if (left && !space && (painting_stroke_ || over_canvas)) {
+    if (!painting_stroke_ || x != last_x_ || y != last_y_) pen_sample(x, y, true);
+    painting_stroke_ = true;
+  } else if (painting_stroke_) {
+    pen_sample(x, y, false);
+    painting_stroke_ = false;
+  }
+  // Pan with the middle button (or space + left), rotate with the right button.
+  const bool pan = middle || (space && left);
+  if (pan && (panning_ || over_canvas)) {
+    if (panning_) {
+      const auto a = state_.view.window_to_cell(drag_x_, drag_y_, w, h);
+      const auto b = state_.view.window_to_cell(x, y, w, h);
+      state_.view.center_x_cells -= b[0] - a[0];
+      state_.view.center_y_cells -= b[1] - a[1];
+    }
+    panning_ = true;
+  } else {
+    panning_ = false;
+  }
+  if (right && (rotating_ || over_canvas)) {
+    if (rotating_) {
+      const double a0 = std::atan2(drag_y_ - h / 2.0, drag_x_ - w / 2.0);
+      const double a1 = std::atan2(y - h / 2.0, x - w / 2.0);
+      state_.view.rotation_rad += a1 - a0;
+    }
+    rotating_ = true;
+  } else {
+    rotating_ = false;
+  }
+  drag_x_ = x;
+  drag_y_ = y;
+  // Zoom about the cursor with the wheel, down to single cells and up to 64 px a cell.
+  if (over_canvas && io.MouseWheel != 0.0f) {
+    const auto before = state_.view.window_to_cell(x, y, w, h);
+    state_.view.pixels_per_cell =
+        std::clamp(state_.view.pixels_per_cell * std::pow(1.15, io.MouseWheel), 0.02, 64.0);
+    const auto after = state_.view.window_to_cell(x, y, w, h);
+    state_.view.center_x_cells += before[0] - after[0];
+    state_.view.center_y_cells += before[1] - after[1];
+  }
+}
+
+void PaintWindow::handle_shortcuts() {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (io.WantTextInput) return;
+  static bool z_was_down = false, f_was_down = false;
+  const bool ctrl = io.KeyCtrl, shift = io.KeyShift;
+  const bool z = glfwGetKey(window_, GLFW_KEY_Z) == GLFW_PRESS;
+  if (z && !z_was_down && ctrl) {
+    worker_->submit(shift ? input::StrokeEvent{input::RedoEvent{}} : input::UndoEvent{});
+  }
+  z_was_down = z;
+  const bool f = glfwGetKey(window_, GLFW_KEY_F) == GLFW_PRESS;
+  if (f && !f_was_down && !ctrl) state_.fit_requested = true;
+  f_was_down = f;
+  if (glfwGetKey(window_, GLFW_KEY_1) == GLFW_PRESS && !ctrl) state_.view.pixels_per_cell = 1.0;
+}
+
+FileActions PaintWindow::file_actions() {
+  FileActions actions;
+  actions.save = [this](const std::filesystem::path& file) {
+    try {
+      worker_->save(file);
+      state_.file = file;
+      remember_recent_file(file);
+      state_.recent = load_recent_files();
+      state_.message = "saved " + file.string();
+    } catch (const std::exception& e) {
+      state_.message = e.what();
+    }
+  };
+  actions.export_image = [this](const std::filesystem::path& file) {
+    try {
+      worker_->wait_idle();
+      worker_->with_painting([&](const paintcore::Painting& painting) {
+        render::render_painting_to_file(painting, state_.settings, file);
+      });
+      state_.message = "exported " + file.string();
+    } catch (const std::exception& e) {
+      state_.message = e.what();
+    }
+  };
+  return actions;
+}
+
+void PaintWindow::run_pending_action() {
+  if (state_.pending == PendingAction::kNone || !state_.pending_confirmed) return;
+  const PendingAction action = state_.pending;
+  state_.pending = PendingAction::kNone;
+  state_.pending_confirmed = false;
+  try {
+    switch (action) {
+      case PendingAction::kQuit:
+        state_.quit = true;
+        break;
+      case PendingAction::kNew: {
+        paintcore::CanvasSpec spec = options_.new_canvas;
+        spec.width_cells = state_.new_width;
+        spec.height_cells = state_.new_height;
+        spec.dpi = state_.new_dpi;
+        paintcore::validate(spec);
+        worker_->replace_painting(paintcore::Painting(spec), record_path_for(std::nullopt));
+        state_.file.reset();
+        state_.message = "new painting";
+        break;
+      }
+      case PendingAction::kOpen:
+      case PendingAction::kOpenRecent: {
+        const auto file = state_.pending_path;
+        worker_->replace_painting(paintcore::Painting::load(file), record_path_for(file));
+        state_.file = file;
+        remember_recent_file(file);
+        state_.recent = load_recent_files();
+        state_.message = "opened " + file.string();
+        break;
+      }
+      case PendingAction::kNone:
+        break;
+    }
+  } catch (const std::exception& e) {
+    state_.message = e.what();
+  }
+  rendered_slots_.clear();
+  canvas_w_ = canvas_h_ = 0;  // a new canvas: new textures, fit it to the window
+  state_.hidden_dry_layers.clear();
+}
+
+void PaintWindow::draw_frame(bool take_screenshot) {
+  const auto start = Clock::now();
+  update_swatch();
+  sync_gpu();
+  int fb_w = 0, fb_h = 0;
+  glfwGetFramebufferSize(window_, &fb_w, &fb_h);
+  int win_w = 0, win_h = 0;
+  glfwGetWindowSize(window_, &win_w, &win_h);
+  if (state_.fit_requested && fb_w > 0) {
+    // Fit into the part of the window left of the panels.
+    state_.view =
+        render_gl::fit_canvas(canvas_w_, canvas_h_, std::max(win_w - 360, 100), win_h - 60);
+    state_.view.center_x_cells += 0.5 * 360 / state_.view.pixels_per_cell;  // shift right of centre
+    state_.fit_requested = false;
+  }
+
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  const PaintingSnapshot painting = snapshot();
+  const FileActions files = file_actions();
+  PanelContext context{state_, *worker_, painting, *palette_, files};
+  draw_panels(context);
+  ImGui::Render();
+
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, fb_w, fb_h);
+  renderer_->set_view_options(state_.view_options);
+  // The view is in window coordinates; scale it to framebuffer pixels (HiDPI).
+  render_gl::CanvasView fb_view = state_.view;
+  fb_view.pixels_per_cell *= win_w > 0 ? static_cast<double>(fb_w) / win_w : 1.0;
+  renderer_->set_shading(state_.settings);
+  renderer_->draw(fb_view, fb_w, fb_h);
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  if (take_screenshot) save_window_screenshot(*options_.screenshot, fb_w, fb_h);
+  glfwSwapBuffers(window_);
+  state_.frame_ms = ms_since(start);
+}
+
+void PaintWindow::run() {
+  int frames_since_idle = 0;
+  bool screenshot_done = !options_.screenshot;
+  while (!state_.quit) {
+    glfwPollEvents();
+    if (glfwWindowShouldClose(window_)) {
+      glfwSetWindowShouldClose(window_, GLFW_FALSE);
+      if (options_.exit_after) break;
+      state_.pending = PendingAction::kQuit;
+      state_.pending_confirmed = worker_->stats().events_since_save == 0;
+      if (!state_.pending_confirmed) state_.message = "unsaved changes: File > Quit to decide";
+    }
+    run_pending_action();
+    if (state_.quit) break;
+    handle_shortcuts();
+    handle_canvas_input();
+    // A scripted run waits until the replay is applied and a few frames have laid out the
+    // panels, then captures the whole window.
+    frames_since_idle = worker_->idle() ? frames_since_idle + 1 : 0;
+    const bool capture = !screenshot_done && frames_since_idle >= 3;
+    draw_frame(capture);
+    if (capture) {
+      screenshot_done = true;
+      std::cout << "wrote " << options_.screenshot->string() << "\n";
+    }
+    if (options_.exit_after && screenshot_done && worker_->idle()) break;
+  }
+}
+
+}  // namespace
+
+void run_paint_window(const PaintOptions& options) {
+  PaintWindow window(options);
+  window.run();
+}
+
+}  // namespace impasto::app::window

@@ -1,0 +1,363 @@
+#include "window/panels.hpp"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+#include <impasto/data/lights.hpp>
+#include <impasto/data/pigments.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <string>
+
+namespace impasto::app::window {
+namespace {
+
+constexpr float kPanelWidth = 330.0f;
+
+void file_menu(PanelContext& c) {
+  WindowState& s = c.state;
+  const bool unsaved = c.worker.stats().events_since_save > 0;
+  bool open_new = false, open_open = false, open_save_as = false, open_export = false;
+  bool open_prompt = false;
+  // An action that would discard paint runs at once when nothing is unsaved, else after the
+  // prompt (opened below, at the top level of the ID stack, not inside a menu or popup).
+  auto ask = [&](PendingAction action, std::filesystem::path path = {}) {
+    s.pending = action;
+    s.pending_path = std::move(path);
+    s.pending_confirmed = !unsaved;
+    open_prompt = unsaved;
+  };
+  if (ImGui::BeginMainMenuBar()) {
+    if (ImGui::BeginMenu("File")) {
+      if (ImGui::MenuItem("New...")) open_new = true;
+      if (ImGui::MenuItem("Open...")) open_open = true;
+      if (ImGui::BeginMenu("Open recent", !s.recent.empty())) {
+        for (const auto& file : s.recent) {
+          if (ImGui::MenuItem(file.string().c_str())) ask(PendingAction::kOpenRecent, file);
+        }
+        ImGui::EndMenu();
+      }
+      ImGui::Separator();
+      if (ImGui::MenuItem("Save", "Ctrl+S")) {
+        if (s.file) {
+          c.files.save(*s.file);
+        } else {
+          open_save_as = true;
+        }
+      }
+      if (ImGui::MenuItem("Save as...")) open_save_as = true;
+      if (ImGui::MenuItem("Export PNG/EXR...")) open_export = true;
+      ImGui::Separator();
+      if (ImGui::MenuItem("Quit")) ask(PendingAction::kQuit);
+      ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("View")) {
+      if (ImGui::MenuItem("Fit canvas", "F")) s.fit_requested = true;
+      if (ImGui::MenuItem("One cell per pixel", "1")) s.view.pixels_per_cell = 1.0;
+      if (ImGui::MenuItem("Reset rotation")) s.view.rotation_rad = 0.0;
+      ImGui::EndMenu();
+    }
+    ImGui::EndMainMenuBar();
+  }
+  if (open_new) ImGui::OpenPopup("New painting");
+  if (open_open) ImGui::OpenPopup("Open painting");
+  if (open_save_as) ImGui::OpenPopup("Save painting as");
+  if (open_export) ImGui::OpenPopup("Export image");
+
+  if (ImGui::BeginPopupModal("New painting", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::InputInt("width (cells)", &s.new_width);
+    ImGui::InputInt("height (cells)", &s.new_height);
+    ImGui::InputFloat("DPI", &s.new_dpi, 10.0f, 50.0f, "%.0f");
+    if (ImGui::Button("Create")) {
+      ImGui::CloseCurrentPopup();
+      ask(PendingAction::kNew);
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+  }
+  auto path_popup = [&](const char* title, const char* button, auto&& on_accept) {
+    if (ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+      ImGui::SetNextItemWidth(420.0f);
+      ImGui::InputText("file", &s.path_input);
+      if (ImGui::Button(button) && !s.path_input.empty()) {
+        ImGui::CloseCurrentPopup();
+        on_accept(std::filesystem::path(s.path_input));
+      }
+      ImGui::SameLine();
+      if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+      ImGui::EndPopup();
+    }
+  };
+  path_popup("Open painting", "Open",
+             [&](const std::filesystem::path& p) { ask(PendingAction::kOpen, p); });
+  path_popup("Save painting as", "Save", [&](const std::filesystem::path& p) { c.files.save(p); });
+  path_popup("Export image", "Export",
+             [&](const std::filesystem::path& p) { c.files.export_image(p); });
+
+  if (open_prompt) ImGui::OpenPopup("Unsaved changes");
+  if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::TextUnformatted("The painting has unsaved changes.");
+    if (s.file && ImGui::Button("Save first")) {
+      c.files.save(*s.file);
+      s.pending_confirmed = true;
+      ImGui::CloseCurrentPopup();
+    }
+    if (s.file) ImGui::SameLine();
+    if (ImGui::Button("Discard changes")) {
+      s.pending_confirmed = true;
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) {
+      s.pending = PendingAction::kNone;
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::EndPopup();
+  }
+}
+
+void palette_panel(PanelContext& c) {
+  WindowState& s = c.state;
+  const auto& pigments = data::PigmentDatabase::defaults().all();
+  if (s.mix_parts.size() != pigments.size()) s.mix_parts.assign(pigments.size(), 0.0f);
+  if (!ImGui::CollapsingHeader("Palette", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  ImGui::ColorButton("##swatch", ImVec4(s.swatch_rgb[0], s.swatch_rgb[1], s.swatch_rgb[2], 1.0f),
+                     ImGuiColorEditFlags_NoTooltip, ImVec2(48, 48));
+  ImGui::SameLine();
+  ImGui::BeginGroup();
+  ImGui::SliderFloat("mm³", &s.load_volume_mm3, 1.0f, 400.0f, "%.0f", ImGuiSliderFlags_Logarithmic);
+  bool any = false;
+  for (float p : s.mix_parts) any = any || p > 0.0f;
+  ImGui::BeginDisabled(!any);
+  if (ImGui::Button("Load brush")) {
+    input::LoadEvent load{s.load_volume_mm3, {}};
+    for (std::size_t i = 0; i < pigments.size(); ++i) {
+      if (s.mix_parts[i] > 0.0f) load.mix.push_back({pigments[i].name, s.mix_parts[i]});
+    }
+    c.worker.submit(load);
+  }
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  if (ImGui::Button("Wipe")) c.worker.submit(input::WipeEvent{});
+  ImGui::SameLine();
+  if (ImGui::Button("Clear mix")) {
+    std::fill(s.mix_parts.begin(), s.mix_parts.end(), 0.0f);
+    s.mix_changed = true;
+  }
+  ImGui::Text("on brush: %.1f mm³", c.painting.brush_volume_mm3);
+  ImGui::EndGroup();
+  ImGui::BeginChild("pigments", ImVec2(0, 180), true);
+  for (std::size_t i = 0; i < pigments.size(); ++i) {
+    ImGui::PushID(static_cast<int>(i));
+    ImGui::SetNextItemWidth(90.0f);
+    if (ImGui::SliderFloat("##parts", &s.mix_parts[i], 0.0f, 10.0f, "%.1f")) s.mix_changed = true;
+    ImGui::SameLine();
+    ImGui::TextUnformatted(pigments[i].name.c_str());
+    ImGui::PopID();
+  }
+  ImGui::EndChild();
+}
+
+void brush_panel(PanelContext& c) {
+  WindowState& s = c.state;
+  if (!ImGui::CollapsingHeader("Brush", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  bool changed = false;
+  if (ImGui::BeginCombo("head", s.brush.head.c_str())) {
+    for (const auto& head : s.brush_heads) {
+      if (ImGui::Selectable(head.c_str(), head == s.brush.head)) {
+        s.brush.head = head;
+        changed = true;
+      }
+    }
+    ImGui::EndCombo();
+  }
+  float size = static_cast<float>(s.brush.size_mm);
+  if (ImGui::SliderFloat("size (mm)", &size, 0.5f, 60.0f, "%.1f", ImGuiSliderFlags_Logarithmic)) {
+    s.brush.size_mm = size;
+  }
+  changed = changed || ImGui::IsItemDeactivatedAfterEdit();
+  float stiffness = static_cast<float>(s.brush.stiffness);
+  if (ImGui::SliderFloat("stiffness", &stiffness, 0.0f, 1.0f)) s.brush.stiffness = stiffness;
+  changed = changed || ImGui::IsItemDeactivatedAfterEdit();
+  if (changed) {
+    c.worker.submit(input::BrushEvent{s.brush.head, s.brush.size_mm, s.brush.stiffness, {}});
+  }
+  ImGui::Checkbox("pressure from speed", &s.pressure_from_speed);
+  ImGui::BeginDisabled(s.pressure_from_speed);
+  ImGui::SliderFloat("mouse pressure", &s.mouse_pressure, 0.05f, 1.0f);
+  ImGui::EndDisabled();
+}
+
+// The light's spectrum over the rendering range with the quadrature nodes marked.
+void spectrum_plot(const WindowState& s, const render::SpectralPalette& palette) {
+  static std::string plotted_light;
+  static std::vector<float> values;
+  const auto& range = s.settings.range;
+  if (plotted_light != s.settings.light) {
+    plotted_light = s.settings.light;
+    values.clear();
+    try {
+      const data::Spectrum light = data::light_from_spec(s.settings.light);
+      for (double nm = range.first_nm; nm <= range.last_nm; nm += 5.0) {
+        values.push_back(static_cast<float>(light.at(nm)));
+      }
+    } catch (const std::exception&) {
+    }
+  }
+  const float top = values.empty() ? 1.0f : *std::max_element(values.begin(), values.end());
+  ImGui::PlotLines("##spectrum", values.data(), static_cast<int>(values.size()), 0,
+                   "light spectrum, nodes", 0.0f, top * 1.05f, ImVec2(kPanelWidth - 20, 90));
+  const ImVec2 lo = ImGui::GetItemRectMin();
+  const ImVec2 hi = ImGui::GetItemRectMax();
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  for (float nm : palette.sampling().wavelengths_nm) {
+    const float t = static_cast<float>((nm - range.first_nm) / (range.last_nm - range.first_nm));
+    const float x = lo.x + t * (hi.x - lo.x);
+    draw->AddLine(ImVec2(x, lo.y), ImVec2(x, hi.y), IM_COL32(255, 200, 60, 200), 1.5f);
+  }
+}
+
+// A disc: the centre is the light straight above, the rim the horizon; drag to move it.
+bool direction_pad(WindowState& s) {
+  const float radius = 55.0f;
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  ImGui::InvisibleButton("##direction", ImVec2(2 * radius, 2 * radius));
+  const ImVec2 centre(origin.x + radius, origin.y + radius);
+  bool changed = false;
+  if (ImGui::IsItemActive()) {
+    const ImVec2 mouse = ImGui::GetIO().MousePos;
+    const double dx = (mouse.x - centre.x) / radius, dy = (mouse.y - centre.y) / radius;
+    const double r = std::min(1.0, std::hypot(dx, dy));
+    s.settings.light_azimuth_deg = std::atan2(dy, dx) * 180.0 / std::numbers::pi;
+    s.settings.light_elevation_deg = std::max(5.0, 90.0 * (1.0 - r));
+    changed = true;
+  }
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  draw->AddCircleFilled(centre, radius, IM_COL32(40, 40, 48, 255));
+  draw->AddCircle(centre, radius, IM_COL32(150, 150, 160, 255));
+  const double az = s.settings.light_azimuth_deg * std::numbers::pi / 180.0;
+  const double r = radius * (1.0 - s.settings.light_elevation_deg / 90.0);
+  draw->AddCircleFilled(ImVec2(centre.x + static_cast<float>(r * std::cos(az)),
+                               centre.y + static_cast<float>(r * std::sin(az))),
+                        6.0f, IM_COL32(255, 220, 80, 255));
+  return changed;
+}
+
+void light_panel(PanelContext& c) {
+  WindowState& s = c.state;
+  if (!ImGui::CollapsingHeader("Light", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  bool changed = false;
+  changed |= ImGui::Checkbox("blackbody", &s.use_blackbody);
+  if (s.use_blackbody) {
+    ImGui::SliderFloat("kelvin", &s.kelvin, 1500.0f, 12000.0f, "%.0f K");
+    changed |= ImGui::IsItemDeactivatedAfterEdit();
+  } else if (!s.illuminants.empty()) {
+    s.illuminant = std::clamp(s.illuminant, 0, static_cast<int>(s.illuminants.size()) - 1);
+    if (ImGui::BeginCombo("illuminant",
+                          s.illuminants[static_cast<std::size_t>(s.illuminant)].c_str())) {
+      for (std::size_t i = 0; i < s.illuminants.size(); ++i) {
+        if (ImGui::Selectable(s.illuminants[i].c_str(), static_cast<int>(i) == s.illuminant)) {
+          s.illuminant = static_cast<int>(i);
+          changed = true;
+        }
+      }
+      ImGui::EndCombo();
+    }
+  }
+  ImGui::SliderInt("wavelengths", &s.settings.wavelengths, 1, render::kMaxNodes);
+  changed |= ImGui::IsItemDeactivatedAfterEdit();
+  if (changed) {
+    s.settings.light = s.use_blackbody ? "blackbody:" + std::to_string(static_cast<int>(s.kelvin))
+                                       : s.illuminants[static_cast<std::size_t>(s.illuminant)];
+    s.settings_changed = true;
+  }
+  spectrum_plot(s, c.palette);
+  const bool moved = direction_pad(s);
+  ImGui::SameLine();
+  ImGui::BeginGroup();
+  ImGui::Text("azimuth %.0f°", s.settings.light_azimuth_deg);
+  ImGui::Text("elevation %.0f°", s.settings.light_elevation_deg);
+  ImGui::SetNextItemWidth(120.0f);
+  ImGui::SliderFloat("intensity", &s.view_options.light_intensity, 0.1f, 3.0f);
+  float ambient = static_cast<float>(s.settings.ambient);
+  ImGui::SetNextItemWidth(120.0f);
+  if (ImGui::SliderFloat("ambient", &ambient, 0.0f, 1.0f)) s.settings.ambient = ambient;
+  ImGui::EndGroup();
+  (void)moved;  // direction, intensity and ambient are uniforms: no re-bake needed
+}
+
+void layers_panel(PanelContext& c) {
+  WindowState& s = c.state;
+  if (!ImGui::CollapsingHeader("Layers", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  ImGui::SliderFloat("dry %", &s.dry_fraction, 0.0f, 1.0f, "%.2f");
+  ImGui::SameLine();
+  if (ImGui::Button("Dry now")) c.worker.submit(input::DryEvent{s.dry_fraction});
+  s.hidden_dry_layers.resize(c.painting.dry_layers, false);
+  ImGui::TextUnformatted("wet layer (top)");
+  for (std::size_t i = c.painting.dry_layers; i-- > 0;) {
+    bool visible = !s.hidden_dry_layers[i];
+    ImGui::PushID(static_cast<int>(i));
+    if (ImGui::Checkbox(("dry layer " + std::to_string(i + 1)).c_str(), &visible)) {
+      s.hidden_dry_layers[i] = !visible;
+      s.visibility_changed = true;
+    }
+    ImGui::PopID();
+  }
+}
+
+void history_panel(PanelContext& c) {
+  if (!ImGui::CollapsingHeader("History", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  ImGui::BeginDisabled(c.painting.undo_depth == 0);
+  if (ImGui::Button("Undo (Ctrl+Z)")) c.worker.submit(input::UndoEvent{});
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::BeginDisabled(c.painting.redo_depth == 0);
+  if (ImGui::Button("Redo (Ctrl+Shift+Z)")) c.worker.submit(input::RedoEvent{});
+  ImGui::EndDisabled();
+  ImGui::Text("%zu steps to undo, %zu to redo", c.painting.undo_depth, c.painting.redo_depth);
+}
+
+void status_bar(PanelContext& c) {
+  const WindowState& s = c.state;
+  const ImGuiIO& io = ImGui::GetIO();
+  const float height = ImGui::GetFrameHeight() + 6.0f;
+  ImGui::SetNextWindowPos(ImVec2(0, io.DisplaySize.y - height));
+  ImGui::SetNextWindowSize(ImVec2(io.DisplaySize.x, height));
+  ImGui::Begin("##status", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                   ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus);
+  const SimStats sim = c.worker.stats();
+  ImGui::Text(
+      "frame %.1f ms | upload %.1f ms (%d tiles) | sim %.2f ms/event, %.0f ms/s busy, "
+      "%zu queued | %dx%d @ %.0f dpi | zoom %.2f | cell %.0f,%.0f | %s%s",
+      s.frame_ms, s.upload_ms, s.tiles_uploaded, sim.last_event_ms, sim.busy_ms_per_s, sim.queued,
+      c.painting.width_cells, c.painting.height_cells, c.painting.dpi, s.view.pixels_per_cell,
+      s.cursor_cell[0], s.cursor_cell[1], sim.events_since_save > 0 ? "unsaved " : "",
+      s.message.c_str());
+  ImGui::End();
+}
+
+}  // namespace
+
+void draw_panels(PanelContext& context) {
+  file_menu(context);
+  const ImGuiIO& io = ImGui::GetIO();
+  const float top = ImGui::GetFrameHeight();
+  ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - kPanelWidth, top));
+  ImGui::SetNextWindowSize(
+      ImVec2(kPanelWidth, io.DisplaySize.y - top - ImGui::GetFrameHeight() - 6.0f));
+  ImGui::Begin("Impasto", nullptr,
+               ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                   ImGuiWindowFlags_NoSavedSettings);
+  palette_panel(context);
+  brush_panel(context);
+  light_panel(context);
+  layers_panel(context);
+  history_panel(context);
+  ImGui::End();
+  status_bar(context);
+}
+
+}  // namespace impasto::app::window

@@ -1,0 +1,44 @@
+#pragma once
+// The Dear ImGui panels of the painting window: menu bar (file), palette, brush, light,
+// layers, history and the status bar. They change WindowState and submit session events;
+// they never touch the painting directly.
+#include <impasto/render/spectral_palette.hpp>
+
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "window/sim_worker.hpp"
+#include "window/window_state.hpp"
+
+namespace impasto::app::window {
+
+// The painting as the panels see it this frame (copied under the painting's lock).
+struct PaintingSnapshot {
+  int width_cells = 0, height_cells = 0;
+  double dpi = 0.0;
+  std::size_t undo_depth = 0, redo_depth = 0, dry_layers = 0;
+  std::vector<std::string> slots;
+  double brush_volume_mm3 = 0.0;
+};
+
+// File operations, carried out by the window (they replace or write the painting).
+struct FileActions {
+  std::function<void()> new_painting;  // uses state.new_*
+  std::function<void(const std::filesystem::path&)> open;
+  std::function<void(const std::filesystem::path&)> save;
+  std::function<void(const std::filesystem::path&)> export_image;  // .png or .exr
+};
+
+struct PanelContext {
+  WindowState& state;
+  SimWorker& worker;
+  const PaintingSnapshot& painting;
+  const render::SpectralPalette& palette;  // for the light's nodes
+  const FileActions& files;
+};
+
+void draw_panels(PanelContext& context);
+
+}  // namespace impasto::app::window

@@ -1,0 +1,95 @@
+#pragma once
+// The simulation thread of the painting window. The UI thread submits session events (pen
+// samples, brush, load, dry, undo, ...); the worker applies them in order to the painting
+// through the same SessionPlayer as `impasto replay`, and records each one to the session's
+// stroke file first, so that the file replays the session exactly.
+#include <impasto/input/stroke_events.hpp>
+#include <impasto/input/stroke_file.hpp>
+#include <impasto/paintcore/painting.hpp>
+
+#include <atomic>
+#include <condition_variable>
+#include <deque>
+#include <filesystem>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include "session/replay.hpp"
+
+namespace impasto::app::window {
+
+struct SimStats {
+  double last_event_ms = 0.0;  // time the last applied event took
+  double busy_ms_per_s = 0.0;  // simulation load over the last second
+  std::size_t queued = 0;      // events waiting
+  std::uint64_t applied = 0;   // events applied since the worker started
+  std::uint64_t events_since_save = 0;
+  std::string last_error;  // the most recent event that could not be applied
+};
+
+class SimWorker {
+ public:
+  // Takes the painting; records to `record_to` when set (the file is created at once).
+  SimWorker(paintcore::Painting painting, std::optional<std::filesystem::path> record_to);
+  ~SimWorker();
+  SimWorker(const SimWorker&) = delete;
+  SimWorker& operator=(const SimWorker&) = delete;
+
+  // Queues an event; returns at once. Events apply in submission order.
+  void submit(input::StrokeEvent event);
+  // Blocks until every submitted event has been applied.
+  void wait_idle();
+  bool idle() const;
+
+  // Strokes without a load record get a brush auto-loaded per stroke (as `impasto replay`
+  // does for recordings from other programs). Applies to events submitted afterwards.
+  void set_auto_load(bool auto_load);
+  // Ends an open stroke, as the end of a replayed file does (not recorded: a replay of the
+  // recording ends it the same way).
+  void finish_stroke();
+
+  // Runs f(painting) with the painting locked against the worker (keep it short).
+  template <typename F>
+  decltype(auto) with_painting(F&& f) {
+    std::lock_guard lock(painting_mutex_);
+    return f(static_cast<const paintcore::Painting&>(painting_));
+  }
+  // Waits for the queue to drain, then replaces the painting (new, open) and the recording.
+  void replace_painting(paintcore::Painting painting,
+                        std::optional<std::filesystem::path> record_to);
+  // Saves under the lock (after the queue drained); resets events_since_save.
+  void save(const std::filesystem::path& file);
+
+  SimStats stats() const;
+  std::optional<std::filesystem::path> recording_path() const;
+
+ private:
+  struct Job {
+    input::StrokeEvent event;
+    std::optional<bool> auto_load;  // a change of auto-load, in order with the events
+    bool finish = false;            // end an open stroke
+  };
+  void run();
+  void start_recording(const std::optional<std::filesystem::path>& record_to);
+
+  paintcore::Painting painting_;
+  ReplayOptions options_;
+  std::unique_ptr<SessionPlayer> player_;
+  std::unique_ptr<input::StrokeRecorder> recorder_;
+  mutable std::mutex painting_mutex_;
+
+  mutable std::mutex queue_mutex_;
+  std::condition_variable queue_changed_;
+  std::deque<Job> queue_;
+  bool busy_ = false;
+  bool stopping_ = false;
+  SimStats stats_;
+  double busy_window_ms_ = 0.0;
+  double window_start_s_ = 0.0;
+  std::thread thread_;
+};
+
+}  // namespace impasto::app::window

@@ -1,0 +1,73 @@
+#pragma once
+// What the painting window's panels show and change, shared by the frame loop
+// (paint_window.cpp) and the panels (panels.cpp).
+#include <impasto/paintcore/brush.hpp>
+#include <impasto/render/render_settings.hpp>
+#include <impasto/render_gl/canvas_view.hpp>
+#include <impasto/render_gl/gpu_view_options.hpp>
+
+#include <array>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "window/sim_worker.hpp"
+
+namespace impasto::app::window {
+
+// An action that discards the painting, held while the unsaved-changes prompt is open.
+enum class PendingAction { kNone, kNew, kOpen, kOpenRecent, kQuit };
+
+struct WindowState {
+  // --- look (shared with the CPU renderer's settings) ---
+  render::RenderSettings settings;
+  render_gl::GpuViewOptions view_options;
+  bool settings_changed = true;  // palette and dry bake must be rebuilt
+  bool use_blackbody = false;
+  int illuminant = 0;  // index into illuminants
+  float kelvin = 5600.0f;
+  std::vector<std::string> illuminants;
+
+  // --- paint on the brush ---
+  std::vector<float> mix_parts;  // per pigment of the database
+  float load_volume_mm3 = 40.0f;
+  std::array<float, 3> swatch_rgb{0.5f, 0.5f, 0.5f};
+  bool mix_changed = true;
+
+  // --- brush and pen ---
+  paintcore::BrushSettings brush{"round", 6.0, 0.5};
+  std::vector<std::string> brush_heads;
+  bool pressure_from_speed = false;
+  float mouse_pressure = 0.6f;
+
+  // --- layers ---
+  float dry_fraction = 1.0f;
+  std::vector<bool> hidden_dry_layers;
+  bool visibility_changed = false;
+
+  // --- view ---
+  render_gl::CanvasView view;
+  bool fit_requested = true;
+
+  // --- files ---
+  std::optional<std::filesystem::path> file;  // the painting's file, once saved or opened
+  std::vector<std::filesystem::path> recent;
+  PendingAction pending = PendingAction::kNone;
+  bool pending_confirmed = false;  // no unsaved changes, or the user said to go ahead
+  std::filesystem::path pending_path;
+  std::string path_input;
+  int new_width = 1024, new_height = 768;
+  float new_dpi = 150.0f;
+  std::string message;  // the last file operation's result or error
+
+  // --- status ---
+  double frame_ms = 0.0;
+  double upload_ms = 0.0;
+  int tiles_uploaded = 0;
+  std::array<double, 2> cursor_cell{-1, -1};
+  bool quit = false;
+};
+
+}  // namespace impasto::app::window

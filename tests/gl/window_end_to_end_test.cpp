@@ -1,0 +1,114 @@
+// End to end, under Xvfb: `impasto paint --replay ... --screenshot ... --exit` opens the
+// window, replays the bundled demo strokes through the live input path, captures the whole
+// window and quits. The screenshot must show the canvas with paint and the panels; the
+// session recording must replay to the very same painting as the original strokes.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "impasto/render/image.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+const fs::path kDemo = fs::path(IMPASTO_SOURCE_DIR) / "data" / "strokes" / "demo.dat";
+
+std::string run_and_capture(const std::string& command) {
+  std::string output;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return output;
+  char buffer[4096];
+  while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
+  const int status = pclose(pipe);
+  EXPECT_EQ(status, 0) << command << "\n" << output;
+  return output;
+}
+
+std::string state_hash_of_replay(const fs::path& strokes) {
+  const std::string json = run_and_capture(std::string(IMPASTO_EXECUTABLE) + " replay '" +
+                                           strokes.string() + "' --stats");
+  return nlohmann::json::parse(json.substr(json.find('{'))).at("state_hash").get<std::string>();
+}
+
+struct Region {
+  int x0, y0, x1, y1;
+};
+
+struct RegionStats {
+  int pixels = 0, bright = 0, blue = 0, saturated = 0;
+  double min_luma = 1.0, max_luma = 0.0;
+};
+
+RegionStats measure(const impasto::render::Image& image, Region r) {
+  RegionStats s;
+  for (int y = r.y0; y < r.y1; ++y) {
+    for (int x = r.x0; x < r.x1; ++x) {
+      const float* p = image.pixel(x, y);
+      const double luma = 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
+      const double spread = std::max({p[0], p[1], p[2]}) - std::min({p[0], p[1], p[2]});
+      ++s.pixels;
+      s.bright += luma > 0.8;
+      s.blue += p[2] > p[0] + 0.15f && p[2] > p[1];
+      s.saturated += spread > 0.2;
+      s.min_luma = std::min(s.min_luma, luma);
+      s.max_luma = std::max(s.max_luma, luma);
+    }
+  }
+  return s;
+}
+
+TEST(WindowEndToEnd, ReplayScreenshotShowsPaintAndPanelsAndRecordsTheSession) {
+  ASSERT_NE(std::getenv("DISPLAY"), nullptr) << "run under xvfb-run -a";
+  const fs::path dir =
+      fs::temp_directory_path() / ("impasto_window_test_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  const fs::path screenshot = dir / "window.png";
+  const fs::path session = dir / "session.strokes";
+  run_and_capture(std::string(IMPASTO_EXECUTABLE) + " paint --replay '" + kDemo.string() +
+                  "' --screenshot '" + screenshot.string() + "' --record '" + session.string() +
+                  "' --exit --window-width 1200 --window-height 800 2>&1");
+  ASSERT_TRUE(fs::exists(screenshot));
+  const impasto::render::Image image = impasto::render::read_png(screenshot);
+  ASSERT_EQ(image.width, 1200);
+  ASSERT_EQ(image.height, 800);
+
+  // The panels: ImGui's dark panels on the right with light text on them.
+  const RegionStats panels = measure(image, {1200 - 320, 40, 1200 - 10, 700});
+  EXPECT_LT(panels.min_luma, 0.2);
+  EXPECT_GT(panels.bright, 200) << "no panel text drawn";
+
+  // The canvas, fitted left of the panels: the white ground and the demo's strokes, which
+  // the replay loads in turn with the demo palette (ultramarine first: blue paint).
+  const RegionStats canvas = measure(image, {20, 60, 1200 - 360, 760});
+  EXPECT_GT(canvas.bright, 20000) << "no white canvas ground";
+  EXPECT_GT(canvas.blue, 500) << "no ultramarine where the first strokes were laid";
+  EXPECT_GT(canvas.saturated, 2000) << "too little coloured paint";
+  EXPECT_GT(canvas.max_luma - canvas.min_luma, 0.5);
+
+  // The session recording replays to exactly the painting of the original strokes.
+  ASSERT_TRUE(fs::exists(session));
+  EXPECT_EQ(state_hash_of_replay(session), state_hash_of_replay(kDemo));
+  fs::remove_all(dir);
+}
+
+TEST(WindowEndToEnd, MissingStrokeFileIsAClearError) {
+  const std::string output = [] {
+    std::string text;
+    FILE* pipe = popen(
+        (std::string(IMPASTO_EXECUTABLE) + " paint --replay /nonexistent/strokes.dat --exit 2>&1")
+            .c_str(),
+        "r");
+    char buffer[4096];
+    while (pipe && std::fgets(buffer, sizeof buffer, pipe)) text += buffer;
+    EXPECT_NE(pipe ? pclose(pipe) : 0, 0);
+    return text;
+  }();
+  EXPECT_NE(output.find("strokes.dat"), std::string::npos) << output;
+}
+
+}  // namespace
