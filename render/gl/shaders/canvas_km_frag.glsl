@@ -55,16 +55,22 @@ void main() {
   }
   float thickness = volume * optical_per_mm;
 
+  // Where there is no wet paint the layer is the identity (R = 0, T = 1 composites to the
+  // reflectance below exactly), so bare canvas and dry paint skip the K-M maths, as the CPU
+  // reference skips it for wet_volume <= 0.
+  bool wet_paint = volume > 0.0;
   vec3 xyz = vec3(0.0);
   for (int node = 0; node < node_count; ++node) {
-    float K = 0.0;
-    float S = 0.0;
-    for (int slot = 0; slot < slot_count; ++slot) {
-      K += concentration[slot] * slot_absorption[slot * MAX_NODES + node];
-      S += concentration[slot] * slot_scattering[slot * MAX_NODES + node];
+    float R = component(texelFetch(dry_reflectance, ivec3(cell, node / 4), 0), node % 4);
+    if (wet_paint) {
+      float K = 0.0;
+      float S = 0.0;
+      for (int slot = 0; slot < slot_count; ++slot) {
+        K += concentration[slot] * slot_absorption[slot * MAX_NODES + node];
+        S += concentration[slot] * slot_scattering[slot * MAX_NODES + node];
+      }
+      R = km_composite(km_layer(K, S, thickness), R);
     }
-    float below = component(texelFetch(dry_reflectance, ivec3(cell, node / 4), 0), node % 4);
-    float R = km_composite(km_layer(K, S, thickness), below);
     if (saunderson_k.x >= 0.0) R = km_saunderson(R, saunderson_k.x, saunderson_k.y);
     xyz += node_to_xyz[node] * R;
   }
