@@ -51,6 +51,8 @@ std::vector<RecordedReport> load_reports(const std::filesystem::path& path);
 // Every pen sample of a capture, in order: the one call a replay needs. Reports that are not
 // pen reports are skipped. Tablets with a known vendor protocol are decoded by it (see
 // hid_vendor.hpp); others need standard pen reports, else UnsupportedTablet is thrown.
+// Positions are mm on the tablet (map them onto the canvas with AreaMapping), times are the
+// capture's seconds.
 std::vector<paintcore::PenSample> decode_recording(const HidRecording& recording);
 std::vector<paintcore::PenSample> decode_recording(const std::filesystem::path& path);
 
