@@ -49,7 +49,7 @@ void main() {
   // Concentration = amount / volume, as the CPU's gather_shares computes it.
   float inverse_volume = volume > 0.0 ? 1.0 / volume : 0.0;
   float concentration[MAX_SLOTS];
-  for (int layer = 0; layer * 4 < slot_count; ++layer) {
+  for (int layer = 0; volume > 0.0 && layer * 4 < slot_count; ++layer) {
     vec4 amounts = max(texelFetch(pigments, ivec3(cell, layer), 0), vec4(0.0));
     for (int i = 0; i < 4; ++i) concentration[layer * 4 + i] = component(amounts, i) * inverse_volume;
   }
