@@ -14,7 +14,7 @@ namespace impasto::render {
 namespace {
 
 constexpr float kOpaqueMm = 5.0f;
-constexpr float kGlazeMm = 0.01f;
+constexpr float kGlazeMm = 0.0005f;  // 0.1 units of optical thickness at the default scale
 constexpr float kTintPigmentShare = 0.1f;
 
 int index_of(const std::vector<data::Pigment>& pigments, const std::string& name) {

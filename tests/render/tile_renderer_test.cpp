@@ -87,7 +87,9 @@ TEST(TileRenderer, FlatPaintShowsItsKubelkaMunkColour) {
   node_reflectance_to_xyz(palette, r.data(), ground_rgb);
   display.apply(ground_rgb, 1);
   const PigmentShare shares[2] = {{2, 0.2f}, {0, 0.3f}};
-  composite_paint_layer(palette, shares, 1.0f / 0.1f, r.data());
+  // The painted cells hold 1 mm of paint: 1 / thickness_scale_mm units of optical depth.
+  composite_paint_layer(palette, shares, static_cast<float>(1.0 / settings.thickness_scale_mm),
+                        r.data());
   float paint_rgb[3];
   node_reflectance_to_xyz(palette, r.data(), paint_rgb);
   display.apply(paint_rgb, 1);

@@ -28,9 +28,10 @@ struct RenderSettings {
 
   // --- paint optics ---
   // Millimetres of paint per unit of K-M optical thickness. The Golden data have S = 1 for
-  // titanium white, so 0.1 mm makes 1 mm of white opaque (R within 1% of R∞ over black)
-  // and a 0.01 mm glaze translucent. See docs/rendering.md.
-  double thickness_scale_mm = 0.1;
+  // titanium white; 0.005 mm makes a 25 um film of white hide 83% of a black ground and
+  // 0.1 mm opaque, as real oil and acrylic whites do, while a 1 um glaze stays translucent.
+  // See docs/rendering.md.
+  double thickness_scale_mm = 0.005;
   // The canvas ground (gesso) reflectance; unset: R∞ of the palette's "Titanium White".
   std::optional<data::Spectrum> ground;
   // Saunderson surface correction of the top reflectance (off: the data are interface-
