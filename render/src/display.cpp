@@ -2,6 +2,8 @@
 
 #include <OpenColorIO/OpenColorIO.h>
 
+#include "impasto/render/display_ocio.hpp"
+
 #include <stdexcept>
 #include <string>
 
@@ -81,7 +83,9 @@ OCIO::TransformRcPtr srgb_curve() {
   return transform;
 }
 
-OCIO::TransformRcPtr transform_for(DisplayEncoding encoding) {
+}  // namespace
+
+OCIO::TransformRcPtr display_ocio_transform(DisplayEncoding encoding) {
   switch (encoding) {
     case DisplayEncoding::srgb:
       return builtin("DISPLAY - CIE-XYZ-D65_to_sRGB");
@@ -100,8 +104,6 @@ OCIO::TransformRcPtr transform_for(DisplayEncoding encoding) {
   }
   throw std::logic_error("unhandled display encoding");
 }
-
-}  // namespace
 
 DisplayEncoding parse_display_encoding(std::string_view text) {
   for (const auto& entry : kEncodingNames) {
@@ -138,7 +140,8 @@ DisplayTransform::DisplayTransform(DisplayEncoding encoding)
     : encoding_(encoding), impl_(std::make_unique<Impl>()) {
   // A raw config suffices: built-in and matrix transforms need no colour spaces or files.
   const OCIO::ConstConfigRcPtr config = OCIO::Config::CreateRaw();
-  const OCIO::ConstProcessorRcPtr processor = config->getProcessor(transform_for(encoding));
+  const OCIO::ConstProcessorRcPtr processor =
+      config->getProcessor(display_ocio_transform(encoding));
   impl_->processor = processor->getOptimizedCPUProcessor(OCIO::BIT_DEPTH_F32, OCIO::BIT_DEPTH_F32,
                                                          OCIO::OPTIMIZATION_DEFAULT);
 }

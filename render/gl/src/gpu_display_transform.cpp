@@ -4,7 +4,7 @@
 
 #include <stdexcept>
 
-#include "ocio_transforms.hpp"
+#include "impasto/render/display_ocio.hpp"
 
 namespace OCIO = OCIO_NAMESPACE;
 
@@ -25,7 +25,7 @@ void set_lut_parameters(GLenum target, OCIO::Interpolation interpolation) {
 GpuDisplayTransform::GpuDisplayTransform(render::DisplayEncoding encoding) : encoding_(encoding) {
   const OCIO::ConstConfigRcPtr config = OCIO::Config::CreateRaw();
   const OCIO::ConstProcessorRcPtr processor =
-      config->getProcessor(display_ocio_transform(encoding));
+      config->getProcessor(render::display_ocio_transform(encoding));
   OCIO::GpuShaderDescRcPtr desc = OCIO::GpuShaderDesc::CreateShaderDesc();
   desc->setLanguage(OCIO::GPU_LANGUAGE_GLSL_1_3);
   desc->setFunctionName("ocio_display");
