@@ -43,6 +43,8 @@ function(impasto_test name)
     IMPASTO_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
     IMPASTO_SHARED_DIR="${PROJECT_SOURCE_DIR}/../shared")
   impasto_warnings(${name})
+  # GoogleTest's headers are parsed once per test program, not once per test file.
+  target_precompile_headers(${name} PRIVATE <gtest/gtest.h>)
   gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60
                        PROPERTIES ENVIRONMENT "IMPASTO_DATA_DIR=${PROJECT_SOURCE_DIR}/data")
 endfunction()

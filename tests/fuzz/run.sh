@@ -19,11 +19,18 @@ flags=(-std=c++20 -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined
 mkdir -p "$build/obj"
 echo "building the input library with $cxx"
 objects=()
-for source in "$repo"/input/src/*.cpp; do
+pids=()
+for source in "$repo"/input/src/*.cpp; do  # one compiler per core at a time
   object="$build/obj/$(basename "${source%.cpp}").o"
-  "$cxx" "${flags[@]}" -fsanitize=fuzzer-no-link -I"$repo/input/src" -c "$source" -o "$object"
+  "$cxx" "${flags[@]}" -fsanitize=fuzzer-no-link -I"$repo/input/src" -c "$source" -o "$object" &
+  pids+=($!)
   objects+=("$object")
+  if [ "${#pids[@]}" -ge "$(nproc)" ]; then
+    wait "${pids[0]}"
+    pids=("${pids[@]:1}")
+  fi
 done
+for pid in "${pids[@]}"; do wait "$pid"; done
 
 declare -A seeds=(
   [hid_descriptor]="$repo/tests/fuzz/corpus/hid $shared/hid"
