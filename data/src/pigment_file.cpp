@@ -5,6 +5,24 @@
 #include "impasto/data/spectral_csv.hpp"
 
 namespace impasto::data {
+namespace {
+
+// The '# flakes:' file of a pigment, relative to the pigment file's folder; it must exist
+// (its contents are read by the renderer, which knows the flake format).
+std::filesystem::path flake_file(const std::map<std::string, std::string>& metadata,
+                                 const std::filesystem::path& pigment_file) {
+  const auto entry = metadata.find("flakes");
+  if (entry == metadata.end()) return {};
+  const std::string where = pigment_file.string() + ": field 'flakes': ";
+  if (entry->second.empty()) throw std::runtime_error(where + "names no file");
+  const std::filesystem::path file = pigment_file.parent_path() / entry->second;
+  if (!std::filesystem::is_regular_file(file)) {
+    throw std::runtime_error(where + file.string() + " is not a file");
+  }
+  return std::filesystem::absolute(file).lexically_normal();
+}
+
+}  // namespace
 
 Pigment read_pigment_file(const std::filesystem::path& path) {
   SpectralTable table = read_spectral_csv(path);
@@ -24,6 +42,7 @@ Pigment read_pigment_file(const std::filesystem::path& path) {
   Pigment pigment{name->second, *K, *S, std::move(table.metadata)};
   pigment.K.name = std::string("K");
   pigment.S.name = std::string("S");
+  pigment.flakes = flake_file(pigment.metadata, path);
   return pigment;
 }
 

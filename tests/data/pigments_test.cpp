@@ -22,7 +22,8 @@ fs::path scratch_folder(const std::string& name) {
 
 TEST(PigmentDatabase, DefaultsHoldTheGoldenAcrylics) {
   const PigmentDatabase& db = PigmentDatabase::defaults();
-  ASSERT_EQ(db.all().size(), 27u);
+  // The 27 Golden acrylics and the two flake paints (aluminium, mica pearl).
+  ASSERT_EQ(db.all().size(), 29u);
   for (const Pigment& p : db.all()) {
     ASSERT_EQ(p.K.values.size(), 40u) << p.name;  // 360..750 nm every 10 nm
     EXPECT_EQ(p.K.wavelengths_nm.front(), 360.0);
@@ -70,6 +71,39 @@ TEST(PigmentFile, RoundTripsAndKeepsUnknownMetadata) {
   EXPECT_EQ(q.S.values, p.S.values);
   EXPECT_EQ(q.metadata.at("colour_index"), "PR254");
   EXPECT_EQ(q.metadata.at("flake_size_um"), "20");
+  fs::remove_all(dir);
+}
+
+TEST(PigmentDatabase, FlakePaintsNameTheirFlakeFiles) {
+  const PigmentDatabase& db = PigmentDatabase::defaults();
+  const Pigment& aluminium = db.get("Aluminium Metallic");
+  const Pigment& pearl = db.get("Mica Blue Pearl");
+  EXPECT_EQ(aluminium.flakes.filename(), "aluminium_flakes.flake");
+  EXPECT_EQ(pearl.flakes.filename(), "mica_tio2_blue_pearl.flake");
+  EXPECT_TRUE(aluminium.flakes.is_absolute());
+  EXPECT_TRUE(fs::is_regular_file(aluminium.flakes));
+  EXPECT_TRUE(db.get("Titanium White").flakes.empty());
+}
+
+TEST(PigmentFile, AMissingFlakeFileIsAnErrorNamingTheField) {
+  const fs::path dir = scratch_folder("impasto_pigment_flakes");
+  std::ofstream(dir / "shiny.csv") << "# quantity: kubelka_munk\n# name: Shiny\n"
+                                      "# flakes: nowhere.flake\nwavelength_nm,K,S\n400,1,2\n";
+  try {
+    PigmentDatabase::load(dir);
+    FAIL() << "a missing flake file was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("shiny.csv: field 'flakes'"), std::string::npos)
+        << e.what();
+    EXPECT_NE(std::string(e.what()).find("nowhere.flake"), std::string::npos) << e.what();
+  }
+  std::ofstream(dir / "shiny.csv") << "# quantity: kubelka_munk\n# name: Shiny\n"
+                                      "# flakes: \nwavelength_nm,K,S\n400,1,2\n";
+  EXPECT_THROW(PigmentDatabase::load(dir), std::runtime_error);
+  std::ofstream(dir / "mine.flake") << "format = impasto-flake-paint 1\n";
+  std::ofstream(dir / "shiny.csv") << "# quantity: kubelka_munk\n# name: Shiny\n"
+                                      "# flakes: mine.flake\nwavelength_nm,K,S\n400,1,2\n";
+  EXPECT_EQ(PigmentDatabase::load(dir).get("Shiny").flakes, (dir / "mine.flake").lexically_normal());
   fs::remove_all(dir);
 }
 

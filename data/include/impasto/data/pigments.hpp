@@ -15,10 +15,14 @@ struct Pigment {
   std::string name;
   Spectrum K, S;                                // same wavelength grid, both >= 0
   std::map<std::string, std::string> metadata;  // every "# key: value" of its file
+  // Metallic or pearlescent flakes carried by the paint: the *.flake file named by the
+  // '# flakes:' line (relative to the pigment file), made absolute; empty when it has none.
+  std::filesystem::path flakes{};
 };
 
 // Reads one pigment file: '# quantity: kubelka_munk', '# name:', columns K and S (other
-// columns and metadata keys are allowed and ignored here). Throws std::runtime_error.
+// columns and metadata keys are allowed and ignored here), and '# flakes: FILE' when the
+// paint carries flakes. Throws std::runtime_error naming the file and field.
 Pigment read_pigment_file(const std::filesystem::path& path);
 // Writes a pigment in the same format (its metadata, name and K, S on K's grid).
 void write_pigment_file(const std::filesystem::path& path, const Pigment& pigment);
