@@ -4,6 +4,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -18,7 +19,9 @@ namespace impasto::paintcore {
 namespace {
 
 constexpr char kMagic[8] = {'I', 'M', 'P', 'A', 'S', 'T', 'O', '\0'};
-constexpr std::uint32_t kVersion = 1;
+// Version 2 added the cracks section; version 1 files (without it) still load.
+constexpr std::uint32_t kVersion = 2;
+constexpr std::uint32_t kOldestVersion = 1;
 constexpr std::size_t kHeaderBytes = sizeof(kMagic) + 4 + 8;
 constexpr std::uint32_t kMaxStringBytes = 4096;
 
@@ -125,6 +128,66 @@ PaintTotals read_totals(Reader& r, int slots, const std::string& field) {
   for (int s = 0; s < slots; ++s)
     t.pigment.push_back(r.get_finite(field + ".pigment[" + std::to_string(s) + "]"));
   return t;
+}
+
+// Cracks, sparse twice over: only tiles with a crack, and in them only the crack cells.
+void write_cracks(Writer& w, const CrackLayer& cracks) {
+  w.put(static_cast<std::uint32_t>(cracks.allocated_tiles()));
+  for (int index = 0; index < cracks.tile_extent(); ++index) {
+    const CrackTile* tile = cracks.tile(index);
+    if (tile == nullptr) continue;
+    w.put(static_cast<std::uint32_t>(index));
+    const auto count = std::count_if(tile->cells.begin(), tile->cells.end(),
+                                     [](const CrackRecord& c) { return c.has_crack(); });
+    w.put(static_cast<std::uint32_t>(count));
+    for (int cell = 0; cell < kTileCells; ++cell) {
+      const CrackRecord& c = tile->cells[static_cast<std::size_t>(cell)];
+      if (!c.has_crack()) continue;
+      w.put(static_cast<std::uint16_t>(cell));
+      w.put(c.depth_mm);
+      w.put(c.half_width_mm);
+      w.put(c.shape);
+      w.put(c.exposed_layer);
+    }
+  }
+}
+
+CrackLayer read_cracks(Reader& r, const Canvas& canvas, const std::string& file) {
+  CrackLayer cracks;
+  const int tile_count = canvas.tile_count();
+  const auto tiles = r.get_count("cracks.tiles.count", static_cast<std::uint32_t>(tile_count));
+  int previous = -1;
+  for (std::uint32_t k = 0; k < tiles; ++k) {
+    const std::string field = "cracks.tiles[" + std::to_string(k) + "]";
+    const auto index =
+        static_cast<int>(r.get_count(field + ".index", static_cast<std::uint32_t>(tile_count - 1)));
+    if (index <= previous) r.fail(field + ".index", "tiles are not in ascending order");
+    previous = index;
+    const auto count = r.get_count(field + ".count", static_cast<std::uint32_t>(kTileCells));
+    if (count == 0) r.fail(field + ".count", "a stored crack tile holds no crack");
+    CrackTile& tile = cracks.ensure_tile(index);
+    int previous_cell = -1;
+    for (std::uint32_t j = 0; j < count; ++j) {
+      const std::string cfield = field + ".cells[" + std::to_string(j) + "]";
+      const int cell = r.get<std::uint16_t>(cfield + ".cell");
+      if (cell >= kTileCells || cell <= previous_cell)
+        r.fail(cfield + ".cell", "cell " + std::to_string(cell) + " is out of range or order");
+      previous_cell = cell;
+      CrackRecord& c = tile.cells[static_cast<std::size_t>(cell)];
+      c.depth_mm = r.get<float>(cfield + ".depth_mm");
+      if (!(c.depth_mm > 0.0f)) r.fail(cfield + ".depth_mm", "must be > 0 (and not NaN)");
+      c.half_width_mm = r.get<float>(cfield + ".half_width_mm");
+      c.shape = r.get<std::uint8_t>(cfield + ".shape");
+      c.exposed_layer = r.get<std::uint8_t>(cfield + ".exposed_layer");
+    }
+  }
+  try {
+    validate_cracks(cracks, canvas.width_cells(), canvas.height_cells(),
+                    canvas.dry_layers().size());
+  } catch (const std::exception& e) {
+    throw std::runtime_error(file + ": " + e.what());
+  }
+  return cracks;
 }
 
 void write_file_atomically(const std::filesystem::path& file,
@@ -239,6 +302,7 @@ void PaintingFile::save(const Painting::Impl& p, const std::filesystem::path& fi
   write_totals(w, p.ledger.wiped, slots);
   w.put(p.steps);
   w.put(p.cells_updated);
+  write_cracks(w, p.canvas.cracks());
 
   Hasher checksum;
   checksum.bytes(w.bytes().data(), w.bytes().size());
@@ -262,9 +326,10 @@ std::unique_ptr<Painting::Impl> PaintingFile::load(const std::filesystem::path& 
   for (char c : kMagic)
     if (header.get<char>("magic") != c) header.fail("magic", "not an Impasto painting file");
   const auto version = header.get<std::uint32_t>("version");
-  if (version != kVersion)
+  if (version < kOldestVersion || version > kVersion)
     header.fail("version", "unknown version " + std::to_string(version) + " (this program reads " +
-                               std::to_string(kVersion) + ")");
+                               std::to_string(kOldestVersion) + " to " + std::to_string(kVersion) +
+                               ")");
   const auto payload_size = header.get<std::uint64_t>("payload_size");
   if (payload_size != bytes.size() - kHeaderBytes - 8 || bytes.size() < kHeaderBytes + 8)
     header.fail("payload_size", "says " + std::to_string(payload_size) +
@@ -387,9 +452,10 @@ std::unique_ptr<Painting::Impl> PaintingFile::load(const std::filesystem::path& 
   p->ledger.wiped = read_totals(r, slots, "ledger.wiped");
   p->steps = r.get<std::uint64_t>("counters.steps");
   p->cells_updated = r.get<std::uint64_t>("counters.cells_updated");
+  if (version >= 2) p->canvas.cracks() = read_cracks(r, p->canvas, name);
   if (!r.at_end()) r.fail("end", "unexpected bytes after the last field");
   for (int index = 0; index < tile_count; ++index)
-    if (p->canvas.tile(index)) p->canvas.mark_dirty(index);
+    if (p->canvas.tile(index) || p->canvas.cracks().tile(index)) p->canvas.mark_dirty(index);
   return p;
 }
 

@@ -145,6 +145,19 @@ std::uint64_t Painting::state_hash() const {
                   ? t->pigment[static_cast<std::size_t>(s)]
                   : 0.0);
   }
+  // Cracks only where there are some, so an uncracked painting hashes as it always did.
+  const CrackLayer& cracks = canvas.cracks();
+  for (int index = 0; index < cracks.tile_extent(); ++index) {
+    if (const CrackTile* tile = cracks.tile(index)) {
+      h.value(index);
+      for (const CrackRecord& c : tile->cells) {
+        h.value(c.depth_mm);
+        h.value(c.half_width_mm);
+        h.value(c.shape);
+        h.value(c.exposed_layer);
+      }
+    }
+  }
   return h.digest();
 }
 
@@ -173,7 +186,7 @@ std::size_t Painting::memory_bytes() const {
   for (int index = 0; index < p.canvas.tile_count(); ++index)
     if (const Tile* tile = p.canvas.tile(index)) bytes += tile_bytes(*tile);
   for (const DryLayer& layer : p.canvas.dry_layers()) bytes += dry_layer_bytes(layer);
-  return bytes + brush_bytes(p.brush) + p.history.bytes();
+  return bytes + brush_bytes(p.brush) + p.history.bytes() + p.canvas.cracks().memory_bytes();
 }
 
 }  // namespace impasto::paintcore

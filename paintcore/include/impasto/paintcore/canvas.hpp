@@ -11,12 +11,15 @@
 #include <memory>
 #include <vector>
 
+#include "impasto/paintcore/crack_layer.hpp"
+
 namespace impasto::paintcore {
 
 inline constexpr int kTileSize = 64;                      // cells along a tile edge
 inline constexpr int kTileCells = kTileSize * kTileSize;  // cells in a tile
 inline constexpr int kMaxPigmentSlots = 16;               // pigment slots of a painting
 inline constexpr int kMaxCanvasCells = 1 << 17;           // per side
+static_assert(kCrackTileCells == kTileCells, "crack tiles are canvas tiles");
 
 struct CanvasSpec {
   int width_cells = 0;
@@ -97,6 +100,8 @@ class Canvas {
   float pigment_mm(int x, int y, int slot) const;
 
   const std::vector<DryLayer>& dry_layers() const { return dry_layers_; }
+  // Cracks in the dry paint and the ground, by canvas tile (empty: an uncracked canvas).
+  const CrackLayer& cracks() const { return cracks_; }
 
   // Indices of the tiles changed (by a stroke, dry, undo, redo or load) since the previous
   // call, ascending; the set is cleared. Not thread-safe.
@@ -109,6 +114,7 @@ class Canvas {
   // The weave heights of tile `index` (kTileCells values, zero outside the canvas).
   void compute_base_heights(int index, float* out) const;
   std::vector<DryLayer>& dry_layers() { return dry_layers_; }
+  CrackLayer& cracks() { return cracks_; }
   void mark_dirty(int index) const;
 
  private:
@@ -117,6 +123,7 @@ class Canvas {
   int tiles_y_ = 0;
   std::vector<std::unique_ptr<Tile>> tiles_;
   std::vector<DryLayer> dry_layers_;
+  CrackLayer cracks_;
   mutable std::vector<std::uint8_t> dirty_;
 };
 

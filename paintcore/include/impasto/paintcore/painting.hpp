@@ -64,6 +64,12 @@ class Painting {
   // Dries the bottom `fraction` (0..1) of the wet layer into a new dry layer.
   void dry(double fraction);
 
+  // Cracks of the dry paint and the ground (crack_layer.hpp). set_cracks replaces them all
+  // after checking every record (validate_cracks) and marks the tiles whose cracks changed
+  // dirty; tiles left without a crack are dropped. Cracks are not part of the undo history.
+  void set_cracks(CrackLayer cracks);
+  const CrackLayer& cracks() const { return canvas().cracks(); }
+
   // Undo/redo of whole operations (stroke, dry, load, wipe, brush change).
   bool undo();
   bool redo();

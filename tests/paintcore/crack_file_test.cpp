@@ -1,0 +1,218 @@
+// The painting's crack layer: Painting::set_cracks, and the cracks section of the .impasto
+// file (version 2): round trip, version-1 files, bad records named by file and field.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <limits>
+
+#include "hasher.hpp"
+#include "test_util.hpp"
+
+namespace impasto::paintcore {
+namespace {
+
+constexpr std::size_t kHeaderBytes = 8 + 4 + 8;  // magic, version, payload size
+// Bytes of a cracks section holding one tile with one crack cell.
+constexpr std::size_t kOneCrackSection = 4 + (4 + 4) + (2 + 4 + 4 + 1 + 1);
+
+class CrackFileTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() /
+           ("impasto_cracks_file_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+
+  // 130 x 70 cells (3 x 2 tiles), one dry layer under a wet stroke.
+  static Painting sample() {
+    Painting p(CanvasSpec{130, 70, 254.0, 4}, 1);
+    p.set_brush(BrushSettings{"filbert", 2.0, 0.6});
+    p.load_brush({{"red", 1.0}, {"blue", 1.0}}, 5.0);
+    test::stroke_line(p, 2.0, 3.0, 12.0, 5.0, 0.8f, 20, 10.0f, 0.0f, 45.0f);
+    p.dry(0.5);
+    return p;
+  }
+
+  static CrackLayer some_cracks() {
+    CrackLayer cracks;
+    CrackTile& a = cracks.ensure_tile(0);
+    a.cells[5 * 64 + 7] = {0.12f, 0.03f, 1, kCrackExposesGround};
+    a.cells[5 * 64 + 8] = {0.05f, 0.02f, 0, 0};
+    CrackTile& b = cracks.ensure_tile(5);  // the bottom-right edge tile: x < 2, y < 6 inside
+    b.cells[3 * 64 + 1] = {0.3f, 0.1f, 4, kCrackExposesGround};
+    return cracks;
+  }
+
+  std::string load_error(const std::filesystem::path& file) {
+    try {
+      Painting::load(file);
+    } catch (const std::runtime_error& e) {
+      return e.what();
+    }
+    return "no error";
+  }
+  static std::vector<unsigned char> read(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  }
+  // Writes a file from header fields and a payload, with the payload's checksum.
+  static void write(const std::filesystem::path& file, std::uint32_t version,
+                    const std::vector<unsigned char>& payload) {
+    std::vector<unsigned char> bytes = {'I', 'M', 'P', 'A', 'S', 'T', 'O', '\0'};
+    bytes.resize(kHeaderBytes);
+    std::memcpy(bytes.data() + 8, &version, 4);
+    const std::uint64_t size = payload.size();
+    std::memcpy(bytes.data() + 12, &size, 8);
+    bytes.insert(bytes.end(), payload.begin(), payload.end());
+    Hasher checksum;
+    checksum.bytes(payload.data(), payload.size());
+    const std::uint64_t digest = checksum.digest();
+    bytes.resize(bytes.size() + 8);
+    std::memcpy(bytes.data() + bytes.size() - 8, &digest, 8);
+    std::ofstream out(file, std::ios::binary);
+    out.write(reinterpret_cast<const char*>(bytes.data()),
+              static_cast<std::streamsize>(bytes.size()));
+  }
+  static std::vector<unsigned char> payload_of(const std::vector<unsigned char>& file_bytes) {
+    return {file_bytes.begin() + kHeaderBytes, file_bytes.end() - 8};
+  }
+
+  std::filesystem::path dir_;
+};
+
+TEST_F(CrackFileTest, AnUncrackedPaintingHoldsNoCrackMemory) {
+  const Painting p = sample();
+  EXPECT_TRUE(p.cracks().empty());
+  EXPECT_EQ(p.cracks().memory_bytes(), 0u);
+  EXPECT_EQ(p.cracks().tile(0), nullptr);
+}
+
+TEST_F(CrackFileTest, SetCracksMarksOnlyTheChangedTilesDirtyAndDropsEmptyTiles) {
+  Painting p = sample();
+  (void)p.canvas().take_dirty_tiles();
+  const std::uint64_t before = p.state_hash();
+  CrackLayer cracks = some_cracks();
+  cracks.ensure_tile(3);  // allocated but without a crack: dropped
+  p.set_cracks(std::move(cracks));
+  EXPECT_EQ(p.canvas().take_dirty_tiles(), (std::vector<int>{0, 5}));
+  EXPECT_EQ(p.cracks().allocated_tiles(), 2u);
+  EXPECT_EQ(p.cracks().crack_cells(), 3u);
+  EXPECT_NE(p.state_hash(), before);
+  // Setting the same cracks again changes nothing.
+  p.set_cracks(some_cracks());
+  EXPECT_TRUE(p.canvas().take_dirty_tiles().empty());
+  // Removing them restores the uncracked state and hash.
+  p.set_cracks(CrackLayer{});
+  EXPECT_EQ(p.canvas().take_dirty_tiles(), (std::vector<int>{0, 5}));
+  EXPECT_EQ(p.state_hash(), before);
+  EXPECT_EQ(p.cracks().memory_bytes(), 0u);
+}
+
+TEST_F(CrackFileTest, SetCracksRejectsBadRecordsNamingTheField) {
+  Painting p = sample();
+  const auto error_of = [&](CrackRecord record, int tile = 0, int cell = 0) -> std::string {
+    CrackLayer cracks;
+    cracks.ensure_tile(tile).cells[static_cast<std::size_t>(cell)] = record;
+    try {
+      p.set_cracks(std::move(cracks));
+    } catch (const std::runtime_error& e) {
+      return e.what();
+    }
+    return "no error";
+  };
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_NE(error_of({nan, 0.1f, 0, 0xFF}).find("depth_mm"), std::string::npos);
+  EXPECT_NE(error_of({0.1f, -1.0f, 0, 0xFF}).find("half_width_mm"), std::string::npos);
+  EXPECT_NE(error_of({0.1f, 0.0f, 0, 0xFF}).find("half_width_mm"), std::string::npos);
+  EXPECT_NE(error_of({0.1f, 0.1f, 6, 0xFF}).find("shape"), std::string::npos);
+  EXPECT_NE(error_of({0.1f, 0.1f, 0, 1}).find("exposed_layer"), std::string::npos);
+  EXPECT_NE(error_of({0.1f, 0.1f, 0, 0xFF}, 5, 3 * 64 + 2).find("outside the canvas"),
+            std::string::npos);
+  EXPECT_NE(error_of({0.1f, 0.1f, 0, 0xFF}, 6).find("tile 6"), std::string::npos);
+  EXPECT_TRUE(p.cracks().empty());  // nothing changed by a rejected layer
+  EXPECT_EQ(error_of({0.1f, 0.1f, 0, 0}, 0, 0), "no error");
+}
+
+TEST_F(CrackFileTest, SaveThenLoadKeepsTheCracks) {
+  Painting p = sample();
+  p.set_cracks(some_cracks());
+  const auto file = dir_ / "cracked.impasto";
+  p.save(file);
+  const Painting loaded = Painting::load(file, 1);
+  EXPECT_TRUE(loaded.cracks() == p.cracks());
+  EXPECT_EQ(loaded.cracks().crack_cells(), 3u);
+  EXPECT_EQ(loaded.state_hash(), p.state_hash());
+  // Loading marks the cracked tiles dirty, so a renderer picks them up.
+  const std::vector<int> dirty = loaded.canvas().take_dirty_tiles();
+  EXPECT_NE(std::find(dirty.begin(), dirty.end(), 5), dirty.end());
+}
+
+TEST_F(CrackFileTest, VersionOneFilesStillLoad) {
+  // A version-1 file is a version-2 file without the cracks section (an empty one is a
+  // u32 zero at the end of the payload).
+  const Painting p = sample();
+  const auto file = dir_ / "v2.impasto";
+  p.save(file);
+  std::vector<unsigned char> payload = payload_of(read(file));
+  ASSERT_GE(payload.size(), 4u);
+  EXPECT_EQ(payload[payload.size() - 4] | payload[payload.size() - 1], 0);
+  payload.resize(payload.size() - 4);
+  const auto v1 = dir_ / "v1.impasto";
+  write(v1, 1, payload);
+  const Painting loaded = Painting::load(v1, 1);
+  EXPECT_TRUE(loaded.cracks().empty());
+  EXPECT_EQ(loaded.state_hash(), p.state_hash());
+  // A version-1 file that carries a cracks section has bytes after its last field.
+  payload.insert(payload.end(), {0, 0, 0, 0});
+  write(v1, 1, payload);
+  EXPECT_NE(load_error(v1).find("unexpected bytes"), std::string::npos) << load_error(v1);
+}
+
+TEST_F(CrackFileTest, BadCrackRecordsInAFileNameTheFileAndField) {
+  Painting p(CanvasSpec{100, 80, 254.0, 4}, 1);
+  CrackLayer cracks;
+  cracks.ensure_tile(1).cells[2 * 64 + 3] = {0.2f, 0.05f, 2, kCrackExposesGround};
+  p.set_cracks(std::move(cracks));
+  const auto good = dir_ / "good.impasto";
+  p.save(good);
+  const std::vector<unsigned char> payload = payload_of(read(good));
+  const std::size_t section = payload.size() - kOneCrackSection;
+  const auto bad = dir_ / "bad.impasto";
+  const auto corrupt = [&](std::size_t offset, const void* value, std::size_t bytes) {
+    std::vector<unsigned char> edited = payload;
+    std::memcpy(edited.data() + section + offset, value, bytes);
+    write(bad, 2, edited);
+    return load_error(bad);
+  };
+  const float nan = std::numeric_limits<float>::quiet_NaN(), huge = 1e30f, zero = 0.0f;
+  const std::uint8_t shape = 17, layer = 0;
+  const std::uint32_t tile = 9, count = 0;
+  const std::uint16_t cell = 4096;
+  std::string e = corrupt(4 + 4 + 4 + 2, &nan, 4);
+  EXPECT_NE(e.find("bad.impasto"), std::string::npos) << e;
+  EXPECT_NE(e.find("cracks.tiles[0].cells[0].depth_mm"), std::string::npos) << e;
+  e = corrupt(4 + 4 + 4 + 2, &zero, 4);
+  EXPECT_NE(e.find("depth_mm"), std::string::npos) << e;
+  e = corrupt(4 + 4 + 4 + 2 + 4, &huge, 4);
+  EXPECT_NE(e.find("half_width_mm"), std::string::npos) << e;
+  e = corrupt(4 + 4 + 4 + 2 + 8, &shape, 1);
+  EXPECT_NE(e.find("'shape'"), std::string::npos) << e;
+  e = corrupt(4 + 4 + 4 + 2 + 9, &layer, 1);  // dry layer 0 of a painting without one
+  EXPECT_NE(e.find("exposed_layer"), std::string::npos) << e;
+  e = corrupt(4, &tile, 4);
+  EXPECT_NE(e.find("cracks.tiles[0].index"), std::string::npos) << e;
+  e = corrupt(8, &count, 4);
+  EXPECT_NE(e.find("cracks.tiles[0].count"), std::string::npos) << e;
+  e = corrupt(12, &cell, 2);
+  EXPECT_NE(e.find("cracks.tiles[0].cells[0].cell"), std::string::npos) << e;
+  // The unedited bytes, re-written, load.
+  write(bad, 2, payload);
+  EXPECT_EQ(load_error(bad), "no error");
+}
+
+}  // namespace
+}  // namespace impasto::paintcore
