@@ -39,6 +39,12 @@ void validate(const RenderSettings& s) {
             "in [1, 10000]");
   }
   require(s.threads >= 0 && s.threads <= 1024, "threads", s.threads, "0..1024");
+  require(s.light_size_deg > 0.0 && s.light_size_deg <= 90.0, "light_size_deg", s.light_size_deg,
+          "in (0, 90]");
+  require(s.light_distance_mm > 0.0 && s.light_distance_mm <= 1e7, "light_distance_mm",
+          s.light_distance_mm, "in (0, 1e7]");
+  require(s.spot_angle_deg > 0.0 && s.spot_angle_deg < 90.0, "spot_angle_deg", s.spot_angle_deg,
+          "in (0, 90)");
 }
 
 ReflectanceStorage parse_reflectance_storage(std::string_view text) {
@@ -46,6 +52,15 @@ ReflectanceStorage parse_reflectance_storage(std::string_view text) {
   if (text == "half") return ReflectanceStorage::float16;
   throw std::runtime_error("unknown reflectance storage '" + std::string(text) +
                            "' (expected float or half)");
+}
+
+LightType parse_light_type(std::string_view text) {
+  if (text == "directional") return LightType::directional;
+  if (text == "point") return LightType::point;
+  if (text == "spot") return LightType::spot;
+  if (text == "diffuse") return LightType::diffuse;
+  throw std::runtime_error("unknown light type '" + std::string(text) +
+                           "' (expected directional, point, spot or diffuse)");
 }
 
 }  // namespace impasto::render

@@ -56,8 +56,10 @@ void SpectralPalette::build(const RenderSettings& settings, const data::Spectrum
   pigment_names_.clear();
   absorption_.clear();
   scattering_.clear();
+  flake_files_.clear();
   for (const auto& pigment : pigments) {
     pigment_names_.push_back(pigment.name);
+    flake_files_.push_back(pigment.flakes);
     const std::vector<float> K = sample_at_nodes(pigment.K, sampling_);
     const std::vector<float> S = sample_at_nodes(pigment.S, sampling_);
     for (std::size_t i = 0; i < n; ++i) {

@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "impasto/render/flake_shading.hpp"
 #include "impasto/render/paint_layer.hpp"
 #include "impasto/render/shading.hpp"
 
@@ -63,12 +64,14 @@ struct TileRenderer::TileCache {
   bool baked = false;
   std::uint64_t dry_signature = 0;
   std::uint64_t shade_count = 0;
+  std::uint64_t flake_cells = 0;  // cells the flake hook looked at
 };
 
 TileRenderer::TileRenderer(const RenderSettings& settings, SpectralPalette palette)
     : settings_(settings), palette_(std::move(palette)) {
   validate(settings_);
   display_ = std::make_unique<DisplayTransform>(settings_.display);
+  flakes_ = FlakeShading::create(settings_, palette_);
 }
 
 TileRenderer::TileRenderer(const RenderSettings& settings,
@@ -88,11 +91,16 @@ void TileRenderer::set_settings(const RenderSettings& settings, SpectralPalette 
   settings_ = settings;
   palette_ = std::move(palette);
   display_ = std::make_unique<DisplayTransform>(settings_.display);
+  flakes_ = FlakeShading::create(settings_, palette_);
   needs_full_render_ = true;
 }
 
 std::uint64_t TileRenderer::shade_count(int tile_index) const {
   return tiles_.at(static_cast<std::size_t>(tile_index)).shade_count;
+}
+
+std::uint64_t TileRenderer::flake_cell_count(int tile_index) const {
+  return tiles_.at(static_cast<std::size_t>(tile_index)).flake_cells;
 }
 
 template <typename Work>
@@ -120,6 +128,7 @@ void TileRenderer::reset_caches(const paintcore::Canvas& canvas) {
   std::vector<TileCache> fresh(static_cast<std::size_t>(canvas.tile_count()));
   for (std::size_t i = 0; i < fresh.size() && i < tiles_.size(); ++i) {
     fresh[i].shade_count = tiles_[i].shade_count;
+    fresh[i].flake_cells = tiles_[i].flake_cells;
   }
   tiles_ = std::move(fresh);
 }
@@ -345,6 +354,8 @@ void TileRenderer::shade_region(const paintcore::Canvas& canvas, int tile_index,
   std::array<PigmentShare, paintcore::kMaxPigmentSlots> shares{};
   std::vector<float> node_values(static_cast<std::size_t>(nodes));
   float* reflectance = node_values.data();
+  // Flake sparkles: inactive (no per-cell work) where the tile holds no flake pigment.
+  FlakeTileView flakes = flakes_ ? flakes_->tile(canvas, tile_index) : FlakeTileView{};
   for (int y = y0; y < y1; ++y) {
     for (int x = x0; x < x1; ++x) {
       const int c = y * kTileSize + x;
@@ -394,6 +405,9 @@ void TileRenderer::shade_region(const paintcore::Canvas& canvas, int tile_index,
         out[ch] =
             xyz[ch] * shading.diffuse + white[static_cast<std::size_t>(ch)] * shading.specular;
       }
+      if (flakes.active()) {
+        flakes.add_cell(c, origin_x + x, origin_y + y, normal, at(px, py), wet_volume, out);
+      }
     }
     // XYZ to the display, one row of the region at a time (one call for a whole tile).
     if (x0 == 0 && x1 == kTileSize && y == y1 - 1) {
@@ -404,6 +418,7 @@ void TileRenderer::shade_region(const paintcore::Canvas& canvas, int tile_index,
                       static_cast<std::size_t>(x1 - x0));
     }
   }
+  cache.flake_cells += flakes.cells_evaluated();
 }
 
 Image TileRenderer::image() const {

@@ -122,6 +122,10 @@ FlakeTables::FlakeTables(const FlakePaint& paint, std::span<const double> wavele
   }
 }
 
+double FlakeTables::max_half_sin() {
+  return kMaxHalfSin;
+}
+
 double FlakeTables::orientation_density(double cos_beta) const {
   const double half_sin = std::sqrt(std::max(0.0, 0.5 * (1.0 - cos_beta)));
   if (half_sin > kMaxHalfSin) return 0.0;

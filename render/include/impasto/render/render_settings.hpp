@@ -17,6 +17,10 @@ enum class ReflectanceStorage {
   float16,  // half the memory; rounding below 1e-3 relative (see docs/color-accuracy.md)
 };
 
+// The kind of the main light. Only a light with a direction makes flake sparkles; diffuse
+// (overcast) light lights every flake a little and none brightly.
+enum class LightType { directional, point, spot, diffuse };
+
 struct RenderSettings {
   // --- light and colour ---
   std::string light = "D65";  // data::light_from_spec: "D65", "A", "F11", "blackbody:5600", file
@@ -48,6 +52,14 @@ struct RenderSettings {
   shade::Material wet_material{0.35f, 80.0f};
   double wet_gloss_mm = 0.02;  // wet paint this thick or more has the full wet gloss
 
+  // --- the light's kind and size: sparkles of flake pigments (docs/flakes.md) ---
+  LightType light_type = LightType::directional;
+  double light_size_deg = 0.53;       // apparent diameter seen from the canvas (the sun: 0.53)
+  double light_distance_mm = 1000.0;  // point, spot: from the canvas centre along light_dir
+  double spot_angle_deg = 30.0;       // spot: half-angle of the cone (soft over its outer fifth)
+  bool flakes = true;                 // off: flake pigments show their K-M colour only
+  bool flake_masking = true;          // depth model with masking/shadowing (Eq. 5) or not (6)
+
   // --- storage and threads ---
   ReflectanceStorage storage = ReflectanceStorage::float32;
   int threads = 0;  // 0: TBB's default; results do not depend on it
@@ -57,5 +69,6 @@ struct RenderSettings {
 void validate(const RenderSettings& settings);
 
 ReflectanceStorage parse_reflectance_storage(std::string_view text);  // "float" or "half"
+LightType parse_light_type(std::string_view text);  // "directional", "point", "spot", "diffuse"
 
 }  // namespace impasto::render

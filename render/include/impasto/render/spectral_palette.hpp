@@ -3,6 +3,7 @@
 // ground's reflectance at those nodes, and the weights that turn node reflectances into
 // display-referred XYZ. Rebuilt when the light, the node count or the pigments change.
 #include <array>
+#include <filesystem>
 #include <span>
 #include <string>
 #include <vector>
@@ -34,6 +35,10 @@ class SpectralPalette {
   const float* scattering(int pigment) const { return &scattering_[offset(pigment)]; }
   // The canvas ground's reflectance at every node.
   const float* ground() const { return ground_.data(); }
+  // The flake paint file of a pigment (data::Pigment::flakes), empty when it has no flakes.
+  const std::filesystem::path& flake_file(int pigment) const {
+    return flake_files_[static_cast<std::size_t>(pigment)];
+  }
 
   // Node reflectances to display-referred XYZ (Y = 1 for white; chromatic adaptation
   // included): xyz[c] = Σ_i to_display_xyz(c)[i] R_i. One row per channel, for vector loops.
@@ -52,6 +57,7 @@ class SpectralPalette {
   std::vector<std::string> pigment_names_;
   std::vector<float> absorption_, scattering_;  // pigment-major, nodes() per pigment
   std::vector<float> ground_;
+  std::vector<std::filesystem::path> flake_files_;  // one per pigment
   std::vector<float> to_xyz_;  // 3 rows of nodes()
   std::array<float, 3> white_xyz_{};
 };

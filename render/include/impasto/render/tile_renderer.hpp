@@ -17,6 +17,8 @@
 
 namespace impasto::render {
 
+class FlakeShading;
+
 // What one update() did.
 struct RenderStats {
   int tiles_shaded = 0;  // tiles whose every cell was re-shaded
@@ -56,6 +58,9 @@ class TileRenderer {
   Image image() const;
   // How many times each tile has been fully shaded since construction (tests, profiling).
   std::uint64_t shade_count(int tile_index) const;
+  // How many cells of a tile the flake-paint hook has looked at since construction: zero for
+  // a tile that never held flake pigment (its check is once per tile, no per-cell work).
+  std::uint64_t flake_cell_count(int tile_index) const;
 
  private:
   struct TileCache;
@@ -69,6 +74,7 @@ class TileRenderer {
   RenderSettings settings_;
   SpectralPalette palette_;
   std::unique_ptr<DisplayTransform> display_;
+  std::unique_ptr<FlakeShading> flakes_;  // null when no pigment of the palette has flakes
   int width_ = 0, height_ = 0, tiles_x_ = 0, tiles_y_ = 0;
   double cell_mm_ = 0.0;
   bool needs_full_render_ = true;

@@ -40,6 +40,19 @@ class FlakeTables {
 
   static constexpr int kOrientationSamples = 1024;
   static constexpr int kAngleSamples = 129;
+  // sin(β/2) at β = π/2: the orientation table spans sin(β/2) in [0, this].
+  static double max_half_sin();
+
+  // The samples themselves, for upload to the GPU (which interpolates them the same way).
+  const std::vector<double>& orientation_samples() const { return orientation_; }
+  const std::vector<double>& projected_area_samples() const { return projected_area_; }
+  const std::vector<double>& projected_transmittance_samples() const {
+    return projected_transmittance_;
+  }
+  // r_p at cos α = i / (kAngleSamples − 1) for wavelength node `index`.
+  std::span<const double> reflectance_samples(std::size_t index) const {
+    return {reflectance_.data() + index * kAngleSamples, static_cast<std::size_t>(kAngleSamples)};
+  }
 
  private:
   FlakePaint paint_;

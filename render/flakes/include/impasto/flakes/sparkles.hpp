@@ -59,6 +59,9 @@ class SparkleRenderer {
 
   const FlakeTables& tables() const { return tables_; }
   const SparkleSettings& settings() const { return settings_; }
+  // Mean and deviation of ln S, the log-normal flake areas (the GPU port draws the same).
+  double log_area_mean() const { return log_area_mean_; }
+  double log_area_sd() const { return log_area_sd_; }
 
   // Adds the sparkle radiance of one cell under one light, per wavelength node, to
   // `radiance` (size = wavelength count). Returns the number of sparkles.
