@@ -1,7 +1,7 @@
 // The canvas seen from above: K-M colour of the wet layer over the baked dry reflectance at
 // the light's quadrature nodes, to XYZ, shaded by the surface normal, to display RGB.
-// Assembled after #version, MAX_NODES/MAX_SLOTS defines, km_lib, shading_lib and the
-// OpenColorIO display function `vec4 ocio_display(vec4 xyz)`.
+// Assembled after #version, MAX_NODES/MAX_SLOTS defines, km_lib, shading_lib, flakes_lib and
+// the OpenColorIO display function `vec4 ocio_display(vec4 xyz)`.
 
 in vec2 uv;
 out vec4 frag_color;
@@ -81,5 +81,6 @@ void main() {
   vec2 material = shade_blend(dry_material, wet_material, volume * inverse_gloss_mm);
   vec2 shading = shade_blinn_phong(normal, to_light, ambient, material);
   vec3 shaded = light_intensity * (xyz * shading.x + white_xyz * shading.y);
+  shaded += light_intensity * flake_sparkles(cell, normal, total_height(cell));
   frag_color = vec4(ocio_display(vec4(shaded, 1.0)).rgb, 1.0);
 }

@@ -58,6 +58,7 @@ CanvasRenderer::CanvasRenderer(int width_cells, int height_cells,
   surface_ = Texture(width_, height_, 0, TexelFormat::kRG32F);
   allocate_textures();
   build_program();
+  flakes_ = std::make_unique<FlakeTextures>(width_, height_, settings_, palette_);
 }
 
 CanvasRenderer::~CanvasRenderer() = default;
@@ -81,6 +82,7 @@ void CanvasRenderer::build_program() {
                        "\n#define MAX_SLOTS " + std::to_string(paintcore::kMaxPigmentSlots) + "\n";
   source += shaders::km_lib;
   source += shaders::shading_lib;
+  source += shaders::flakes_lib;
   source += display_->glsl();
   source += shaders::canvas_km_frag;
   pass_ = std::make_unique<FullscreenPass>("canvas_km_frag.glsl", std::move(source));
@@ -95,6 +97,7 @@ void CanvasRenderer::set_settings(const render::RenderSettings& settings,
   palette_ = std::move(palette);
   allocate_textures();
   if (encoding_changed) build_program();
+  flakes_ = std::make_unique<FlakeTextures>(width_, height_, settings_, palette_);
 }
 
 void CanvasRenderer::set_shading(const render::RenderSettings& settings) {
@@ -161,6 +164,7 @@ void CanvasRenderer::upload_tile(const paintcore::Canvas& canvas, int tile_index
         x0, y0, w, h, layer,
         scratch.dry_interleaved.data() + static_cast<size_t>(layer) * 4 * kTileCells, kTileSize);
   }
+  flakes_->upload_tile(canvas, tile_index);
 }
 
 void CanvasRenderer::upload_all(const paintcore::Canvas& canvas) {
@@ -244,6 +248,8 @@ void CanvasRenderer::draw(const CanvasView& view, int viewport_w, int viewport_h
   glUniform1f(program.uniform("inverse_gloss_mm"),
               static_cast<float>(1.0 / settings_.wet_gloss_mm));
   glUniform1f(program.uniform("cell_mm"), static_cast<float>(cell_mm_));
+
+  flakes_->bind(program, settings_, cell_mm_);
 
   pass_->draw();
   check_gl_error("canvas K-M pass");
