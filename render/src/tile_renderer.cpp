@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "impasto/render/crack_shading.hpp"
 #include "impasto/render/flake_shading.hpp"
 #include "impasto/render/paint_layer.hpp"
 #include "impasto/render/shading.hpp"
@@ -356,6 +357,8 @@ void TileRenderer::shade_region(const paintcore::Canvas& canvas, int tile_index,
   float* reflectance = node_values.data();
   // Flake sparkles: inactive (no per-cell work) where the tile holds no flake pigment.
   FlakeTileView flakes = flakes_ ? flakes_->tile(canvas, tile_index) : FlakeTileView{};
+  // Cracks: inactive (no per-cell work) where the tile has no crack.
+  CrackTileShading cracks(canvas, tile_index, settings_.cracks, palette_.ground(), nodes);
   for (int y = y0; y < y1; ++y) {
     for (int x = x0; x < x1; ++x) {
       const int c = y * kTileSize + x;
@@ -368,6 +371,7 @@ void TileRenderer::shade_region(const paintcore::Canvas& canvas, int tile_index,
                          : cache.dry_f32.empty() ? static_cast<float>(cache.dry_f16[k])
                                                  : cache.dry_f32[k];
       }
+      const bool cracked = cracks.active() && cracks.take_walls(c, reflectance);
       // The wet layer on top.
       float wet_volume = 0.0f;
       if (tile != nullptr) {
@@ -383,6 +387,7 @@ void TileRenderer::shade_region(const paintcore::Canvas& canvas, int tile_index,
                                 wet_volume * inverse_scale, reflectance);
         }
       }
+      if (cracked) cracks.blend(reflectance);
       if (settings_.saunderson) {
         for (int i = 0; i < nodes; ++i) reflectance[i] = km::saunderson(reflectance[i], k1, k2);
       }

@@ -60,6 +60,9 @@ struct RenderSettings {
   bool flakes = true;                 // off: flake pigments show their K-M colour only
   bool flake_masking = true;          // depth model with masking/shadowing (Eq. 5) or not (6)
 
+  // --- cracks (docs/cracks.md) ---
+  bool cracks = true;  // off: cracked cells show their surface as if uncracked
+
   // --- storage and threads ---
   ReflectanceStorage storage = ReflectanceStorage::float32;
   int threads = 0;  // 0: TBB's default; results do not depend on it

@@ -1,0 +1,52 @@
+#include "impasto/render/crack_shading.hpp"
+
+#include <algorithm>
+#include <span>
+
+#include "impasto/cracks/crack_shading.hpp"
+#include "impasto/cracks/gouffe.hpp"
+
+namespace impasto::render {
+namespace {
+
+cracks::CrackCell crack_cell(const paintcore::CrackRecord& r) {
+  // The record's shape code was checked when it entered the painting (validate_cracks).
+  return {r.depth_mm, r.half_width_mm, static_cast<cracks::CavityShape>(r.shape), r.exposed_layer};
+}
+
+}  // namespace
+
+CrackOptics crack_optics(const paintcore::CrackRecord& record, double cell_mm) {
+  if (!record.has_crack()) return {};
+  const cracks::CrackCell cell = crack_cell(record);
+  const cracks::ViewFactors vf = cracks::view_factors(cell.shape, cell.dims());
+  return {static_cast<float>(cracks::crack_coverage(cell, cell_mm)), static_cast<float>(vf.F),
+          static_cast<float>(vf.G), record.exposed_layer == paintcore::kCrackExposesGround};
+}
+
+CrackTileShading::CrackTileShading(const paintcore::Canvas& canvas, int tile_index, bool enabled,
+                                   const float* ground, int nodes)
+    : tile_(enabled ? canvas.cracks().tile(tile_index) : nullptr),
+      cell_mm_(canvas.cell_mm()),
+      ground_(ground),
+      nodes_(nodes) {
+  if (tile_ != nullptr) walls_.resize(static_cast<std::size_t>(nodes));
+}
+
+bool CrackTileShading::take_walls(int cell, const float* dry_stack) {
+  record_ = &tile_->cells[static_cast<std::size_t>(cell)];
+  if (!record_->has_crack()) return false;
+  // A crack through the film shows the ground; one ending inside it, the paint around it
+  // (the cell's dry stack, the reflectance the renderer has baked).
+  const float* walls =
+      record_->exposed_layer == paintcore::kCrackExposesGround ? ground_ : dry_stack;
+  std::copy_n(walls, nodes_, walls_.begin());
+  return true;
+}
+
+void CrackTileShading::blend(float* reflectance) const {
+  const std::span<float> out(reflectance, static_cast<std::size_t>(nodes_));
+  cracks::crack_cell_reflectance(crack_cell(*record_), cell_mm_, out, walls_, out);
+}
+
+}  // namespace impasto::render
