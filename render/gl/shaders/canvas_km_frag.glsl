@@ -1,7 +1,7 @@
 // The canvas seen from above: K-M colour of the wet layer over the baked dry reflectance at
 // the light's quadrature nodes, to XYZ, shaded by the surface normal, to display RGB.
-// Assembled after #version, MAX_NODES/MAX_SLOTS defines, km_lib, shading_lib, flakes_lib and
-// the OpenColorIO display function `vec4 ocio_display(vec4 xyz)`.
+// Assembled after #version, MAX_NODES/MAX_SLOTS defines, km_lib, shading_lib, flakes_lib,
+// cracks_lib and the OpenColorIO display function `vec4 ocio_display(vec4 xyz)`.
 
 in vec2 uv;
 out vec4 frag_color;
@@ -59,9 +59,11 @@ void main() {
   // reflectance below exactly), so bare canvas and dry paint skip the K-M maths, as the CPU
   // reference skips it for wet_volume <= 0.
   bool wet_paint = volume > 0.0;
+  vec4 crack = crack_at(cell);
   vec3 xyz = vec3(0.0);
   for (int node = 0; node < node_count; ++node) {
     float R = component(texelFetch(dry_reflectance, ivec3(cell, node / 4), 0), node % 4);
+    float crack_wall = crack_walls(crack, node, R);
     if (wet_paint) {
       float K = 0.0;
       float S = 0.0;
@@ -71,6 +73,7 @@ void main() {
       }
       R = km_composite(km_layer(K, S, thickness), R);
     }
+    R = crack_blend(crack, crack_wall, R);
     if (saunderson_k.x >= 0.0) R = km_saunderson(R, saunderson_k.x, saunderson_k.y);
     xyz += node_to_xyz[node] * R;
   }

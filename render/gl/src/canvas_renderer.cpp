@@ -59,6 +59,7 @@ CanvasRenderer::CanvasRenderer(int width_cells, int height_cells,
   allocate_textures();
   build_program();
   flakes_ = std::make_unique<FlakeTextures>(width_, height_, settings_, palette_);
+  cracks_ = std::make_unique<CrackTexture>(width_, height_);
 }
 
 CanvasRenderer::~CanvasRenderer() = default;
@@ -83,6 +84,7 @@ void CanvasRenderer::build_program() {
   source += shaders::km_lib;
   source += shaders::shading_lib;
   source += shaders::flakes_lib;
+  source += shaders::cracks_lib;
   source += display_->glsl();
   source += shaders::canvas_km_frag;
   pass_ = std::make_unique<FullscreenPass>("canvas_km_frag.glsl", std::move(source));
@@ -165,6 +167,7 @@ void CanvasRenderer::upload_tile(const paintcore::Canvas& canvas, int tile_index
         scratch.dry_interleaved.data() + static_cast<size_t>(layer) * 4 * kTileCells, kTileSize);
   }
   flakes_->upload_tile(canvas, tile_index);
+  cracks_->upload_tile(canvas, tile_index);
 }
 
 void CanvasRenderer::upload_all(const paintcore::Canvas& canvas) {
@@ -250,6 +253,7 @@ void CanvasRenderer::draw(const CanvasView& view, int viewport_w, int viewport_h
   glUniform1f(program.uniform("cell_mm"), static_cast<float>(cell_mm_));
 
   flakes_->bind(program, settings_, cell_mm_);
+  cracks_->bind(program, palette_, settings_.cracks);
 
   pass_->draw();
   check_gl_error("canvas K-M pass");

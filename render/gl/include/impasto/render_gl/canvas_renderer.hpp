@@ -9,6 +9,7 @@
 #include "impasto/render/render_settings.hpp"
 #include "impasto/render/spectral_palette.hpp"
 #include "impasto/render_gl/canvas_view.hpp"
+#include "impasto/render_gl/crack_texture.hpp"
 #include "impasto/render_gl/flake_textures.hpp"
 #include "impasto/render_gl/fullscreen_pass.hpp"
 #include "impasto/render_gl/gpu_display_transform.hpp"
@@ -74,6 +75,7 @@ class CanvasRenderer {
   Texture dry_reflectance_;  // ceil(nodes / 4) layers of 4 node reflectances
   int pigment_layers_ = 0, node_layers_ = 0;
   std::unique_ptr<FlakeTextures> flakes_;  // sparkles of flake pigments (nothing without)
+  std::unique_ptr<CrackTexture> cracks_;   // crack optics per cell (nothing without cracks)
 };
 
 }  // namespace impasto::render_gl
