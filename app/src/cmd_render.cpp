@@ -28,6 +28,11 @@ struct RenderArgs {
   double thickness_scale_mm = RenderSettings{}.thickness_scale_mm;
   bool saunderson = false;
   int threads = 0;
+  std::string light_type = "directional";  // flake sparkles: directional, point, spot, diffuse
+  double light_size_deg = RenderSettings{}.light_size_deg;
+  double light_distance_mm = RenderSettings{}.light_distance_mm;
+  bool no_flakes = false;
+  std::string flake_depth = "masking";
 };
 
 int parse_wavelengths(const std::string& text) {
@@ -73,6 +78,11 @@ void run(const RenderArgs& args) {
   settings.thickness_scale_mm = args.thickness_scale_mm;
   settings.saunderson = args.saunderson;
   settings.threads = args.threads;
+  settings.light_type = parse_light_type(args.light_type);
+  settings.light_size_deg = args.light_size_deg;
+  settings.light_distance_mm = args.light_distance_mm;
+  settings.flakes = !args.no_flakes;
+  settings.flake_masking = args.flake_depth == "masking";
   validate(settings);
   const paintcore::Painting painting = paintcore::Painting::load(args.painting, args.threads);
   render_painting_to_file(painting, settings, args.out);
@@ -106,6 +116,23 @@ const CommandRegistrar registrar("render", [](CLI::App& root) {
                   "mm of paint per unit of K-M optical thickness")
       ->capture_default_str();
   cmd->add_flag("--saunderson", args->saunderson, "Apply the Saunderson surface correction");
+  cmd->add_option("--light-type", args->light_type,
+                  "directional (sun), point, spot, or diffuse (overcast: no sparkles)")
+      ->check(CLI::IsMember({"directional", "point", "spot", "diffuse"}))
+      ->capture_default_str();
+  cmd->add_option("--light-size", args->light_size_deg,
+                  "Apparent diameter of the light in degrees (the sun: 0.53)")
+      ->check(CLI::Range(1e-3, 90.0))
+      ->capture_default_str();
+  cmd->add_option("--light-distance", args->light_distance_mm,
+                  "Point and spot lights: mm from the canvas centre along --light-dir")
+      ->check(CLI::Range(1.0, 1e7))
+      ->capture_default_str();
+  cmd->add_flag("--no-flakes", args->no_flakes, "Flake pigments without their sparkles");
+  cmd->add_option("--flake-depth", args->flake_depth,
+                  "Flake depth model: masking (Eq. 5) or no-masking (Eq. 6)")
+      ->check(CLI::IsMember({"masking", "no-masking"}))
+      ->capture_default_str();
   cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)")
       ->check(CLI::Range(0, 1024));
   cmd->callback([args] { run(*args); });

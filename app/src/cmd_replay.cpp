@@ -23,6 +23,8 @@ struct ReplayArgs {
   bool no_auto_load = false;
   std::string out, preview, png, light = "D65";
   int wavelengths = 8;
+  std::string light_type = "directional";
+  double light_size_deg = render::RenderSettings{}.light_size_deg;
   bool stats = false;
 };
 
@@ -61,6 +63,8 @@ void run_replay(const ReplayArgs& args) {
     settings.light = args.light;
     settings.wavelengths = args.wavelengths;
     settings.threads = args.threads;
+    settings.light_type = render::parse_light_type(args.light_type);
+    settings.light_size_deg = args.light_size_deg;
     render::render_painting_to_file(painting, settings, args.png);
   }
   if (args.stats) std::cout << replay_stats(painting, report).dump() << "\n";
@@ -89,6 +93,12 @@ const CommandRegistrar registrar("replay", [](CLI::App& root) {
   cmd->add_option("--wavelengths", args->wavelengths,
                   "Gaussian quadrature nodes for --png (1-16; 0: every nm)")
       ->check(CLI::Range(0, 16));
+  cmd->add_option("--light-type", args->light_type,
+                  "Light for --png: directional (sun), point, spot or diffuse (no sparkles)")
+      ->check(CLI::IsMember({"directional", "point", "spot", "diffuse"}));
+  cmd->add_option("--light-size", args->light_size_deg,
+                  "Apparent diameter of the light for --png, degrees (the sun: 0.53)")
+      ->check(CLI::Range(1e-3, 90.0));
   cmd->add_flag("--stats", args->stats, "Print statistics as one JSON object");
   cmd->callback([args] { run_replay(*args); });
 });
