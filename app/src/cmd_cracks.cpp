@@ -1,11 +1,16 @@
-// impasto cracks: make crack maps (craquelure, PNG import) and evaluate single cavities.
+// impasto cracks: make crack maps (craquelure, PNG import, the crack brush), alone or in a
+// painting file, and evaluate single cavities.
 #include <impasto/cracks/craquelure.hpp>
 #include <impasto/cracks/gouffe.hpp>
+#include <impasto/cracks/painting_cracks.hpp>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -24,7 +29,16 @@ struct GenerateArgs {
   std::string out;
   double max_depth_mm = 0.5;
   CraquelureSettings settings;
+  std::string painting;  // crack this painting's dry layers instead of a uniform film
+  bool dry = false;      // dry the painting's wet paint first
+  std::string save;      // where the cracked painting goes
 };
+
+// A painting file named by --painting, and where --save puts it after the cracks change.
+paintcore::Painting load_for_cracks(const std::string& painting, const std::string& save) {
+  if (save.empty()) throw std::runtime_error("--painting needs --save FILE.impasto");
+  return paintcore::Painting::load(painting);
+}
 
 // Statistics of a crack map, printed as one JSON line.
 void print_stats(const CrackMap& map) {
@@ -44,9 +58,20 @@ void print_stats(const CrackMap& map) {
 }
 
 void run_generate(const GenerateArgs& args) {
-  CrackMap map(args.width, args.height, args.cell_mm);
   CraquelureSettings settings = args.settings;
   settings.shape = shape_from_name(args.shape);
+  if (!is_groove(settings.shape)) throw std::runtime_error("--shape: craquelure makes grooves");
+  if (!args.painting.empty()) {
+    paintcore::Painting painting = load_for_cracks(args.painting, args.save);
+    if (args.dry) painting.dry(1.0);
+    crack_painting(painting, settings);
+    const CrackMap map = crack_map_of(painting);
+    if (!args.out.empty()) write_crack_png(map, args.out, args.max_depth_mm);
+    painting.save(args.save);
+    print_stats(map);
+    return;
+  }
+  CrackMap map(args.width, args.height, args.cell_mm);
   PaintFilm film;
   film.uniform_thickness_mm = args.thickness_mm;
   generate_craquelure(map, film, settings);
@@ -58,12 +83,63 @@ struct ImportArgs {
   std::string png;
   std::string shape = "v-groove";
   CrackImageSettings settings;
+  std::string painting, save;  // put the map into this painting, saved there
 };
 
 void run_import(const ImportArgs& args) {
   CrackImageSettings settings = args.settings;
   settings.shape = shape_from_name(args.shape);
-  print_stats(read_crack_png(args.png, settings));
+  if (args.painting.empty()) {
+    print_stats(read_crack_png(args.png, settings));
+    return;
+  }
+  paintcore::Painting painting = load_for_cracks(args.painting, args.save);
+  settings.cell_mm = painting.canvas().cell_mm();
+  const CrackMap map = read_crack_png(args.png, settings);
+  set_painting_cracks(painting, map);
+  painting.save(args.save);
+  print_stats(map);
+}
+
+struct BrushArgs {
+  std::string painting, save;
+  std::string points;  // "x,y x,y ..." in mm
+  std::string shape = "v-groove";
+  double depth_mm = 0.1, half_width_mm = 0.05;
+  int exposed_layer = -1;  // -1: the canvas ground
+};
+
+// "x,y x,y ..." (mm) as points; throws naming the bad item.
+std::vector<std::array<double, 2>> parse_points(const std::string& text) {
+  std::vector<std::array<double, 2>> points;
+  std::istringstream in(text);
+  std::string item;
+  while (in >> item) {
+    std::array<double, 2> p{};
+    char comma = 0;
+    std::istringstream pair(item);
+    if (!(pair >> p[0] >> comma >> p[1]) || comma != ',' || !pair.eof() || !std::isfinite(p[0]) ||
+        !std::isfinite(p[1])) {
+      throw std::runtime_error("--points: '" + item + "' is not x,y in mm");
+    }
+    points.push_back(p);
+  }
+  if (points.empty()) throw std::runtime_error("--points: no points");
+  return points;
+}
+
+void run_brush(const BrushArgs& args) {
+  paintcore::Painting painting = load_for_cracks(args.painting, args.save);
+  CrackStroke stroke;
+  stroke.points_mm = parse_points(args.points);
+  stroke.shape = shape_from_name(args.shape);
+  stroke.depth_mm = args.depth_mm;
+  stroke.half_width_mm = args.half_width_mm;
+  stroke.exposed_layer =
+      args.exposed_layer < 0 ? kCanvasGround : static_cast<std::uint8_t>(args.exposed_layer);
+  stamp_crack(painting, stroke);
+  painting.save(args.save);
+  print_stats(crack_map_of(painting));
 }
 
 struct CavityArgs {
@@ -106,6 +182,10 @@ const CommandRegistrar registrar("cracks", [](CLI::App& root) {
   g->add_option("--out", gen->out, "Write the depths as a 16-bit grey PNG");
   g->add_option("--max-depth-mm", gen->max_depth_mm, "Depth drawn white in --out (mm)")
       ->check(CLI::PositiveNumber);
+  g->add_option("--painting", gen->painting,
+                "Crack this painting's dry layers (its size and cells; needs --save)");
+  g->add_flag("--dry", gen->dry, "Dry the painting's wet paint before cracking it");
+  g->add_option("--save", gen->save, "Where the cracked painting is written (.impasto)");
   g->callback([gen] { run_generate(*gen); });
 
   auto imp = std::make_shared<ImportArgs>();
@@ -117,7 +197,25 @@ const CommandRegistrar registrar("cracks", [](CLI::App& root) {
   i->add_option("--depth-to-half-width", imp->settings.depth_to_half_width, "L / R")
       ->check(CLI::PositiveNumber);
   i->add_option("--shape", imp->shape, "Crack section: arc-groove, v-groove, box-groove, ...");
+  i->add_option("--painting", imp->painting,
+                "Put the map into this painting (same size in cells; needs --save)");
+  i->add_option("--save", imp->save, "Where the cracked painting is written (.impasto)");
   i->callback([imp] { run_import(*imp); });
+
+  auto brush = std::make_shared<BrushArgs>();
+  CLI::App* b = group->add_subcommand("brush", "Draw a crack along a polyline into a painting");
+  b->add_option("painting", brush->painting, "The .impasto painting file")->required();
+  b->add_option("--save", brush->save, "Where the cracked painting is written")->required();
+  b->add_option("--points", brush->points, "Polyline, \"x,y x,y ...\" in mm")->required();
+  b->add_option("--shape", brush->shape,
+                "arc-groove, v-groove, box-groove, sphere-pit, cone-pit, cylinder-pit");
+  b->add_option("--depth-mm", brush->depth_mm, "Depth L (mm)")->check(CLI::PositiveNumber);
+  b->add_option("--half-width-mm", brush->half_width_mm, "Half-width R (mm)")
+      ->check(CLI::PositiveNumber);
+  b->add_option("--exposed-layer", brush->exposed_layer,
+                "Dry layer the walls expose (0 = lowest); default: the canvas ground")
+      ->check(CLI::Range(0, 254));
+  b->callback([brush] { run_brush(*brush); });
 
   auto cav = std::make_shared<CavityArgs>();
   CLI::App* c = group->add_subcommand("cavity", "F, G and apparent reflectance of one cavity");

@@ -92,4 +92,20 @@ DryFilm dry_film_of(const paintcore::Painting& painting) {
   return film;
 }
 
+void crack_painting(paintcore::Painting& painting, const CraquelureSettings& settings) {
+  if (painting.canvas().dry_layers().empty()) {
+    throw std::runtime_error("craquelure: the painting has no dry paint to crack (dry it first)");
+  }
+  CrackMap map = crack_map_of(painting);
+  const DryFilm film = dry_film_of(painting);
+  generate_craquelure(map, film.film(), settings);
+  set_painting_cracks(painting, map);
+}
+
+void stamp_crack(paintcore::Painting& painting, const CrackStroke& stroke) {
+  CrackMap map = crack_map_of(painting);
+  stamp_crack(map, stroke);
+  set_painting_cracks(painting, map);
+}
+
 }  // namespace impasto::cracks

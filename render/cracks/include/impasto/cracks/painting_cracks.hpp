@@ -30,4 +30,10 @@ struct DryFilm {
 };
 DryFilm dry_film_of(const paintcore::Painting& painting);
 
+// The crack tools applied to a painting's own crack map:
+// craquelure of its dry layers (throws std::runtime_error naming the painting's lack of dry
+// paint when it has none), and the crack brush along a polyline (mm on the canvas).
+void crack_painting(paintcore::Painting& painting, const CraquelureSettings& settings);
+void stamp_crack(paintcore::Painting& painting, const CrackStroke& stroke);
+
 }  // namespace impasto::cracks
