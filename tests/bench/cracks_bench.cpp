@@ -1,5 +1,6 @@
 // Cost of the crack effect's pieces: the closed form per wavelength, the view factors per
-// cell, a cell's spectrum, the Monte Carlo reference and the craquelure generator.
+// cell, a cell's spectrum, the Monte Carlo reference, the craquelure generator, and the
+// renderer's crack hook on a whole canvas.
 #include <benchmark/benchmark.h>
 
 #include <vector>
@@ -8,6 +9,8 @@
 #include "impasto/cracks/craquelure.hpp"
 #include "impasto/cracks/gouffe.hpp"
 #include "impasto/cracks/monte_carlo.hpp"
+#include "impasto/cracks/painting_cracks.hpp"
+#include "impasto/render/tile_renderer.hpp"
 
 namespace {
 using namespace impasto::cracks;
@@ -62,5 +65,36 @@ void BM_CracksCraquelure512(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_CracksCraquelure512)->Unit(benchmark::kMillisecond);
+
+// A 512 x 512-cell canvas (0.1 mm cells) under a uniform dry white film, rendered on one
+// thread at 8 nodes: without cracks (0) and with a craquelure over all of it (1).
+void BM_CracksRender512(benchmark::State& state) {
+  using impasto::paintcore::kTileCells;
+  impasto::paintcore::Canvas canvas({512, 512, 254.0, 1});
+  impasto::paintcore::DryLayer layer;
+  for (int index = 0; index < canvas.tile_count(); ++index) {
+    impasto::paintcore::DryTile dry;
+    dry.tile_index = index;
+    dry.volume_mm.assign(kTileCells, 0.2f);
+    dry.slots = {0};
+    dry.pigment_mm.assign(kTileCells, 0.1f);
+    layer.tiles.push_back(std::move(dry));
+    canvas.ensure_tile(index, 1).dry_height_mm.fill(0.2f);
+  }
+  canvas.dry_layers().push_back(std::move(layer));
+  if (state.range(0) == 1) {
+    CrackMap map(512, 512, canvas.cell_mm());
+    generate_craquelure(map, PaintFilm{}, CraquelureSettings{});
+    canvas.cracks() = to_crack_layer(map);
+    state.SetLabel(std::to_string(map.crack_cells()) + " crack cells");
+  }
+  impasto::render::RenderSettings settings;
+  settings.threads = 1;
+  const std::vector<std::string> slots = {"Titanium White"};
+  impasto::render::TileRenderer renderer(settings, slots);
+  for (auto _ : state) benchmark::DoNotOptimize(renderer.render_all(canvas));
+  state.SetItemsProcessed(state.iterations() * 512 * 512);
+}
+BENCHMARK(BM_CracksRender512)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace
