@@ -33,6 +33,7 @@ struct RenderArgs {
   double light_distance_mm = RenderSettings{}.light_distance_mm;
   bool no_flakes = false;
   std::string flake_depth = "masking";
+  bool no_cracks = false;
 };
 
 int parse_wavelengths(const std::string& text) {
@@ -83,6 +84,7 @@ void run(const RenderArgs& args) {
   settings.light_distance_mm = args.light_distance_mm;
   settings.flakes = !args.no_flakes;
   settings.flake_masking = args.flake_depth == "masking";
+  settings.cracks = !args.no_cracks;
   validate(settings);
   const paintcore::Painting painting = paintcore::Painting::load(args.painting, args.threads);
   render_painting_to_file(painting, settings, args.out);
@@ -129,6 +131,7 @@ const CommandRegistrar registrar("render", [](CLI::App& root) {
       ->check(CLI::Range(1.0, 1e7))
       ->capture_default_str();
   cmd->add_flag("--no-flakes", args->no_flakes, "Flake pigments without their sparkles");
+  cmd->add_flag("--no-cracks", args->no_cracks, "Cracked cells as if uncracked");
   cmd->add_option("--flake-depth", args->flake_depth,
                   "Flake depth model: masking (Eq. 5) or no-masking (Eq. 6)")
       ->check(CLI::IsMember({"masking", "no-masking"}))
