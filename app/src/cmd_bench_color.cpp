@@ -1,10 +1,16 @@
-// impasto bench color: colour error of N-wavelength Gaussian rendering against the 1-nm
-// full spectrum (CIEDE2000 over masstones, tints, 50/50 mixes and glazes of every pigment),
-// and the cost per cell of each N, for float and half storage of the baked reflectance.
+// impasto bench color: colour error of N-wavelength rendering against the 1-nm full
+// spectrum (CIEDE2000 over masstones, tints, 50/50 mixes and glazes of every pigment), and
+// the cost per cell of each N, for float and half storage of the baked reflectance. For the
+// rules trained on the palette (fitted, optimised) also their error on the training paints
+// and the time to build the rule for a light.
+#include <impasto/data/cie.hpp>
 #include <impasto/data/lights.hpp>
 #include <impasto/data/pigments.hpp>
 #include <impasto/render/color_accuracy.hpp>
+#include <impasto/render/node_optimisation.hpp>
+#include <impasto/render/spectral_palette.hpp>
 
+#include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -28,14 +34,51 @@ struct BenchColorArgs {
   bool half = true;
 };
 
+// A rule trained on the palette: its error on the training paints (the Gaussian rule's
+// beside it) and the wall time to build it for this light (all cores).
+struct TrainingRow {
+  int nodes = 0;
+  std::string light;
+  RuleError rule, gauss;
+  double build_ms = 0.0;
+  int paints = 0;
+};
+
+TrainingRow train_rule(const data::Spectrum& light, const std::string& light_name, int nodes,
+                       NodeWeights weights, const std::vector<data::Pigment>& pigments) {
+  const auto& cmf = data::cie1931_2deg();
+  const data::Spectrum ground = hiding_reflectance(data::PigmentDatabase::defaults().get(
+      "Titanium White"));  // the ground of the accuracy samples
+  const auto start = std::chrono::steady_clock::now();
+  // The first request for this light builds the rule; the accuracy rows below reuse it.
+  const SpectralSampling rule =
+      make_palette_sampling(light, cmf, nodes, {}, weights, pigments, ground);
+  const std::chrono::duration<double, std::milli> elapsed =
+      std::chrono::steady_clock::now() - start;
+  const PaletteTrainingSet training(light, cmf, {}, pigments, ground);
+  return {nodes,
+          light_name,
+          training.error_of(rule),
+          training.error_of(make_spectral_sampling(light, cmf, nodes)),
+          elapsed.count(),
+          training.paint_count()};
+}
+
 void run(const BenchColorArgs& args) {
   const NodeWeights weights = parse_node_weights(args.weights);
+  const bool trained = weights == NodeWeights::fitted || weights == NodeWeights::optimised;
   const std::vector<data::Pigment>& pigments = data::PigmentDatabase::defaults().all();
   const std::vector<ColorSample> samples = standard_color_samples(pigments);
 
   std::vector<AccuracyResult> rows;
+  std::vector<TrainingRow> training_rows;
   for (const std::string& light_name : args.lights) {
     const data::Spectrum light = data::light_from_spec(light_name);
+    if (trained) {
+      for (int n : args.nodes) {
+        training_rows.push_back(train_rule(light, light_name, n, weights, pigments));
+      }
+    }
     std::vector<int> node_counts = args.nodes;
     node_counts.push_back(0);  // the full spectrum: its cost (its error is 0 by definition)
     for (int n : node_counts) {
@@ -61,6 +104,17 @@ void run(const BenchColorArgs& args) {
                          {"worst", r.worst_sample}};
       std::cout << row.dump() << "\n";
     }
+    for (const TrainingRow& r : training_rows) {
+      nlohmann::json row{{"training", true},
+                         {"n", r.nodes},
+                         {"light", r.light},
+                         {"mean_de00", r.rule.mean_de00},
+                         {"max_de00", r.rule.max_de00},
+                         {"gauss_mean_de00", r.gauss.mean_de00},
+                         {"gauss_max_de00", r.gauss.max_de00},
+                         {"build_ms", r.build_ms}};
+      std::cout << row.dump() << "\n";
+    }
     return;
   }
   std::printf("%zu samples (%zu pigments), node weights: %s\n", samples.size(), pigments.size(),
@@ -72,6 +126,15 @@ void run(const BenchColorArgs& args) {
                 r.nodes == 0 ? "full" : std::to_string(r.nodes).c_str(),
                 r.storage == ReflectanceStorage::float16 ? "half" : "float", r.mean_de00,
                 r.max_de00, r.ns_per_cell, r.nodes == 0 ? "-" : r.worst_sample.c_str());
+  }
+  if (training_rows.empty()) return;
+  std::printf("\nTraining paints (%d; not the samples above): %s rule vs Gauss, build time\n",
+              training_rows.front().paints, args.weights.c_str());
+  std::printf("%-6s %4s %10s %10s %11s %11s %10s\n", "light", "N", "mean dE00", "max dE00",
+              "gauss mean", "gauss max", "build ms");
+  for (const TrainingRow& r : training_rows) {
+    std::printf("%-6s %4d %10.4f %10.4f %11.4f %11.4f %10.1f\n", r.light.c_str(), r.nodes,
+                r.rule.mean_de00, r.rule.max_de00, r.gauss.mean_de00, r.gauss.max_de00, r.build_ms);
   }
 }
 
@@ -87,8 +150,9 @@ const CommandRegistrar registrar("bench color", [](CLI::App& root) {
       ->check(CLI::Range(1, 16));
   cmd->add_option("--lights", args->lights, "Lights (D65, A, F11, blackbody:K, FILE.csv)");
   cmd->add_option("--weights", args->weights,
-                  "Per-node XYZ weights: interpolatory, impasto or fitted")
-      ->check(CLI::IsMember({"interpolatory", "impasto", "fitted"}));
+                  "Nodes and XYZ weights: optimised, fitted, interpolatory or impasto")
+      ->capture_default_str()
+      ->check(CLI::IsMember({"interpolatory", "impasto", "fitted", "optimised"}));
   cmd->add_option("--cells", args->timing_cells, "Cells per timing run (0: no timing)")
       ->check(CLI::Range(0, 10000000));
   cmd->add_flag("!--no-half", args->half, "Skip the half-storage rows");

@@ -5,8 +5,8 @@
 
 #include "impasto/data/cie.hpp"
 #include "impasto/data/lights.hpp"
-#include "impasto/render/fitted_weights.hpp"
 #include "impasto/render/kubelka_munk.hpp"
+#include "impasto/render/node_optimisation.hpp"
 
 namespace impasto::render {
 namespace {
@@ -45,12 +45,8 @@ void SpectralPalette::build(const RenderSettings& settings, const data::Spectrum
                             const std::vector<data::Pigment>& pigments,
                             const data::Spectrum& ground) {
   validate(settings);
-  sampling_ = make_spectral_sampling(light, data::cie1931_2deg(), settings.wavelengths,
-                                     settings.range, settings.node_weights);
-  if (settings.node_weights == NodeWeights::fitted) {
-    fit_node_weights(sampling_, light, data::cie1931_2deg(), settings.range, pigments, ground,
-                     settings.thickness_scale_mm);
-  }
+  sampling_ = make_palette_sampling(light, data::cie1931_2deg(), settings.wavelengths,
+                                    settings.range, settings.node_weights, pigments, ground);
   const auto n = static_cast<std::size_t>(nodes());
 
   pigment_names_.clear();

@@ -41,8 +41,9 @@ NodeWeights parse_node_weights(std::string_view text) {
   if (text == "impasto") return NodeWeights::impasto;
   if (text == "interpolatory") return NodeWeights::interpolatory;
   if (text == "fitted") return NodeWeights::fitted;
+  if (text == "optimised") return NodeWeights::optimised;
   throw std::runtime_error("unknown node weights '" + std::string(text) +
-                           "' (expected impasto, interpolatory or fitted)");
+                           "' (expected impasto, interpolatory, fitted or optimised)");
 }
 
 SpectralSampling make_spectral_sampling(const data::Spectrum& light,
@@ -85,7 +86,7 @@ SpectralSampling make_spectral_sampling(const data::Spectrum& light,
   for (std::size_t j = 0; j < grid.size(); ++j) masses[j] = power[j] * cmf_sum[j] * range.step_nm;
   const QuadratureRule rule = gauss_rule(grid, masses, nodes);
 
-  if (weights != NodeWeights::impasto) {  // fitted starts from interpolatory
+  if (weights != NodeWeights::impasto) {  // the palette-trained ones start from it
     for (std::size_t i = 0; i < rule.nodes.size(); ++i) {
       std::array<double, 3> w{0.0, 0.0, 0.0};
       for (std::size_t j = 0; j < grid.size(); ++j) {

@@ -31,14 +31,17 @@ enum class NodeWeights {
   // through the nodes and that is integrated exactly. Same nodes; the three rules still sum
   // to the Gaussian one; a white (any constant) comes out exact.
   interpolatory,
-  // Interpolatory, then refitted to the palette's own paints (SpectralPalette; see
-  // fitted_weights.hpp): least squares on mixes, tints and glazes of the pigments, so the
-  // nodes' values predict XYZ of real paint spectra rather than of polynomials.
+  // The Gaussian nodes with the readout refitted to the palette's own paints (see
+  // node_optimisation.hpp): weighted least squares in CIELAB on mixes, tints and glazes of
+  // the pigments, so the nodes' values predict XYZ of real paint spectra.
   fitted,
+  // Nodes moved from the Gaussian ones and the readout refitted, both to the palette's
+  // paints under this light (node_optimisation.hpp). Still N nodes per cell.
+  optimised,
 };
 
-// Parses "impasto", "interpolatory" or "fitted"; throws std::runtime_error naming the
-// accepted values.
+// Parses "impasto", "interpolatory", "fitted" or "optimised"; throws std::runtime_error
+// naming the accepted values.
 NodeWeights parse_node_weights(std::string_view text);
 
 // X, Y, Z = Σ_i to_xyz[i] · R(wavelengths_nm[i]) for a reflectance spectrum R.
@@ -53,7 +56,8 @@ struct SpectralSampling {
 
 // The sampling for `light` (relative spectral power) seen through `cmf`:
 //   nodes > 0:  the nodes-point Gaussian rule for W(λ) = E(λ)(x̄ + ȳ + z̄)(λ) on the grid of
-//               `range`, with per-node XYZ weights as `weights` says;
+//               `range`, with per-node XYZ weights as `weights` says (fitted and optimised
+//               need the palette: make_palette_sampling; here they are interpolatory);
 //   nodes == 0: every grid wavelength with weights E x̄ Δλ etc. (the full-spectrum reference).
 // Normalised so that a perfect white reflector gives Y = 1 under this very sampling.
 // Throws std::runtime_error when nodes is outside 0..kMaxNodes or the light is black or
