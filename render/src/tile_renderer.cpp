@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "impasto/render/dry_stack.hpp"
 #include "impasto/render/crack_shading.hpp"
 #include "impasto/render/flake_shading.hpp"
 #include "impasto/render/paint_layer.hpp"
@@ -273,26 +274,11 @@ void TileRenderer::bake_dry_stack(const paintcore::Canvas& canvas, int tile_inde
     cache.dry_f32.resize(values);
   }
   const auto inverse_scale = static_cast<float>(1.0 / settings_.thickness_scale_mm);
-  std::array<PigmentShare, paintcore::kMaxPigmentSlots> shares{};
   // One value per node; the full spectrum has hundreds, so on the heap, once per tile.
   std::vector<float> node_values(static_cast<std::size_t>(nodes));
   float* reflectance = node_values.data();
   for (int c = 0; c < kTileCells; ++c) {
-    std::copy(palette_.ground(), palette_.ground() + nodes, reflectance);
-    for (const paintcore::DryTile* dry : layers) {
-      const float volume = dry->volume_mm[static_cast<std::size_t>(c)];
-      if (!(volume > 0.0f)) continue;
-      const int count = gather_shares(
-          static_cast<int>(dry->slots.size()), volume,
-          [&](int k) {
-            return std::pair{static_cast<int>(dry->slots[static_cast<std::size_t>(k)]),
-                             dry->pigment_mm[static_cast<std::size_t>(k) * kTileCells +
-                                             static_cast<std::size_t>(c)]};
-          },
-          shares);
-      composite_paint_layer(palette_, std::span(shares.data(), static_cast<std::size_t>(count)),
-                            volume * inverse_scale, reflectance);
-    }
+    composite_dry_stack(palette_, layers, c, inverse_scale, reflectance);
     const std::size_t base = static_cast<std::size_t>(c) * static_cast<std::size_t>(nodes);
     for (int i = 0; i < nodes; ++i) {
       if (half) {

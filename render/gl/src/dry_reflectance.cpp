@@ -2,9 +2,10 @@
 
 #include <Imath/half.h>
 
-#include <algorithm>
+#include <stdexcept>
+#include <string>
 
-#include "impasto/render/paint_layer.hpp"
+#include "impasto/render/dry_stack.hpp"
 
 namespace impasto::render_gl {
 
@@ -14,37 +15,35 @@ void bake_dry_reflectance(const paintcore::Canvas& canvas, int tile_index,
                           const render::RenderSettings& settings,
                           const render::SpectralPalette& palette, std::vector<float>& out,
                           const std::vector<bool>& hidden) {
+  // The visible dry layers with paint in this tile, bottom first.
+  std::vector<const paintcore::DryTile*> layers;
+  const auto& dry_layers = canvas.dry_layers();
+  for (std::size_t l = 0; l < dry_layers.size(); ++l) {
+    if (l < hidden.size() && hidden[l]) continue;
+    const paintcore::DryTile* tile = dry_layers[l].find(tile_index);
+    if (tile == nullptr) continue;
+    for (const auto slot : tile->slots) {
+      if (slot >= palette.pigment_count()) {
+        throw std::runtime_error("GPU renderer: dry layer " + std::to_string(l) +
+                                 " uses pigment slot " + std::to_string(slot) +
+                                 " but the palette has " + std::to_string(palette.pigment_count()) +
+                                 " pigments");
+      }
+    }
+    layers.push_back(tile);
+  }
   const int nodes = palette.nodes();
   out.resize(static_cast<size_t>(nodes) * kTileCells);
   std::vector<float> reflectance(static_cast<size_t>(nodes));
-  std::vector<render::PigmentShare> shares;
-  // The same float operations as render::TileRenderer's bake, so the two agree bit for bit.
+  // The CPU reference's own bake, stored as it stores it, so the two agree bit for bit.
   const auto optical_per_mm = static_cast<float>(1.0 / settings.thickness_scale_mm);
   const bool half = settings.storage == render::ReflectanceStorage::float16;
   for (int cell = 0; cell < kTileCells; ++cell) {
-    std::copy_n(palette.ground(), nodes, reflectance.begin());
-    const auto& layers = canvas.dry_layers();
-    for (size_t l = 0; l < layers.size(); ++l) {  // bottom first
-      if (l < hidden.size() && hidden[l]) continue;
-      const paintcore::DryTile* tile = layers[l].find(tile_index);
-      if (tile == nullptr) continue;
-      const float volume = tile->volume_mm[static_cast<size_t>(cell)];
-      if (!(volume > 0.0f)) continue;
-      const float inverse_volume = 1.0f / volume;
-      shares.clear();
-      for (size_t i = 0; i < tile->slots.size(); ++i) {
-        const int slot = tile->slots[i];
-        const float amount = tile->pigment_mm[i * kTileCells + static_cast<size_t>(cell)];
-        if (slot < palette.pigment_count() && amount > 0.0f) {
-          shares.push_back({slot, amount * inverse_volume});
-        }
-      }
-      render::composite_paint_layer(palette, shares, volume * optical_per_mm, reflectance.data());
-    }
+    render::composite_dry_stack(palette, layers, cell, optical_per_mm, reflectance.data());
     for (int node = 0; node < nodes; ++node) {
+      const float value = reflectance[static_cast<size_t>(node)];
       out[static_cast<size_t>(node) * kTileCells + static_cast<size_t>(cell)] =
-          half ? static_cast<float>(Imath::half(reflectance[static_cast<size_t>(node)]))
-               : reflectance[static_cast<size_t>(node)];
+          half ? static_cast<float>(Imath::half(value)) : value;
     }
   }
 }
