@@ -10,6 +10,12 @@
 
 #include "command.hpp"
 
+// The GL path, when this build has it (render_gl's headers come with its target).
+#if __has_include(<impasto/render_gl/render_painting_gpu.hpp>)
+#include <impasto/render_gl/render_painting_gpu.hpp>
+#define IMPASTO_RENDER_GPU 1
+#endif
+
 namespace impasto::app {
 namespace {
 
@@ -34,6 +40,7 @@ struct RenderArgs {
   bool no_flakes = false;
   std::string flake_depth = "masking";
   bool no_cracks = false;
+  bool gpu = false;  // through the GLSL shaders, headless
 };
 
 int parse_wavelengths(const std::string& text) {
@@ -87,7 +94,15 @@ void run(const RenderArgs& args) {
   settings.cracks = !args.no_cracks;
   validate(settings);
   const paintcore::Painting painting = paintcore::Painting::load(args.painting, args.threads);
-  render_painting_to_file(painting, settings, args.out);
+  if (args.gpu) {
+#ifdef IMPASTO_RENDER_GPU
+    render_gl::render_painting_gpu_to_file(painting, settings, args.out);
+#else
+    throw std::runtime_error("--gpu: this impasto was built without the OpenGL path");
+#endif
+  } else {
+    render_painting_to_file(painting, settings, args.out);
+  }
   std::cout << "wrote " << args.out << " (" << painting.canvas().width_cells() << "x"
             << painting.canvas().height_cells() << ")\n";
 }
@@ -136,6 +151,8 @@ const CommandRegistrar registrar("render", [](CLI::App& root) {
                   "Flake depth model: masking (Eq. 5) or no-masking (Eq. 6)")
       ->check(CLI::IsMember({"masking", "no-masking"}))
       ->capture_default_str();
+  cmd->add_flag("--gpu", args->gpu,
+                "Render through the OpenGL shaders, headless (EGL or OSMesa); 1..16 nodes");
   cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)")
       ->check(CLI::Range(0, 1024));
   cmd->callback([args] { run(*args); });

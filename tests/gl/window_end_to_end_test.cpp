@@ -4,9 +4,12 @@
 // session recording must replay to the very same painting as the original strokes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <iostream>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -94,6 +97,55 @@ TEST(WindowEndToEnd, ReplayScreenshotShowsPaintAndPanelsAndRecordsTheSession) {
   ASSERT_TRUE(fs::exists(session));
   EXPECT_EQ(state_hash_of_replay(session), state_hash_of_replay(kDemo));
   fs::remove_all(dir);
+}
+
+// `impasto render --gpu` draws a painting through the shaders headless; it must match the CPU
+// reference renderer within 2/255 per channel.
+TEST(RenderCommand, GpuOutputMatchesTheCpuOutput) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("impasto_render_gpu_test_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  const fs::path painting = dir / "demo.impasto";
+  const fs::path cpu = dir / "cpu.png", gpu = dir / "gpu.png";
+  const std::string impasto = IMPASTO_EXECUTABLE;
+  run_and_capture(impasto + " replay '" + kDemo.string() + "' --size 384x256 --out '" +
+                  painting.string() + "' 2>&1");
+  const std::string light = " --light A --wavelengths 6 --light-dir 200,40";
+  run_and_capture(impasto + " render '" + painting.string() + "' --out '" + cpu.string() + "'" +
+                  light + " 2>&1");
+  run_and_capture(impasto + " render '" + painting.string() + "' --gpu --out '" + gpu.string() +
+                  "'" + light + " 2>&1");
+  const impasto::render::Image a = impasto::render::read_png(cpu);
+  const impasto::render::Image b = impasto::render::read_png(gpu);
+  ASSERT_EQ(a.width, 384);
+  ASSERT_EQ(a.height, 256);
+  ASSERT_EQ(b.width, a.width);
+  ASSERT_EQ(b.height, a.height);
+  double max_difference = 0.0, sum = 0.0, max_contrast = 0.0;
+  for (std::size_t i = 0; i < a.rgb.size(); ++i) {
+    const double d = std::abs(static_cast<double>(a.rgb[i]) - b.rgb[i]);
+    max_difference = std::max(max_difference, d);
+    sum += d;
+    max_contrast = std::max(max_contrast, std::abs(static_cast<double>(a.rgb[i]) - a.rgb[i % 3]));
+  }
+  const double mean = sum / static_cast<double>(a.rgb.size());
+  std::cout << "render --gpu vs CPU: max " << max_difference * 255 << "/255, mean " << mean * 255
+            << "/255\n";
+  EXPECT_GT(max_contrast, 0.2) << "the painting has no paint to compare";
+  EXPECT_LE(max_difference, 2.0 / 255.0 + 1e-6);
+  fs::remove_all(dir);
+}
+
+TEST(RenderCommand, GpuWithAMissingPaintingIsAClearError) {
+  std::string text;
+  FILE* pipe = popen((std::string(IMPASTO_EXECUTABLE) +
+                      " render /nonexistent/painting.impasto --gpu --out x.png 2>&1")
+                         .c_str(),
+                     "r");
+  char buffer[4096];
+  while (pipe && std::fgets(buffer, sizeof buffer, pipe)) text += buffer;
+  EXPECT_NE(pipe ? pclose(pipe) : 0, 0);
+  EXPECT_NE(text.find("painting.impasto"), std::string::npos) << text;
 }
 
 TEST(WindowEndToEnd, MissingStrokeFileIsAClearError) {

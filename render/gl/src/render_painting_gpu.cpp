@@ -1,5 +1,9 @@
 #include "impasto/render_gl/render_painting_gpu.hpp"
 
+#include <algorithm>
+#include <cctype>
+#include <stdexcept>
+
 #include "impasto/render_gl/canvas_renderer.hpp"
 #include "impasto/render_gl/framebuffer.hpp"
 
@@ -47,6 +51,33 @@ render::Image render_painting_gpu(const paintcore::Canvas& canvas,
                                   const render::RenderSettings& settings, HeadlessBackend backend) {
   return render_painting_gpu(canvas, settings, render::SpectralPalette(settings, pigment_slots),
                              backend);
+}
+
+void render_painting_gpu_to_file(const paintcore::Painting& painting,
+                                 const render::RenderSettings& settings,
+                                 const std::filesystem::path& path, HeadlessBackend backend) {
+  std::string extension = path.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (extension != ".png" && extension != ".exr") {
+    throw std::runtime_error(path.string() + ": unknown image type '" + extension +
+                             "' (expected .png or .exr)");
+  }
+  if (settings.wavelengths == 0) {
+    throw std::runtime_error(path.string() +
+                             ": the GPU path takes 1..16 wavelength nodes, not the full "
+                             "spectrum (render without --gpu)");
+  }
+  // EXR holds linear values, as the CPU path writes them.
+  render::RenderSettings file_settings = settings;
+  if (extension == ".exr") file_settings.display = render::DisplayEncoding::linear_srgb;
+  const render::Image image =
+      render_painting_gpu(painting.canvas(), painting.pigment_slots(), file_settings, backend);
+  if (extension == ".png") {
+    render::write_png(path, image);
+  } else {
+    render::write_exr(path, image);
+  }
 }
 
 }  // namespace impasto::render_gl

@@ -1,10 +1,12 @@
 #pragma once
 // `impasto render --gpu`: a whole canvas rendered headless through the GLSL shaders, one
 // pixel per cell, in the same Image form as the CPU's render::TileRenderer::image().
+#include <filesystem>
 #include <span>
 #include <string>
 
 #include "impasto/paintcore/canvas.hpp"
+#include "impasto/paintcore/painting.hpp"
 #include "impasto/render/image.hpp"
 #include "impasto/render/render_settings.hpp"
 #include "impasto/render/spectral_palette.hpp"
@@ -24,6 +26,15 @@ render::Image render_painting_gpu(const paintcore::Canvas& canvas,
                                   std::span<const std::string> pigment_slots,
                                   const render::RenderSettings& settings,
                                   HeadlessBackend backend = HeadlessBackend::kAuto);
+
+// `impasto render --gpu`: render::render_painting_to_file through the shaders. Writes by
+// extension: .png (8-bit, settings.display) or .exr (linear sRGB primaries). Throws
+// std::runtime_error naming the file for another extension, and for settings the shaders do
+// not take (full-spectrum rendering).
+void render_painting_gpu_to_file(const paintcore::Painting& painting,
+                                 const render::RenderSettings& settings,
+                                 const std::filesystem::path& path,
+                                 HeadlessBackend backend = HeadlessBackend::kAuto);
 
 // Renders into the current context (no context made): for callers that keep one.
 render::Image render_canvas_in_current_context(const paintcore::Canvas& canvas,
