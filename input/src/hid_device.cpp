@@ -237,28 +237,72 @@ TabletManager::~TabletManager() {
   readers_.clear();
 }
 
+namespace {
+
+ConnectedTablet connected_tablet(const TabletReader& reader) {
+  const HidDeviceInfo& device = reader.tablet().device;
+  std::string name = device.manufacturer;
+  if (!device.product.empty()) name += (name.empty() ? "" : " ") + device.product;
+  return {device.path, name.empty() ? device.path : name, reader.area()};
+}
+
+}  // namespace
+
 std::vector<std::string> TabletManager::connected() const {
   const std::lock_guard lock(mutex_);
   std::vector<std::string> paths;
-  for (const auto& reader : readers_) {
-    if (reader->running()) paths.push_back(reader->tablet().device.path);
+  for (const auto& reading : readers_) {
+    if (reading.reader->running()) paths.push_back(reading.reader->tablet().device.path);
   }
   return paths;
+}
+
+std::vector<ConnectedTablet> TabletManager::tablets() const {
+  const std::lock_guard lock(mutex_);
+  std::vector<ConnectedTablet> list;
+  for (const auto& reading : readers_) {
+    if (reading.reader->running()) list.push_back(connected_tablet(*reading.reader));
+  }
+  return list;
+}
+
+std::vector<TabletSamples> TabletManager::poll_tablets() {
+  const std::lock_guard lock(mutex_);
+  std::vector<TabletSamples> polled;
+  for (const auto& reading : readers_) {
+    std::vector<paintcore::PenSample> samples = reading.queue->drain();
+    if (!samples.empty()) polled.push_back({connected_tablet(*reading.reader), std::move(samples)});
+  }
+  return polled;
+}
+
+std::vector<paintcore::PenSample> TabletManager::poll() {
+  std::vector<paintcore::PenSample> all;
+  for (TabletSamples& tablet : poll_tablets()) {
+    all.insert(all.end(), tablet.samples.begin(), tablet.samples.end());
+  }
+  // Several tablets at once: interleave them by time (each one's order is kept).
+  std::stable_sort(all.begin(), all.end(),
+                   [](const auto& a, const auto& b) { return a.time_s < b.time_s; });
+  return all;
 }
 
 void TabletManager::rescan() {
   const std::vector<PenTabletInfo> tablets = find_pen_tablets();
   const std::lock_guard lock(mutex_);
   // Drop readers whose tablet went away (their thread has stopped).
-  std::erase_if(readers_, [](const auto& reader) { return !reader->running(); });
+  std::erase_if(readers_, [](const Reading& reading) { return !reading.reader->running(); });
   for (const PenTabletInfo& tablet : tablets) {
     if (!tablet.unsupported_reason.empty() || !tablet.readable) continue;
-    const bool reading = std::any_of(readers_.begin(), readers_.end(), [&](const auto& r) {
-      return r->tablet().device.path == tablet.device.path;
+    const bool reading = std::any_of(readers_.begin(), readers_.end(), [&](const Reading& r) {
+      return r.reader->tablet().device.path == tablet.device.path;
     });
     if (reading) continue;
     try {
-      readers_.push_back(std::make_unique<TabletReader>(tablet, queue_, origin_));
+      Reading fresh;
+      fresh.queue = std::make_unique<SampleQueue>();
+      fresh.reader = std::make_unique<TabletReader>(tablet, *fresh.queue, origin_);
+      readers_.push_back(std::move(fresh));
     } catch (const std::exception&) {
       // A descriptor that changed under us: try again at the next scan.
     }

@@ -79,6 +79,8 @@ class TabletReader {
   TabletReader& operator=(const TabletReader&) = delete;
 
   const PenTabletInfo& tablet() const { return tablet_; }
+  // The pen's active area in mm (what a mapping onto the screen or canvas needs).
+  TabletArea area() const { return decoder_.area(); }
   bool running() const { return running_.load(); }
   // Why the thread stopped (unplugged, no permission, ...), empty while it runs.
   std::string stop_reason() const;
@@ -99,6 +101,19 @@ class TabletReader {
   std::thread thread_;
 };
 
+// A tablet being read, as the application lists and maps it.
+struct ConnectedTablet {
+  std::string path;  // e.g. /dev/hidraw3
+  std::string name;  // manufacturer and product, as the device reports them
+  TabletArea area;   // the pen's active area, mm
+};
+
+// The samples one tablet produced since the last poll, in tablet mm.
+struct TabletSamples {
+  ConnectedTablet tablet;
+  std::vector<paintcore::PenSample> samples;
+};
+
 // Every readable, supported tablet, re-enumerated periodically: plugged-in tablets start
 // reading, unplugged ones are dropped. The application polls samples without blocking.
 class TabletManager {
@@ -108,20 +123,31 @@ class TabletManager {
   TabletManager(const TabletManager&) = delete;
   TabletManager& operator=(const TabletManager&) = delete;
 
-  // Samples of all tablets since the last poll, in arrival order; never blocks for long.
-  std::vector<paintcore::PenSample> poll() { return queue_.drain(); }
+  // Samples of all tablets since the last poll, oldest first; never blocks for long.
+  std::vector<paintcore::PenSample> poll();
+  // The same, kept apart per tablet with its active area, so that each tablet's mm can be
+  // mapped with its own area. Tablets without new samples are left out.
+  std::vector<TabletSamples> poll_tablets();
   // The device paths being read now.
   std::vector<std::string> connected() const;
+  // The tablets being read now, with their names and active areas.
+  std::vector<ConnectedTablet> tablets() const;
+  // Seconds since this time are the samples' time_s (steady clock).
+  std::chrono::steady_clock::time_point origin() const { return origin_; }
 
  private:
+  // One tablet: its queue outlives its reader, whose thread pushes into it.
+  struct Reading {
+    std::unique_ptr<SampleQueue> queue;
+    std::unique_ptr<TabletReader> reader;
+  };
   void rescan();
   void run();
 
-  SampleQueue queue_;
   std::chrono::steady_clock::time_point origin_ = std::chrono::steady_clock::now();
   std::chrono::milliseconds interval_;
   mutable std::mutex mutex_;
-  std::vector<std::unique_ptr<TabletReader>> readers_;
+  std::vector<Reading> readers_;
   std::atomic<bool> stop_{false};
   std::thread thread_;
 };
