@@ -1,10 +1,12 @@
 // impasto bench gpu: what the painting window costs on this machine's OpenGL — the frame
-// time of a large canvas, and the latency from one pen sample to the updated frame.
+// time of a large canvas (whole, and as the window's cached view shows it), and the latency
+// from one pen sample to the updated frame, with and without the view cache.
 #include <impasto/paintcore/painting.hpp>
 #include <impasto/render/spectral_palette.hpp>
 #include <impasto/render_gl/canvas_renderer.hpp>
 #include <impasto/render_gl/framebuffer.hpp>
 #include <impasto/render_gl/gl_context.hpp>
+#include <impasto/render_gl/shaded_view_cache.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -91,9 +93,40 @@ void run(const BenchGpuArgs& args) {
               << " frames (first upload of all tiles " << upload_ms << " ms)\n";
   }
 
-  // 2. Pen sample to updated frame with a brush_px-wide brush: simulation step, dirty tiles
-  //    to the GPU, the window-sized view redrawn (glFinish: the frame is done).
+  // 2. The window's view of that canvas, fitted (zoomed out, about 0.2 px a cell): a frame
+  //    after the view changed re-shades every pixel; a frame with nothing new copies the cache.
   {
+    paintcore::Painting painting = striped_painting(args.size, 4);
+    render::SpectralPalette palette(settings, painting.pigment_slots());
+    render_gl::CanvasRenderer renderer(args.size, args.size, settings, palette);
+    renderer.upload_all(painting.canvas());
+    render_gl::Framebuffer target(args.viewport_w, args.viewport_h, render_gl::TexelFormat::kRGBA8);
+    render_gl::CanvasView view =
+        render_gl::fit_canvas(args.size, args.size, args.viewport_w, args.viewport_h);
+    render_gl::ShadedViewCache cache;
+    std::vector<double> full_ms, cached_ms;
+    for (int f = 0; f < args.frames; ++f) {
+      view.center_x_cells += 1.0;  // a pan: every pixel changes
+      auto start = Clock::now();
+      cache.draw(renderer, view, args.viewport_w, args.viewport_h, target.id());
+      glFinish();
+      full_ms.push_back(ms_since(start));
+      start = Clock::now();
+      cache.draw(renderer, view, args.viewport_w, args.viewport_h, target.id());
+      glFinish();
+      cached_ms.push_back(ms_since(start));
+    }
+    std::cout << "window view " << args.viewport_w << "x" << args.viewport_h << " of the "
+              << args.size << "x" << args.size << " canvas, fitted (" << view.pixels_per_cell
+              << " px/cell): after a pan/zoom/light change median " << median(full_ms)
+              << " ms, unchanged " << median(cached_ms) << " ms\n";
+  }
+
+  // 3. Pen sample to updated frame with a brush_px-wide brush: simulation step, dirty tiles
+  //    to the GPU, the window-sized view redrawn (glFinish: the frame is done). "Whole view"
+  //    re-shades every pixel of the view per frame; "cached" re-shades only the changed tiles'
+  //    pixels (the window's way).
+  const auto latency = [&](double pixels_per_cell, bool cached) {
     const int size = 2048;
     paintcore::Painting painting({size, size, 300.0, 1});
     const double cell_mm = painting.canvas().cell_mm();
@@ -104,8 +137,11 @@ void run(const BenchGpuArgs& args) {
     renderer.upload_all(painting.canvas());
     (void)painting.canvas().take_dirty_tiles();
     render_gl::Framebuffer target(args.viewport_w, args.viewport_h, render_gl::TexelFormat::kRGBA8);
-    const render_gl::CanvasView view{size / 2.0, size / 2.0, 1.0, 0.0};
+    const render_gl::CanvasView view{size / 2.0, size / 2.0, pixels_per_cell, 0.0};
+    render_gl::ShadedViewCache cache;
+    cache.draw(renderer, view, args.viewport_w, args.viewport_h, target.id());
     std::vector<double> sim_ms, upload_ms, draw_ms, total_ms;
+    long long shaded = 0;
     painting.begin_stroke();
     for (int i = 0; i < args.samples; ++i) {
       paintcore::PenSample sample;
@@ -117,10 +153,18 @@ void run(const BenchGpuArgs& args) {
       const auto start = Clock::now();
       painting.stroke_to(sample);
       const auto simulated = Clock::now();
-      renderer.upload_tiles(painting.canvas(), painting.canvas().take_dirty_tiles());
+      const std::vector<int> dirty = painting.canvas().take_dirty_tiles();
+      renderer.upload_tiles(painting.canvas(), dirty);
       const auto uploaded = Clock::now();
-      target.bind();
-      renderer.draw(view, args.viewport_w, args.viewport_h);
+      if (cached) {
+        cache.invalidate_tiles(dirty);
+        shaded +=
+            cache.draw(renderer, view, args.viewport_w, args.viewport_h, target.id()).pixels_shaded;
+      } else {
+        target.bind();
+        renderer.draw(view, args.viewport_w, args.viewport_h);
+        shaded += static_cast<long long>(args.viewport_w) * args.viewport_h;
+      }
       glFinish();
       if (i == 0) continue;  // the first sample only places the brush
       sim_ms.push_back(std::chrono::duration<double, std::milli>(simulated - start).count());
@@ -130,9 +174,15 @@ void run(const BenchGpuArgs& args) {
     }
     painting.end_stroke();
     std::cout << "latency, pen sample to frame, " << args.brush_px << "-cell brush, "
-              << args.viewport_w << "x" << args.viewport_h << " view: median " << median(total_ms)
-              << " ms (simulation " << median(sim_ms) << ", upload " << median(upload_ms)
-              << ", draw " << median(draw_ms) << ") over " << total_ms.size() << " samples\n";
+              << args.viewport_w << "x" << args.viewport_h << " view at " << pixels_per_cell
+              << " px/cell, " << (cached ? "cached" : "whole view re-shaded") << ": median "
+              << median(total_ms) << " ms (simulation " << median(sim_ms) << ", upload "
+              << median(upload_ms) << ", draw " << median(draw_ms) << "; " << shaded / args.samples
+              << " px shaded a frame) over " << total_ms.size() << " samples\n";
+  };
+  for (const double zoom : {1.0, 0.25}) {
+    latency(zoom, false);
+    latency(zoom, true);
   }
 }
 

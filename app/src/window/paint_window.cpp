@@ -15,6 +15,7 @@
 #include <impasto/render/render_painting.hpp>
 #include <impasto/render_gl/canvas_renderer.hpp>
 #include <impasto/render_gl/gl.hpp>
+#include <impasto/render_gl/shaded_view_cache.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -25,10 +26,13 @@
 #include <stdexcept>
 
 #include "window/paint_options.hpp"
+#include "window/palette_board_panel.hpp"
 #include "window/panels.hpp"
+#include "window/pen_feed.hpp"
 #include "window/recent_files.hpp"
 #include "window/screenshot.hpp"
 #include "window/sim_worker.hpp"
+#include "window/tablet_input.hpp"
 
 namespace impasto::app::window {
 namespace {
@@ -91,6 +95,10 @@ class PaintWindow {
   void update_swatch();
   void draw_frame(bool take_screenshot);
   void pen_sample(double x, double y, bool tip_down);
+  void start_tablets();
+  void poll_tablets();
+  TabletTargetGeometry tablet_geometry() const;
+  void open_board_for(const std::optional<std::filesystem::path>& painting);
   PaintingSnapshot snapshot();
   std::optional<std::filesystem::path> record_path_for(
       const std::optional<std::filesystem::path>& painting) const;
@@ -102,10 +110,20 @@ class PaintWindow {
   WindowState state_;
   std::unique_ptr<SimWorker> worker_;
   std::unique_ptr<render_gl::CanvasRenderer> renderer_;
+  render_gl::ShadedViewCache view_cache_;  // frames re-shade only what changed in view
   std::unique_ptr<render::SpectralPalette> palette_;
   std::vector<std::string> rendered_slots_;
   int canvas_w_ = 0, canvas_h_ = 0;
   bool full_upload_ = true;
+
+  // Every pen sample, mouse or tablet, goes to the simulation through this feed.
+  PenFeed canvas_feed_{[this](input::StrokeEvent event) { worker_->submit(std::move(event)); }};
+  PaletteBoardPanel board_panel_;
+
+  // Tablets, read on their own threads, polled once a frame.
+  std::unique_ptr<input::hid::TabletManager> tablets_;
+  double tablet_time_offset_s_ = 0.0;  // tablet clock -> session clock
+  double tablet_seen_s_ = -1e9;        // when a tablet last sent a sample (GLFW time)
 
   // Pen from the mouse.
   bool painting_stroke_ = false;
@@ -125,9 +143,11 @@ PaintWindow::PaintWindow(const PaintOptions& options) : options_(options) {
   state_.recent = load_recent_files();
   create_window();
   start_session();
+  start_tablets();
 }
 
 PaintWindow::~PaintWindow() {
+  tablets_.reset();
   worker_.reset();
   renderer_.reset();
   ImGui_ImplOpenGL3_Shutdown();
@@ -175,6 +195,7 @@ void PaintWindow::start_session() {
     state_.file = options_.painting;
     remember_recent_file(*options_.painting);
   }
+  open_board_for(options_.painting);
   worker_ = std::make_unique<SimWorker>(std::move(painting), record_path_for(options_.painting));
   if (strokes) {
     // The recorded events take the same path as live input: the worker's queue.
@@ -188,6 +209,66 @@ void PaintWindow::start_session() {
     worker_->finish_stroke();
     worker_->set_auto_load(false);
   }
+}
+
+// The palette board kept beside the painting, or a clean one.
+void PaintWindow::open_board_for(const std::optional<std::filesystem::path>& painting) {
+  try {
+    if (painting && std::filesystem::exists(PaletteBoard::file_beside(*painting))) {
+      board_panel_.replace(PaletteBoard::load(PaletteBoard::file_beside(*painting)));
+      return;
+    }
+  } catch (const std::exception& e) {
+    state_.message = e.what();
+  }
+  board_panel_.replace(PaletteBoard());
+}
+
+// Tablets are optional: without hidapi or without any tablet the mouse paints alone.
+void PaintWindow::start_tablets() {
+  if (!input::hid::hid_available()) return;
+  try {
+    tablets_ = std::make_unique<input::hid::TabletManager>();
+    // Tablet times count from the manager's start; the session's from the window's.
+    tablet_time_offset_s_ = glfwGetTime() - session_start_s_;
+  } catch (const std::exception& e) {
+    state_.tablet_error = e.what();
+  }
+}
+
+TabletTargetGeometry PaintWindow::tablet_geometry() const {
+  TabletTargetGeometry geometry;
+  glfwGetWindowSize(window_, &geometry.window_w, &geometry.window_h);
+  int wx = 0, wy = 0;
+  glfwGetWindowPos(window_, &wx, &wy);
+  geometry.window_origin_px = {static_cast<double>(wx), static_cast<double>(wy)};
+  geometry.screen_px = {static_cast<double>(wx), static_cast<double>(wy),
+                        static_cast<double>(geometry.window_w),
+                        static_cast<double>(geometry.window_h)};
+  if (GLFWmonitor* monitor = glfwGetPrimaryMonitor()) {
+    int mx = 0, my = 0;
+    glfwGetMonitorPos(monitor, &mx, &my);
+    if (const GLFWvidmode* mode = glfwGetVideoMode(monitor)) {
+      geometry.screen_px = {static_cast<double>(mx), static_cast<double>(my),
+                            static_cast<double>(mode->width), static_cast<double>(mode->height)};
+    }
+  }
+  geometry.view = state_.view;
+  geometry.canvas_w_cells = canvas_w_;
+  geometry.canvas_h_cells = canvas_h_;
+  geometry.cell_mm = renderer_ ? renderer_->cell_mm() : 0.1;
+  return geometry;
+}
+
+void PaintWindow::poll_tablets() {
+  if (!tablets_) return;
+  state_.tablets = tablets_->tablets();
+  const std::vector<input::hid::TabletSamples> polled = tablets_->poll_tablets();
+  if (polled.empty() || canvas_w_ == 0) return;
+  tablet_seen_s_ = glfwGetTime();
+  state_.tablet_samples +=
+      feed_tablet_samples(polled, tablet_time_offset_s_, state_.tablet, tablet_geometry(),
+                          canvas_feed_, &state_.tablet_error);
 }
 
 PaintingSnapshot PaintWindow::snapshot() {
@@ -239,10 +320,12 @@ void PaintWindow::sync_gpu() {
     const std::vector<int> dirty = canvas.take_dirty_tiles();
     if (full_upload_) {
       renderer_->upload_all(canvas);
+      view_cache_.invalidate_all();
       state_.tiles_uploaded = canvas.tile_count();
       full_upload_ = false;
     } else {
       renderer_->upload_tiles(canvas, dirty);
+      view_cache_.invalidate_tiles(dirty);
       state_.tiles_uploaded = static_cast<int>(dirty.size());
     }
   });
@@ -306,7 +389,7 @@ void PaintWindow::pen_sample(double x, double y, bool tip_down) {
   sample.y_mm = cell[1] * cell_mm;
   sample.pressure = tip_down ? pressure : 0.0f;
   sample.buttons = paintcore::kPenInRange | (tip_down ? paintcore::kPenTip : 0u);
-  worker_->submit(input::SampleEvent{sample});
+  canvas_feed_.feed(sample);
   last_x_ = x;
   last_y_ = y;
   last_t_ = t;
@@ -325,8 +408,10 @@ void PaintWindow::handle_canvas_input() {
   const bool right = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
   const bool space = glfwGetKey(window_, GLFW_KEY_SPACE) == GLFW_PRESS;
 
-  // Paint with the left button.
-  if (left && !space && (painting_stroke_ || over_canvas)) {
+  // Paint with the left button, unless a tablet's pen is near (it moves the cursor and
+  // presses the button too, and its own samples carry the real pressure).
+  const bool tablet_near = glfwGetTime() - tablet_seen_s_ < 0.25;
+  if (left && !space && (painting_stroke_ || (over_canvas && !tablet_near))) {
     if (!painting_stroke_ || x != last_x_ || y != last_y_) pen_sample(x, y, true);
     painting_stroke_ = true;
   } else if (painting_stroke_) {
@@ -390,6 +475,7 @@ FileActions PaintWindow::file_actions() {
   actions.save = [this](const std::filesystem::path& file) {
     try {
       worker_->save(file);
+      board_panel_.board().save(PaletteBoard::file_beside(file));
       state_.file = file;
       remember_recent_file(file);
       state_.recent = load_recent_files();
@@ -429,6 +515,7 @@ void PaintWindow::run_pending_action() {
         spec.dpi = state_.new_dpi;
         paintcore::validate(spec);
         worker_->replace_painting(paintcore::Painting(spec), record_path_for(std::nullopt));
+        open_board_for(std::nullopt);
         state_.file.reset();
         state_.message = "new painting";
         break;
@@ -437,6 +524,7 @@ void PaintWindow::run_pending_action() {
       case PendingAction::kOpenRecent: {
         const auto file = state_.pending_path;
         worker_->replace_painting(paintcore::Painting::load(file), record_path_for(file));
+        open_board_for(file);
         state_.file = file;
         remember_recent_file(file);
         state_.recent = load_recent_files();
@@ -475,7 +563,7 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   ImGui::NewFrame();
   const PaintingSnapshot painting = snapshot();
   const FileActions files = file_actions();
-  PanelContext context{state_, *worker_, painting, *palette_, files};
+  PanelContext context{state_, *worker_, painting, *palette_, files, board_panel_};
   draw_panels(context);
   ImGui::Render();
 
@@ -486,7 +574,7 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   render_gl::CanvasView fb_view = state_.view;
   fb_view.pixels_per_cell *= win_w > 0 ? static_cast<double>(fb_w) / win_w : 1.0;
   renderer_->set_shading(state_.settings);
-  renderer_->draw(fb_view, fb_w, fb_h);
+  state_.pixels_shaded = view_cache_.draw(*renderer_, fb_view, fb_w, fb_h, 0).pixels_shaded;
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   if (take_screenshot) save_window_screenshot(*options_.screenshot, fb_w, fb_h);
   glfwSwapBuffers(window_);
@@ -508,6 +596,7 @@ void PaintWindow::run() {
     run_pending_action();
     if (state_.quit) break;
     handle_shortcuts();
+    poll_tablets();
     handle_canvas_input();
     // A scripted run waits until the replay is applied and a few frames have laid out the
     // panels, then captures the whole window.

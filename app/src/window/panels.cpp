@@ -288,6 +288,45 @@ void light_panel(PanelContext& c) {
   (void)moved;  // direction, intensity and ambient are uniforms: no re-bake needed
 }
 
+// The pressure curve from 0 to 1, as the brush will feel the pen.
+void pressure_plot(const TabletSettings& settings) {
+  const input::PressureCurve curve = settings.pressure_curve();
+  float values[33];
+  for (int i = 0; i <= 32; ++i) values[i] = static_cast<float>(curve.apply(i / 32.0));
+  ImGui::PlotLines("##pressure", values, 33, 0, "pen -> brush pressure", 0.0f, 1.0f,
+                   ImVec2(kPanelWidth - 20, 70));
+}
+
+void tablet_panel(PanelContext& c) {
+  WindowState& s = c.state;
+  if (!ImGui::CollapsingHeader("Tablet")) return;
+  if (s.tablets.empty()) {
+    ImGui::TextWrapped(
+        "No pen tablet is being read: the mouse paints. (Tablets are found "
+        "when plugged in; see docs/hid.md for access rights.)");
+  }
+  for (const auto& tablet : s.tablets) {
+    ImGui::BulletText("%s  %.0f x %.0f mm  (%s)", tablet.name.c_str(), tablet.area.width_mm,
+                      tablet.area.height_mm, tablet.path.c_str());
+  }
+  int target = static_cast<int>(s.tablet.target);
+  const char* targets[] = {"whole screen", "this window", "whole canvas"};
+  ImGui::Combo("maps onto", &target, targets, 3);
+  s.tablet.target = static_cast<TabletTarget>(target);
+  ImGui::Checkbox("keep aspect ratio", &s.tablet.keep_aspect);
+  ImGui::Checkbox("Bezier pressure curve", &s.tablet.bezier);
+  if (s.tablet.bezier) {
+    ImGui::SliderFloat2("point 1", &s.tablet.bezier_points[0], 0.0f, 1.0f);
+    ImGui::SliderFloat2("point 2", &s.tablet.bezier_points[2], 0.0f, 1.0f);
+  } else {
+    ImGui::SliderFloat("gamma", &s.tablet.pressure_gamma, 0.2f, 5.0f, "%.2f",
+                       ImGuiSliderFlags_Logarithmic);
+  }
+  pressure_plot(s.tablet);
+  ImGui::Text("%llu tablet samples painted", static_cast<unsigned long long>(s.tablet_samples));
+  if (!s.tablet_error.empty()) ImGui::TextWrapped("%s", s.tablet_error.c_str());
+}
+
 void layers_panel(PanelContext& c) {
   WindowState& s = c.state;
   if (!ImGui::CollapsingHeader("Layers", ImGuiTreeNodeFlags_DefaultOpen)) return;
@@ -330,12 +369,13 @@ void status_bar(PanelContext& c) {
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus);
   const SimStats sim = c.worker.stats();
   ImGui::Text(
-      "frame %.1f ms | upload %.1f ms (%d tiles) | sim %.2f ms/event, %.0f ms/s busy, "
+      "frame %.1f ms | upload %.1f ms (%d tiles), shaded %lld px | sim %.2f ms/event, %.0f ms/s "
+      "busy, "
       "%zu queued | %dx%d @ %.0f dpi | zoom %.2f | cell %.0f,%.0f | %s%s",
-      s.frame_ms, s.upload_ms, s.tiles_uploaded, sim.last_event_ms, sim.busy_ms_per_s, sim.queued,
-      c.painting.width_cells, c.painting.height_cells, c.painting.dpi, s.view.pixels_per_cell,
-      s.cursor_cell[0], s.cursor_cell[1], sim.events_since_save > 0 ? "unsaved " : "",
-      s.message.c_str());
+      s.frame_ms, s.upload_ms, s.tiles_uploaded, s.pixels_shaded, sim.last_event_ms,
+      sim.busy_ms_per_s, sim.queued, c.painting.width_cells, c.painting.height_cells,
+      c.painting.dpi, s.view.pixels_per_cell, s.cursor_cell[0], s.cursor_cell[1],
+      sim.events_since_save > 0 ? "unsaved " : "", s.message.c_str());
   ImGui::End();
 }
 
@@ -352,7 +392,9 @@ void draw_panels(PanelContext& context) {
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                    ImGuiWindowFlags_NoSavedSettings);
   palette_panel(context);
+  context.board.draw(context.state, context.worker);
   brush_panel(context);
+  tablet_panel(context);
   light_panel(context);
   layers_panel(context);
   history_panel(context);

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "window/palette_board_panel.hpp"
 #include "window/sim_worker.hpp"
 #include "window/window_state.hpp"
 
@@ -37,6 +38,7 @@ struct PanelContext {
   const PaintingSnapshot& painting;
   const render::SpectralPalette& palette;  // for the light's nodes
   const FileActions& files;
+  PaletteBoardPanel& board;
 };
 
 void draw_panels(PanelContext& context);

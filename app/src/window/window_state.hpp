@@ -1,12 +1,14 @@
 #pragma once
 // What the painting window's panels show and change, shared by the frame loop
 // (paint_window.cpp) and the panels (panels.cpp).
+#include <impasto/input/hid_device.hpp>
 #include <impasto/paintcore/brush.hpp>
 #include <impasto/render/render_settings.hpp>
 #include <impasto/render_gl/canvas_view.hpp>
 #include <impasto/render_gl/gpu_view_options.hpp>
 
 #include <array>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -14,6 +16,7 @@
 #include <vector>
 
 #include "window/sim_worker.hpp"
+#include "window/tablet_input.hpp"
 
 namespace impasto::app::window {
 
@@ -42,6 +45,12 @@ struct WindowState {
   bool pressure_from_speed = false;
   float mouse_pressure = 0.6f;
 
+  // --- tablets (the mouse paints when none is in use) ---
+  TabletSettings tablet;
+  std::vector<input::hid::ConnectedTablet> tablets;  // refreshed by the frame loop
+  std::uint64_t tablet_samples = 0;                  // fed to the canvas this session
+  std::string tablet_error;                          // why the last sample could not be mapped
+
   // --- layers ---
   float dry_fraction = 1.0f;
   std::vector<bool> hidden_dry_layers;
@@ -66,6 +75,7 @@ struct WindowState {
   double frame_ms = 0.0;
   double upload_ms = 0.0;
   int tiles_uploaded = 0;
+  long long pixels_shaded = 0;  // by the last frame's K-M pass (the rest was cached)
   std::array<double, 2> cursor_cell{-1, -1};
   bool quit = false;
 };

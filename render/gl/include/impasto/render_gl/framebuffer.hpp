@@ -20,6 +20,7 @@ class Framebuffer {
   int width() const { return color_.width(); }
   int height() const { return color_.height(); }
   const Texture& color() const { return color_; }
+  GLuint id() const { return id_; }  // for glBlitFramebuffer
 
   // Row 0 first = the bottom row in GL's convention; callers that draw with y down in
   // their projection get image order. RGBA, 4 values a pixel.

@@ -1,0 +1,63 @@
+#pragma once
+// The shaded canvas as a window shows it, kept between frames. A frame re-shades only the
+// screen pixels that show something that changed — the tiles the simulation dirtied, grown
+// by the one-cell rim whose normals read their heights, and only where they are in view —
+// and copies the rest from the previous frame. What changes every pixel (the view, the
+// viewport size, the light, the look) re-shades the viewport once. The shading runs at
+// screen resolution, so a zoomed-out view of a large canvas costs its pixels, not its cells.
+#include <array>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "impasto/render_gl/canvas_renderer.hpp"
+#include "impasto/render_gl/canvas_view.hpp"
+#include "impasto/render_gl/framebuffer.hpp"
+
+namespace impasto::render_gl {
+
+// What one draw did.
+struct CachedDrawStats {
+  long long pixels_shaded = 0;  // pixels the K-M pass ran for
+  int regions = 0;              // scissored passes (0: nothing changed in view)
+  bool full = false;            // the whole viewport was re-shaded
+};
+
+// A screen rectangle in GL window pixels (origin bottom-left), [x0, x1) × [y0, y1).
+struct PixelRect {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  long long area() const { return static_cast<long long>(x1 - x0) * (y1 - y0); }
+  bool empty() const { return x1 <= x0 || y1 <= y0; }
+};
+
+// The pixels of a viewport that show any of tile `tile_index`'s cells or the one-cell rim
+// around them, clipped to the viewport (empty when out of view). Conservative by a pixel.
+PixelRect tile_screen_rect(int tile_index, int tiles_x, const CanvasView& view, int viewport_w,
+                           int viewport_h);
+
+class ShadedViewCache {
+ public:
+  // The tiles changed on the GPU (after CanvasRenderer::upload_tiles with the same list).
+  void invalidate_tiles(std::span<const int> tiles);
+  // Everything changed (a full upload, new settings, a new renderer).
+  void invalidate_all() { all_invalid_ = true; }
+
+  // Brings the cached image up to date for `view` on a viewport_w × viewport_h viewport and
+  // copies it into the framebuffer `target` (0: the window's). The shading uniforms are taken
+  // from `renderer` as they are now: a change of light direction, ambient, materials or
+  // view options re-shades everything.
+  CachedDrawStats draw(CanvasRenderer& renderer, const CanvasView& view, int viewport_w,
+                       int viewport_h, GLuint target);
+
+ private:
+  // Everything a pixel's colour depends on beside the canvas data.
+  std::array<double, 20> look_of(const CanvasRenderer& renderer, const CanvasView& view) const;
+
+  std::unique_ptr<Framebuffer> image_;
+  const CanvasRenderer* renderer_ = nullptr;
+  std::array<double, 20> look_{};
+  bool all_invalid_ = true;
+  std::vector<int> dirty_tiles_;
+};
+
+}  // namespace impasto::render_gl

@@ -1,0 +1,117 @@
+#include "impasto/render_gl/shaded_view_cache.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace impasto::render_gl {
+
+using paintcore::kTileSize;
+
+PixelRect tile_screen_rect(int tile_index, int tiles_x, const CanvasView& view, int viewport_w,
+                           int viewport_h) {
+  // The tile's cells and the rim of cells whose normals read its heights.
+  const double x0 = (tile_index % tiles_x) * kTileSize - 1.0;
+  const double y0 = (tile_index / tiles_x) * kTileSize - 1.0;
+  const double x1 = x0 + kTileSize + 2.0;
+  const double y1 = y0 + kTileSize + 2.0;
+  double lo_x = std::numeric_limits<double>::max(), lo_y = lo_x;
+  double hi_x = std::numeric_limits<double>::lowest(), hi_y = hi_x;
+  for (const auto& [cx, cy] : {std::pair{x0, y0}, {x1, y0}, {x0, y1}, {x1, y1}}) {
+    const auto window = view.cell_to_window(cx, cy, viewport_w, viewport_h);
+    const double gl_y = viewport_h - window[1];  // GL rows count up from the bottom
+    lo_x = std::min(lo_x, window[0]);
+    hi_x = std::max(hi_x, window[0]);
+    lo_y = std::min(lo_y, gl_y);
+    hi_y = std::max(hi_y, gl_y);
+  }
+  // A pixel is shaded at its centre: widen by one so rounding never drops an edge pixel.
+  const auto clamp_to = [](double v, int limit) {
+    return static_cast<int>(std::clamp(v, 0.0, static_cast<double>(limit)));
+  };
+  return {clamp_to(std::floor(lo_x) - 1, viewport_w), clamp_to(std::floor(lo_y) - 1, viewport_h),
+          clamp_to(std::ceil(hi_x) + 1, viewport_w), clamp_to(std::ceil(hi_y) + 1, viewport_h)};
+}
+
+void ShadedViewCache::invalidate_tiles(std::span<const int> tiles) {
+  dirty_tiles_.insert(dirty_tiles_.end(), tiles.begin(), tiles.end());
+}
+
+std::array<double, 20> ShadedViewCache::look_of(const CanvasRenderer& renderer,
+                                                const CanvasView& view) const {
+  const render::RenderSettings& s = renderer.settings();
+  const GpuViewOptions& o = renderer.view_options();
+  return {s.light_azimuth_deg,      s.light_elevation_deg,    s.ambient,
+          s.dry_material.specular,  s.dry_material.shininess, s.wet_material.specular,
+          s.wet_material.shininess, s.wet_gloss_mm,           s.saunderson ? 1.0 : 0.0,
+          s.saunderson_k1,          s.saunderson_k2,          o.light_intensity,
+          o.background_rgb[0],      o.background_rgb[1],      o.background_rgb[2],
+          view.center_x_cells,      view.center_y_cells,      view.pixels_per_cell,
+          view.rotation_rad,        renderer.cell_mm()};
+}
+
+CachedDrawStats ShadedViewCache::draw(CanvasRenderer& renderer, const CanvasView& view,
+                                      int viewport_w, int viewport_h, GLuint target) {
+  CachedDrawStats stats;
+  if (!image_ || image_->width() != viewport_w || image_->height() != viewport_h) {
+    image_ = std::make_unique<Framebuffer>(viewport_w, viewport_h, TexelFormat::kRGBA8);
+    all_invalid_ = true;
+  }
+  const auto look = look_of(renderer, view);
+  if (&renderer != renderer_ || look != look_) all_invalid_ = true;
+  renderer_ = &renderer;
+  look_ = look;
+
+  // The regions to re-shade: the whole viewport, or the changed tiles in view.
+  std::vector<PixelRect> regions;
+  if (all_invalid_) {
+    regions.push_back({0, 0, viewport_w, viewport_h});
+    stats.full = true;
+  } else {
+    std::sort(dirty_tiles_.begin(), dirty_tiles_.end());
+    dirty_tiles_.erase(std::unique(dirty_tiles_.begin(), dirty_tiles_.end()), dirty_tiles_.end());
+    const int tiles_x = (renderer.width_cells() + kTileSize - 1) / kTileSize;
+    for (int tile : dirty_tiles_) {
+      const PixelRect rect = tile_screen_rect(tile, tiles_x, view, viewport_w, viewport_h);
+      if (!rect.empty()) regions.push_back(rect);
+    }
+    // Many small passes cost more than one pass over their bounding box, and overlapping
+    // ones shade pixels twice: one pass over the box when it is no larger than their sum.
+    constexpr std::size_t kMaxPasses = 32;
+    if (regions.size() > 1) {
+      PixelRect box = regions.front();
+      long long sum = 0;
+      for (const PixelRect& r : regions) {
+        box = {std::min(box.x0, r.x0), std::min(box.y0, r.y0), std::max(box.x1, r.x1),
+               std::max(box.y1, r.y1)};
+        sum += r.area();
+      }
+      if (regions.size() > kMaxPasses || box.area() <= sum) regions.assign(1, box);
+    }
+  }
+  all_invalid_ = false;
+  dirty_tiles_.clear();
+
+  if (!regions.empty()) {
+    image_->bind();
+    glEnable(GL_SCISSOR_TEST);
+    for (const PixelRect& r : regions) {
+      glScissor(r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0);
+      renderer.draw(view, viewport_w, viewport_h);
+      stats.pixels_shaded += r.area();
+    }
+    glDisable(GL_SCISSOR_TEST);
+    stats.regions = static_cast<int>(regions.size());
+  }
+  // The cached image to the target: a copy, no shading.
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, image_->id());
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target);
+  glBlitFramebuffer(0, 0, viewport_w, viewport_h, 0, 0, viewport_w, viewport_h, GL_COLOR_BUFFER_BIT,
+                    GL_NEAREST);
+  glBindFramebuffer(GL_FRAMEBUFFER, target);
+  glViewport(0, 0, viewport_w, viewport_h);
+  check_gl_error("cached canvas view");
+  return stats;
+}
+
+}  // namespace impasto::render_gl
