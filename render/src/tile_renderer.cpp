@@ -11,8 +11,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "impasto/render/dry_stack.hpp"
 #include "impasto/render/crack_shading.hpp"
+#include "impasto/render/dry_stack.hpp"
 #include "impasto/render/flake_shading.hpp"
 #include "impasto/render/paint_layer.hpp"
 #include "impasto/render/shading.hpp"
