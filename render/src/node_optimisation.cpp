@@ -129,7 +129,7 @@ std::vector<TrainingPaint> training_paints(const std::vector<data::Pigment>& pig
   const int count = static_cast<int>(pigments.size());
   const int white = index_of(pigments, "Titanium White");
   for (int p = 0; p < count; ++p) {
-    paints.push_back({{{p, 1.0f}}, kOpaque, false});
+    // No opaque layer of one pigment: it is R∞ at any thickness, that is a bench masstone.
     for (float glaze : {kThinGlaze, kGlaze}) {
       paints.push_back({{{p, 1.0f}}, glaze, false});
       paints.push_back({{{p, 1.0f}}, glaze, true});

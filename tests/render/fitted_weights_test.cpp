@@ -26,8 +26,8 @@ std::vector<data::Pigment> four_pigments() {
 
 TEST(TrainingPaints, CoverMasstonesGlazesTintsAndPairs) {
   const auto paints = training_paints(four_pigments());
-  // Per pigment: opaque + 2 glazes × 2 grounds; 3 non-white pigments × 2 tints; 6 pairs × 3.
-  EXPECT_EQ(paints.size(), 4u * 5u + 3u * 2u + 6u * 3u);
+  // Per pigment: 2 glazes × 2 grounds; 3 non-white pigments × 2 tints; 6 pairs × 3.
+  EXPECT_EQ(paints.size(), 4u * 4u + 3u * 2u + 6u * 3u);
   for (const auto& paint : paints) {
     float total = 0.0f;
     for (const auto& [pigment, share] : paint.mix) total += share;
@@ -37,12 +37,15 @@ TEST(TrainingPaints, CoverMasstonesGlazesTintsAndPairs) {
 }
 
 TEST(TrainingPaints, AreNotTheBenchSamples) {
-  // The bench's mixes are 50/50 and its tints 1:9: held out from training.
+  // The bench's mixes are 50/50, its tints 1:9, its glazes 0.1 units and its masstones opaque
+  // single pigments: all held out from training.
   for (const auto& paint : training_paints(four_pigments())) {
     for (const auto& [pigment, share] : paint.mix) {
       EXPECT_NE(share, 0.5f);
       EXPECT_NE(share, 0.1f);
     }
+    EXPECT_NE(paint.optical_thickness, 0.1f);
+    EXPECT_FALSE(paint.mix.size() == 1 && paint.optical_thickness > 10.0f);
   }
 }
 
