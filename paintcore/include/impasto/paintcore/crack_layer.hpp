@@ -62,8 +62,9 @@ class CrackLayer {
 // Throws std::runtime_error naming the first bad record ("cracks: tile 3 cell 120: field
 // 'depth_mm' ...") unless every crack lies inside a canvas of width x height cells, has a
 // finite depth in (0, 1000] mm and half-width in (0, 1000] mm, a known shape code and exposes
-// the ground or one of the dry_layers dry layers. A record without a crack must be all zero
-// apart from its exposed layer.
+// the ground or one of the dry_layers dry layers (a file may name any layer: an undo of a
+// drying can leave a crack on a layer that is gone). A record without a crack must be all
+// zero apart from its exposed layer.
 void validate_cracks(const CrackLayer& cracks, int width_cells, int height_cells,
                      std::size_t dry_layers);
 
