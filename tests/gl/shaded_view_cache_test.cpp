@@ -102,9 +102,64 @@ TEST_P(CachedView, PartialReshadesMatchAWholeRedraw) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Views, CachedView,
-                         ::testing::Values(CanvasView{120.0, 90.0, 1.0, 0.0},    // 1:1
-                                           CanvasView{128.0, 96.0, 0.7, 0.3},    // out, turned
-                                           CanvasView{60.0, 40.0, 3.5, -1.1}));  // in, turned
+                         ::testing::Values(CanvasView{120.0, 90.0, 1.0, 0.0},  // 1:1
+                                           CanvasView{128.0, 96.0, 0.7, 0.3},  // out, turned
+                                           CanvasView{60.0, 40.0, 3.5, -1.1}));
+
+// Pans by whole pixels move the cached image and shade only what they uncover.
+TEST(CachedViewPan, WholePixelPansShadeOnlyTheUncoveredStrips) {
+  auto context = create_headless_context();
+  const int w = 240, h = 180;
+  paintcore::Painting painting({256, 192, 150.0, 3}, 1);
+  painting.set_brush({"round", 4.0, 0.5});
+  painting.load_brush({{"Pyrrole Red", 1.0}, {"Titanium White", 1.0}}, 80.0);
+  stroke(painting, 14.0, 4.0, 30.0);
+  render::RenderSettings settings;
+  settings.wavelengths = 4;
+  CanvasRenderer renderer(256, 192, settings,
+                          render::SpectralPalette(settings, painting.pigment_slots()));
+  renderer.upload_all(painting.canvas());
+  Framebuffer window(w, h, TexelFormat::kRGBA8);
+  ShadedViewCache cache;
+
+  // One pixel a cell: the shifted image is exactly what a redraw gives.
+  CanvasView view{120.0, 90.0, 1.0, 0.0};
+  cache.draw(renderer, view, w, h, window.id());
+  view.center_x_cells += 7.0;
+  view.center_y_cells -= 5.0;
+  const CachedDrawStats pan = cache.draw(renderer, view, w, h, window.id());
+  EXPECT_TRUE(pan.shifted);
+  EXPECT_FALSE(pan.full);
+  EXPECT_EQ(pan.pixels_shaded, 7LL * h + 5LL * w);
+  EXPECT_EQ(window.read_rgba8(), full_redraw(renderer, view, w, h));
+
+  // Zoomed out and turned, panned as the mouse drags (12 px right, 9 px up): the same picture
+  // but for cells whose edge falls within float rounding of a pixel centre.
+  view = {128.0, 96.0, 0.7, 0.3};
+  cache.draw(renderer, view, w, h, window.id());
+  const auto from = view.window_to_cell(100.0, 100.0, w, h);
+  const auto to = view.window_to_cell(112.0, 91.0, w, h);
+  view.center_x_cells -= to[0] - from[0];
+  view.center_y_cells -= to[1] - from[1];
+  const CachedDrawStats drag = cache.draw(renderer, view, w, h, window.id());
+  EXPECT_TRUE(drag.shifted);
+  EXPECT_EQ(drag.pixels_shaded, 12LL * h + 9LL * w);
+  const auto cached = window.read_rgba8();
+  const auto redrawn = full_redraw(renderer, view, w, h);
+  ASSERT_EQ(cached.size(), redrawn.size());
+  int differing = 0;
+  for (std::size_t i = 0; i < cached.size(); i += 4) {
+    differing += cached[i] != redrawn[i] || cached[i + 1] != redrawn[i + 1] ||
+                 cached[i + 2] != redrawn[i + 2];
+  }
+  EXPECT_LE(differing, w * h / 200) << "pixels that differ from a whole redraw";
+
+  // A pan by a fraction of a pixel moves every cell edge: everything again.
+  view.center_x_cells += 0.3;
+  EXPECT_TRUE(cache.draw(renderer, view, w, h, window.id()).full);
+  EXPECT_EQ(window.read_rgba8(), full_redraw(renderer, view, w, h));
+}
+// in, turned
 
 }  // namespace
 }  // namespace impasto::render_gl

@@ -37,7 +37,7 @@ void ShadedViewCache::invalidate_tiles(std::span<const int> tiles) {
   dirty_tiles_.insert(dirty_tiles_.end(), tiles.begin(), tiles.end());
 }
 
-std::array<double, 20> ShadedViewCache::look_of(const CanvasRenderer& renderer,
+std::array<double, 18> ShadedViewCache::look_of(const CanvasRenderer& renderer,
                                                 const CanvasView& view) const {
   const render::RenderSettings& s = renderer.settings();
   const GpuViewOptions& o = renderer.view_options();
@@ -46,8 +46,27 @@ std::array<double, 20> ShadedViewCache::look_of(const CanvasRenderer& renderer,
           s.wet_material.shininess, s.wet_gloss_mm,           s.saunderson ? 1.0 : 0.0,
           s.saunderson_k1,          s.saunderson_k2,          o.light_intensity,
           o.background_rgb[0],      o.background_rgb[1],      o.background_rgb[2],
-          view.center_x_cells,      view.center_y_cells,      view.pixels_per_cell,
-          view.rotation_rad,        renderer.cell_mm()};
+          view.pixels_per_cell,     view.rotation_rad,        renderer.cell_mm()};
+}
+
+std::vector<PixelRect> ShadedViewCache::shift_image(int dx, int dy) {
+  const int w = image_->width(), h = image_->height();
+  if (!spare_ || spare_->width() != w || spare_->height() != h) {
+    spare_ = std::make_unique<Framebuffer>(w, h, TexelFormat::kRGBA8);
+  }
+  const int x0 = std::max(0, -dx), y0 = std::max(0, -dy);
+  const int x1 = w - std::max(0, dx), y1 = h - std::max(0, dy);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, image_->id());
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, spare_->id());
+  glBlitFramebuffer(x0, y0, x1, y1, x0 + dx, y0 + dy, x1 + dx, y1 + dy, GL_COLOR_BUFFER_BIT,
+                    GL_NEAREST);
+  std::swap(image_, spare_);
+  std::vector<PixelRect> uncovered;
+  if (dx > 0) uncovered.push_back({0, 0, dx, h});
+  if (dx < 0) uncovered.push_back({w + dx, 0, w, h});
+  if (dy > 0) uncovered.push_back({0, 0, w, dy});
+  if (dy < 0) uncovered.push_back({0, h + dy, w, h});
+  return uncovered;
 }
 
 CachedDrawStats ShadedViewCache::draw(CanvasRenderer& renderer, const CanvasView& view,
@@ -62,10 +81,29 @@ CachedDrawStats ShadedViewCache::draw(CanvasRenderer& renderer, const CanvasView
   renderer_ = &renderer;
   look_ = look;
 
-  // The regions to re-shade: the whole viewport, or the changed tiles in view.
+  // A pan: where the view's centre moved by whole pixels, move the image instead.
   std::vector<PixelRect> regions;
+  if (!all_invalid_ && (view.center_x_cells != view_.center_x_cells ||
+                        view.center_y_cells != view_.center_y_cells)) {
+    const auto before = view_.cell_to_window(0.0, 0.0, viewport_w, viewport_h);
+    const auto after = view.cell_to_window(0.0, 0.0, viewport_w, viewport_h);
+    const double dx = after[0] - before[0], dy_down = after[1] - before[1];
+    const double rx = std::round(dx), ry = std::round(dy_down);
+    constexpr double kWholePixel = 1e-3;
+    if (std::abs(dx - rx) < kWholePixel && std::abs(dy_down - ry) < kWholePixel &&
+        std::abs(rx) < viewport_w && std::abs(ry) < viewport_h) {
+      regions = shift_image(static_cast<int>(rx), -static_cast<int>(ry));  // GL rows go up
+      stats.shifted = true;
+    } else {
+      all_invalid_ = true;
+    }
+  }
+  view_ = view;
+
+  // The regions to re-shade: the whole viewport, or the uncovered strips and the changed
+  // tiles in view.
   if (all_invalid_) {
-    regions.push_back({0, 0, viewport_w, viewport_h});
+    regions.assign(1, {0, 0, viewport_w, viewport_h});
     stats.full = true;
   } else {
     std::sort(dirty_tiles_.begin(), dirty_tiles_.end());

@@ -2,8 +2,10 @@
 // The shaded canvas as a window shows it, kept between frames. A frame re-shades only the
 // screen pixels that show something that changed — the tiles the simulation dirtied, grown
 // by the one-cell rim whose normals read their heights, and only where they are in view —
-// and copies the rest from the previous frame. What changes every pixel (the view, the
-// viewport size, the light, the look) re-shades the viewport once. The shading runs at
+// and copies the rest from the previous frame. A pan by whole pixels moves the cached image
+// and shades only the strips it uncovers. What changes every pixel (zoom, rotation, a pan
+// by a fraction of a pixel, the viewport size, the light, the look) re-shades the viewport
+// once. The shading runs at
 // screen resolution, so a zoomed-out view of a large canvas costs its pixels, not its cells.
 #include <array>
 #include <memory>
@@ -21,6 +23,7 @@ struct CachedDrawStats {
   long long pixels_shaded = 0;  // pixels the K-M pass ran for
   int regions = 0;              // scissored passes (0: nothing changed in view)
   bool full = false;            // the whole viewport was re-shaded
+  bool shifted = false;         // the cached image was moved (a pan by whole pixels)
 };
 
 // A screen rectangle in GL window pixels (origin bottom-left), [x0, x1) × [y0, y1).
@@ -50,12 +53,16 @@ class ShadedViewCache {
                        int viewport_h, GLuint target);
 
  private:
-  // Everything a pixel's colour depends on beside the canvas data.
-  std::array<double, 20> look_of(const CanvasRenderer& renderer, const CanvasView& view) const;
+  // Everything a pixel's colour depends on beside the canvas data and the view's centre.
+  std::array<double, 18> look_of(const CanvasRenderer& renderer, const CanvasView& view) const;
+  // Moves the cached image by (dx, dy) GL pixels; returns the strips left to shade.
+  std::vector<PixelRect> shift_image(int dx, int dy);
 
   std::unique_ptr<Framebuffer> image_;
+  std::unique_ptr<Framebuffer> spare_;  // the target of a shift, then swapped with image_
   const CanvasRenderer* renderer_ = nullptr;
-  std::array<double, 20> look_{};
+  std::array<double, 18> look_{};
+  CanvasView view_;
   bool all_invalid_ = true;
   std::vector<int> dirty_tiles_;
 };
