@@ -138,6 +138,16 @@ TEST(PaletteBoard, SavedBesideThePaintingAndLoadedBackIdentical) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(PaletteBoard, AReplacedBoardIsCleanAndWorks) {
+  PaletteBoard board = board_with_two_blobs();
+  mix_strokes(board);
+  board = PaletteBoard(60.0, 40.0, 100.0);  // "Clean board", or another painting's board
+  EXPECT_EQ(board.painting().canvas_totals().volume, 0.0);
+  board.set_brush({"round", 6.0, 0.5});
+  board.lay_out({{kBlue, 1.0}}, 20.0, 30.0, 20.0);
+  EXPECT_GT(board.painting().canvas_totals().volume, 0.1);
+}
+
 TEST(PaletteBoard, BadSizesAreClearErrors) {
   EXPECT_THROW(PaletteBoard(std::nan(""), 40.0, 100.0), std::runtime_error);
   EXPECT_THROW(PaletteBoard(60.0, -1.0, 100.0), std::runtime_error);

@@ -34,7 +34,14 @@ PaletteBoard PaletteBoard::load(const std::filesystem::path& file) {
 }
 
 PaletteBoard::PaletteBoard(PaletteBoard&&) noexcept = default;
-PaletteBoard& PaletteBoard::operator=(PaletteBoard&&) noexcept = default;
+PaletteBoard& PaletteBoard::operator=(PaletteBoard&& other) noexcept {
+  // The player refers to the painting and options: it goes first, and comes last.
+  player_.reset();
+  painting_ = std::move(other.painting_);
+  options_ = std::move(other.options_);
+  player_ = std::move(other.player_);
+  return *this;
+}
 PaletteBoard::~PaletteBoard() {
   if (player_) player_->finish();
 }
