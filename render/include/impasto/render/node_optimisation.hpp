@@ -45,6 +45,15 @@ struct RuleError {
   double tail_de00 = 0.0;  // mean of the worst 1 %
 };
 
+// What a readout fit and the node search minimise: mean + 0.2 × the worst 1 %. The goal is
+// mean < 0.3 and max < 1.5, so the worst paints weigh a fifth of the mean; the worst 1 %
+// stands in for the maximum as it changes more smoothly when a node moves.
+double rule_objective(const RuleError& error);
+
+// Reweighting passes of a final readout fit, and of each trial fit of the node search.
+inline constexpr int kReadoutPasses = 5;
+inline constexpr int kSearchReadoutPasses = 3;
+
 // The training paints of a palette rendered at every grid wavelength, with their reference
 // XYZ and CIELAB under one light: everything a rule is fitted and judged against.
 class PaletteTrainingSet {
