@@ -1,5 +1,6 @@
 // impasto render: a painting file to a PNG or EXR image, spectrally rendered under a light.
 #include <impasto/paintcore/painting.hpp>
+#include <impasto/render/crack_close_up.hpp>
 #include <impasto/render/render_painting.hpp>
 
 #include <cmath>
@@ -40,7 +41,9 @@ struct RenderArgs {
   bool no_flakes = false;
   std::string flake_depth = "masking";
   bool no_cracks = false;
-  bool gpu = false;  // through the GLSL shaders, headless
+  bool gpu = false;    // through the GLSL shaders, headless
+  int zoom = 0;        // > 0: the close-up of --region at this many pixels per cell
+  std::string region;  // "X,Y,W,H" in cells
 };
 
 int parse_wavelengths(const std::string& text) {
@@ -94,6 +97,17 @@ void run(const RenderArgs& args) {
   settings.cracks = !args.no_cracks;
   validate(settings);
   const paintcore::Painting painting = paintcore::Painting::load(args.painting, args.threads);
+  if (args.zoom > 0) {
+    // The close-up: the region magnified, its cracks shaded point by point.
+    const CellRegion region =
+        args.region.empty()
+            ? CellRegion{0, 0, painting.canvas().width_cells(), painting.canvas().height_cells()}
+            : parse_cell_region(args.region);
+    render_painting_close_up_to_file(painting, settings, region, args.zoom, args.out);
+    std::cout << "wrote " << args.out << " (" << region.w * args.zoom << "x" << region.h * args.zoom
+              << ", close-up)\n";
+    return;
+  }
   if (args.gpu) {
 #ifdef IMPASTO_RENDER_GPU
     render_gl::render_painting_gpu_to_file(painting, settings, args.out);
@@ -153,6 +167,10 @@ const CommandRegistrar registrar("render", [](CLI::App& root) {
       ->capture_default_str();
   cmd->add_flag("--gpu", args->gpu,
                 "Render through the OpenGL shaders, headless (EGL or OSMesa); 1..16 nodes");
+  cmd->add_option("--zoom", args->zoom,
+                  "Close-up: pixels per cell, cracks shaded inside (CPU; with --region)")
+      ->check(CLI::Range(1, 256));
+  cmd->add_option("--region", args->region, "Close-up region X,Y,W,H in cells (default: all)");
   cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)")
       ->check(CLI::Range(0, 1024));
   cmd->callback([args] { run(*args); });

@@ -246,9 +246,14 @@ Image render_crack_close_up(const paintcore::Canvas& canvas, const Image& surfac
   for (int cy = region.y; cy < region.y + region.h; ++cy) {
     for (int cx = region.x; cx < region.x + region.w; ++cx) {
       const paintcore::CrackRecord record = record_at(cx, cy);
-      const bool along_x =
-          record_at(cx - 1, cy).has_crack() || record_at(cx + 1, cy).has_crack() ||
-          !(record_at(cx, cy - 1).has_crack() || record_at(cx, cy + 1).has_crack());
+      // A groove runs the way its cracked neighbours run the longest (a crack drawn across
+      // several cells of width still runs along its length).
+      auto run = [&](int dx, int dy) {
+        int n = 0;
+        for (int k = -2; k <= 2; ++k) n += record_at(cx + k * dx, cy + k * dy).has_crack() ? 1 : 0;
+        return n;
+      };
+      const bool along_x = run(1, 0) >= run(0, 1);
       crack_close_up_cell(record, canvas.cell_mm(), along_x, P, {surface.pixel(cx, cy), 3},
                           {walls.pixel(cx, cy), 3}, light, view, cell);
       for (int py = 0; py < P; ++py) {

@@ -7,11 +7,15 @@
 // outside any opening keep their cell's colour. Reflectances are relative to the canvas's
 // irradiance, so a flat white cell reads 1 and the far view's blend is the cell's mean.
 #include <array>
+#include <filesystem>
 #include <span>
+#include <string_view>
 
 #include "impasto/paintcore/canvas.hpp"
 #include "impasto/paintcore/crack_layer.hpp"
+#include "impasto/paintcore/painting.hpp"
 #include "impasto/render/image.hpp"
+#include "impasto/render/render_settings.hpp"
 
 namespace impasto::render {
 
@@ -50,11 +54,27 @@ struct CellRegion {
 
 // The region magnified: an image of w*P x h*P pixels. `surface` holds the cells' colours
 // (one pixel per cell, the canvas's size) and `walls` the colours of what their cracks
-// expose; grooves follow their cracked neighbours (along x unless the cells above or below
-// are the ones cracked). Throws std::runtime_error naming the field for a region outside the
-// canvas, P outside 1..256 or images of another size.
+// expose; grooves run the way their cracked neighbours do (the longer run of cracked cells
+// within two cells along x or along y; x on a tie). Throws std::runtime_error naming the field for
+// a region outside the canvas, P outside 1..256 or images of another size.
 Image render_crack_close_up(const paintcore::Canvas& canvas, const Image& surface,
                             const Image& walls, const CellRegion& region, int pixels_per_cell,
                             const CloseUpLight& light, const CloseUpView& view);
+
+// A painting's region magnified, lit as `settings` lights it (light direction and size, the
+// ambient share as the sky), seen from straight above: the cells' colours are the painting
+// rendered without its cracks (linear sRGB), the walls those of the paint around them or,
+// for cracks through the film, of the bare canvas. Linear sRGB.
+Image render_painting_close_up(const paintcore::Painting& painting, const RenderSettings& settings,
+                               const CellRegion& region, int pixels_per_cell);
+
+// The same written by extension: .png (the sRGB curve) or .exr (linear). Throws
+// std::runtime_error naming the file for another extension.
+void render_painting_close_up_to_file(const paintcore::Painting& painting,
+                                      const RenderSettings& settings, const CellRegion& region,
+                                      int pixels_per_cell, const std::filesystem::path& path);
+
+// "X,Y,W,H" in cells; throws std::runtime_error naming the text when malformed.
+CellRegion parse_cell_region(std::string_view text);
 
 }  // namespace impasto::render

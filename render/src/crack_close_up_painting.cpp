@@ -1,0 +1,91 @@
+// The close-up of a whole painting: its cells' colours from the ordinary renderer, then the
+// cracks magnified over them (crack_close_up.cpp).
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "impasto/render/crack_close_up.hpp"
+#include "impasto/render/render_painting.hpp"
+
+namespace impasto::render {
+namespace {
+
+// Linear to the sRGB curve (IEC 61966-2-1).
+float srgb_encode(float linear) {
+  const float x = std::clamp(linear, 0.0f, 1.0f);
+  return x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f;
+}
+
+}  // namespace
+
+Image render_painting_close_up(const paintcore::Painting& painting, const RenderSettings& settings,
+                               const CellRegion& region, int pixels_per_cell) {
+  RenderSettings flat = settings;
+  flat.cracks = false;  // the cells as if uncracked: the close-up draws the cracks
+  flat.display = DisplayEncoding::linear_srgb;
+  const Image surface = render_painting(painting, flat);
+  // What cracks through the film show: the bare canvas (the same ground and weave).
+  const Image ground = render_painting(paintcore::Painting(painting.canvas().spec()), flat);
+  Image walls = surface;
+  const paintcore::Canvas& canvas = painting.canvas();
+  for (int y = 0; y < canvas.height_cells(); ++y) {
+    for (int x = 0; x < canvas.width_cells(); ++x) {
+      const int tile = (y / paintcore::kTileSize) * canvas.tiles_x() + x / paintcore::kTileSize;
+      const paintcore::CrackTile* t = canvas.cracks().tile(tile);
+      if (t == nullptr) continue;
+      const auto& r = t->cells[static_cast<std::size_t>(
+          (y % paintcore::kTileSize) * paintcore::kTileSize + x % paintcore::kTileSize)];
+      if (r.has_crack() && r.exposed_layer == paintcore::kCrackExposesGround) {
+        std::copy_n(ground.pixel(x, y), 3, walls.pixel(x, y));
+      }
+    }
+  }
+  const double az = settings.light_azimuth_deg * std::numbers::pi / 180.0;
+  const double el = settings.light_elevation_deg * std::numbers::pi / 180.0;
+  CloseUpLight light;
+  light.toward_light = {std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el)};
+  light.angular_radius_rad = 0.5 * settings.light_size_deg * std::numbers::pi / 180.0;
+  light.sky_fraction = std::clamp(settings.ambient, 0.0, 1.0);
+  return render_crack_close_up(canvas, surface, walls, region, pixels_per_cell, light, {});
+}
+
+void render_painting_close_up_to_file(const paintcore::Painting& painting,
+                                      const RenderSettings& settings, const CellRegion& region,
+                                      int pixels_per_cell, const std::filesystem::path& path) {
+  std::string extension = path.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (extension != ".png" && extension != ".exr") {
+    throw std::runtime_error(path.string() + ": unknown image type '" + extension +
+                             "' (expected .png or .exr)");
+  }
+  Image image = render_painting_close_up(painting, settings, region, pixels_per_cell);
+  if (extension == ".exr") {
+    write_exr(path, image);
+    return;
+  }
+  for (float& v : image.rgb) v = srgb_encode(v);
+  write_png(path, image);
+}
+
+CellRegion parse_cell_region(std::string_view text) {
+  int v[4] = {0, 0, 0, 0};
+  const char* p = text.data();
+  const char* end = text.data() + text.size();
+  for (int i = 0; i < 4; ++i) {
+    const auto [next, ec] = std::from_chars(p, end, v[i]);
+    const bool last = i == 3;
+    if (ec != std::errc{} || (last ? next != end : (next == end || *next != ','))) {
+      throw std::runtime_error("--region " + std::string(text) +
+                               ": expected X,Y,W,H in cells, e.g. 10,20,8,6");
+    }
+    p = last ? next : next + 1;
+  }
+  return {v[0], v[1], v[2], v[3]};
+}
+
+}  // namespace impasto::render
