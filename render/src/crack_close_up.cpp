@@ -103,30 +103,6 @@ struct Profile {
   }
 };
 
-// Directions over the light's disc: a Vogel spiral (deterministic, even in area).
-std::vector<Vec3d> light_samples(const CloseUpLight& light, bool swap_xy) {
-  const Vec3d c = to_cavity(light.toward_light, swap_xy);
-  // Two unit vectors across c.
-  const Vec3d a = std::abs(c[2]) < 0.9 ? Vec3d{0.0, 0.0, 1.0} : Vec3d{1.0, 0.0, 0.0};
-  Vec3d u{a[1] * c[2] - a[2] * c[1], a[2] * c[0] - a[0] * c[2], a[0] * c[1] - a[1] * c[0]};
-  const double ul = std::sqrt(dot(u, u));
-  for (double& x : u) x /= ul;
-  const Vec3d v{c[1] * u[2] - c[2] * u[1], c[2] * u[0] - c[0] * u[2], c[0] * u[1] - c[1] * u[0]};
-  const int n = light.shadow_rays;
-  const double golden = std::numbers::pi * (3.0 - std::sqrt(5.0));
-  std::vector<Vec3d> out(static_cast<std::size_t>(n));
-  for (int k = 0; k < n; ++k) {
-    const double radius = light.angular_radius_rad * std::sqrt((k + 0.5) / n);
-    const double phi = golden * k;
-    const double x = std::tan(radius) * std::cos(phi), y = std::tan(radius) * std::sin(phi);
-    Vec3d s{c[0] + x * u[0] + y * v[0], c[1] + x * u[1] + y * v[1], c[2] + x * u[2] + y * v[2]};
-    const double len = std::sqrt(dot(s, s));
-    for (double& e : s) e /= len;
-    out[static_cast<std::size_t>(k)] = s;
-  }
-  return out;
-}
-
 void check_unit(const CanvasVec& v, const char* field) {
   const double len2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
   if (!std::isfinite(len2) || std::abs(len2 - 1.0) > 1e-6) {
@@ -135,6 +111,28 @@ void check_unit(const CanvasVec& v, const char* field) {
 }
 
 }  // namespace
+
+std::vector<CanvasVec> close_up_light_directions(const CloseUpLight& light) {
+  const Vec3d c{light.toward_light[0], light.toward_light[1], light.toward_light[2]};
+  // Two unit vectors across c.
+  const Vec3d a = std::abs(c[2]) < 0.9 ? Vec3d{0.0, 0.0, 1.0} : Vec3d{1.0, 0.0, 0.0};
+  Vec3d u{a[1] * c[2] - a[2] * c[1], a[2] * c[0] - a[0] * c[2], a[0] * c[1] - a[1] * c[0]};
+  const double ul = std::sqrt(dot(u, u));
+  for (double& x : u) x /= ul;
+  const Vec3d v{c[1] * u[2] - c[2] * u[1], c[2] * u[0] - c[0] * u[2], c[0] * u[1] - c[1] * u[0]};
+  const int n = light.shadow_rays;
+  const double golden = std::numbers::pi * (3.0 - std::sqrt(5.0));
+  std::vector<CanvasVec> out(static_cast<std::size_t>(n));
+  for (int k = 0; k < n; ++k) {
+    const double radius = light.angular_radius_rad * std::sqrt((k + 0.5) / n);
+    const double phi = golden * k;
+    const double x = std::tan(radius) * std::cos(phi), y = std::tan(radius) * std::sin(phi);
+    Vec3d s{c[0] + x * u[0] + y * v[0], c[1] + x * u[1] + y * v[1], c[2] + x * u[2] + y * v[2]};
+    const double len = std::sqrt(dot(s, s));
+    out[static_cast<std::size_t>(k)] = {s[0] / len, s[1] / len, s[2] / len};
+  }
+  return out;
+}
 
 void validate(const CloseUpLight& light, const CloseUpView& view) {
   check_unit(light.toward_light, "light.toward_light");
@@ -176,7 +174,8 @@ void crack_close_up_cell(const paintcore::CrackRecord& record, double cell_mm, b
   const bool swap_xy = cracks::is_groove(shape) && groove_along_x;
   const Vec3d eye = to_cavity(view.toward_eye, swap_xy);
   const Vec3d down{-eye[0], -eye[1], -eye[2]};
-  const std::vector<Vec3d> suns = light_samples(light, swap_xy);
+  std::vector<Vec3d> suns;
+  for (const CanvasVec& s : close_up_light_directions(light)) suns.push_back(to_cavity(s, swap_xy));
 
   // Irradiances as shares of the canvas's: E_sky + E_sun cos(z) = 1 when the light is up.
   const double sun_z = light.toward_light[2];

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <span>
 #include <string_view>
+#include <vector>
 
 #include "impasto/paintcore/canvas.hpp"
 #include "impasto/paintcore/crack_layer.hpp"
@@ -32,6 +33,10 @@ struct CloseUpLight {
 struct CloseUpView {
   CanvasVec toward_eye{0.0, 0.0, 1.0};  // orthographic; z > 0
 };
+
+// The light's shadow_rays directions over its disc (a Vogel spiral, even in solid angle),
+// canvas frame; the close-up's soft shadows average over them.
+std::vector<CanvasVec> close_up_light_directions(const CloseUpLight& light);
 
 // Throws std::invalid_argument naming the field for a non-unit or backward direction, a
 // sky fraction outside [0, 1], a negative radius or fewer than one shadow ray.
