@@ -98,6 +98,7 @@ void run(const RenderArgs& args) {
   validate(settings);
   const paintcore::Painting painting = paintcore::Painting::load(args.painting, args.threads);
   if (args.zoom > 0) {
+    if (args.gpu) throw std::runtime_error("--zoom: the close-up renders on the CPU; drop --gpu");
     // The close-up: the region magnified, its cracks shaded point by point.
     const CellRegion region =
         args.region.empty()

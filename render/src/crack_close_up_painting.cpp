@@ -28,6 +28,11 @@ Image render_painting_close_up(const paintcore::Painting& painting, const Render
   flat.cracks = false;  // the cells as if uncracked: the close-up draws the cracks
   flat.display = DisplayEncoding::linear_srgb;
   const Image surface = render_painting(painting, flat);
+  if (!settings.cracks) {
+    // Cracks off: the cells magnified as they are.
+    const paintcore::Canvas blank(painting.canvas().spec());
+    return render_crack_close_up(blank, surface, surface, region, pixels_per_cell, {}, {});
+  }
   // What cracks through the film show: the bare canvas (the same ground and weave).
   const Image ground = render_painting(paintcore::Painting(painting.canvas().spec()), flat);
   Image walls = surface;

@@ -69,7 +69,8 @@ Image render_crack_close_up(const paintcore::Canvas& canvas, const Image& surfac
 // A painting's region magnified, lit as `settings` lights it (light direction and size, the
 // ambient share as the sky), seen from straight above: the cells' colours are the painting
 // rendered without its cracks (linear sRGB), the walls those of the paint around them or,
-// for cracks through the film, of the bare canvas. Linear sRGB.
+// for cracks through the film, of the bare canvas. Linear sRGB. settings.cracks = false:
+// the cells magnified alone.
 Image render_painting_close_up(const paintcore::Painting& painting, const RenderSettings& settings,
                                const CellRegion& region, int pixels_per_cell);
 
