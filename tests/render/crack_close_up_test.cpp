@@ -13,6 +13,7 @@
 
 #include "impasto/cracks/crack_shading.hpp"
 #include "impasto/cracks/gouffe.hpp"
+#include "impasto/render/render_painting.hpp"
 
 using namespace impasto;
 using namespace impasto::render;
@@ -228,4 +229,34 @@ TEST(CrackCloseUp, RegionOfAPaintingMagnifiesItsCells) {
   }
   EXPECT_THROW(render_crack_close_up(canvas, colours, colours, {4, 2, 5, 3}, P, {}, {}),
                std::runtime_error);
+}
+
+TEST(CrackCloseUp, PaintingWithoutCracksIsItsRenderMagnified) {
+  const paintcore::Painting painting(paintcore::CanvasSpec{12, 10, 254.0, 7}, 1);
+  RenderSettings settings;
+  settings.display = DisplayEncoding::linear_srgb;
+  settings.threads = 1;
+  const Image plain = render_painting(painting, settings);
+  const int P = 3;
+  const Image close = render_painting_close_up(painting, settings, {2, 1, 6, 5}, P);
+  ASSERT_EQ(close.width, 6 * P);
+  ASSERT_EQ(close.height, 5 * P);
+  for (int y = 0; y < close.height; ++y) {
+    for (int x = 0; x < close.width; ++x) {
+      for (int c = 0; c < 3; ++c) {
+        ASSERT_EQ(close.pixel(x, y)[c], plain.pixel(2 + x / P, 1 + y / P)[c]);
+      }
+    }
+  }
+}
+
+TEST(CrackCloseUp, RegionTextIsParsedOrRefused) {
+  const CellRegion r = parse_cell_region("3,4,10,20");
+  EXPECT_EQ(r.x, 3);
+  EXPECT_EQ(r.y, 4);
+  EXPECT_EQ(r.w, 10);
+  EXPECT_EQ(r.h, 20);
+  for (const char* bad : {"", "1,2,3", "1,2,3,4,5", "1,2,x,4", "1, 2,3,4", "1,2,3,4 "}) {
+    EXPECT_THROW(parse_cell_region(bad), std::runtime_error) << bad;
+  }
 }
