@@ -1,5 +1,6 @@
 // impasto cracks: make crack maps (craquelure, PNG import, the crack brush), alone or in a
 // painting file, and evaluate single cavities.
+#include <impasto/cracks/cavity_table.hpp>
 #include <impasto/cracks/craquelure.hpp>
 #include <impasto/cracks/gouffe.hpp>
 #include <impasto/cracks/painting_cracks.hpp>
@@ -7,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <fstream>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -151,14 +153,33 @@ void run_cavity(const CavityArgs& args) {
   const CavityShape shape = shape_from_name(args.shape);
   if (!(args.rho0 >= 0.0 && args.rho0 <= 1.0)) throw std::runtime_error("--rho0 must be in [0, 1]");
   const ViewFactors vf = view_factors(shape, {args.depth_mm, args.half_width_mm});
-  const nlohmann::json out = {{"shape", args.shape},
-                              {"F", vf.F},
-                              {"G", vf.G},
-                              {"apparent_reflectance", apparent_reflectance(args.rho0, vf)},
-                              {"apparent_emissivity", apparent_emissivity(args.rho0, vf)},
-                              {"first_order", apparent_reflectance_first_order(args.rho0, vf)},
-                              {"second_order", apparent_reflectance_second_order(args.rho0, vf)}};
+  const nlohmann::json out = {
+      {"shape", args.shape},
+      {"F", vf.F},
+      {"G", vf.G},
+      {"apparent_reflectance", apparent_reflectance(args.rho0, vf)},
+      {"apparent_emissivity", apparent_emissivity(args.rho0, vf)},
+      {"corrected_reflectance",
+       cavity_reflectance(CavityModel::Corrected, shape, {args.depth_mm, args.half_width_mm}, vf,
+                          args.rho0)},
+      {"first_order", apparent_reflectance_first_order(args.rho0, vf)},
+      {"second_order", apparent_reflectance_second_order(args.rho0, vf)}};
   std::cout << out.dump() << "\n";
+}
+
+struct TableArgs {
+  std::string out;
+  std::uint64_t paths = 200000, seed = 1;
+};
+
+// Measures the correction table of the Gouffé closed form once, offline (minutes).
+void run_table(const TableArgs& args) {
+  const CavityTable table = CavityTable::measure(CavityTableGrid{}, args.paths, args.seed);
+  std::ofstream out(args.out);
+  if (!out) throw std::runtime_error(args.out + ": cannot write the cavity table");
+  out << "# impasto cracks table --paths " << args.paths << " --seed " << args.seed << "\n";
+  table.write_csv(out);
+  if (!out) throw std::runtime_error(args.out + ": write failed");
 }
 
 const CommandRegistrar registrar("cracks", [](CLI::App& root) {
@@ -226,6 +247,15 @@ const CommandRegistrar registrar("cracks", [](CLI::App& root) {
       ->check(CLI::PositiveNumber);
   c->add_option("--rho0", cav->rho0, "Wall reflectance, 0..1");
   c->callback([cav] { run_cavity(*cav); });
+
+  auto tab = std::make_shared<TableArgs>();
+  CLI::App* t = group->add_subcommand(
+      "table", "Measure the Monte Carlo correction table of Gouffé's formula (offline)");
+  t->add_option("--out", tab->out, "CSV file to write (data/cracks/cavity_table.csv)")->required();
+  t->add_option("--paths", tab->paths, "Monte Carlo paths per shape and L/R")
+      ->check(CLI::Range(std::uint64_t{100}, std::uint64_t{100000000}));
+  t->add_option("--seed", tab->seed, "Monte Carlo seed");
+  t->callback([tab] { run_table(*tab); });
 });
 
 }  // namespace

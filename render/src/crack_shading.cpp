@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <span>
 
+#include "impasto/cracks/cavity_table.hpp"
 #include "impasto/cracks/crack_shading.hpp"
 #include "impasto/cracks/gouffe.hpp"
 
@@ -20,8 +21,36 @@ CrackOptics crack_optics(const paintcore::CrackRecord& record, double cell_mm) {
   if (!record.has_crack()) return {};
   const cracks::CrackCell cell = crack_cell(record);
   const cracks::ViewFactors vf = cracks::view_factors(cell.shape, cell.dims());
-  return {static_cast<float>(cracks::crack_coverage(cell, cell_mm)), static_cast<float>(vf.F),
-          static_cast<float>(vf.G), record.exposed_layer == paintcore::kCrackExposesGround};
+  const cracks::CavityTable& table = cracks::shipped_cavity_table();
+  // Beyond the last row only "beyond" matters (the shader scales by F and G), so the
+  // coordinate is clamped to keep it small enough to pack.
+  const double u =
+      std::clamp(table.ratio_coordinate(static_cast<double>(cell.depth_mm) / cell.half_width_mm),
+                 -1.0, static_cast<double>(table.grid().ratio_count));
+  return {static_cast<float>(cracks::crack_coverage(cell, cell_mm)),
+          static_cast<float>(vf.F),
+          static_cast<float>(vf.G),
+          record.exposed_layer == paintcore::kCrackExposesGround,
+          static_cast<int>(cell.shape),
+          static_cast<float>(u)};
+}
+
+const CrackTableData& crack_table_data() {
+  static const CrackTableData data = [] {
+    const cracks::CavityTable& table = cracks::shipped_cavity_table();
+    CrackTableData d;
+    d.ratio_count = table.grid().ratio_count;
+    d.rho0_count = table.grid().rho0_count;
+    d.differences = table.differences();
+    for (cracks::CavityShape shape : cracks::kAllShapes) {
+      const cracks::ViewFactors vf =
+          cracks::view_factors(shape, {table.ratio(d.ratio_count - 1), 1.0});
+      d.last_F[static_cast<std::size_t>(shape)] = static_cast<float>(vf.F);
+      d.last_G[static_cast<std::size_t>(shape)] = static_cast<float>(vf.G);
+    }
+    return d;
+  }();
+  return data;
 }
 
 CrackTileShading::CrackTileShading(const paintcore::Canvas& canvas, int tile_index, bool enabled,
@@ -46,7 +75,9 @@ bool CrackTileShading::take_walls(int cell, const float* dry_stack) {
 
 void CrackTileShading::blend(float* reflectance) const {
   const std::span<float> out(reflectance, static_cast<std::size_t>(nodes_));
-  cracks::crack_cell_reflectance(crack_cell(*record_), cell_mm_, out, walls_, out);
+  cracks::crack_cell_reflectance(
+      crack_cell(*record_), cell_mm_, out, walls_, out,
+      kCrackTableCorrection ? cracks::CavityModel::Corrected : cracks::CavityModel::Gouffe);
 }
 
 }  // namespace impasto::render

@@ -52,13 +52,21 @@ TEST(CellReflectance, BlendsSurfaceAndCavityByCoverage) {
   std::vector<float> out(3);
   // A groove as wide as the cell covers it completely: the cell is the cavity.
   CrackCell wide{0.5f, 0.05f, CavityShape::VGroove, kCanvasGround};
-  crack_cell_reflectance(wide, 0.1, surface, wall, out);
+  crack_cell_reflectance(wide, 0.1, surface, wall, out, CavityModel::Gouffe);
   const ViewFactors vf = view_factors(CavityShape::VGroove, wide.dims());
   for (int i = 0; i < 3; ++i) EXPECT_NEAR(out[i], apparent_reflectance(wall[i], vf), 1e-6);
+  // The default model: the closed form times the table's correction.
+  crack_cell_reflectance(wide, 0.1, surface, wall, out);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(
+        out[i],
+        cavity_reflectance(CavityModel::Corrected, CavityShape::VGroove, wide.dims(), vf, wall[i]),
+        1e-6);
+  }
   // A quarter-width groove: a quarter of the cavity, three quarters of the surface.
   CrackCell narrow{0.5f, 0.0125f, CavityShape::VGroove, kCanvasGround};
   EXPECT_NEAR(crack_coverage(narrow, 0.1), 0.25, 1e-6);
-  crack_cell_reflectance(narrow, 0.1, surface, wall, out);
+  crack_cell_reflectance(narrow, 0.1, surface, wall, out, CavityModel::Gouffe);
   const ViewFactors vf_narrow = view_factors(CavityShape::VGroove, narrow.dims());
   for (int i = 0; i < 3; ++i) {
     EXPECT_NEAR(out[i], 0.75 * surface[i] + 0.25 * apparent_reflectance(wall[i], vf_narrow), 1e-6);

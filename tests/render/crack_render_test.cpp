@@ -134,7 +134,9 @@ TEST(CrackRender, ACrackedCanvasIsDarkerExactlyInItsCrackedCells) {
 
 TEST(CrackRender, ThePitBlendFollowsGouffesClosedForm) {
   // On a grey ground g, a sphere pit (F = G = R^2/(R^2+L^2), exact) covering c = pi R^2 /
-  // cell^2 scales the flat cell's linear pixel by (1 - c) + c rho / g.
+  // cell^2 scales the flat cell's linear pixel by (1 - c) + c rho / g. The renderer's model
+  // (closed form plus the measured table's difference) agrees with it to the table's Monte
+  // Carlo noise, |d rho| <= 0.002 for the sphere.
   const RenderSettings settings = linear_matte();
   const double g = 0.7, cell = 0.1, R = 0.04;
   for (double L : {0.004, 0.04, 0.2, 2.0}) {
@@ -147,7 +149,7 @@ TEST(CrackRender, ThePitBlendFollowsGouffesClosedForm) {
     const double expected = (1 - c) + c * rho / g;
     for (int ch = 0; ch < 3; ++ch) {
       const double ratio = image.pixel(100, 20)[ch] / image.pixel(101, 20)[ch];
-      EXPECT_NEAR(ratio, expected, 2e-6) << "L = " << L << " channel " << ch;
+      EXPECT_NEAR(ratio, expected, c * 0.002 / g + 2e-6) << "L = " << L << " channel " << ch;
     }
   }
 }

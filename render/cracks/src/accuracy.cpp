@@ -1,5 +1,6 @@
 #include "impasto/cracks/accuracy.hpp"
 
+#include "impasto/cracks/cavity_table.hpp"
 #include "impasto/cracks/close_up.hpp"
 #include "impasto/cracks/gouffe.hpp"
 
@@ -25,7 +26,8 @@ std::vector<AccuracyRow> measure_accuracy(const AccuracyGrid& grid) {
                           h.apparent_reflectance(rho0), h.standard_error(rho0),
                           apparent_reflectance(rho0, vf), apparent_reflectance(rho0, vf_first),
                           apparent_reflectance_first_order(rho0, vf),
-                          apparent_reflectance_second_order(rho0, vf)});
+                          apparent_reflectance_second_order(rho0, vf),
+                          cavity_reflectance(CavityModel::Corrected, shape, dims, vf, rho0)});
         }
       }
     }

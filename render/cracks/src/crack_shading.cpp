@@ -17,7 +17,7 @@ double crack_coverage(const CrackCell& cell, double cell_mm) {
 }
 
 void crack_cell_reflectance(const CrackCell& cell, double cell_mm, std::span<const float> surface,
-                            std::span<const float> wall, std::span<float> out) {
+                            std::span<const float> wall, std::span<float> out, CavityModel model) {
   if (surface.size() != out.size() || wall.size() != out.size()) {
     throw std::invalid_argument("crack_cell_reflectance: spectra of different lengths");
   }
@@ -27,9 +27,16 @@ void crack_cell_reflectance(const CrackCell& cell, double cell_mm, std::span<con
   }
   const ViewFactors vf = view_factors(cell.shape, cell.dims());
   const double c = crack_coverage(cell, cell_mm);
+  const bool corrected = model == CavityModel::Corrected;
+  const CavityTable* table = corrected ? &shipped_cavity_table() : nullptr;
+  const double u =
+      corrected ? table->ratio_coordinate(static_cast<double>(cell.depth_mm) / cell.half_width_mm)
+                : 0.0;
   for (std::size_t i = 0; i < out.size(); ++i) {
     const double rho0 = std::clamp(static_cast<double>(wall[i]), 0.0, 1.0);
-    out[i] = static_cast<float>((1.0 - c) * surface[i] + c * apparent_reflectance(rho0, vf));
+    const double rho =
+        corrected ? table->reflectance_at(cell.shape, u, vf, rho0) : apparent_reflectance(rho0, vf);
+    out[i] = static_cast<float>((1.0 - c) * surface[i] + c * rho);
   }
 }
 

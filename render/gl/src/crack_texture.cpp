@@ -16,6 +16,10 @@ void CrackTexture::upload_tile(const paintcore::Canvas& canvas, int tile_index) 
     cells_ = Texture(width_, height_, 0, TexelFormat::kRGBA32F);
     const std::vector<float> zeros(4 * static_cast<std::size_t>(width_) * height_, 0.0f);
     cells_.upload(0, 0, width_, height_, 0, zeros.data(), width_);
+    const render::CrackTableData& table = render::crack_table_data();
+    const int rows = table.ratio_count * static_cast<int>(table.last_F.size());
+    table_ = Texture(table.rho0_count, rows, 0, TexelFormat::kR32F);
+    table_.upload(0, 0, table.rho0_count, rows, 0, table.differences.data(), table.rho0_count);
   }
   const int x0 = (tile_index % canvas.tiles_x()) * kTileSize;
   const int y0 = (tile_index / canvas.tiles_x()) * kTileSize;
@@ -30,7 +34,9 @@ void CrackTexture::upload_tile(const paintcore::Canvas& canvas, int tile_index) 
     texel[0] = optics.coverage;
     texel[1] = optics.F;
     texel[2] = optics.G;
-    texel[3] = optics.exposes_ground ? 1.0f : 0.0f;
+    const float packed =
+        1.0f + static_cast<float>(optics.shape) * kTableStride + (optics.table_u + 1.0f);
+    texel[3] = optics.exposes_ground ? packed : -packed;
   }
   cells_.upload(x0, y0, w, h, 0, scratch_.data(), kTileSize);
 }
@@ -39,10 +45,19 @@ void CrackTexture::bind(const ShaderProgram& program, const render::SpectralPale
                         bool enabled) const {
   const bool on = enabled && cells_.id() != 0;
   glUniform1i(program.uniform("crack_cells"), kUnit);
+  glUniform1i(program.uniform("crack_table"), kTableUnit);
   glUniform1i(program.uniform("crack_on"), on ? 1 : 0);
   if (!on) return;
   cells_.bind(kUnit);
   glUniform1fv(program.uniform("crack_ground"), palette.nodes(), palette.ground());
+  const render::CrackTableData& table = render::crack_table_data();
+  table_.bind(kTableUnit);
+  glUniform1i(program.uniform("crack_corrected"), render::kCrackTableCorrection ? 1 : 0);
+  glUniform1i(program.uniform("crack_table_rows"), table.ratio_count);
+  glUniform1i(program.uniform("crack_table_rho0s"), table.rho0_count);
+  glUniform1f(program.uniform("crack_table_stride"), kTableStride);
+  glUniform1fv(program.uniform("crack_table_last_F"), 6, table.last_F.data());
+  glUniform1fv(program.uniform("crack_table_last_G"), 6, table.last_G.data());
 }
 
 }  // namespace impasto::render_gl

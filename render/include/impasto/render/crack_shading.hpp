@@ -6,18 +6,38 @@
 // costs one pointer test; a canvas without cracks, one per tile.
 #include <vector>
 
+#include <array>
+
 #include "impasto/paintcore/canvas.hpp"
 #include "impasto/paintcore/crack_layer.hpp"
 
 namespace impasto::render {
 
-// What the far-view blend of one cracked cell needs: the area fraction c of its opening and
-// Gouffe's view factors F and G of its shape and size (the GPU path uploads these).
+// The cavity model both renderers use (CPU and GPU): true, Gouffé's closed form corrected
+// by the measured table (cracks/cavity_table.hpp); false, the closed form alone.
+inline constexpr bool kCrackTableCorrection = true;
+
+// The shipped correction table as the GPU uploads it: differences rho_table - rho_Gouffe,
+// rho0_count per row, ratio_count rows per shape, shapes in CavityShape order; and F, G of
+// each shape at the deepest row (for the decay beyond it).
+struct CrackTableData {
+  int ratio_count = 0;
+  int rho0_count = 0;
+  std::vector<float> differences;
+  std::array<float, 6> last_F{}, last_G{};
+};
+const CrackTableData& crack_table_data();
+
+// What the far-view blend of one cracked cell needs: the area fraction c of its opening,
+// Gouffe's view factors F and G of its shape and size, and where its shape and L/R fall in
+// the correction table (the GPU path uploads these).
 struct CrackOptics {
   float coverage = 0.0f;
   float F = 1.0f;
   float G = 1.0f;
   bool exposes_ground = true;
+  int shape = 0;          // cracks::CavityShape
+  float table_u = -1.0f;  // CavityTable::ratio_coordinate, clamped to [-1, ratio_count]
 };
 CrackOptics crack_optics(const paintcore::CrackRecord& record, double cell_mm);
 

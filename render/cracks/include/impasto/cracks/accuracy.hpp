@@ -17,6 +17,7 @@ struct AccuracyRow {
   double gouffe;                      // closed form, F of the deepest element
   double gouffe_first;                // closed form, F averaged over the first reflections
   double first_order, second_order;   // rho0 F and rho0 F + rho0^2 (1-F) G
+  double corrected;                   // closed form times the measured table (cavity_table)
 };
 
 struct AccuracyGrid {
