@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <ctime>
 #include <iostream>
 #include <memory>
@@ -43,7 +44,19 @@ double ms_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// Where a session's input is recorded: beside the painting (or in the working folder for a
+// Where an unsaved painting's sessions are kept for recovery: $XDG_STATE_HOME/impasto/sessions
+// (~/.local/state when unset), never the working folder.
+std::filesystem::path untitled_sessions_dir() {
+  if (const char* state = std::getenv("XDG_STATE_HOME"); state && *state) {
+    return std::filesystem::path(state) / "impasto" / "sessions";
+  }
+  if (const char* home = std::getenv("HOME"); home && *home) {
+    return std::filesystem::path(home) / ".local" / "state" / "impasto" / "sessions";
+  }
+  return std::filesystem::temp_directory_path() / "impasto-sessions";
+}
+
+// Where a session's input is recorded: beside the painting (or in the recovery folder for a
 // painting not saved yet), named by the time the session started.
 std::filesystem::path session_record_path(const std::optional<std::filesystem::path>& painting) {
   char stamp[32];
@@ -51,7 +64,10 @@ std::filesystem::path session_record_path(const std::optional<std::filesystem::p
   std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", std::localtime(&now));
   const std::string name = (painting ? painting->stem().string() : std::string("untitled")) +
                            ".session-" + stamp + ".strokes";
-  return painting ? painting->parent_path() / name : std::filesystem::path(name);
+  if (painting) return painting->parent_path() / name;
+  const auto folder = untitled_sessions_dir();
+  std::filesystem::create_directories(folder);
+  return folder / name;
 }
 
 std::vector<std::string> brush_heads() {
