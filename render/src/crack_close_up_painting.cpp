@@ -61,15 +61,9 @@ Image render_painting_close_up(const paintcore::Painting& painting, const Render
 void render_painting_close_up_to_file(const paintcore::Painting& painting,
                                       const RenderSettings& settings, const CellRegion& region,
                                       int pixels_per_cell, const std::filesystem::path& path) {
-  std::string extension = path.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (extension != ".png" && extension != ".exr") {
-    throw std::runtime_error(path.string() + ": unknown image type '" + extension +
-                             "' (expected .png or .exr)");
-  }
+  const ImageFileType type = image_file_type(path);
   Image image = render_painting_close_up(painting, settings, region, pixels_per_cell);
-  if (extension == ".exr") {
+  if (type == ImageFileType::exr) {
     write_exr(path, image);
     return;
   }

@@ -3,6 +3,7 @@
 #include <ImfRgbaFile.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
@@ -83,6 +84,16 @@ void write_exr(const std::filesystem::path& path, const Image& image) {
   } catch (const std::exception& e) {
     throw std::runtime_error(path.string() + ": cannot write OpenEXR: " + e.what());
   }
+}
+
+ImageFileType image_file_type(const std::filesystem::path& path) {
+  std::string extension = path.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  if (extension == ".png") return ImageFileType::png;
+  if (extension == ".exr") return ImageFileType::exr;
+  throw std::runtime_error(path.string() + ": unknown image type '" + extension +
+                           "' (expected .png or .exr)");
 }
 
 }  // namespace impasto::render

@@ -56,13 +56,7 @@ render::Image render_painting_gpu(const paintcore::Canvas& canvas,
 void render_painting_gpu_to_file(const paintcore::Painting& painting,
                                  const render::RenderSettings& settings,
                                  const std::filesystem::path& path, HeadlessBackend backend) {
-  std::string extension = path.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (extension != ".png" && extension != ".exr") {
-    throw std::runtime_error(path.string() + ": unknown image type '" + extension +
-                             "' (expected .png or .exr)");
-  }
+  const render::ImageFileType type = render::image_file_type(path);
   if (settings.wavelengths == 0) {
     throw std::runtime_error(path.string() +
                              ": the GPU path takes 1..16 wavelength nodes, not the full "
@@ -70,10 +64,11 @@ void render_painting_gpu_to_file(const paintcore::Painting& painting,
   }
   // EXR holds linear values, as the CPU path writes them.
   render::RenderSettings file_settings = settings;
-  if (extension == ".exr") file_settings.display = render::DisplayEncoding::linear_srgb;
+  if (type == render::ImageFileType::exr)
+    file_settings.display = render::DisplayEncoding::linear_srgb;
   const render::Image image =
       render_painting_gpu(painting.canvas(), painting.pigment_slots(), file_settings, backend);
-  if (extension == ".png") {
+  if (type == render::ImageFileType::png) {
     render::write_png(path, image);
   } else {
     render::write_exr(path, image);

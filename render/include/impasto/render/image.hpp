@@ -18,6 +18,11 @@ struct Image {
   const float* pixel(int x, int y) const { return const_cast<Image*>(this)->pixel(x, y); }
 };
 
+// The image files a render can write, chosen by the file's extension.
+enum class ImageFileType { png, exr };
+// From the extension, case-insensitive; throws std::runtime_error naming the file otherwise.
+ImageFileType image_file_type(const std::filesystem::path& path);
+
 // 8-bit RGB PNG of display-encoded values (clamped to [0, 1], rounded). Throws
 // std::runtime_error naming the file when it cannot be written.
 void write_png(const std::filesystem::path& path, const Image& image);
