@@ -1,5 +1,6 @@
 // impasto cracks: make crack maps (craquelure, PNG import, the crack brush), alone or in a
 // painting file, and evaluate single cavities.
+#include <impasto/cracks/cavity_correction.hpp>
 #include <impasto/cracks/cavity_table.hpp>
 #include <impasto/cracks/craquelure.hpp>
 #include <impasto/cracks/gouffe.hpp>
@@ -147,6 +148,7 @@ void run_brush(const BrushArgs& args) {
 struct CavityArgs {
   std::string shape = "v-groove";
   double depth_mm = 0.2, half_width_mm = 0.05, rho0 = 0.5;
+  CrackSceneLight light;  // the corrected model's light: sun zenith and sky share
 };
 
 void run_cavity(const CavityArgs& args) {
@@ -161,7 +163,7 @@ void run_cavity(const CavityArgs& args) {
       {"apparent_emissivity", apparent_emissivity(args.rho0, vf)},
       {"corrected_reflectance",
        cavity_reflectance(CavityModel::Corrected, shape, {args.depth_mm, args.half_width_mm}, vf,
-                          args.rho0)},
+                          args.rho0, args.light)},
       {"first_order", apparent_reflectance_first_order(args.rho0, vf)},
       {"second_order", apparent_reflectance_second_order(args.rho0, vf)}};
   std::cout << out.dump() << "\n";
@@ -169,15 +171,18 @@ void run_cavity(const CavityArgs& args) {
 
 struct TableArgs {
   std::string out;
+  std::string light = "beam:0";
   std::uint64_t paths = 200000, seed = 1;
 };
 
 // Measures the correction table of the Gouffé closed form once, offline (minutes).
 void run_table(const TableArgs& args) {
-  const CavityTable table = CavityTable::measure(CavityTableGrid{}, args.paths, args.seed);
+  const CavityTable table = CavityTable::measure(CavityTableGrid{}, parse_cavity_light(args.light),
+                                                 args.paths, args.seed);
   std::ofstream out(args.out);
   if (!out) throw std::runtime_error(args.out + ": cannot write the cavity table");
-  out << "# impasto cracks table --paths " << args.paths << " --seed " << args.seed << "\n";
+  out << "# impasto cracks table --light " << args.light << " --paths " << args.paths << " --seed "
+      << args.seed << "\n";
   table.write_csv(out);
   if (!out) throw std::runtime_error(args.out + ": write failed");
 }
@@ -246,6 +251,11 @@ const CommandRegistrar registrar("cracks", [](CLI::App& root) {
   c->add_option("--half-width-mm", cav->half_width_mm, "Half-width R (mm)")
       ->check(CLI::PositiveNumber);
   c->add_option("--rho0", cav->rho0, "Wall reflectance, 0..1");
+  c->add_option("--sun-zenith", cav->light.sun_zenith_deg,
+                "Corrected model: the sun's angle from the canvas normal (degrees)")
+      ->check(CLI::Range(0.0, 90.0));
+  c->add_option("--sky", cav->light.sky_share, "Corrected model: the sky's share of the light")
+      ->check(CLI::Range(0.0, 1.0));
   c->callback([cav] { run_cavity(*cav); });
 
   auto tab = std::make_shared<TableArgs>();
@@ -255,6 +265,10 @@ const CommandRegistrar registrar("cracks", [](CLI::App& root) {
   t->add_option("--paths", tab->paths, "Monte Carlo paths per shape and L/R")
       ->check(CLI::Range(std::uint64_t{100}, std::uint64_t{100000000}));
   t->add_option("--seed", tab->seed, "Monte Carlo seed");
+  t->add_option("--light", tab->light,
+                "beam:ZENITH_DEG (a beam tilted across grooves; data/cracks/"
+                "cavity_table_beam_Z.csv) or diffuse (a uniform sky; cavity_table_diffuse.csv)")
+      ->capture_default_str();
   t->callback([tab] { run_table(*tab); });
 });
 

@@ -41,6 +41,8 @@ struct RenderArgs {
   bool no_flakes = false;
   std::string flake_depth = "masking";
   bool no_cracks = false;
+  std::string crack_model = "corrected";
+  double ambient = RenderSettings{}.ambient;
   bool gpu = false;    // through the GLSL shaders, headless
   int zoom = 0;        // > 0: the close-up of --region at this many pixels per cell
   std::string region;  // "X,Y,W,H" in cells
@@ -95,16 +97,26 @@ void run(const RenderArgs& args) {
   settings.flakes = !args.no_flakes;
   settings.flake_masking = args.flake_depth == "masking";
   settings.cracks = !args.no_cracks;
+  settings.crack_model = parse_crack_model(args.crack_model);
+  settings.ambient = args.ambient;
   validate(settings);
   const paintcore::Painting painting = paintcore::Painting::load(args.painting, args.threads);
   if (args.zoom > 0) {
-    if (args.gpu) throw std::runtime_error("--zoom: the close-up renders on the CPU; drop --gpu");
     // The close-up: the region magnified, its cracks shaded point by point.
     const CellRegion region =
         args.region.empty()
             ? CellRegion{0, 0, painting.canvas().width_cells(), painting.canvas().height_cells()}
             : parse_cell_region(args.region);
-    render_painting_close_up_to_file(painting, settings, region, args.zoom, args.out);
+    if (args.gpu) {
+#ifdef IMPASTO_RENDER_GPU
+      render_gl::render_painting_close_up_gpu_to_file(painting, settings, region, args.zoom,
+                                                      args.out);
+#else
+      throw std::runtime_error("--gpu: this impasto was built without the OpenGL path");
+#endif
+    } else {
+      render_painting_close_up_to_file(painting, settings, region, args.zoom, args.out);
+    }
     std::cout << "wrote " << args.out << " (" << region.w * args.zoom << "x" << region.h * args.zoom
               << ", close-up)\n";
     return;
@@ -162,6 +174,15 @@ const CommandRegistrar registrar("render", [](CLI::App& root) {
       ->capture_default_str();
   cmd->add_flag("--no-flakes", args->no_flakes, "Flake pigments without their sparkles");
   cmd->add_flag("--no-cracks", args->no_cracks, "Cracked cells as if uncracked");
+  cmd->add_option("--crack-model", args->crack_model,
+                  "Cavity reflectance: corrected (measured tables) or gouffe (closed form)")
+      ->check(CLI::IsMember({"corrected", "gouffe"}))
+      ->capture_default_str();
+  cmd->add_option(
+         "--ambient", args->ambient,
+         "Share of the light arriving from the whole sky, 0..1 (the rest from --light-dir)")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
   cmd->add_option("--flake-depth", args->flake_depth,
                   "Flake depth model: masking (Eq. 5) or no-masking (Eq. 6)")
       ->check(CLI::IsMember({"masking", "no-masking"}))
@@ -169,7 +190,7 @@ const CommandRegistrar registrar("render", [](CLI::App& root) {
   cmd->add_flag("--gpu", args->gpu,
                 "Render through the OpenGL shaders, headless (EGL or OSMesa); 1..16 nodes");
   cmd->add_option("--zoom", args->zoom,
-                  "Close-up: pixels per cell, cracks shaded inside (CPU; with --region)")
+                  "Close-up: pixels per cell, cracks shaded inside (with --region)")
       ->check(CLI::Range(1, 256));
   cmd->add_option("--region", args->region, "Close-up region X,Y,W,H in cells (default: all)");
   cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)")

@@ -49,21 +49,29 @@ Image render_painting_close_up(const paintcore::Painting& painting, const Render
       }
     }
   }
+  return render_crack_close_up(canvas, surface, walls, region, pixels_per_cell,
+                               close_up_light(settings), {});
+}
+
+CloseUpLight close_up_light(const RenderSettings& settings) {
   const double az = settings.light_azimuth_deg * std::numbers::pi / 180.0;
   const double el = settings.light_elevation_deg * std::numbers::pi / 180.0;
   CloseUpLight light;
   light.toward_light = {std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el)};
   light.angular_radius_rad = 0.5 * settings.light_size_deg * std::numbers::pi / 180.0;
   light.sky_fraction = std::clamp(settings.ambient, 0.0, 1.0);
-  return render_crack_close_up(canvas, surface, walls, region, pixels_per_cell, light, {});
+  return light;
 }
 
 void render_painting_close_up_to_file(const paintcore::Painting& painting,
                                       const RenderSettings& settings, const CellRegion& region,
                                       int pixels_per_cell, const std::filesystem::path& path) {
-  const ImageFileType type = image_file_type(path);
-  Image image = render_painting_close_up(painting, settings, region, pixels_per_cell);
-  if (type == ImageFileType::exr) {
+  image_file_type(path);  // before the work: a bad name fails fast
+  write_close_up_image(render_painting_close_up(painting, settings, region, pixels_per_cell), path);
+}
+
+void write_close_up_image(Image image, const std::filesystem::path& path) {
+  if (image_file_type(path) == ImageFileType::exr) {
     write_exr(path, image);
     return;
   }

@@ -156,4 +156,19 @@ void DisplayTransform::apply(float* xyz_to_rgb, std::size_t pixel_count) const {
   impl_->processor->apply(image);
 }
 
+std::array<double, 9> xyz_to_linear_srgb() {
+  const double* m = kXyzToLinearSrgb;
+  return {m[0], m[1], m[2], m[4], m[5], m[6], m[8], m[9], m[10]};
+}
+
+std::array<double, 9> invert_3x3(const std::array<double, 9>& m) {
+  const double c00 = m[4] * m[8] - m[5] * m[7], c01 = m[5] * m[6] - m[3] * m[8],
+               c02 = m[3] * m[7] - m[4] * m[6];
+  const double inv_det = 1.0 / (m[0] * c00 + m[1] * c01 + m[2] * c02);
+  return {
+      c00 * inv_det, (m[2] * m[7] - m[1] * m[8]) * inv_det, (m[1] * m[5] - m[2] * m[4]) * inv_det,
+      c01 * inv_det, (m[0] * m[8] - m[2] * m[6]) * inv_det, (m[2] * m[3] - m[0] * m[5]) * inv_det,
+      c02 * inv_det, (m[1] * m[6] - m[0] * m[7]) * inv_det, (m[0] * m[4] - m[1] * m[3]) * inv_det};
+}
+
 }  // namespace impasto::render

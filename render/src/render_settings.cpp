@@ -63,4 +63,11 @@ LightType parse_light_type(std::string_view text) {
                            "' (expected directional, point, spot or diffuse)");
 }
 
+CrackModel parse_crack_model(std::string_view text) {
+  if (text == "gouffe") return CrackModel::gouffe;
+  if (text == "corrected") return CrackModel::corrected;
+  throw std::runtime_error("unknown crack model '" + std::string(text) +
+                           "' (expected gouffe or corrected)");
+}
+
 }  // namespace impasto::render

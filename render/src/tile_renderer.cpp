@@ -344,7 +344,7 @@ void TileRenderer::shade_region(const paintcore::Canvas& canvas, int tile_index,
   // Flake sparkles: inactive (no per-cell work) where the tile holds no flake pigment.
   FlakeTileView flakes = flakes_ ? flakes_->tile(canvas, tile_index) : FlakeTileView{};
   // Cracks: inactive (no per-cell work) where the tile has no crack.
-  CrackTileShading cracks(canvas, tile_index, settings_.cracks, palette_.ground(), nodes);
+  CrackTileShading cracks(canvas, tile_index, settings_, palette_.ground(), nodes);
   for (int y = y0; y < y1; ++y) {
     for (int x = x0; x < x1; ++x) {
       const int c = y * kTileSize + x;

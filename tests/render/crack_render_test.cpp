@@ -159,7 +159,7 @@ TEST(CrackRender, ShallowCracksVanishAndDeepOnesGoBlack) {
   paintcore::Canvas canvas = painted_canvas();
   // A groove as wide as the cell (c = 1): its pixel is the cavity's alone.
   set_crack(canvas, 100, 20, {1e-6f, 0.05f, kVGroove, 0xFF});
-  set_crack(canvas, 110, 20, {500.0f, 0.05f, kVGroove, 0xFF});
+  set_crack(canvas, 110, 20, {5000.0f, 0.05f, kVGroove, 0xFF});
   const Image image = render_canvas(canvas, settings, 0.8);
   for (int ch = 0; ch < 3; ++ch) {
     EXPECT_NEAR(image.pixel(100, 20)[ch], image.pixel(101, 20)[ch], 1e-5);  // L -> 0: rho -> rho0

@@ -288,6 +288,27 @@ void light_panel(PanelContext& c) {
   (void)moved;  // direction, intensity and ambient are uniforms: no re-bake needed
 }
 
+// Cracks: shown or not, the far view's cavity model, and the zoom from which their insides
+// show (all uniforms: no re-bake).
+void cracks_panel(PanelContext& c) {
+  WindowState& s = c.state;
+  if (!ImGui::CollapsingHeader("Cracks")) return;
+  ImGui::Checkbox("show cracks", &s.settings.cracks);
+  int model = s.settings.crack_model == render::CrackModel::corrected ? 0 : 1;
+  if (ImGui::Combo("far view", &model, "measured (corrected)\0Gouffe closed form\0")) {
+    s.settings.crack_model =
+        model == 0 ? render::CrackModel::corrected : render::CrackModel::gouffe;
+  }
+  bool close_up = s.view_options.crack_close_up_min_pixels > 0.0f;
+  if (ImGui::Checkbox("close-up when zoomed in", &close_up)) {
+    s.view_options.crack_close_up_min_pixels = close_up ? 6.0f : 0.0f;
+  }
+  if (close_up) {
+    ImGui::SliderFloat("from px/cell", &s.view_options.crack_close_up_min_pixels, 2.0f, 64.0f,
+                       "%.0f", ImGuiSliderFlags_Logarithmic);
+  }
+}
+
 // The pressure curve from 0 to 1, as the brush will feel the pen.
 void pressure_plot(const TabletSettings& settings) {
   const input::PressureCurve curve = settings.pressure_curve();
@@ -396,6 +417,7 @@ void draw_panels(PanelContext& context) {
   brush_panel(context);
   tablet_panel(context);
   light_panel(context);
+  cracks_panel(context);
   layers_panel(context);
   history_panel(context);
   ImGui::End();

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <numbers>
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
@@ -31,6 +32,29 @@ void check_grid(const CavityTableGrid& g, const std::string& where) {
 
 }  // namespace
 
+std::string to_string(const CavityLight& light) {
+  if (light.diffuse) return "diffuse";
+  std::ostringstream text;
+  text << "beam:" << light.zenith_deg;
+  return text.str();
+}
+
+CavityLight parse_cavity_light(std::string_view text) {
+  if (text == "diffuse") return CavityLight::sky();
+  if (text.rfind("beam:", 0) == 0) {
+    const std::string number(text.substr(5));
+    std::size_t used = 0;
+    double zenith = -1.0;
+    try {
+      zenith = std::stod(number, &used);
+    } catch (const std::exception&) {
+    }
+    if (used == number.size() && zenith >= 0.0 && zenith < 90.0) return CavityLight::beam(zenith);
+  }
+  throw std::runtime_error("unknown cavity light '" + std::string(text) +
+                           "' (expected diffuse or beam:ZENITH_DEG, 0 <= ZENITH_DEG < 90)");
+}
+
 double CavityTable::ratio(int i) const {
   return grid_ratio(grid_, i);
 }
@@ -38,18 +62,22 @@ double CavityTable::rho0(int j) const {
   return grid_rho0(grid_, j);
 }
 
-CavityTable CavityTable::measure(const CavityTableGrid& grid, std::uint64_t paths,
-                                 std::uint64_t seed) {
+CavityTable CavityTable::measure(const CavityTableGrid& grid, CavityLight light,
+                                 std::uint64_t paths, std::uint64_t seed) {
   check_grid(grid, "cavity table");
   CavityTable table;
   table.grid_ = grid;
+  table.light_ = light;
+  const Illumination illumination =
+      light.diffuse ? Illumination::diffuse()
+                    : Illumination::directional(light.zenith_deg * std::numbers::pi / 180.0);
   table.rho_.resize(kAllShapes.size() * static_cast<std::size_t>(grid.ratio_count) *
                     static_cast<std::size_t>(grid.rho0_count));
   const MonteCarloSettings settings{paths, seed, MonteCarloSettings{}.max_bounces};
   for (CavityShape shape : kAllShapes) {
     for (int i = 0; i < grid.ratio_count; ++i) {
       const EscapeHistogram h =
-          trace_cavity(shape, {grid_ratio(grid, i), 1.0}, Illumination::directional(0.0), settings);
+          trace_cavity(shape, {grid_ratio(grid, i), 1.0}, illumination, settings);
       for (int j = 0; j < grid.rho0_count; ++j) {
         const double rho0 = grid_rho0(grid, j);
         // Deeper is darker and no cavity is brighter than its walls: the running minimum
@@ -65,8 +93,9 @@ CavityTable CavityTable::measure(const CavityTableGrid& grid, std::uint64_t path
 }
 
 void CavityTable::write_csv(std::ostream& out) const {
-  out << "# Apparent reflectance rho of a cavity (Monte Carlo reference, a beam along the "
-         "axis), non-increasing in L/R.\n"
+  out << "# Apparent reflectance rho of a cavity (Monte Carlo reference), non-increasing in "
+         "L/R.\n"
+      << "# light: " << to_string(light_) << "\n"
       << "# grid: ratio_min " << grid_.ratio_min << " ratios_per_decade " << grid_.ratios_per_decade
       << " ratio_count " << grid_.ratio_count << " rho0_count " << grid_.rho0_count << "\n"
       << "shape,L_over_R,rho0,rho\n";
@@ -87,7 +116,7 @@ CavityTable CavityTable::read_csv(const std::filesystem::path& path) {
   CavityTable table;
   std::string line;
   int line_no = 0;
-  bool have_grid = false, have_header = false;
+  bool have_grid = false, have_header = false, have_light = false;
   std::size_t next = 0;
   const auto fail = [&](const std::string& what) {
     throw std::runtime_error(path.string() + ":" + std::to_string(line_no) + ": " + what);
@@ -111,8 +140,20 @@ CavityTable CavityTable::read_csv(const std::filesystem::path& path) {
       have_grid = true;
       continue;
     }
+    if (line.rfind("# light:", 0) == 0) {
+      std::string name = line.substr(8);
+      name.erase(0, name.find_first_not_of(' '));
+      try {
+        table.light_ = parse_cavity_light(name);
+      } catch (const std::runtime_error& e) {
+        fail(e.what());
+      }
+      have_light = true;
+      continue;
+    }
     if (line[0] == '#') continue;
     if (!have_header) {
+      if (!have_light) fail("expected '# light: beam:ZENITH_DEG' or '# light: diffuse' first");
       if (line != "shape,L_over_R,rho0,rho") fail("expected the header shape,L_over_R,rho0,rho");
       have_header = true;
       continue;
@@ -172,9 +213,17 @@ void CavityTable::compute_differences() {
   }
 }
 
-double CavityTable::reflectance_at(CavityShape shape, double u, const ViewFactors& vf,
-                                   double rho0) const {
-  const CavityTableGrid& g = grid_;
+double CavityTable::clamp_to_walls(double rho, double rho0) {
+  return std::clamp(rho, 0.0, std::clamp(rho0, 0.0, 1.0));
+}
+
+double CavityTable::difference_at(CavityShape shape, double u, double rho0,
+                                  const ViewFactors& vf) const {
+  return interpolate_difference(grid_, difference_, shape, u, rho0, vf);
+}
+
+double interpolate_difference(const CavityTableGrid& g, std::span<const float> differences,
+                              CavityShape shape, double u, double rho0, const ViewFactors& vf) {
   const int last = g.ratio_count - 1;
   const double uc = std::clamp(u, 0.0, static_cast<double>(last));
   const double v = std::clamp(rho0, 0.0, 1.0) * (g.rho0_count - 1);
@@ -182,24 +231,72 @@ double CavityTable::reflectance_at(CavityShape shape, double u, const ViewFactor
   const int j0 = std::min(static_cast<int>(v), g.rho0_count - 2);
   const double fu = uc - i0, fv = v - j0;
   const auto at = [&](int i, int j) {
-    return static_cast<double>(difference_[index(shape, i, j)]);
+    return static_cast<double>(
+        differences[(static_cast<std::size_t>(shape) * static_cast<std::size_t>(g.ratio_count) +
+                     static_cast<std::size_t>(i)) *
+                        static_cast<std::size_t>(g.rho0_count) +
+                    static_cast<std::size_t>(j)]);
   };
   double difference = (1 - fu) * ((1 - fv) * at(i0, j0) + fv * at(i0, j0 + 1)) +
                       fu * ((1 - fv) * at(i0 + 1, j0) + fv * at(i0 + 1, j0 + 1));
-  const double gouffe = apparent_reflectance(rho0, vf);
   if (u < 0.0) {
     difference *= u + 1.0;  // fades out towards L = 0, where the closed form is exact
   } else if (u > last) {
     // Deeper than the grid: the difference decays as the closed form itself does.
-    const double gouffe_last = apparent_reflectance(rho0, view_factors(shape, {ratio(last), 1.0}));
+    const double gouffe = apparent_reflectance(rho0, vf);
+    const double last_ratio =
+        g.ratio_min * std::pow(10.0, static_cast<double>(last) / g.ratios_per_decade);
+    const double gouffe_last = apparent_reflectance(rho0, view_factors(shape, {last_ratio, 1.0}));
     difference *= gouffe_last > 0.0 ? std::min(1.0, gouffe / gouffe_last) : 0.0;
   }
-  return std::clamp(gouffe + difference, 0.0, std::clamp(rho0, 0.0, 1.0));
+  return difference;
 }
 
-const CavityTable& shipped_cavity_table() {
-  static const CavityTable table =
-      CavityTable::read_csv(data::data_dir() / "cracks" / "cavity_table.csv");
+namespace {
+
+CavityTable read_shipped(const std::string& name, const CavityLight& light) {
+  const auto path = data::data_dir() / "cracks" / name;
+  CavityTable table = CavityTable::read_csv(path);
+  if (!(table.light() == light)) {
+    throw std::runtime_error(path.string() + ": measured under " + to_string(table.light()) +
+                             ", expected " + to_string(light));
+  }
+  return table;
+}
+
+void check_same_grid(const CavityTable& a, const CavityTable& b, const std::string& name) {
+  const CavityTableGrid &g = a.grid(), &h = b.grid();
+  if (g.ratio_min != h.ratio_min || g.ratios_per_decade != h.ratios_per_decade ||
+      g.ratio_count != h.ratio_count || g.rho0_count != h.rho0_count) {
+    throw std::runtime_error((data::data_dir() / "cracks" / name).string() +
+                             ": grid differs from the axial table's");
+  }
+}
+
+std::string beam_file(double zenith_deg) {
+  return "cavity_table_beam_" + std::to_string(static_cast<int>(zenith_deg)) + ".csv";
+}
+
+}  // namespace
+
+const CavityTable& shipped_beam_table(int zenith_index) {
+  static const std::vector<CavityTable> tables = [] {
+    std::vector<CavityTable> list;
+    for (double zenith : kShippedBeamZenithsDeg) {
+      list.push_back(read_shipped(beam_file(zenith), CavityLight::beam(zenith)));
+      check_same_grid(list.front(), list.back(), beam_file(zenith));
+    }
+    return list;
+  }();
+  return tables.at(static_cast<std::size_t>(zenith_index));
+}
+
+const CavityTable& shipped_sky_table() {
+  static const CavityTable table = [] {
+    CavityTable sky = read_shipped("cavity_table_diffuse.csv", CavityLight::sky());
+    check_same_grid(shipped_cavity_table(), sky, "cavity_table_diffuse.csv");
+    return sky;
+  }();
   return table;
 }
 

@@ -17,7 +17,8 @@ double crack_coverage(const CrackCell& cell, double cell_mm) {
 }
 
 void crack_cell_reflectance(const CrackCell& cell, double cell_mm, std::span<const float> surface,
-                            std::span<const float> wall, std::span<float> out, CavityModel model) {
+                            std::span<const float> wall, std::span<float> out,
+                            const CavityCorrection* correction) {
   if (surface.size() != out.size() || wall.size() != out.size()) {
     throw std::invalid_argument("crack_cell_reflectance: spectra of different lengths");
   }
@@ -27,17 +28,22 @@ void crack_cell_reflectance(const CrackCell& cell, double cell_mm, std::span<con
   }
   const ViewFactors vf = view_factors(cell.shape, cell.dims());
   const double c = crack_coverage(cell, cell_mm);
-  const bool corrected = model == CavityModel::Corrected;
-  const CavityTable* table = corrected ? &shipped_cavity_table() : nullptr;
   const double u =
-      corrected ? table->ratio_coordinate(static_cast<double>(cell.depth_mm) / cell.half_width_mm)
-                : 0.0;
+      correction != nullptr
+          ? correction->ratio_coordinate(static_cast<double>(cell.depth_mm) / cell.half_width_mm)
+          : 0.0;
   for (std::size_t i = 0; i < out.size(); ++i) {
     const double rho0 = std::clamp(static_cast<double>(wall[i]), 0.0, 1.0);
-    const double rho =
-        corrected ? table->reflectance_at(cell.shape, u, vf, rho0) : apparent_reflectance(rho0, vf);
+    const double rho = correction != nullptr ? correction->reflectance_at(cell.shape, u, vf, rho0)
+                                             : apparent_reflectance(rho0, vf);
     out[i] = static_cast<float>((1.0 - c) * surface[i] + c * rho);
   }
+}
+
+void crack_cell_reflectance(const CrackCell& cell, double cell_mm, std::span<const float> surface,
+                            std::span<const float> wall, std::span<float> out, CavityModel model) {
+  const auto correction = model == CavityModel::Corrected ? cavity_correction({}) : nullptr;
+  crack_cell_reflectance(cell, cell_mm, surface, wall, out, correction.get());
 }
 
 }  // namespace impasto::cracks

@@ -1,7 +1,8 @@
 // The canvas seen from above: K-M colour of the wet layer over the baked dry reflectance at
 // the light's quadrature nodes, to XYZ, shaded by the surface normal, to display RGB.
 // Assembled after #version, MAX_NODES/MAX_SLOTS defines, km_lib, shading_lib, flakes_lib,
-// cracks_lib and the OpenColorIO display function `vec4 ocio_display(vec4 xyz)`.
+// cracks_lib, crack_close_up_lib, crack_close_up_canvas_lib and the OpenColorIO display
+// function `vec4 ocio_display(vec4 xyz)`.
 
 in vec2 uv;
 out vec4 frag_color;
@@ -60,6 +61,11 @@ void main() {
   // reference skips it for wet_volume <= 0.
   bool wet_paint = volume > 0.0;
   vec4 crack = crack_at(cell);
+  // Zoomed in over a crack: the close-up needs the cell as if uncracked and the bare ground.
+  bool close_up = crack.x > 0.0 && close_up_zoomed(screen_to_cell);
+  vec3 xyz_uncracked = vec3(0.0);
+  vec3 xyz_ground = vec3(0.0);
+  bool saunderson = saunderson_k.x >= 0.0;
   vec3 xyz = vec3(0.0);
   for (int node = 0; node < node_count; ++node) {
     float R = component(texelFetch(dry_reflectance, ivec3(cell, node / 4), 0), node % 4);
@@ -73,8 +79,13 @@ void main() {
       }
       R = km_composite(km_layer(K, S, thickness), R);
     }
+    if (close_up) {
+      float ground = crack_ground[node];
+      xyz_uncracked += node_to_xyz[node] * (saunderson ? km_saunderson(R, saunderson_k.x, saunderson_k.y) : R);
+      xyz_ground += node_to_xyz[node] * (saunderson ? km_saunderson(ground, saunderson_k.x, saunderson_k.y) : ground);
+    }
     R = crack_blend(crack, crack_wall, R);
-    if (saunderson_k.x >= 0.0) R = km_saunderson(R, saunderson_k.x, saunderson_k.y);
+    if (saunderson) R = km_saunderson(R, saunderson_k.x, saunderson_k.y);
     xyz += node_to_xyz[node] * R;
   }
 
@@ -83,7 +94,14 @@ void main() {
                                     cell_mm);
   vec2 material = shade_blend(dry_material, wet_material, volume * inverse_gloss_mm);
   vec2 shading = shade_blinn_phong(normal, to_light, ambient, material);
-  vec3 shaded = light_intensity * (xyz * shading.x + white_xyz * shading.y);
-  shaded += light_intensity * flake_sparkles(cell, normal, total_height(cell));
+  vec3 sparkles = light_intensity * flake_sparkles(cell, normal, total_height(cell));
+  vec3 shaded = light_intensity * (xyz * shading.x + white_xyz * shading.y) + sparkles;
+  if (close_up) {
+    vec3 uncracked = light_intensity * (xyz_uncracked * shading.x + white_xyz * shading.y) + sparkles;
+    vec4 inside = crack_close_up_colour(cell, canvas_cells, fract(cell_position), crack, cell_mm,
+                                        uncracked, xyz_ground, to_light, ambient, dry_material,
+                                        white_xyz, light_intensity);
+    shaded = inside.w > 0.0 ? inside.xyz : uncracked;
+  }
   frag_color = vec4(ocio_display(vec4(shaded, 1.0)).rgb, 1.0);
 }

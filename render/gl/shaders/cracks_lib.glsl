@@ -1,15 +1,16 @@
 // Cracks seen from afar: the cavity's apparent reflectance blended into the cell by the
 // crack's area, as the CPU reference does it (render/cracks/src/crack_shading.cpp): Gouffe's
 // closed form (gouffe.hpp, cracks::apparent_reflectance) plus, in the corrected model, the
-// measured table's difference (cavity_table.cpp, CavityTable::reflectance_at). Needs
+// measured correction blended for the light (cavity_correction.cpp, interpolate_difference in
+// cavity_table.cpp). Needs
 // MAX_NODES.
 
 uniform bool crack_on;                    // false: no crack anywhere, no texture read
 uniform sampler2D crack_cells;            // per cell: coverage, F, G, packed shape and L/R
 uniform float crack_ground[MAX_NODES];    // the ground's reflectance per node
 
-uniform bool crack_corrected;             // the measured correction on (render::kCrackModel)
-uniform sampler2D crack_table;            // rho_table - rho_Gouffe: x rho0 node, y shape row
+uniform bool crack_corrected;             // the measured correction on (RenderSettings::crack_model)
+uniform sampler2D crack_table;            // rho_table - rho_Gouffe for the light: x rho0, y shape, L/R
 uniform int crack_table_rows;             // L/R rows per shape
 uniform int crack_table_rho0s;            // rho0 nodes (0 .. 1)
 uniform float crack_table_stride;         // packing of the cells' fourth channel

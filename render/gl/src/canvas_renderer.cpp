@@ -85,6 +85,8 @@ void CanvasRenderer::build_program() {
   source += shaders::shading_lib;
   source += shaders::flakes_lib;
   source += shaders::cracks_lib;
+  source += shaders::crack_close_up_lib;
+  source += shaders::crack_close_up_canvas_lib;
   source += display_->glsl();
   source += shaders::canvas_km_frag;
   pass_ = std::make_unique<FullscreenPass>("canvas_km_frag.glsl", std::move(source));
@@ -112,6 +114,8 @@ void CanvasRenderer::set_shading(const render::RenderSettings& settings) {
   settings_.saunderson = settings.saunderson;
   settings_.saunderson_k1 = settings.saunderson_k1;
   settings_.saunderson_k2 = settings.saunderson_k2;
+  settings_.cracks = settings.cracks;  // the crack correction follows the light in draw()
+  settings_.crack_model = settings.crack_model;
   render::validate(settings_);
 }
 
@@ -194,6 +198,7 @@ void CanvasRenderer::upload_tiles(const paintcore::Canvas& canvas,
 }
 
 void CanvasRenderer::draw(const CanvasView& view, int viewport_w, int viewport_h) {
+  cracks_->prepare(settings_);  // uploads first: an upload binds to the active unit
   const ShaderProgram& program = pass_->program();
   program.use();
   pigments_.bind(0);
@@ -253,7 +258,8 @@ void CanvasRenderer::draw(const CanvasView& view, int viewport_w, int viewport_h
   glUniform1f(program.uniform("cell_mm"), static_cast<float>(cell_mm_));
 
   flakes_->bind(program, settings_, cell_mm_);
-  cracks_->bind(program, palette_, settings_.cracks);
+  cracks_->bind(program, palette_, settings_);
+  cracks_->bind_close_up(program, settings_, options_.crack_close_up_min_pixels);
 
   pass_->draw();
   check_gl_error("canvas K-M pass");

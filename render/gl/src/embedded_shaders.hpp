@@ -3,11 +3,13 @@
 
 namespace impasto::render_gl::shaders {
 
-extern const char* const fullscreen_vert;  // full-viewport triangle, uv 0..1
-extern const char* const km_lib;           // K-M layer and compositing (no #version)
-extern const char* const shading_lib;      // normals and Blinn-Phong (no #version)
-extern const char* const flakes_lib;       // flake sparkles (no #version)
-extern const char* const cracks_lib;       // crack far-view blend (no #version)
-extern const char* const canvas_km_frag;   // the canvas pass (after the libraries)
+extern const char* const fullscreen_vert;            // full-viewport triangle, uv 0..1
+extern const char* const km_lib;                     // K-M layer and compositing (no #version)
+extern const char* const shading_lib;                // normals and Blinn-Phong (no #version)
+extern const char* const flakes_lib;                 // flake sparkles (no #version)
+extern const char* const cracks_lib;                 // crack far-view blend (no #version)
+extern const char* const crack_close_up_lib;         // a cavity shaded point by point
+extern const char* const crack_close_up_canvas_lib;  // the close-up in the canvas pass
+extern const char* const canvas_km_frag;             // the canvas pass (after the libraries)
 
 }  // namespace impasto::render_gl::shaders

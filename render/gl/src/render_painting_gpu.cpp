@@ -3,22 +3,22 @@
 #include <algorithm>
 #include <cctype>
 #include <stdexcept>
+#include <string>
 
 #include "impasto/render_gl/canvas_renderer.hpp"
 #include "impasto/render_gl/framebuffer.hpp"
 
 namespace impasto::render_gl {
 
-render::Image render_canvas_in_current_context(const paintcore::Canvas& canvas,
-                                               const render::RenderSettings& settings,
-                                               render::SpectralPalette palette) {
-  const int width = canvas.width_cells();
-  const int height = canvas.height_cells();
-  CanvasRenderer renderer(width, height, settings, std::move(palette));
-  renderer.upload_all(canvas);
+namespace {
+
+// Draws the canvas through `view` into a width x height float target and reads it back as an
+// Image (rows top-down).
+render::Image draw_to_image(CanvasRenderer& renderer, const CanvasView& view, int width,
+                            int height) {
   Framebuffer target(width, height, TexelFormat::kRGBA32F);
   target.bind();
-  renderer.draw(one_pixel_per_cell(width, height), width, height);
+  renderer.draw(view, width, height);
   const std::vector<float> rgba = target.read_rgba_float();
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 
@@ -37,6 +37,56 @@ render::Image render_canvas_in_current_context(const paintcore::Canvas& canvas,
     }
   }
   return image;
+}
+
+}  // namespace
+
+render::Image render_canvas_in_current_context(const paintcore::Canvas& canvas,
+                                               const render::RenderSettings& settings,
+                                               render::SpectralPalette palette) {
+  const int width = canvas.width_cells();
+  const int height = canvas.height_cells();
+  CanvasRenderer renderer(width, height, settings, std::move(palette));
+  renderer.upload_all(canvas);
+  return draw_to_image(renderer, one_pixel_per_cell(width, height), width, height);
+}
+
+render::Image render_painting_close_up_gpu(const paintcore::Painting& painting,
+                                           const render::RenderSettings& settings,
+                                           const render::CellRegion& region, int pixels_per_cell,
+                                           HeadlessBackend backend) {
+  const paintcore::Canvas& canvas = painting.canvas();
+  if (region.w < 1 || region.h < 1 || region.x < 0 || region.y < 0 ||
+      region.x + region.w > canvas.width_cells() || region.y + region.h > canvas.height_cells()) {
+    throw std::runtime_error("close-up: field 'region' is not inside the canvas " +
+                             std::to_string(canvas.width_cells()) + "x" +
+                             std::to_string(canvas.height_cells()));
+  }
+  if (pixels_per_cell < 1 || pixels_per_cell > 256) {
+    throw std::runtime_error("close-up: field 'zoom' must be 1..256 pixels per cell");
+  }
+  // Linear sRGB, as the CPU close-up returns it.
+  render::RenderSettings linear = settings;
+  linear.display = render::DisplayEncoding::linear_srgb;
+  auto context = create_headless_context(backend);
+  GpuViewOptions options;
+  options.crack_close_up_min_pixels = 1.0f;  // shown at any zoom, as the CPU's --zoom does
+  CanvasRenderer renderer(canvas.width_cells(), canvas.height_cells(), linear,
+                          render::SpectralPalette(linear, painting.pigment_slots()), options);
+  renderer.upload_all(canvas);
+  const CanvasView view{region.x + 0.5 * region.w, region.y + 0.5 * region.h,
+                        static_cast<double>(pixels_per_cell), 0.0};
+  return draw_to_image(renderer, view, region.w * pixels_per_cell, region.h * pixels_per_cell);
+}
+
+void render_painting_close_up_gpu_to_file(const paintcore::Painting& painting,
+                                          const render::RenderSettings& settings,
+                                          const render::CellRegion& region, int pixels_per_cell,
+                                          const std::filesystem::path& path,
+                                          HeadlessBackend backend) {
+  render::image_file_type(path);  // before the work: a bad name fails fast
+  render::write_close_up_image(
+      render_painting_close_up_gpu(painting, settings, region, pixels_per_cell, backend), path);
 }
 
 render::Image render_painting_gpu(const paintcore::Canvas& canvas,

@@ -37,16 +37,31 @@ void ShadedViewCache::invalidate_tiles(std::span<const int> tiles) {
   dirty_tiles_.insert(dirty_tiles_.end(), tiles.begin(), tiles.end());
 }
 
-std::array<double, 18> ShadedViewCache::look_of(const CanvasRenderer& renderer,
+std::array<double, 21> ShadedViewCache::look_of(const CanvasRenderer& renderer,
                                                 const CanvasView& view) const {
   const render::RenderSettings& s = renderer.settings();
   const GpuViewOptions& o = renderer.view_options();
-  return {s.light_azimuth_deg,      s.light_elevation_deg,    s.ambient,
-          s.dry_material.specular,  s.dry_material.shininess, s.wet_material.specular,
-          s.wet_material.shininess, s.wet_gloss_mm,           s.saunderson ? 1.0 : 0.0,
-          s.saunderson_k1,          s.saunderson_k2,          o.light_intensity,
-          o.background_rgb[0],      o.background_rgb[1],      o.background_rgb[2],
-          view.pixels_per_cell,     view.rotation_rad,        renderer.cell_mm()};
+  return {s.light_azimuth_deg,
+          s.light_elevation_deg,
+          s.ambient,
+          s.dry_material.specular,
+          s.dry_material.shininess,
+          s.wet_material.specular,
+          s.wet_material.shininess,
+          s.wet_gloss_mm,
+          s.saunderson ? 1.0 : 0.0,
+          s.saunderson_k1,
+          s.saunderson_k2,
+          o.light_intensity,
+          o.background_rgb[0],
+          o.background_rgb[1],
+          o.background_rgb[2],
+          view.pixels_per_cell,
+          view.rotation_rad,
+          renderer.cell_mm(),
+          s.cracks ? 1.0 : 0.0,
+          static_cast<double>(s.crack_model),
+          o.crack_close_up_min_pixels};
 }
 
 std::vector<PixelRect> ShadedViewCache::shift_image(int dx, int dy) {

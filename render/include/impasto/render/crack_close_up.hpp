@@ -34,6 +34,10 @@ struct CloseUpView {
   CanvasVec toward_eye{0.0, 0.0, 1.0};  // orthographic; z > 0
 };
 
+// The close-up's light for render settings: toward the settings' light (azimuth, elevation),
+// its disc of light_size_deg, the ambient share as the sky.
+CloseUpLight close_up_light(const RenderSettings& settings);
+
 // The light's shadow_rays directions over its disc (a Vogel spiral, even in solid angle),
 // canvas frame; the close-up's soft shadows average over them.
 std::vector<CanvasVec> close_up_light_directions(const CloseUpLight& light);
@@ -74,8 +78,11 @@ Image render_crack_close_up(const paintcore::Canvas& canvas, const Image& surfac
 Image render_painting_close_up(const paintcore::Painting& painting, const RenderSettings& settings,
                                const CellRegion& region, int pixels_per_cell);
 
-// The same written by extension: .png (the sRGB curve) or .exr (linear). Throws
+// A linear sRGB close-up written by extension: .png (the sRGB curve) or .exr (linear). Throws
 // std::runtime_error naming the file for another extension.
+void write_close_up_image(Image image, const std::filesystem::path& path);
+
+// render_painting_close_up written by write_close_up_image.
 void render_painting_close_up_to_file(const paintcore::Painting& painting,
                                       const RenderSettings& settings, const CellRegion& region,
                                       int pixels_per_cell, const std::filesystem::path& path);

@@ -4,29 +4,39 @@
 // reflectance rho0 = the exposed layer's: the canvas ground or the cell's baked dry stack)
 // blends into the cell's reflectance by the crack's area fraction. A tile without a crack
 // costs one pointer test; a canvas without cracks, one per tile.
-#include <vector>
-
 #include <array>
+#include <memory>
+#include <vector>
 
 #include "impasto/paintcore/canvas.hpp"
 #include "impasto/paintcore/crack_layer.hpp"
+#include "impasto/render/render_settings.hpp"
+
+namespace impasto::cracks {
+class CavityCorrection;
+}
 
 namespace impasto::render {
 
-// The cavity model both renderers use (CPU and GPU): true, Gouffé's closed form corrected
-// by the measured table (cracks/cavity_table.hpp); false, the closed form alone.
-inline constexpr bool kCrackTableCorrection = true;
+// The share of the light a crack's opening receives from the sky, which decides how the
+// axial and the diffuse correction tables blend: the ambient share, or all of it under a
+// diffuse (overcast) light.
+double crack_sky_share(const RenderSettings& settings);
 
-// The shipped correction table as the GPU uploads it: differences rho_table - rho_Gouffe,
-// rho0_count per row, ratio_count rows per shape, shapes in CavityShape order; and F, G of
-// each shape at the deepest row (for the decay beyond it).
+// The correction for the settings' light (cracks/cavity_correction.hpp: the shipped tables
+// blended for the sun's zenith and the sky's share) as the GPU uploads it: differences
+// rho_table - rho_Gouffe, rho0_count per row, ratio_count rows per shape, shapes in
+// CavityShape order; and F, G of each shape at the deepest row (for the decay beyond it).
 struct CrackTableData {
   int ratio_count = 0;
   int rho0_count = 0;
-  std::vector<float> differences;
+  std::vector<float> differences;  // [shape][L/R][rho0]
   std::array<float, 6> last_F{}, last_G{};
+  double sun_zenith_deg = 0.0, sky_share = 0.0;  // the light it was blended for
 };
-const CrackTableData& crack_table_data();
+CrackTableData crack_table_data(const RenderSettings& settings);
+// The sun zenith and sky share crack_table_data blends for (cheap: to see whether it changed).
+std::array<double, 2> crack_table_data_light(const RenderSettings& settings);
 
 // What the far-view blend of one cracked cell needs: the area fraction c of its opening,
 // Gouffe's view factors F and G of its shape and size, and where its shape and L/R fall in
@@ -45,8 +55,8 @@ CrackOptics crack_optics(const paintcore::CrackRecord& record, double cell_mm);
 class CrackTileShading {
  public:
   // `ground`: the ground reflectance per node (`nodes` values). Inactive where the tile has
-  // no crack or `enabled` is false.
-  CrackTileShading(const paintcore::Canvas& canvas, int tile_index, bool enabled,
+  // no crack or settings.cracks is false.
+  CrackTileShading(const paintcore::Canvas& canvas, int tile_index, const RenderSettings& settings,
                    const float* ground, int nodes);
 
   bool active() const { return tile_ != nullptr; }
@@ -60,6 +70,7 @@ class CrackTileShading {
  private:
   const paintcore::CrackTile* tile_ = nullptr;
   double cell_mm_;
+  std::shared_ptr<const cracks::CavityCorrection> correction_;  // null: Gouffé's closed form
   const float* ground_;
   int nodes_;
   std::vector<float> walls_;

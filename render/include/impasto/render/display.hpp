@@ -1,6 +1,7 @@
 #pragma once
 // XYZ (D65-referred, Y = 1 for white) to display RGB through OpenColorIO. Debian's OCIO 2.1
 // ships no configs, so the config is built in code from OCIO's built-in transforms.
+#include <array>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -22,6 +23,11 @@ DisplayEncoding parse_display_encoding(std::string_view text);
 std::string_view to_string(DisplayEncoding encoding);
 // Every encoding, for help texts.
 const std::vector<std::string>& display_encoding_names();
+
+// XYZ (D65) to linear sRGB, row-major: what DisplayEncoding::linear_srgb applies.
+std::array<double, 9> xyz_to_linear_srgb();
+// The inverse of a row-major 3x3 matrix (by cofactors; the caller's matrix is invertible).
+std::array<double, 9> invert_3x3(const std::array<double, 9>& m);
 
 class DisplayTransform {
  public:

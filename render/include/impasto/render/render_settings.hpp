@@ -21,6 +21,12 @@ enum class ReflectanceStorage {
 // (overcast) light lights every flake a little and none brightly.
 enum class LightType { directional, point, spot, diffuse };
 
+// How the far view finds a crack's apparent reflectance (docs/cracks.md).
+enum class CrackModel {
+  gouffe,     // Gouffé's closed form: fast, too bright in deep narrow cavities (up to 0.27)
+  corrected,  // the closed form corrected by the measured tables (axial and sky light)
+};
+
 struct RenderSettings {
   // --- light and colour ---
   std::string light = "D65";  // data::light_from_spec: "D65", "A", "F11", "blackbody:5600", file
@@ -62,6 +68,7 @@ struct RenderSettings {
 
   // --- cracks (docs/cracks.md) ---
   bool cracks = true;  // off: cracked cells show their surface as if uncracked
+  CrackModel crack_model = CrackModel::corrected;
 
   // --- storage and threads ---
   ReflectanceStorage storage = ReflectanceStorage::float32;
@@ -72,6 +79,7 @@ struct RenderSettings {
 void validate(const RenderSettings& settings);
 
 ReflectanceStorage parse_reflectance_storage(std::string_view text);  // "float" or "half"
-LightType parse_light_type(std::string_view text);  // "directional", "point", "spot", "diffuse"
+LightType parse_light_type(std::string_view text);    // "directional", "point", "spot", "diffuse"
+CrackModel parse_crack_model(std::string_view text);  // "gouffe", "corrected"
 
 }  // namespace impasto::render

@@ -33,7 +33,8 @@ class CanvasRenderer {
   // baked per node, so its reflectance changes with the light).
   void set_settings(const render::RenderSettings& settings, render::SpectralPalette palette);
   // Takes only what the shader reads as uniforms (light direction, ambient, materials,
-  // gloss, Saunderson) from `settings`: no re-bake, no upload. For dragging the light.
+  // gloss, Saunderson, cracks and their model) from `settings`: no re-bake, no upload. For
+  // dragging the light.
   void set_shading(const render::RenderSettings& settings);
   // Dry layer i is not shown where hidden[i] (colour only; heights keep every layer). Call
   // upload_all afterwards.

@@ -9,6 +9,9 @@ namespace impasto::render_gl {
 struct GpuViewOptions {
   float light_intensity = 1.0f;                              // exposure, 1 = as the CPU renders
   std::array<float, 3> background_rgb{0.16f, 0.16f, 0.18f};  // display RGB outside the canvas
+  // Zoomed in to this many screen pixels per cell or more, cracks show their insides (the
+  // close-up, docs/cracks.md); further out, their far-view blend. 0: never.
+  float crack_close_up_min_pixels = 6.0f;
 };
 
 }  // namespace impasto::render_gl

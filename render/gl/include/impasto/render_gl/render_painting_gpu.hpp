@@ -7,6 +7,7 @@
 
 #include "impasto/paintcore/canvas.hpp"
 #include "impasto/paintcore/painting.hpp"
+#include "impasto/render/crack_close_up.hpp"
 #include "impasto/render/image.hpp"
 #include "impasto/render/render_settings.hpp"
 #include "impasto/render/spectral_palette.hpp"
@@ -35,6 +36,21 @@ void render_painting_gpu_to_file(const paintcore::Painting& painting,
                                  const render::RenderSettings& settings,
                                  const std::filesystem::path& path,
                                  HeadlessBackend backend = HeadlessBackend::kAuto);
+
+// `impasto render --gpu --zoom P --region R`: the close-up (render::render_painting_close_up)
+// through the window's canvas pass, seen at P pixels per cell: linear sRGB, region.w P x
+// region.h P pixels. Throws std::runtime_error for a region outside the canvas, P outside
+// 1..256, or an image beyond the GPU's limits.
+render::Image render_painting_close_up_gpu(const paintcore::Painting& painting,
+                                           const render::RenderSettings& settings,
+                                           const render::CellRegion& region, int pixels_per_cell,
+                                           HeadlessBackend backend = HeadlessBackend::kAuto);
+// The same written as render::write_close_up_image writes it.
+void render_painting_close_up_gpu_to_file(const paintcore::Painting& painting,
+                                          const render::RenderSettings& settings,
+                                          const render::CellRegion& region, int pixels_per_cell,
+                                          const std::filesystem::path& path,
+                                          HeadlessBackend backend = HeadlessBackend::kAuto);
 
 // Renders into the current context (no context made): for callers that keep one.
 render::Image render_canvas_in_current_context(const paintcore::Canvas& canvas,
