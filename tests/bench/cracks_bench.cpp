@@ -5,6 +5,7 @@
 
 #include <vector>
 
+#include "impasto/cracks/cavity_correction.hpp"
 #include "impasto/cracks/crack_shading.hpp"
 #include "impasto/cracks/craquelure.hpp"
 #include "impasto/cracks/gouffe.hpp"
@@ -36,15 +37,29 @@ void BM_CracksViewFactors(benchmark::State& state) {
 }
 BENCHMARK(BM_CracksViewFactors)->DenseRange(0, 5);
 
+// A cell's 16 wavelengths under the default scene's corrected model (blended once, as a
+// render does).
 void BM_CracksCellSpectrum16(benchmark::State& state) {
   const CrackCell cell{0.2f, 0.03f, CavityShape::VGroove, kCanvasGround};
   std::vector<float> surface(16, 0.7f), wall(16, 0.4f), out(16);
+  const auto correction = cavity_correction({30.0, 0.25, true});
   for (auto _ : state) {
-    crack_cell_reflectance(cell, 0.1, surface, wall, out);
+    crack_cell_reflectance(cell, 0.1, surface, wall, out, correction.get());
     benchmark::DoNotOptimize(out.data());
   }
 }
 BENCHMARK(BM_CracksCellSpectrum16);
+
+// Blending the shipped tables for a new light (once per light the render sees).
+void BM_CracksCorrectionForALight(benchmark::State& state) {
+  double zenith = 10.0;
+  for (auto _ : state) {
+    const CavityCorrection correction({zenith, 0.25, true});
+    benchmark::DoNotOptimize(correction.differences().data());
+    zenith = zenith < 80.0 ? zenith + 1.0 : 10.0;
+  }
+}
+BENCHMARK(BM_CracksCorrectionForALight)->Unit(benchmark::kMicrosecond);
 
 void BM_CracksMonteCarloReference(benchmark::State& state) {
   MonteCarloSettings settings;
