@@ -67,21 +67,18 @@ double CavityCorrection::reflectance_at(CavityShape shape, double u, const ViewF
 }
 
 std::shared_ptr<const CavityCorrection> cavity_correction(const CrackSceneLight& light) {
-  // A render asks once per tile; a session sees a handful of lights.
+  // A render asks once per tile; a session sees a handful of lights, or a stream of them
+  // while the light is dragged, so the cache starts again rather than grow past 32.
   static std::mutex mutex;
   static std::map<std::tuple<double, double, bool>, std::shared_ptr<const CavityCorrection>> cache;
-  const std::lock_guard lock(mutex);
   const auto key =
       std::make_tuple(light.sun_zenith_deg, light.sky_share, light.average_groove_azimuth);
-  auto& entry = cache[key];
-  if (!entry) {
-    if (cache.size() > 32) {
-      cache.clear();  // lights dragged around: start again rather than grow
-      return cache[key] = std::make_shared<const CavityCorrection>(light);
-    }
-    entry = std::make_shared<const CavityCorrection>(light);
-  }
-  return entry;
+  const std::lock_guard lock(mutex);
+  if (const auto found = cache.find(key); found != cache.end()) return found->second;
+  if (cache.size() >= 32) cache.clear();
+  auto made = std::make_shared<const CavityCorrection>(light);
+  cache.emplace(key, made);
+  return made;
 }
 
 double cavity_reflectance(CavityModel model, CavityShape shape, const CavityDims& dims,
