@@ -11,7 +11,8 @@
 #include "session/preview.hpp"
 #include "session/replay.hpp"
 
-namespace impasto::app {
+// A namespace of its own: the command files are compiled together (unity build).
+namespace impasto::app::replay_cmd {
 namespace {
 
 struct ReplayArgs {
@@ -104,4 +105,4 @@ const CommandRegistrar registrar("replay", [](CLI::App& root) {
 });
 
 }  // namespace
-}  // namespace impasto::app
+}  // namespace impasto::app::replay_cmd
