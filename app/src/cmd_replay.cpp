@@ -3,6 +3,7 @@
 #include <impasto/render/render_painting.hpp>
 
 #include <iostream>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
 #include <string>
