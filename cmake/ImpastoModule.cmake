@@ -34,17 +34,32 @@ function(impasto_module name)
   impasto_warnings(impasto_${name})
 endfunction()
 
+# The definitions every test program gets.
+function(impasto_test_definitions target)
+  target_compile_definitions(${target} PRIVATE
+    IMPASTO_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+    IMPASTO_SHARED_DIR="${PROJECT_SOURCE_DIR}/../shared")
+endfunction()
+
 # impasto_test(NAME SOURCES... DEPS ...): one GoogleTest executable registered with CTest.
 function(impasto_test name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_DEPS} GTest::gtest GTest::gtest_main)
-  target_compile_definitions(${name} PRIVATE
-    IMPASTO_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
-    IMPASTO_SHARED_DIR="${PROJECT_SOURCE_DIR}/../shared")
+  impasto_test_definitions(${name})
   impasto_warnings(${name})
-  # GoogleTest's headers are parsed once per test program, not once per test file.
-  target_precompile_headers(${name} PRIVATE <gtest/gtest.h>)
+  # GoogleTest's headers are parsed once for all test programs: one precompiled header, built
+  # by a target with the same flags (an empty source), which every test program reuses.
+  if(NOT TARGET impasto_gtest_pch)
+    set(pch_source ${PROJECT_BINARY_DIR}/impasto_gtest_pch.cpp)
+    file(CONFIGURE OUTPUT ${pch_source} CONTENT "// The precompiled header's own source.\n")
+    add_library(impasto_gtest_pch OBJECT ${pch_source})
+    target_link_libraries(impasto_gtest_pch PRIVATE GTest::gtest)
+    impasto_test_definitions(impasto_gtest_pch)
+    impasto_warnings(impasto_gtest_pch)
+    target_precompile_headers(impasto_gtest_pch PRIVATE <gtest/gtest.h>)
+  endif()
+  target_precompile_headers(${name} REUSE_FROM impasto_gtest_pch)
   gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60
                        PROPERTIES ENVIRONMENT "IMPASTO_DATA_DIR=${PROJECT_SOURCE_DIR}/data")
 endfunction()

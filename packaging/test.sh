@@ -12,7 +12,8 @@ cmake -S . -B build/release -G Ninja -DCMAKE_BUILD_TYPE=Release -DIMPASTO_WERROR
 cmake --build build/release -j "$jobs"
 ctest --test-dir build/release -j "$jobs" --timeout 600 | tee build/release/ctest.log
 
-cmake -S . -B build/sanitize -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS="-O1 -g1" \
+# -O1 -g1 replace Debug's own -g (in CMAKE_CXX_FLAGS they came first, and -g overrode -g1).
+cmake -S . -B build/sanitize -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g1" \
   -DIMPASTO_WERROR=ON -DIMPASTO_SANITIZE=ON -DIMPASTO_BUILD_BENCHMARKS=OFF
 cmake --build build/sanitize -j "$jobs"
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"

@@ -20,7 +20,8 @@
 
 #include "command.hpp"
 
-namespace impasto::app {
+// A namespace of its own: the command files are compiled together (unity build).
+namespace impasto::app::bench_color_cmd {
 namespace {
 
 using namespace impasto::render;
@@ -160,4 +161,4 @@ const CommandRegistrar registrar("bench color", [](CLI::App& root) {
 });
 
 }  // namespace
-}  // namespace impasto::app
+}  // namespace impasto::app::bench_color_cmd

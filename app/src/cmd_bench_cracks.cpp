@@ -21,7 +21,8 @@
 
 #include "command.hpp"
 
-namespace impasto::app {
+// A namespace of its own: the command files are compiled together (unity build).
+namespace impasto::app::bench_cracks_cmd {
 namespace {
 
 using namespace impasto::cracks;
@@ -188,4 +189,4 @@ const CommandRegistrar registrar("bench cracks", [](CLI::App& root) {
 });
 
 }  // namespace
-}  // namespace impasto::app
+}  // namespace impasto::app::bench_cracks_cmd

@@ -16,7 +16,8 @@
 
 #include "command.hpp"
 
-namespace impasto::app {
+// A namespace of its own: the command files are compiled together (unity build).
+namespace impasto::app::bench_gpu_cmd {
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -208,4 +209,4 @@ void setup(CLI::App& root) {
 const CommandRegistrar registrar("bench gpu", setup);
 
 }  // namespace
-}  // namespace impasto::app
+}  // namespace impasto::app::bench_gpu_cmd

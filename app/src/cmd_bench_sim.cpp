@@ -12,7 +12,8 @@
 
 #include "command.hpp"
 
-namespace impasto::app {
+// A namespace of its own: the command files are compiled together (unity build).
+namespace impasto::app::bench_sim_cmd {
 namespace {
 
 struct BenchSimArgs {
@@ -70,4 +71,4 @@ const CommandRegistrar registrar("bench sim", [](CLI::App& root) {
 });
 
 }  // namespace
-}  // namespace impasto::app
+}  // namespace impasto::app::bench_sim_cmd

@@ -12,7 +12,8 @@
 
 #include "command.hpp"
 
-namespace impasto::app {
+// A namespace of its own: the command files are compiled together (unity build).
+namespace impasto::app::color_cmd {
 namespace {
 
 using namespace impasto::data;
@@ -80,4 +81,4 @@ const CommandRegistrar registrar("color", [](CLI::App& root) {
 });
 
 }  // namespace
-}  // namespace impasto::app
+}  // namespace impasto::app::color_cmd

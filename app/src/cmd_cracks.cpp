@@ -19,7 +19,8 @@
 
 #include "command.hpp"
 
-namespace impasto::app {
+// A namespace of its own: the command files are compiled together (unity build).
+namespace impasto::app::cracks_cmd {
 namespace {
 
 using namespace impasto::cracks;
@@ -273,4 +274,4 @@ const CommandRegistrar registrar("cracks", [](CLI::App& root) {
 });
 
 }  // namespace
-}  // namespace impasto::app
+}  // namespace impasto::app::cracks_cmd

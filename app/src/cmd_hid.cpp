@@ -16,7 +16,8 @@
 
 #include "command.hpp"
 
-namespace impasto::app {
+// A namespace of its own: the command files are compiled together (unity build).
+namespace impasto::app::hid_cmd {
 
 namespace {
 
@@ -210,4 +211,4 @@ const CommandRegistrar kRegistrar{
 
 }  // namespace
 
-}  // namespace impasto::app
+}  // namespace impasto::app::hid_cmd

@@ -9,7 +9,8 @@
 #include "command.hpp"
 #include "window/paint_options.hpp"
 
-namespace impasto::app {
+// A namespace of its own: the command files are compiled together (unity build).
+namespace impasto::app::paint_cmd {
 namespace {
 
 struct PaintArgs {
@@ -57,4 +58,4 @@ void setup(CLI::App& root) {
 const CommandRegistrar registrar("paint", setup);
 
 }  // namespace
-}  // namespace impasto::app
+}  // namespace impasto::app::paint_cmd

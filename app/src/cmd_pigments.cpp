@@ -12,7 +12,8 @@
 
 #include "command.hpp"
 
-namespace impasto::app {
+// A namespace of its own: the command files are compiled together (unity build).
+namespace impasto::app::pigments_cmd {
 namespace {
 
 using namespace impasto::data;
@@ -107,4 +108,4 @@ const CommandRegistrar registrar("pigments", [](CLI::App& root) {
 });
 
 }  // namespace
-}  // namespace impasto::app
+}  // namespace impasto::app::pigments_cmd

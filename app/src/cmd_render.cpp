@@ -17,7 +17,8 @@
 #define IMPASTO_RENDER_GPU 1
 #endif
 
-namespace impasto::app {
+// A namespace of its own: the command files are compiled together (unity build).
+namespace impasto::app::render_cmd {
 namespace {
 
 using namespace impasto::render;
@@ -199,4 +200,4 @@ const CommandRegistrar registrar("render", [](CLI::App& root) {
 });
 
 }  // namespace
-}  // namespace impasto::app
+}  // namespace impasto::app::render_cmd

@@ -3,6 +3,7 @@
 #include <impasto/render/render_painting.hpp>
 
 #include <iostream>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -11,7 +12,8 @@
 #include "session/preview.hpp"
 #include "session/replay.hpp"
 
-namespace impasto::app {
+// A namespace of its own: the command files are compiled together (unity build).
+namespace impasto::app::replay_cmd {
 namespace {
 
 struct ReplayArgs {
@@ -104,4 +106,4 @@ const CommandRegistrar registrar("replay", [](CLI::App& root) {
 });
 
 }  // namespace
-}  // namespace impasto::app
+}  // namespace impasto::app::replay_cmd

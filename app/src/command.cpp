@@ -1,6 +1,11 @@
 #include "command.hpp"
 
+#include <cstdlib>
+#include <exception>
+#include <iostream>
 #include <map>
+
+#include "command_line.hpp"
 
 namespace impasto::app {
 namespace {
@@ -14,8 +19,7 @@ CommandRegistrar::CommandRegistrar(std::string name, CommandSetup setup) {
   registry().emplace(std::move(name), std::move(setup));
 }
 
-CLI::App* command_group(CLI::App& root, const std::string& name,
-                        const std::string& description) {
+CLI::App* command_group(CLI::App& root, const std::string& name, const std::string& description) {
   for (CLI::App* sub : root.get_subcommands([](CLI::App*) { return true; })) {
     if (sub->get_name() == name) return sub;
   }
@@ -26,6 +30,33 @@ CLI::App* command_group(CLI::App& root, const std::string& name,
 
 void add_registered_commands(CLI::App& root) {
   for (auto& [name, setup] : registry()) setup(root);
+}
+
+int run_command_line(int argc, char** argv) {
+  CLI::App root{"Impasto: interactive 2.5D painting with thick, spectrally rendered paint"};
+  root.require_subcommand(0, 1);
+  root.set_version_flag("--version", "impasto 0.1.0");
+  add_registered_commands(root);
+  // Plain `impasto` opens the painting window where there is a display to show it on.
+  const bool has_display = std::getenv("DISPLAY") || std::getenv("WAYLAND_DISPLAY");
+  const bool has_window =
+      !root.get_subcommands([](CLI::App* sub) { return sub->get_name() == "paint"; }).empty();
+  try {
+    if (argc == 1 && has_display && has_window) {
+      root.parse(std::string("paint"), false);
+    } else {
+      root.parse(argc, argv);
+    }
+  } catch (const CLI::ParseError& e) {
+    return root.exit(e);
+  } catch (const std::exception& e) {
+    std::cerr << "impasto: " << e.what() << "\n";
+    return 1;
+  }
+  if (root.get_subcommands().empty()) {
+    std::cout << root.help();
+  }
+  return 0;
 }
 
 }  // namespace impasto::app

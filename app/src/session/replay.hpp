@@ -9,7 +9,8 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
+// Only declared here: the full header costs every includer a few seconds to compile.
+#include <nlohmann/json_fwd.hpp>
 
 namespace impasto::app {
 
