@@ -177,10 +177,8 @@ void crack_close_up_cell(const paintcore::CrackRecord& record, double cell_mm, b
   std::vector<Vec3d> suns;
   for (const CanvasVec& s : close_up_light_directions(light)) suns.push_back(to_cavity(s, swap_xy));
 
-  // Irradiances as shares of the canvas's: E_sky + E_sun cos(z) = 1 when the light is up.
-  const double sun_z = light.toward_light[2];
-  const double e_sky = sun_z > 0.0 ? light.sky_fraction : 1.0;
-  const double e_sun = sun_z > 0.0 ? (1.0 - light.sky_fraction) / sun_z : 0.0;
+  const CloseUpIrradiance irradiance = close_up_irradiance(light);
+  const double e_sky = irradiance.sky, e_sun = irradiance.sun;
   // Gouffe's uniform walls: the mean first irradiance of the walls is (A/S) E_canvas = G,
   // each bounce returning rho0 (1 - G) of it.
   const double G = cracks::view_factors(shape, dims).G;
@@ -213,6 +211,27 @@ void crack_close_up_cell(const paintcore::CrackRecord& record, double cell_mm, b
   }
 }
 
+CloseUpIrradiance close_up_irradiance(const CloseUpLight& light) {
+  // E_sky + E_sun cos(z) = 1 when the light is up; below the horizon only the sky lights.
+  const double sun_z = light.toward_light[2];
+  if (sun_z <= 0.0) return {1.0, 0.0};
+  return {light.sky_fraction, (1.0 - light.sky_fraction) / sun_z};
+}
+
+void check_close_up_region(const CellRegion& region, int pixels_per_cell, int width_cells,
+                           int height_cells) {
+  if (region.w < 1 || region.h < 1 || region.x < 0 || region.y < 0 ||
+      region.x + region.w > width_cells || region.y + region.h > height_cells) {
+    throw std::runtime_error("close-up: field 'region' " + std::to_string(region.x) + "," +
+                             std::to_string(region.y) + "," + std::to_string(region.w) + "," +
+                             std::to_string(region.h) + " is not inside the canvas " +
+                             std::to_string(width_cells) + "x" + std::to_string(height_cells));
+  }
+  if (pixels_per_cell < 1 || pixels_per_cell > 256) {
+    throw std::runtime_error("close-up: field 'zoom' must be 1..256 pixels per cell");
+  }
+}
+
 Image render_crack_close_up(const paintcore::Canvas& canvas, const Image& surface,
                             const Image& walls, const CellRegion& region, int pixels_per_cell,
                             const CloseUpLight& light, const CloseUpView& view) {
@@ -220,16 +239,7 @@ Image render_crack_close_up(const paintcore::Canvas& canvas, const Image& surfac
   if (surface.width != W || surface.height != H || walls.width != W || walls.height != H) {
     throw std::runtime_error("close-up: surface and walls images must be the canvas's size");
   }
-  if (region.w < 1 || region.h < 1 || region.x < 0 || region.y < 0 || region.x + region.w > W ||
-      region.y + region.h > H) {
-    throw std::runtime_error("close-up: field 'region' " + std::to_string(region.x) + "," +
-                             std::to_string(region.y) + "," + std::to_string(region.w) + "," +
-                             std::to_string(region.h) + " is not inside the canvas " +
-                             std::to_string(W) + "x" + std::to_string(H));
-  }
-  if (pixels_per_cell < 1 || pixels_per_cell > 256) {
-    throw std::runtime_error("close-up: field 'zoom' must be 1..256 pixels per cell");
-  }
+  check_close_up_region(region, pixels_per_cell, W, H);
   const int P = pixels_per_cell;
   auto record_at = [&](int x, int y) -> paintcore::CrackRecord {
     if (x < 0 || y < 0 || x >= W || y >= H) return {};

@@ -244,9 +244,8 @@ double interpolate_difference(const CavityTableGrid& g, std::span<const float> d
   } else if (u > last) {
     // Deeper than the grid: the difference decays as the closed form itself does.
     const double gouffe = apparent_reflectance(rho0, vf);
-    const double last_ratio =
-        g.ratio_min * std::pow(10.0, static_cast<double>(last) / g.ratios_per_decade);
-    const double gouffe_last = apparent_reflectance(rho0, view_factors(shape, {last_ratio, 1.0}));
+    const double gouffe_last =
+        apparent_reflectance(rho0, view_factors(shape, {grid_ratio(g, last), 1.0}));
     difference *= gouffe_last > 0.0 ? std::min(1.0, gouffe / gouffe_last) : 0.0;
   }
   return difference;
@@ -265,9 +264,7 @@ CavityTable read_shipped(const std::string& name, const CavityLight& light) {
 }
 
 void check_same_grid(const CavityTable& a, const CavityTable& b, const std::string& name) {
-  const CavityTableGrid &g = a.grid(), &h = b.grid();
-  if (g.ratio_min != h.ratio_min || g.ratios_per_decade != h.ratios_per_decade ||
-      g.ratio_count != h.ratio_count || g.rho0_count != h.rho0_count) {
+  if (a.grid() != b.grid()) {
     throw std::runtime_error((data::data_dir() / "cracks" / name).string() +
                              ": grid differs from the axial table's");
   }

@@ -117,11 +117,9 @@ void CrackTexture::bind_close_up(const ShaderProgram& program,
   glUniform3fv(program.uniform("close_up_suns"), rays, suns.data());
   glUniform3fv(program.uniform("close_up_suns_swapped"), rays, swapped.data());
   glUniform1i(program.uniform("close_up_rays"), rays);
-  const double sun_z = light.toward_light[2];
-  glUniform1f(program.uniform("close_up_e_sky"),
-              static_cast<float>(sun_z > 0.0 ? light.sky_fraction : 1.0));
-  glUniform1f(program.uniform("close_up_e_sun"),
-              static_cast<float>(sun_z > 0.0 ? (1.0 - light.sky_fraction) / sun_z : 0.0));
+  const render::CloseUpIrradiance irradiance = render::close_up_irradiance(light);
+  glUniform1f(program.uniform("close_up_e_sky"), static_cast<float>(irradiance.sky));
+  glUniform1f(program.uniform("close_up_e_sun"), static_cast<float>(irradiance.sun));
   // GLSL's mat3 is column-major; the row-major matrices go in transposed.
   const std::array<double, 9> m = render::xyz_to_linear_srgb();
   const std::array<double, 9> inverse = render::invert_3x3(m);

@@ -56,15 +56,8 @@ render::Image render_painting_close_up_gpu(const paintcore::Painting& painting,
                                            const render::CellRegion& region, int pixels_per_cell,
                                            HeadlessBackend backend) {
   const paintcore::Canvas& canvas = painting.canvas();
-  if (region.w < 1 || region.h < 1 || region.x < 0 || region.y < 0 ||
-      region.x + region.w > canvas.width_cells() || region.y + region.h > canvas.height_cells()) {
-    throw std::runtime_error("close-up: field 'region' is not inside the canvas " +
-                             std::to_string(canvas.width_cells()) + "x" +
-                             std::to_string(canvas.height_cells()));
-  }
-  if (pixels_per_cell < 1 || pixels_per_cell > 256) {
-    throw std::runtime_error("close-up: field 'zoom' must be 1..256 pixels per cell");
-  }
+  render::check_close_up_region(region, pixels_per_cell, canvas.width_cells(),
+                                canvas.height_cells());
   // Linear sRGB, as the CPU close-up returns it.
   render::RenderSettings linear = settings;
   linear.display = render::DisplayEncoding::linear_srgb;

@@ -38,6 +38,14 @@ struct CloseUpView {
 // its disc of light_size_deg, the ambient share as the sky.
 CloseUpLight close_up_light(const RenderSettings& settings);
 
+// The irradiances of the close-up's sky and sun as shares of the canvas's (so that a flat
+// white cell reads 1): sky_fraction and (1 - sky_fraction) / cos(zenith); a light below the
+// horizon leaves the sky alone, at 1. Both renderers' close-ups shade with these.
+struct CloseUpIrradiance {
+  double sky = 1.0, sun = 0.0;
+};
+CloseUpIrradiance close_up_irradiance(const CloseUpLight& light);
+
 // The light's shadow_rays directions over its disc (a Vogel spiral, even in solid angle),
 // canvas frame; the close-up's soft shadows average over them.
 std::vector<CanvasVec> close_up_light_directions(const CloseUpLight& light);
@@ -86,6 +94,11 @@ void write_close_up_image(Image image, const std::filesystem::path& path);
 void render_painting_close_up_to_file(const paintcore::Painting& painting,
                                       const RenderSettings& settings, const CellRegion& region,
                                       int pixels_per_cell, const std::filesystem::path& path);
+
+// Throws std::runtime_error naming the field for a region outside a canvas of this size or a
+// zoom outside 1..256 pixels per cell.
+void check_close_up_region(const CellRegion& region, int pixels_per_cell, int width_cells,
+                           int height_cells);
 
 // "X,Y,W,H" in cells; throws std::runtime_error naming the text when malformed.
 CellRegion parse_cell_region(std::string_view text);

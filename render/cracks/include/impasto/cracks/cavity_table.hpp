@@ -55,6 +55,8 @@ struct CavityTableGrid {
   int ratios_per_decade = 4;
   int ratio_count = 13;  // 0.05 .. 50
   int rho0_count = 41;   // steps of 0.025
+
+  bool operator==(const CavityTableGrid&) const = default;
 };
 
 class CavityTable {
