@@ -52,21 +52,42 @@ void stroke(paintcore::Painting& painting, double y_mm, double x0_mm, double x1_
   painting.end_stroke();
 }
 
+// The scene both cached-view tests draw: a 256 x 192-cell canvas with the round brush loaded
+// with `mix`, and its renderer at four wavelength nodes.
+paintcore::Painting loaded_painting(const std::vector<paintcore::PigmentMixPart>& mix) {
+  paintcore::Painting painting({256, 192, 150.0, 3}, 1);
+  painting.set_brush({"round", 4.0, 0.5});
+  painting.load_brush(mix, 80.0);
+  return painting;
+}
+
+render::RenderSettings four_nodes() {
+  render::RenderSettings settings;
+  settings.wavelengths = 4;
+  return settings;
+}
+
+// The painting's renderer with every tile uploaded.
+std::unique_ptr<CanvasRenderer> uploaded_renderer(const paintcore::Painting& painting,
+                                                  const render::RenderSettings& settings) {
+  auto renderer = std::make_unique<CanvasRenderer>(
+      256, 192, settings, render::SpectralPalette(settings, painting.pigment_slots()));
+  renderer->upload_all(painting.canvas());
+  return renderer;
+}
+
 class CachedView : public ::testing::TestWithParam<CanvasView> {};
 
 TEST_P(CachedView, PartialReshadesMatchAWholeRedraw) {
   auto context = create_headless_context();
   const CanvasView view = GetParam();
   const int w = 240, h = 180;
-  paintcore::Painting painting({256, 192, 150.0, 3}, 1);
-  painting.set_brush({"round", 4.0, 0.5});
-  painting.load_brush({{"Ultramarine Blue", 2.0}, {"Titanium White", 1.0}}, 80.0);
+  paintcore::Painting painting =
+      loaded_painting({{"Ultramarine Blue", 2.0}, {"Titanium White", 1.0}});
   (void)painting.canvas().take_dirty_tiles();
-  render::RenderSettings settings;
-  settings.wavelengths = 4;
-  CanvasRenderer renderer(256, 192, settings,
-                          render::SpectralPalette(settings, painting.pigment_slots()));
-  renderer.upload_all(painting.canvas());
+  const render::RenderSettings settings = four_nodes();
+  const auto uploaded = uploaded_renderer(painting, settings);
+  CanvasRenderer& renderer = *uploaded;
   Framebuffer window(w, h, TexelFormat::kRGBA8);
   ShadedViewCache cache;
   const CachedDrawStats first = cache.draw(renderer, view, w, h, window.id());
@@ -110,15 +131,10 @@ INSTANTIATE_TEST_SUITE_P(Views, CachedView,
 TEST(CachedViewPan, WholePixelPansShadeOnlyTheUncoveredStrips) {
   auto context = create_headless_context();
   const int w = 240, h = 180;
-  paintcore::Painting painting({256, 192, 150.0, 3}, 1);
-  painting.set_brush({"round", 4.0, 0.5});
-  painting.load_brush({{"Pyrrole Red", 1.0}, {"Titanium White", 1.0}}, 80.0);
+  paintcore::Painting painting = loaded_painting({{"Pyrrole Red", 1.0}, {"Titanium White", 1.0}});
   stroke(painting, 14.0, 4.0, 30.0);
-  render::RenderSettings settings;
-  settings.wavelengths = 4;
-  CanvasRenderer renderer(256, 192, settings,
-                          render::SpectralPalette(settings, painting.pigment_slots()));
-  renderer.upload_all(painting.canvas());
+  const auto uploaded = uploaded_renderer(painting, four_nodes());
+  CanvasRenderer& renderer = *uploaded;
   Framebuffer window(w, h, TexelFormat::kRGBA8);
   ShadedViewCache cache;
 
