@@ -7,6 +7,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include "impasto/paintcore/brush_resample.hpp"
 #include "painting_impl.hpp"
 
 namespace impasto::paintcore {
@@ -79,12 +80,11 @@ void Painting::set_brush(const BrushSettings& settings, const BrushHead& head) {
   end_stroke();
   Brush next(head, settings, p.canvas.cell_mm(), slot_count());
   p.history.begin(p.brush, p.ledger, p.slots, p.canvas.dry_layers().size(), p.canvas.tile_count());
-  if (!p.brush.empty() && next.cell_count() == p.brush.cell_count()) {
-    next.volume_mm() = p.brush.volume_mm();  // same grid: the paint stays on the brush
-    next.pigment_mm() = p.brush.pigment_mm();
-    next.ensure_slots(slot_count());
-  } else if (!p.brush.empty()) {
-    wipe_brush();  // a new grid cannot hold the old paint (part of this undo step)
+  if (!p.brush.empty()) {
+    // The paint stays on the brush, resampled onto the new grid; what float rounding could
+    // not keep is booked as wiped, so the ledger and brush_totals() still agree.
+    accumulate(p.ledger.wiped,
+               resample_brush_paint(p.brush, next, p.canvas.spec().cell_area_mm2()));
   }
   p.brush = std::move(next);
   p.history.commit();

@@ -43,8 +43,8 @@ class Painting {
   const SimulationParams& params() const;
 
   // Brush. set_brush loads head `settings.head` from the brushes folder (default_brushes_dir())
-  // and keeps the brush's paint only if the grid keeps its size; otherwise the old brush's
-  // paint is wiped (and counted as wiped in the ledger).
+  // and keeps the brush's paint, resampled onto the new head's grid (resample_brush_paint);
+  // undo restores the old brush with its paint.
   void set_brush(const BrushSettings& settings);
   void set_brush(const BrushSettings& settings, const std::filesystem::path& brushes_dir);
   void set_brush(const BrushSettings& settings, const BrushHead& head);
