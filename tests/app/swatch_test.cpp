@@ -1,0 +1,152 @@
+// The Palette panel's swatch shows the mix as a stroke leaves it on the canvas: it matches
+// the rendered stroke itself, its masstone is the mix's opaque colour, and it follows the
+// simulated deposit rather than a constant.
+#include <gtest/gtest.h>
+#include <impasto/data/colorimetry.hpp>
+#include <impasto/data/pigments.hpp>
+#include <impasto/render/display.hpp>
+#include <impasto/render/tile_renderer.hpp>
+
+#include <algorithm>
+#include <array>
+#include <vector>
+
+#include "session/swatch.hpp"
+
+namespace impasto::app {
+namespace {
+
+SwatchStroke ultramarine_stroke() {
+  SwatchStroke stroke;
+  stroke.brush.head = "round";
+  stroke.brush.size_mm = 6.0;
+  stroke.brush.stiffness = 0.5;
+  stroke.load.volume_mm3 = 40.0;
+  stroke.load.mix = {{"Ultramarine Blue", 1.0}};
+  stroke.pressure = 0.6f;
+  stroke.dpi = 150.0;
+  stroke.weave_seed = 0;  // flat: the rendered stroke's shading comes from the paint alone
+  return stroke;
+}
+
+// Linear sRGB settings, so rendered colours convert to L*a*b* without a curve.
+render::RenderSettings linear_settings() {
+  render::RenderSettings settings;
+  settings.display = render::DisplayEncoding::linear_srgb;
+  return settings;
+}
+
+data::Lab lab_of(const DisplayRgb& rgb) {
+  static const std::array<double, 9> to_xyz = render::invert_3x3(render::xyz_to_linear_srgb());
+  const auto xyz_of = [](double r, double g, double b) {
+    return data::Xyz{to_xyz[0] * r + to_xyz[1] * g + to_xyz[2] * b,
+                     to_xyz[3] * r + to_xyz[4] * g + to_xyz[5] * b,
+                     to_xyz[6] * r + to_xyz[7] * g + to_xyz[8] * b};
+  };
+  return data::xyz_to_lab(xyz_of(rgb[0], rgb[1], rgb[2]), xyz_of(1.0, 1.0, 1.0));
+}
+
+double delta_e(const DisplayRgb& a, const DisplayRgb& b) {
+  return data::ciede2000(lab_of(a), lab_of(b));
+}
+
+// The chip against the same stroke painted in the middle of a window-sized canvas and
+// rendered whole, as the window shows it: the small swatch painting changes nothing.
+TEST(Swatch, OnCanvasChipMatchesTheStrokeOnACanvas) {
+  SwatchStroke stroke = ultramarine_stroke();
+  stroke.weave_seed = 1;  // the window's canvas has a weave
+  const render::RenderSettings settings = linear_settings();
+  const Swatch swatch = make_swatch(stroke, settings);
+  ASSERT_GT(swatch.deposit.painted_cells, 100u);
+  ASSERT_GT(swatch.deposit.median_mm, 0.0);
+
+  paintcore::Painting canvas(paintcore::CanvasSpec{600, 400, stroke.dpi, stroke.weave_seed}, 1);
+  paint_standard_stroke(canvas, stroke, 31.0, 37.0);
+  // The weave under the stroke differs from place to place, and so do a few edge cells.
+  EXPECT_NEAR(static_cast<double>(wet_deposit(canvas).painted_cells),
+              static_cast<double>(swatch.deposit.painted_cells),
+              0.02 * static_cast<double>(swatch.deposit.painted_cells));
+  const double on_canvas = delta_e(swatch.on_canvas, mean_painted_colour(canvas, settings));
+  const double masstone = delta_e(swatch.masstone, swatch.on_canvas);
+  RecordProperty("delta_e_on_canvas", std::to_string(on_canvas));
+  RecordProperty("delta_e_masstone", std::to_string(masstone));
+  EXPECT_LT(on_canvas, 0.5) << "the masstone is " << masstone << " away";
+}
+
+// The mean colour is the rendered cells' mean: checked against a plain loop over the image.
+TEST(Swatch, MeanPaintedColourIsTheRenderedCellsMean) {
+  const paintcore::Painting painting = paint_swatch_stroke(ultramarine_stroke());
+  const render::RenderSettings settings = linear_settings();
+  render::TileRenderer renderer(settings, painting.pigment_slots());
+  renderer.render_all(painting.canvas());
+  const render::Image image = renderer.image();
+  std::array<double, 3> sum{};
+  std::size_t count = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x)
+      if (painting.canvas().wet_volume_mm(x, y) > kPaintedAboveMm) {
+        for (int c = 0; c < 3; ++c) sum[static_cast<std::size_t>(c)] += image.pixel(x, y)[c];
+        ++count;
+      }
+  ASSERT_EQ(count, wet_deposit(painting).painted_cells);
+  const DisplayRgb mean = mean_painted_colour(painting, settings);
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(mean[static_cast<std::size_t>(c)], sum[static_cast<std::size_t>(c)] / count, 1e-5)
+        << "channel " << c;
+}
+
+TEST(Swatch, MasstoneIsTheOpaqueLayerAndThinLayersShowTheGround) {
+  const render::RenderSettings settings = linear_settings();
+  const std::vector<std::vector<input::PigmentPart>> mixes = {
+      {{"Ultramarine Blue", 1.0}}, {{"Titanium White", 2.0}, {"Pyrrole Red", 1.0}}};
+  const double opaque = masstone_thickness_mm(settings);
+  const auto masstones = render_flat_layers(settings, mixes, opaque);
+  const auto thicker = render_flat_layers(settings, mixes, 10.0 * opaque);
+  const auto bare = render_flat_layers(settings, mixes, 0.0);
+  ASSERT_EQ(masstones.size(), 2u);
+  for (std::size_t m = 0; m < mixes.size(); ++m) {
+    EXPECT_LT(delta_e(masstones[m], thicker[m]), 1e-3) << "mix " << m;
+    // Thickening a layer takes it from the ground toward the masstone.
+    double last = delta_e(bare[m], masstones[m]);
+    for (double t : {0.001, 0.01, 0.1}) {
+      const double now =
+          delta_e(render_flat_layers(settings, std::span(&mixes[m], 1), t).front(), masstones[m]);
+      EXPECT_LT(now, last) << "mix " << m << " at " << t << " mm";
+      last = now;
+    }
+  }
+  EXPECT_LT(delta_e(bare[0], bare[1]), 1e-6);  // no paint: both show the ground
+  EXPECT_GT(delta_e(masstones[0], masstones[1]), 10.0);
+}
+
+TEST(Swatch, ManyPigmentsRenderInBatches) {
+  const render::RenderSettings settings = linear_settings();
+  const auto& pigments = data::PigmentDatabase::defaults().all();
+  std::vector<std::vector<input::PigmentPart>> mixes;
+  for (const auto& pigment : pigments) mixes.push_back({{pigment.name, 1.0}});
+  ASSERT_GT(mixes.size(), static_cast<std::size_t>(paintcore::kMaxPigmentSlots));
+  const auto all = render_flat_layers(settings, mixes, 0.05);
+  ASSERT_EQ(all.size(), mixes.size());
+  for (std::size_t m = 0; m < mixes.size(); ++m) {
+    const auto alone = render_flat_layers(settings, std::span(&mixes[m], 1), 0.05).front();
+    EXPECT_EQ(all[m], alone) << pigments[m].name;
+  }
+}
+
+TEST(Swatch, IsDeterministicAndRejectsBadMixes) {
+  const SwatchStroke stroke = ultramarine_stroke();
+  const render::RenderSettings settings;
+  const Swatch a = make_swatch(stroke, settings);
+  const Swatch b = make_swatch(stroke, settings);
+  EXPECT_EQ(a.on_canvas, b.on_canvas);
+  EXPECT_EQ(a.deposit.median_mm, b.deposit.median_mm);
+  SwatchStroke empty = stroke;
+  empty.load.mix.clear();
+  EXPECT_THROW(make_swatch(empty, settings), std::runtime_error);
+  SwatchStroke unknown = stroke;
+  unknown.load.mix = {{"Unobtainium", 1.0}};
+  EXPECT_THROW(make_swatch(unknown, settings), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace impasto::app
