@@ -42,6 +42,8 @@ struct RenderArgs {
   bool no_flakes = false;
   std::string flake_depth = "masking";
   bool no_cracks = false;
+  bool no_shadows = false;
+  bool no_occlusion = false;
   std::string crack_model = "corrected";
   double ambient = RenderSettings{}.ambient;
   bool gpu = false;    // through the GLSL shaders, headless
@@ -98,6 +100,8 @@ void run(const RenderArgs& args) {
   settings.flakes = !args.no_flakes;
   settings.flake_masking = args.flake_depth == "masking";
   settings.cracks = !args.no_cracks;
+  settings.shadows = !args.no_shadows;
+  settings.occlusion = !args.no_occlusion;
   settings.crack_model = parse_crack_model(args.crack_model);
   settings.ambient = args.ambient;
   validate(settings);
@@ -175,6 +179,8 @@ const CommandRegistrar registrar("render", [](CLI::App& root) {
       ->capture_default_str();
   cmd->add_flag("--no-flakes", args->no_flakes, "Flake pigments without their sparkles");
   cmd->add_flag("--no-cracks", args->no_cracks, "Cracked cells as if uncracked");
+  cmd->add_flag("--no-shadows", args->no_shadows, "No shadows cast by the paint relief");
+  cmd->add_flag("--no-occlusion", args->no_occlusion, "No ambient occlusion in furrows");
   cmd->add_option("--crack-model", args->crack_model,
                   "Cavity reflectance: corrected (measured tables) or gouffe (closed form)")
       ->check(CLI::IsMember({"corrected", "gouffe"}))

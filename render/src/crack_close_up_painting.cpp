@@ -33,8 +33,11 @@ Image render_painting_close_up(const paintcore::Painting& painting, const Render
     const paintcore::Canvas blank(painting.canvas().spec());
     return render_crack_close_up(blank, surface, surface, region, pixels_per_cell, {}, {});
   }
-  // What cracks through the film show: the bare canvas (the same ground and weave).
-  const Image ground = render_painting(paintcore::Painting(painting.canvas().spec()), flat);
+  // What cracks through the film show: the bare canvas (the same ground and weave), lit
+  // without the relief's shadows and occlusion, as the GPU shades it from its normal alone.
+  RenderSettings bare = flat;
+  bare.shadows = bare.occlusion = false;
+  const Image ground = render_painting(paintcore::Painting(painting.canvas().spec()), bare);
   Image walls = surface;
   const paintcore::Canvas& canvas = painting.canvas();
   for (int y = 0; y < canvas.height_cells(); ++y) {

@@ -38,6 +38,12 @@ void validate(const RenderSettings& s) {
     require(m->shininess >= 1.0f && m->shininess <= 10000.0f, "material shininess", m->shininess,
             "in [1, 10000]");
   }
+  require(s.shadow_light_diameter_deg > 0.0 && s.shadow_light_diameter_deg <= 90.0,
+          "shadow_light_diameter_deg", s.shadow_light_diameter_deg, "in (0, 90]");
+  require(s.shadow_reach_mm >= 0.0 && s.shadow_reach_mm <= 1000.0, "shadow_reach_mm",
+          s.shadow_reach_mm, "in [0, 1000]");
+  require(s.occlusion_radius_mm >= 0.0 && s.occlusion_radius_mm <= 100.0, "occlusion_radius_mm",
+          s.occlusion_radius_mm, "in [0, 100]");
   require(s.threads >= 0 && s.threads <= 1024, "threads", s.threads, "0..1024");
   require(s.light_size_deg > 0.0 && s.light_size_deg <= 90.0, "light_size_deg", s.light_size_deg,
           "in (0, 90]");

@@ -15,6 +15,7 @@
 #include "impasto/render/dry_stack.hpp"
 #include "impasto/render/flake_shading.hpp"
 #include "impasto/render/paint_layer.hpp"
+#include "impasto/render/relief_shading.hpp"
 #include "impasto/render/shading.hpp"
 
 namespace impasto::render {
@@ -127,6 +128,8 @@ void TileRenderer::reset_caches(const paintcore::Canvas& canvas) {
   tiles_x_ = canvas.tiles_x();
   tiles_y_ = canvas.tiles_y();
   cell_mm_ = canvas.cell_mm();
+  heights_.assign(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_), 0.0f);
+  tile_max_height_.assign(static_cast<std::size_t>(canvas.tile_count()), 0.0f);
   std::vector<TileCache> fresh(static_cast<std::size_t>(canvas.tile_count()));
   for (std::size_t i = 0; i < fresh.size() && i < tiles_.size(); ++i) {
     fresh[i].shade_count = tiles_[i].shade_count;
@@ -141,6 +144,9 @@ RenderStats TileRenderer::render_all(const paintcore::Canvas& canvas) {
     reset_caches(canvas);
   }
   for (auto& cache : tiles_) cache.baked = false;  // the light or the nodes may have changed
+  relief_ = relief::relief_params(settings_, cell_mm_);
+  run_parallel(tiles_.size(), [&](std::size_t i) { store_heights(canvas, static_cast<int>(i)); });
+  max_height_ = *std::max_element(tile_max_height_.begin(), tile_max_height_.end());
   RenderStats stats;
   run_parallel(tiles_.size(), [&](std::size_t i) {
     const int index = static_cast<int>(i);
@@ -171,6 +177,10 @@ RenderStats TileRenderer::update(const paintcore::Canvas& canvas,
     changed[static_cast<std::size_t>(index)] = 1;
   }
 
+  // Every shading below reads the new heights, the changed tiles' and their neighbours'.
+  run_parallel(order.size(), [&](std::size_t k) { store_heights(canvas, order[k]); });
+  max_height_ = *std::max_element(tile_max_height_.begin(), tile_max_height_.end());
+
   RenderStats stats;
   std::vector<int> baked(order.size(), 0);
   run_parallel(order.size(), [&](std::size_t k) {
@@ -187,47 +197,65 @@ RenderStats TileRenderer::update(const paintcore::Canvas& canvas,
   stats.tiles_shaded = static_cast<int>(order.size());
   for (int b : baked) stats.tiles_baked += b;
 
-  // The rims of unchanged neighbours: their normals read heights of the changed tiles.
-  std::vector<std::vector<CellRect>> rims(tiles_.size());
-  const int last = kTileSize - 1;
+  // The rims of unchanged tiles whose shading reads heights of the changed tiles: the
+  // normals' one-cell rim, the occlusion radius, and the shadows downstream of the light.
+  // One rectangle a tile: the box around every rim that falls in it.
+  std::vector<CellRect> rims(tiles_.size(), CellRect{kTileSize, kTileSize, 0, 0});
+  const relief::Reach reach = relief::reach(relief_);
   for (int index : order) {
-    const int tx = index % tiles_x_;
-    const int ty = index / tiles_x_;
-    for (int dy = -1; dy <= 1; ++dy) {
-      for (int dx = -1; dx <= 1; ++dx) {
-        const int nx = tx + dx;
-        const int ny = ty + dy;
-        if ((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= tiles_x_ || ny >= tiles_y_) {
-          continue;
-        }
+    const int gx0 = std::max(0, (index % tiles_x_) * kTileSize - reach.left);
+    const int gy0 = std::max(0, (index / tiles_x_) * kTileSize - reach.top);
+    const int gx1 = std::min(width_, (index % tiles_x_ + 1) * kTileSize + reach.right);
+    const int gy1 = std::min(height_, (index / tiles_x_ + 1) * kTileSize + reach.bottom);
+    for (int ny = gy0 / kTileSize; ny <= (gy1 - 1) / kTileSize; ++ny) {
+      for (int nx = gx0 / kTileSize; nx <= (gx1 - 1) / kTileSize; ++nx) {
         const int neighbour = ny * tiles_x_ + nx;
         if (changed[static_cast<std::size_t>(neighbour)]) continue;
-        // The neighbour's cells touching this tile: its edge column/row facing us.
-        const int x0 = dx < 0 ? last : 0;
-        const int x1 = dx > 0 ? 1 : kTileSize;
-        const int y0 = dy < 0 ? last : 0;
-        const int y1 = dy > 0 ? 1 : kTileSize;
-        rims[static_cast<std::size_t>(neighbour)].push_back({dx == 0 ? 0 : x0, dy == 0 ? 0 : y0,
-                                                             dx == 0 ? kTileSize : x1,
-                                                             dy == 0 ? kTileSize : y1});
+        CellRect& rim = rims[static_cast<std::size_t>(neighbour)];
+        rim.x0 = std::min(rim.x0, std::max(gx0 - nx * kTileSize, 0));
+        rim.y0 = std::min(rim.y0, std::max(gy0 - ny * kTileSize, 0));
+        rim.x1 = std::max(rim.x1, std::min(gx1 - nx * kTileSize, kTileSize));
+        rim.y1 = std::max(rim.y1, std::min(gy1 - ny * kTileSize, kTileSize));
       }
     }
   }
   std::vector<int> rim_tiles;
   for (std::size_t i = 0; i < rims.size(); ++i) {
-    if (!rims[i].empty()) rim_tiles.push_back(static_cast<int>(i));
+    if (rims[i].x1 > rims[i].x0 && rims[i].y1 > rims[i].y0) {
+      rim_tiles.push_back(static_cast<int>(i));
+    }
   }
   run_parallel(rim_tiles.size(), [&](std::size_t k) {
     const int index = rim_tiles[k];
-    TileCache& cache = tiles_[static_cast<std::size_t>(index)];
-    for (const CellRect& r : rims[static_cast<std::size_t>(index)]) {
-      shade_region(canvas, index, r.x0, r.y0, r.x1, r.y1, cache);
-    }
+    const CellRect& r = rims[static_cast<std::size_t>(index)];
+    shade_region(canvas, index, r.x0, r.y0, r.x1, r.y1, tiles_[static_cast<std::size_t>(index)]);
   });
-  for (int index : rim_tiles) {
-    for (const CellRect& r : rims[static_cast<std::size_t>(index)]) stats.border_cells += r.area();
-  }
+  for (int index : rim_tiles) stats.border_cells += rims[static_cast<std::size_t>(index)].area();
   return stats;
+}
+
+void TileRenderer::store_heights(const paintcore::Canvas& canvas, int tile_index) {
+  const paintcore::Tile* tile = canvas.tile(tile_index);
+  const int origin_x = (tile_index % tiles_x_) * kTileSize;
+  const int origin_y = (tile_index / tiles_x_) * kTileSize;
+  const int columns = std::min(kTileSize, width_ - origin_x);
+  const int rows = std::min(kTileSize, height_ - origin_y);
+  float highest = 0.0f;
+  for (int y = 0; y < rows; ++y) {
+    float* row =
+        &heights_[static_cast<std::size_t>(origin_y + y) * static_cast<std::size_t>(width_) +
+                  static_cast<std::size_t>(origin_x)];
+    for (int x = 0; x < columns; ++x) {
+      const auto c = static_cast<std::size_t>(y * kTileSize + x);
+      row[x] = tile != nullptr
+                   ? tile->base_height_mm[c] + tile->dry_height_mm[c] + tile->wet_volume_mm[c]
+                   : canvas.base_height_mm(origin_x + x, origin_y + y) +
+                         canvas.dry_height_mm(origin_x + x, origin_y + y) +
+                         canvas.wet_volume_mm(origin_x + x, origin_y + y);
+      highest = std::max(highest, row[x]);
+    }
+  }
+  tile_max_height_[static_cast<std::size_t>(tile_index)] = highest;
 }
 
 void TileRenderer::bake_dry_stack(const paintcore::Canvas& canvas, int tile_index,
@@ -302,27 +330,7 @@ void TileRenderer::shade_region(const paintcore::Canvas& canvas, int tile_index,
   const int origin_x = (tile_index % tiles_x_) * kTileSize;
   const int origin_y = (tile_index / tiles_x_) * kTileSize;
 
-  // Total height (mm) of the region grown by one cell, edges clamped to the canvas.
-  const int patch_w = x1 - x0 + 2;
-  const int patch_h = y1 - y0 + 2;
-  std::vector<float> height(static_cast<std::size_t>(patch_w) * static_cast<std::size_t>(patch_h));
-  for (int py = 0; py < patch_h; ++py) {
-    const int gy = std::clamp(origin_y + y0 - 1 + py, 0, height_ - 1);
-    for (int px = 0; px < patch_w; ++px) {
-      const int gx = std::clamp(origin_x + x0 - 1 + px, 0, width_ - 1);
-      const int lx = gx - origin_x;
-      const int ly = gy - origin_y;
-      float h;
-      if (tile != nullptr && lx >= 0 && lx < kTileSize && ly >= 0 && ly < kTileSize) {
-        const auto c = static_cast<std::size_t>(ly * kTileSize + lx);
-        h = tile->base_height_mm[c] + tile->dry_height_mm[c] + tile->wet_volume_mm[c];
-      } else {
-        h = canvas.base_height_mm(gx, gy) + canvas.dry_height_mm(gx, gy) +
-            canvas.wet_volume_mm(gx, gy);
-      }
-      height[static_cast<std::size_t>(py * patch_w + px)] = h;
-    }
-  }
+  const relief::HeightField field{heights_.data(), width_, height_};
 
   if (cache.rgb.empty()) cache.rgb.assign(3 * static_cast<std::size_t>(kTileCells), 0.0f);
   const int nodes = palette_.nodes();
@@ -380,24 +388,26 @@ void TileRenderer::shade_region(const paintcore::Canvas& canvas, int tile_index,
       float xyz[3];
       node_reflectance_to_xyz(palette_, reflectance, xyz);
 
-      // Shading from the total height around the cell.
-      const int px = x - x0 + 1;
-      const int py = y - y0 + 1;
-      const auto at = [&](int ix, int iy) {
-        return height[static_cast<std::size_t>(iy * patch_w + ix)];
-      };
-      const shade::Vec3 normal = shade::height_normal(at(px - 1, py), at(px + 1, py),
-                                                      at(px, py - 1), at(px, py + 1), cell_mm);
+      // Shading from the total height around the cell, the light the relief lets through.
+      const int gx = origin_x + x;
+      const int gy = origin_y + y;
+      const shade::Vec3 normal =
+          shade::height_normal(field.at(gx - 1, gy), field.at(gx + 1, gy), field.at(gx, gy - 1),
+                               field.at(gx, gy + 1), cell_mm);
       const shade::Material material =
           shade::blend(settings_.dry_material, settings_.wet_material, wet_volume * inverse_gloss);
-      const shade::Shading shading = shade::blinn_phong(normal, to_light, ambient, material);
+      shade::Visibility visibility;
+      if (relief_.shadows) visibility.shadow = relief::shadow(field, gx, gy, max_height_, relief_);
+      if (relief_.occlusion) visibility.occlusion = relief::occlusion(field, gx, gy, relief_);
+      const shade::Shading shading =
+          shade::blinn_phong(normal, to_light, ambient, material, visibility);
       float* out = &cache.rgb[3 * cell];
       for (int ch = 0; ch < 3; ++ch) {
         out[ch] =
             xyz[ch] * shading.diffuse + white[static_cast<std::size_t>(ch)] * shading.specular;
       }
       if (flakes.active()) {
-        flakes.add_cell(c, origin_x + x, origin_y + y, normal, at(px, py), wet_volume, out);
+        flakes.add_cell(c, gx, gy, normal, field.at(gx, gy), wet_volume, out);
       }
     }
     // XYZ to the display, one row of the region at a time (one call for a whole tile).

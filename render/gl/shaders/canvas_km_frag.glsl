@@ -1,6 +1,6 @@
 // The canvas seen from above: K-M colour of the wet layer over the baked dry reflectance at
 // the light's quadrature nodes, to XYZ, shaded by the surface normal, to display RGB.
-// Assembled after #version, MAX_NODES/MAX_SLOTS defines, km_lib, shading_lib, flakes_lib,
+// Assembled after #version, MAX_NODES/MAX_SLOTS defines, km_lib, shading_lib, relief_lib, flakes_lib,
 // cracks_lib, crack_close_up_lib, crack_close_up_canvas_lib and the OpenColorIO display
 // function `vec4 ocio_display(vec4 xyz)`.
 
@@ -93,7 +93,8 @@ void main() {
                                     total_height(cell - ivec2(0, 1)), total_height(cell + ivec2(0, 1)),
                                     cell_mm);
   vec2 material = shade_blend(dry_material, wet_material, volume * inverse_gloss_mm);
-  vec2 shading = shade_blinn_phong(normal, to_light, ambient, material);
+  vec2 shading = shade_blinn_phong(normal, to_light, ambient, material,
+                                   relief_visibility(surface, canvas_cells, cell, cell_mm));
   vec3 sparkles = light_intensity * flake_sparkles(cell, normal, total_height(cell));
   vec3 shaded = light_intensity * (xyz * shading.x + white_xyz * shading.y) + sparkles;
   if (close_up) {

@@ -19,12 +19,18 @@ vec2 shade_blend(vec2 dry, vec2 wet, float wetness) {
 }
 
 // Lambert + ambient normalised to flat canvas (x), Blinn-Phong specular for a viewer
-// straight above (y).
-vec2 shade_blinn_phong(vec3 normal, vec3 to_light, float ambient, vec2 material) {
+// straight above (y); visibility = (shadow, occlusion) of the relief (relief_lib), (1, 1)
+// on flat canvas. SHADE_OCCLUSION_DIRECT_SHARE comes from shade::kOcclusionDirectShare.
+vec2 shade_blinn_phong(vec3 normal, vec3 to_light, float ambient, vec2 material, vec2 visibility) {
   float flat_lambert = max(to_light.z, 0.05);
   float lambert = max(dot(normal, to_light), 0.0) / flat_lambert;
   vec3 half_vector = shade_normalized(vec3(to_light.x, to_light.y, to_light.z + 1.0));
   float n_dot_h = max(dot(normal, half_vector), 0.0);
   float specular = dot(normal, to_light) > 0.0 ? material.x * pow(n_dot_h, material.y) : 0.0;
-  return vec2(ambient + (1.0 - ambient) * lambert, specular);
+  float direct = visibility.x * (1.0 - SHADE_OCCLUSION_DIRECT_SHARE * (1.0 - visibility.y));
+  return vec2(ambient * visibility.y + (1.0 - ambient) * lambert * direct, specular * visibility.x);
+}
+
+vec2 shade_blinn_phong(vec3 normal, vec3 to_light, float ambient, vec2 material) {
+  return shade_blinn_phong(normal, to_light, ambient, material, vec2(1.0));
 }

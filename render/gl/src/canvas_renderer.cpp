@@ -8,6 +8,7 @@
 #include "embedded_shaders.hpp"
 #include "impasto/render/shading.hpp"
 #include "impasto/render_gl/dry_reflectance.hpp"
+#include "impasto/render_gl/shader_library.hpp"
 
 namespace impasto::render_gl {
 
@@ -82,7 +83,8 @@ void CanvasRenderer::build_program() {
   std::string source = "#version 330 core\n#define MAX_NODES " + std::to_string(render::kMaxNodes) +
                        "\n#define MAX_SLOTS " + std::to_string(paintcore::kMaxPigmentSlots) + "\n";
   source += shaders::km_lib;
-  source += shaders::shading_lib;
+  source += shading_glsl();
+  source += relief_glsl();
   source += shaders::flakes_lib;
   source += shaders::cracks_lib;
   source += shaders::crack_close_up_lib;
@@ -116,7 +118,16 @@ void CanvasRenderer::set_shading(const render::RenderSettings& settings) {
   settings_.saunderson_k2 = settings.saunderson_k2;
   settings_.cracks = settings.cracks;  // the crack correction follows the light in draw()
   settings_.crack_model = settings.crack_model;
+  settings_.shadows = settings.shadows;
+  settings_.occlusion = settings.occlusion;
+  settings_.shadow_light_diameter_deg = settings.shadow_light_diameter_deg;
+  settings_.shadow_reach_mm = settings.shadow_reach_mm;
+  settings_.occlusion_radius_mm = settings.occlusion_radius_mm;
   render::validate(settings_);
+}
+
+render::relief::Reach CanvasRenderer::relief_reach() const {
+  return render::relief::reach(render::relief::relief_params(settings_, cell_mm_));
 }
 
 void CanvasRenderer::upload_tile(const paintcore::Canvas& canvas, int tile_index,
@@ -129,6 +140,7 @@ void CanvasRenderer::upload_tile(const paintcore::Canvas& canvas, int tile_index
   const paintcore::Tile* tile = canvas.tile(tile_index);
 
   scratch.surface.assign(2 * kTileCells, 0.0f);
+  float highest = 0.0f;
   scratch.pigments.assign(static_cast<size_t>(pigment_layers_) * 4 * kTileCells, 0.0f);
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
@@ -141,8 +153,11 @@ void CanvasRenderer::upload_tile(const paintcore::Canvas& canvas, int tile_index
       } else {
         scratch.surface[2 * cell + 1] = canvas.base_height_mm(x0 + x, y0 + y);
       }
+      highest = std::max(highest, scratch.surface[2 * cell + 1]);
     }
   }
+  tile_max_height_.resize(static_cast<std::size_t>(canvas.tile_count()), 0.0f);
+  tile_max_height_[static_cast<std::size_t>(tile_index)] = highest;
   if (tile != nullptr) {
     for (int slot = 0; slot < std::min(tile->slot_count(), palette_.pigment_count()); ++slot) {
       const float* amounts = tile->pigment(slot);
@@ -256,6 +271,21 @@ void CanvasRenderer::draw(const CanvasView& view, int viewport_w, int viewport_h
   glUniform1f(program.uniform("inverse_gloss_mm"),
               static_cast<float>(1.0 / settings_.wet_gloss_mm));
   glUniform1f(program.uniform("cell_mm"), static_cast<float>(cell_mm_));
+
+  const render::relief::ReliefParams relief = render::relief::relief_params(settings_, cell_mm_);
+  glUniform1i(program.uniform("relief_shadows"), relief.shadows ? 1 : 0);
+  glUniform1i(program.uniform("relief_occlusion"), relief.occlusion ? 1 : 0);
+  glUniform2f(program.uniform("relief_step"), relief.step_x, relief.step_y);
+  glUniform1f(program.uniform("relief_step_mm"), relief.step_mm);
+  glUniform1i(program.uniform("relief_shadow_steps"), relief.shadow_steps);
+  glUniform4f(program.uniform("relief_light"), relief.elevation, relief.angular_radius,
+              relief.tan_low, relief.tan_high);
+  glUniform2i(program.uniform("relief_occlusion_steps"), relief.occlusion_steps_axis,
+              relief.occlusion_steps_diagonal);
+  const float max_height = tile_max_height_.empty() ? 0.0f
+                                                    : *std::max_element(tile_max_height_.begin(),
+                                                                        tile_max_height_.end());
+  glUniform1f(program.uniform("relief_max_height"), max_height);
 
   flakes_->bind(program, settings_, cell_mm_);
   cracks_->bind(program, palette_, settings_);

@@ -9,12 +9,12 @@ namespace impasto::render_gl {
 using paintcore::kTileSize;
 
 PixelRect tile_screen_rect(int tile_index, int tiles_x, const CanvasView& view, int viewport_w,
-                           int viewport_h) {
-  // The tile's cells and the rim of cells whose normals read its heights.
-  const double x0 = (tile_index % tiles_x) * kTileSize - 1.0;
-  const double y0 = (tile_index / tiles_x) * kTileSize - 1.0;
-  const double x1 = x0 + kTileSize + 2.0;
-  const double y1 = y0 + kTileSize + 2.0;
+                           int viewport_h, render::relief::Reach reach) {
+  // The tile's cells and the rim of cells whose shading reads its heights.
+  const double x0 = (tile_index % tiles_x) * kTileSize - static_cast<double>(reach.left);
+  const double y0 = (tile_index / tiles_x) * kTileSize - static_cast<double>(reach.top);
+  const double x1 = (tile_index % tiles_x + 1) * kTileSize + static_cast<double>(reach.right);
+  const double y1 = (tile_index / tiles_x + 1) * kTileSize + static_cast<double>(reach.bottom);
   double lo_x = std::numeric_limits<double>::max(), lo_y = lo_x;
   double hi_x = std::numeric_limits<double>::lowest(), hi_y = hi_x;
   for (const auto& [cx, cy] : {std::pair{x0, y0}, {x1, y0}, {x0, y1}, {x1, y1}}) {
@@ -37,7 +37,7 @@ void ShadedViewCache::invalidate_tiles(std::span<const int> tiles) {
   dirty_tiles_.insert(dirty_tiles_.end(), tiles.begin(), tiles.end());
 }
 
-std::array<double, 21> ShadedViewCache::look_of(const CanvasRenderer& renderer,
+std::array<double, 26> ShadedViewCache::look_of(const CanvasRenderer& renderer,
                                                 const CanvasView& view) const {
   const render::RenderSettings& s = renderer.settings();
   const GpuViewOptions& o = renderer.view_options();
@@ -61,7 +61,12 @@ std::array<double, 21> ShadedViewCache::look_of(const CanvasRenderer& renderer,
           renderer.cell_mm(),
           s.cracks ? 1.0 : 0.0,
           static_cast<double>(s.crack_model),
-          o.crack_close_up_min_pixels};
+          o.crack_close_up_min_pixels,
+          s.shadows ? 1.0 : 0.0,
+          s.occlusion ? 1.0 : 0.0,
+          s.shadow_light_diameter_deg,
+          s.shadow_reach_mm,
+          s.occlusion_radius_mm};
 }
 
 std::vector<PixelRect> ShadedViewCache::shift_image(int dx, int dy) {
@@ -124,8 +129,9 @@ CachedDrawStats ShadedViewCache::draw(CanvasRenderer& renderer, const CanvasView
     std::sort(dirty_tiles_.begin(), dirty_tiles_.end());
     dirty_tiles_.erase(std::unique(dirty_tiles_.begin(), dirty_tiles_.end()), dirty_tiles_.end());
     const int tiles_x = (renderer.width_cells() + kTileSize - 1) / kTileSize;
+    const render::relief::Reach reach = renderer.relief_reach();
     for (int tile : dirty_tiles_) {
-      const PixelRect rect = tile_screen_rect(tile, tiles_x, view, viewport_w, viewport_h);
+      const PixelRect rect = tile_screen_rect(tile, tiles_x, view, viewport_w, viewport_h, reach);
       if (!rect.empty()) regions.push_back(rect);
     }
     // Many small passes cost more than one pass over their bounding box, and overlapping

@@ -58,6 +58,15 @@ struct RenderSettings {
   shade::Material wet_material{0.35f, 80.0f};
   double wet_gloss_mm = 0.02;  // wet paint this thick or more has the full wet gloss
 
+  // --- relief: cast shadows and ambient occlusion (docs/rendering.md) ---
+  bool shadows = true;    // off: no march, every cell sees the whole light
+  bool occlusion = true;  // off: furrows get the full ambient light
+  // The light's apparent diameter for the shadows' penumbra: wider than the bare sun
+  // (light_size_deg) so that shadows of 0.1 mm ridges soften over a few cells.
+  double shadow_light_diameter_deg = 3.0;
+  double shadow_reach_mm = 6.0;      // the march toward the light stops here (cost bound)
+  double occlusion_radius_mm = 1.0;  // how far the horizon search looks around a cell
+
   // --- the light's kind and size: sparkles of flake pigments (docs/flakes.md) ---
   LightType light_type = LightType::directional;
   double light_size_deg = 0.53;       // apparent diameter seen from the canvas (the sun: 0.53)

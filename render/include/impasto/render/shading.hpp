@@ -53,10 +53,25 @@ struct Shading {
   float specular;
 };
 
+// How much of the light reaches a cell past the relief (relief_shading.hpp): the share of
+// the light's disc in view, and the share of the sky (ambient) left open. 1, 1 on flat canvas.
+struct Visibility {
+  float shadow = 1.0f;
+  float occlusion = 1.0f;
+};
+
+// How much the occlusion dims the direct (Lambert) light, against the ambient light it
+// scales fully: a furrow darkens a little even under a high light. The GLSL gets it as a
+// #define from CanvasRenderer.
+inline constexpr float kOcclusionDirectShare = 0.3f;
+
 // Lambert plus ambient, normalised so that flat canvas shows its K-M reflectance exactly
 // (the K-M data describe paint seen at the light's elevation), plus Blinn-Phong specular
-// for a viewer straight above (view vector +z).
-inline Shading blinn_phong(Vec3 normal, Vec3 to_light, float ambient, Material material) {
+// for a viewer straight above (view vector +z). The relief's shadow dims the direct light
+// and its highlight; its occlusion dims the ambient light and, by kOcclusionDirectShare,
+// the direct light (both 1 leave the terms as they are, bit for bit).
+inline Shading blinn_phong(Vec3 normal, Vec3 to_light, float ambient, Material material,
+                           Visibility visibility = {}) {
   const float flat_lambert = std::max(to_light.z, 0.05f);
   const float lambert = std::max(dot(normal, to_light), 0.0f) / flat_lambert;
   const Vec3 half_vector = normalized({to_light.x, to_light.y, to_light.z + 1.0f});
@@ -64,7 +79,10 @@ inline Shading blinn_phong(Vec3 normal, Vec3 to_light, float ambient, Material m
   const float specular = dot(normal, to_light) > 0.0f
                              ? material.specular * std::pow(n_dot_h, material.shininess)
                              : 0.0f;
-  return {ambient + (1.0f - ambient) * lambert, specular};
+  const float direct =
+      visibility.shadow * (1.0f - kOcclusionDirectShare * (1.0f - visibility.occlusion));
+  return {ambient * visibility.occlusion + (1.0f - ambient) * lambert * direct,
+          specular * visibility.shadow};
 }
 
 }  // namespace impasto::render::shade

@@ -12,6 +12,7 @@
 #include "impasto/paintcore/canvas.hpp"
 #include "impasto/render/display.hpp"
 #include "impasto/render/image.hpp"
+#include "impasto/render/relief_shading.hpp"
 #include "impasto/render/render_settings.hpp"
 #include "impasto/render/spectral_palette.hpp"
 
@@ -23,7 +24,7 @@ class FlakeShading;
 struct RenderStats {
   int tiles_shaded = 0;  // tiles whose every cell was re-shaded
   int tiles_baked = 0;   // tiles whose dry stack was re-baked
-  int border_cells = 0;  // cells of unchanged neighbours re-shaded because a normal changed
+  int border_cells = 0;  // cells of unchanged neighbours re-shaded: their relief read changes
 };
 
 class TileRenderer {
@@ -47,9 +48,9 @@ class TileRenderer {
 
   // Brings the image up to date with `canvas`. The first call after construction, a settings
   // change or a canvas of another size renders every tile; later calls re-shade only
-  // `changed_tiles` (from Canvas::take_dirty_tiles) and the one-cell rim of their
-  // neighbours whose normals see the changed heights. A changed tile's dry stack is re-baked
-  // only when its dry layers differ from those it was baked from.
+  // `changed_tiles` (from Canvas::take_dirty_tiles) and the rims of their neighbours whose
+  // normals, occlusion or shadows read the changed heights (relief::reach). A changed tile's dry
+  // stack is re-baked only when its dry layers differ from those it was baked from.
   RenderStats update(const paintcore::Canvas& canvas, std::span<const int> changed_tiles);
   // Renders every tile (a relight).
   RenderStats render_all(const paintcore::Canvas& canvas);
@@ -67,6 +68,7 @@ class TileRenderer {
   void reset_caches(const paintcore::Canvas& canvas);
   void shade_region(const paintcore::Canvas& canvas, int tile_index, int x0, int y0, int x1, int y1,
                     TileCache& cache) const;
+  void store_heights(const paintcore::Canvas& canvas, int tile_index);
   void bake_dry_stack(const paintcore::Canvas& canvas, int tile_index, TileCache& cache) const;
   template <typename Work>
   void run_parallel(std::size_t count, const Work& work) const;
@@ -79,6 +81,12 @@ class TileRenderer {
   double cell_mm_ = 0.0;
   bool needs_full_render_ = true;
   std::vector<TileCache> tiles_;
+  // The total height of every cell (row-major), each tile's highest, their maximum: what
+  // the normals, shadows and occlusion read across tile boundaries.
+  std::vector<float> heights_;
+  std::vector<float> tile_max_height_;
+  float max_height_ = 0.0f;
+  relief::ReliefParams relief_;
 };
 
 }  // namespace impasto::render

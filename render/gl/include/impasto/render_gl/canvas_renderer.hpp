@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "impasto/paintcore/canvas.hpp"
+#include "impasto/render/relief_shading.hpp"
 #include "impasto/render/render_settings.hpp"
 #include "impasto/render/spectral_palette.hpp"
 #include "impasto/render_gl/canvas_view.hpp"
@@ -56,6 +57,9 @@ class CanvasRenderer {
   int width_cells() const { return width_; }
   int height_cells() const { return height_; }
   double cell_mm() const { return cell_mm_; }
+  // How far beyond a changed tile the shading of cells reads its heights (normals,
+  // occlusion, shadows), for the current settings and cell size.
+  render::relief::Reach relief_reach() const;
 
  private:
   struct TileScratch;
@@ -77,6 +81,7 @@ class CanvasRenderer {
   int pigment_layers_ = 0, node_layers_ = 0;
   std::unique_ptr<FlakeTextures> flakes_;  // sparkles of flake pigments (nothing without)
   std::unique_ptr<CrackTexture> cracks_;   // crack optics per cell (nothing without cracks)
+  std::vector<float> tile_max_height_;     // each tile's highest total height (mm)
 };
 
 }  // namespace impasto::render_gl

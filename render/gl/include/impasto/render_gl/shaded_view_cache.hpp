@@ -33,10 +33,11 @@ struct PixelRect {
   bool empty() const { return x1 <= x0 || y1 <= y0; }
 };
 
-// The pixels of a viewport that show any of tile `tile_index`'s cells or the one-cell rim
-// around them, clipped to the viewport (empty when out of view). Conservative by a pixel.
+// The pixels of a viewport that show any of tile `tile_index`'s cells or the rim around
+// them whose shading reads the tile's heights (`reach`: the normals' one cell, occlusion
+// and shadows), clipped to the viewport (empty when out of view). Conservative by a pixel.
 PixelRect tile_screen_rect(int tile_index, int tiles_x, const CanvasView& view, int viewport_w,
-                           int viewport_h);
+                           int viewport_h, render::relief::Reach reach = {});
 
 class ShadedViewCache {
  public:
@@ -54,14 +55,14 @@ class ShadedViewCache {
 
  private:
   // Everything a pixel's colour depends on beside the canvas data and the view's centre.
-  std::array<double, 21> look_of(const CanvasRenderer& renderer, const CanvasView& view) const;
+  std::array<double, 26> look_of(const CanvasRenderer& renderer, const CanvasView& view) const;
   // Moves the cached image by (dx, dy) GL pixels; returns the strips left to shade.
   std::vector<PixelRect> shift_image(int dx, int dy);
 
   std::unique_ptr<Framebuffer> image_;
   std::unique_ptr<Framebuffer> spare_;  // the target of a shift, then swapped with image_
   const CanvasRenderer* renderer_ = nullptr;
-  std::array<double, 21> look_{};
+  std::array<double, 26> look_{};
   CanvasView view_;
   bool all_invalid_ = true;
   std::vector<int> dirty_tiles_;

@@ -6,7 +6,11 @@ namespace impasto::render_gl {
 
 // km_one_minus_exp_neg_over_x, km_layer (vec2 R, T), km_composite, km_saunderson.
 const char* km_glsl();
-// shade_normalized, shade_height_normal, shade_blend, shade_blinn_phong.
+// shade_normalized, shade_height_normal, shade_blend, shade_blinn_phong, with the
+// constants they share with the C++ (render/shading.hpp) as #defines.
 const char* shading_glsl();
+// relief_shadow, relief_ambient_occlusion, relief_visibility and their uniforms (after
+// shading_glsl), with the constants of render/relief_shading.hpp as #defines.
+const char* relief_glsl();
 
 }  // namespace impasto::render_gl
