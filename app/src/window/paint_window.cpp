@@ -6,6 +6,7 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
+#include <imgui_internal.h>  // the panels' rectangles, to tell where a press landed
 #include <impasto/data/cie.hpp>
 #include <impasto/data/pigments.hpp>
 #include <impasto/input/stroke_import.hpp>
@@ -30,6 +31,9 @@
 #include "window/palette_board_panel.hpp"
 #include "window/panels.hpp"
 #include "window/pen_feed.hpp"
+#include "window/pointer_events.hpp"
+#include "window/pointer_gestures.hpp"
+#include "window/pointer_latency.hpp"
 #include "window/recent_files.hpp"
 #include "window/screenshot.hpp"
 #include "window/sim_worker.hpp"
@@ -81,6 +85,26 @@ std::vector<std::string> brush_heads() {
   return heads;
 }
 
+static_assert(kLeftButton == GLFW_MOUSE_BUTTON_LEFT && kRightButton == GLFW_MOUSE_BUTTON_RIGHT &&
+              kMiddleButton == GLFW_MOUSE_BUTTON_MIDDLE);
+
+// Whether ImGui's last frame drew something that takes a mouse press at (x, y): a panel, the
+// menu bar, the status bar, or any open popup (a menu, the unsaved-changes prompt). This is
+// the rule behind io.WantCaptureMouse, asked for where the press happened rather than
+// where the cursor is at the frame.
+bool ui_at(double x, double y) {
+  const ImGuiContext& g = *GImGui;
+  if (g.OpenPopupStack.Size > 0) return true;
+  const ImVec2 p(static_cast<float>(x), static_cast<float>(y));
+  for (const ImGuiWindow* window : g.Windows) {
+    if (window->Active && !window->Hidden && !(window->Flags & ImGuiWindowFlags_NoMouseInputs) &&
+        window->OuterRectClipped.Contains(p)) {
+      return true;
+    }
+  }
+  return false;
+}
+
 struct GlfwLibrary {
   GlfwLibrary() {
     glfwSetErrorCallback([](int code, const char* text) {
@@ -110,7 +134,11 @@ class PaintWindow {
   void run_pending_action();
   void update_swatch();
   void draw_frame(bool take_screenshot);
-  void pen_sample(double x, double y, bool tip_down);
+  void pen_sample(const PointerEvent& at, bool tip_down);
+  void pan_view(double from_x, double from_y, double to_x, double to_y);
+  void rotate_view(double from_x, double from_y, double to_x, double to_y);
+  void submit_pen_event(input::StrokeEvent event);
+  void report_latency() const;
   void start_tablets();
   void poll_tablets();
   TabletTargetGeometry tablet_geometry() const;
@@ -133,7 +161,9 @@ class PaintWindow {
   bool full_upload_ = true;
 
   // Every pen sample, mouse or tablet, goes to the simulation through this feed.
-  PenFeed canvas_feed_{[this](input::StrokeEvent event) { worker_->submit(std::move(event)); }};
+  PenFeed canvas_feed_{[this](input::StrokeEvent event) { submit_pen_event(std::move(event)); }};
+  InputLatency latency_;                 // pen sample's own time -> the swap that shows it
+  std::uint64_t applied_at_upload_ = 0;  // simulation jobs applied before this frame's upload
   PaletteBoardPanel board_panel_;
 
   // Tablets, read on their own threads, polled once a frame.
@@ -141,11 +171,15 @@ class PaintWindow {
   double tablet_time_offset_s_ = 0.0;  // tablet clock -> session clock
   double tablet_seen_s_ = -1e9;        // when a tablet last sent a sample (GLFW time)
 
-  // Pen from the mouse.
-  bool painting_stroke_ = false;
-  double last_x_ = 0, last_y_ = 0, last_t_ = 0;
-  bool panning_ = false, rotating_ = false;
-  double drag_x_ = 0, drag_y_ = 0;
+  // The mouse: every event from GLFW's callbacks, applied in order once a frame.
+  PointerEventQueue pointer_events_;
+  PointerGestures gestures_{{
+      [this](const PointerEvent& at, bool tip_down) { pen_sample(at, tip_down); },
+      [this](double fx, double fy, double tx, double ty) { pan_view(fx, fy, tx, ty); },
+      [this](double fx, double fy, double tx, double ty) { rotate_view(fx, fy, tx, ty); },
+  }};
+  SpeedPressure speed_pressure_;
+  int window_w_ = 0, window_h_ = 0;  // this frame's window size
   double session_start_s_ = 0;
 };
 
@@ -187,6 +221,20 @@ void PaintWindow::create_window() {
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // panels are laid out in code, nothing to remember
   ImGui::StyleColorsDark();
+  // The mouse's events are queued with their times as they arrive. Installed before ImGui's
+  // backend, which keeps our button callback and calls it before its own.
+  glfwSetWindowUserPointer(window_, this);
+  glfwSetCursorPosCallback(window_, [](GLFWwindow* window, double x, double y) {
+    auto* self = static_cast<PaintWindow*>(glfwGetWindowUserPointer(window));
+    self->pointer_events_.moved(x, y, glfwGetTime());
+  });
+  glfwSetMouseButtonCallback(window_, [](GLFWwindow* window, int button, int action, int) {
+    auto* self = static_cast<PaintWindow*>(glfwGetWindowUserPointer(window));
+    self->pointer_events_.button(button, action == GLFW_PRESS, glfwGetTime());
+  });
+  double cursor_x = 0, cursor_y = 0;
+  glfwGetCursorPos(window_, &cursor_x, &cursor_y);
+  pointer_events_.set_position(cursor_x, cursor_y);
   ImGui_ImplGlfw_InitForOpenGL(window_, true);
   ImGui_ImplOpenGL3_Init("#version 330 core");
   session_start_s_ = glfwGetTime();
@@ -245,8 +293,12 @@ void PaintWindow::start_tablets() {
   if (!input::hid::hid_available()) return;
   try {
     tablets_ = std::make_unique<input::hid::TabletManager>();
-    // Tablet times count from the manager's start; the session's from the window's.
-    tablet_time_offset_s_ = glfwGetTime() - session_start_s_;
+    // Tablet times count from the manager's origin (steady clock); the session's from the
+    // window's (GLFW time). Read both clocks now and the origin's age moves one onto the other.
+    const double origin_age_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - tablets_->origin())
+            .count();
+    tablet_time_offset_s_ = glfwGetTime() - origin_age_s - session_start_s_;
   } catch (const std::exception& e) {
     state_.tablet_error = e.what();
   }
@@ -306,6 +358,8 @@ PaintingSnapshot PaintWindow::snapshot() {
 // otherwise only the tiles the simulation dirtied since the last frame.
 void PaintWindow::sync_gpu() {
   const auto start = Clock::now();
+  // Every job applied by now has dirtied its tiles before the upload below takes them.
+  applied_at_upload_ = worker_->stats().applied;
   worker_->with_painting([&](const paintcore::Painting& painting) {
     const paintcore::Canvas& canvas = painting.canvas();
     const bool resized = canvas.width_cells() != canvas_w_ || canvas.height_cells() != canvas_h_;
@@ -385,86 +439,66 @@ void PaintWindow::update_swatch() {
     state_.swatch_rgb[static_cast<std::size_t>(c)] = std::clamp(xyz[c], 0.0f, 1.0f);
 }
 
-void PaintWindow::pen_sample(double x, double y, bool tip_down) {
-  int w = 0, h = 0;
-  glfwGetWindowSize(window_, &w, &h);
-  const auto cell = state_.view.window_to_cell(x, y, w, h);
+void PaintWindow::pen_sample(const PointerEvent& at, bool tip_down) {
+  const auto cell = state_.view.window_to_cell(at.x, at.y, window_w_, window_h_);
   const double cell_mm = renderer_ ? renderer_->cell_mm() : 0.1;
-  const double t = glfwGetTime() - session_start_s_;
-  float pressure = state_.mouse_pressure;
-  if (state_.pressure_from_speed) {
-    // Fast strokes press lightly: full pressure at rest, a fifth at 300 mm/s.
-    const double distance_mm =
-        std::hypot(x - last_x_, y - last_y_) / state_.view.pixels_per_cell * cell_mm;
-    const double speed = t > last_t_ ? distance_mm / (t - last_t_) : 0.0;
-    pressure = static_cast<float>(std::clamp(1.0 - speed / 375.0, 0.2, 1.0));
-  }
   paintcore::PenSample sample;
-  sample.time_s = t;
+  sample.time_s = at.time_s - session_start_s_;  // the event's own time
   sample.x_mm = cell[0] * cell_mm;
   sample.y_mm = cell[1] * cell_mm;
+  if (tip_down && !canvas_feed_.in_stroke()) speed_pressure_.start_stroke();
+  const float pressure = state_.pressure_from_speed
+                             ? speed_pressure_.at(sample.x_mm, sample.y_mm, sample.time_s)
+                             : state_.mouse_pressure;
   sample.pressure = tip_down ? pressure : 0.0f;
   sample.buttons = paintcore::kPenInRange | (tip_down ? paintcore::kPenTip : 0u);
   canvas_feed_.feed(sample);
-  last_x_ = x;
-  last_y_ = y;
-  last_t_ = t;
 }
 
+void PaintWindow::submit_pen_event(input::StrokeEvent event) {
+  const auto* sample = std::get_if<input::SampleEvent>(&event);
+  const double time_s = sample ? sample->sample.time_s : 0.0;
+  worker_->submit(std::move(event));
+  // Only this thread submits, so the count just read is this event's job number.
+  if (sample) latency_.submitted(worker_->stats().submitted, time_s);
+}
+
+void PaintWindow::pan_view(double from_x, double from_y, double to_x, double to_y) {
+  const auto a = state_.view.window_to_cell(from_x, from_y, window_w_, window_h_);
+  const auto b = state_.view.window_to_cell(to_x, to_y, window_w_, window_h_);
+  state_.view.center_x_cells -= b[0] - a[0];
+  state_.view.center_y_cells -= b[1] - a[1];
+}
+
+void PaintWindow::rotate_view(double from_x, double from_y, double to_x, double to_y) {
+  const double a0 = std::atan2(from_y - window_h_ / 2.0, from_x - window_w_ / 2.0);
+  const double a1 = std::atan2(to_y - window_h_ / 2.0, to_x - window_w_ / 2.0);
+  state_.view.rotation_rad += a1 - a0;
+}
+
+// Applies every mouse event since the last frame in order: each move of a stroke is a pen
+// sample with its own time, and each press and release starts or ends its drag where it
+// happened.
 void PaintWindow::handle_canvas_input() {
   const ImGuiIO& io = ImGui::GetIO();
+  glfwGetWindowSize(window_, &window_w_, &window_h_);
+  PointerFrame frame;
+  frame.space_down = glfwGetKey(window_, GLFW_KEY_SPACE) == GLFW_PRESS;
+  // While a tablet's pen is near, it paints: it moves the cursor and presses the button
+  // too, and its own samples carry the real pressure.
+  frame.tablet_near = glfwGetTime() - tablet_seen_s_ < 0.25;
+  frame.canvas_at = [](double x, double y) { return !ui_at(x, y); };
+  gestures_.apply(pointer_events_.take(), frame);
+
   double x = 0, y = 0;
   glfwGetCursorPos(window_, &x, &y);
-  int w = 0, h = 0;
-  glfwGetWindowSize(window_, &w, &h);
-  state_.cursor_cell = state_.view.window_to_cell(x, y, w, h);
-  const bool over_canvas = !io.WantCaptureMouse;
-  const bool left = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
-  const bool middle = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS;
-  const bool right = glfwGetMouseButton(window_, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
-  const bool space = glfwGetKey(window_, GLFW_KEY_SPACE) == GLFW_PRESS;
-
-  // Paint with the left button, unless a tablet's pen is near (it moves the cursor and
-  // presses the button too, and its own samples carry the real pressure).
-  const bool tablet_near = glfwGetTime() - tablet_seen_s_ < 0.25;
-  if (left && !space && (painting_stroke_ || (over_canvas && !tablet_near))) {
-    if (!painting_stroke_ || x != last_x_ || y != last_y_) pen_sample(x, y, true);
-    painting_stroke_ = true;
-  } else if (painting_stroke_) {
-    pen_sample(x, y, false);
-    painting_stroke_ = false;
-  }
-  // Pan with the middle button (or space + left), rotate with the right button.
-  const bool pan = middle || (space && left);
-  if (pan && (panning_ || over_canvas)) {
-    if (panning_) {
-      const auto a = state_.view.window_to_cell(drag_x_, drag_y_, w, h);
-      const auto b = state_.view.window_to_cell(x, y, w, h);
-      state_.view.center_x_cells -= b[0] - a[0];
-      state_.view.center_y_cells -= b[1] - a[1];
-    }
-    panning_ = true;
-  } else {
-    panning_ = false;
-  }
-  if (right && (rotating_ || over_canvas)) {
-    if (rotating_) {
-      const double a0 = std::atan2(drag_y_ - h / 2.0, drag_x_ - w / 2.0);
-      const double a1 = std::atan2(y - h / 2.0, x - w / 2.0);
-      state_.view.rotation_rad += a1 - a0;
-    }
-    rotating_ = true;
-  } else {
-    rotating_ = false;
-  }
-  drag_x_ = x;
-  drag_y_ = y;
+  state_.cursor_cell = state_.view.window_to_cell(x, y, window_w_, window_h_);
   // Zoom about the cursor with the wheel, down to single cells and up to 64 px a cell.
-  if (over_canvas && io.MouseWheel != 0.0f) {
-    const auto before = state_.view.window_to_cell(x, y, w, h);
+  if (!io.WantCaptureMouse && io.MouseWheel != 0.0f) {
+    const auto before = state_.view.window_to_cell(x, y, window_w_, window_h_);
     state_.view.pixels_per_cell =
         std::clamp(state_.view.pixels_per_cell * std::pow(1.15, io.MouseWheel), 0.02, 64.0);
-    const auto after = state_.view.window_to_cell(x, y, w, h);
+    const auto after = state_.view.window_to_cell(x, y, window_w_, window_h_);
     state_.view.center_x_cells += before[0] - after[0];
     state_.view.center_y_cells += before[1] - after[1];
   }
@@ -594,6 +628,8 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   if (take_screenshot) save_window_screenshot(*options_.screenshot, fb_w, fb_h);
   glfwSwapBuffers(window_);
+  latency_.shown(applied_at_upload_, glfwGetTime() - session_start_s_);
+  state_.input_latency_ms = latency_.recent_median_ms().value_or(-1.0);
   state_.frame_ms = ms_since(start);
 }
 
@@ -625,6 +661,16 @@ void PaintWindow::run() {
     }
     if (options_.exit_after && screenshot_done && worker_->idle()) break;
   }
+  report_latency();
+}
+
+// The session's input latency, for measuring it (docs/window.md).
+void PaintWindow::report_latency() const {
+  if (latency_.shown_count() == 0) return;
+  std::cout << "input latency (pen event to the swap showing it): median "
+            << *latency_.percentile_ms(0.5) << " ms, 95th percentile "
+            << *latency_.percentile_ms(0.95) << " ms over " << latency_.shown_count()
+            << " samples\n";
 }
 
 }  // namespace

@@ -390,13 +390,13 @@ void status_bar(PanelContext& c) {
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus);
   const SimStats sim = c.worker.stats();
   ImGui::Text(
-      "frame %.1f ms | upload %.1f ms (%d tiles), shaded %lld px | sim %.2f ms/event, %.0f ms/s "
-      "busy, "
+      "frame %.1f ms | upload %.1f ms (%d tiles), shaded %lld px | input %.1f ms | sim %.2f "
+      "ms/event, %.0f ms/s busy, "
       "%zu queued | %dx%d @ %.0f dpi | zoom %.2f | cell %.0f,%.0f | %s%s",
-      s.frame_ms, s.upload_ms, s.tiles_uploaded, s.pixels_shaded, sim.last_event_ms,
-      sim.busy_ms_per_s, sim.queued, c.painting.width_cells, c.painting.height_cells,
-      c.painting.dpi, s.view.pixels_per_cell, s.cursor_cell[0], s.cursor_cell[1],
-      sim.events_since_save > 0 ? "unsaved " : "", s.message.c_str());
+      s.frame_ms, s.upload_ms, s.tiles_uploaded, s.pixels_shaded, s.input_latency_ms,
+      sim.last_event_ms, sim.busy_ms_per_s, sim.queued, c.painting.width_cells,
+      c.painting.height_cells, c.painting.dpi, s.view.pixels_per_cell, s.cursor_cell[0],
+      s.cursor_cell[1], sim.events_since_save > 0 ? "unsaved " : "", s.message.c_str());
   ImGui::End();
 }
 

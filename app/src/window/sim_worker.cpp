@@ -47,6 +47,7 @@ void SimWorker::start_recording(const std::optional<std::filesystem::path>& reco
 void SimWorker::submit(input::StrokeEvent event) {
   {
     std::lock_guard lock(queue_mutex_);
+    ++stats_.submitted;
     queue_.push_back({std::move(event), std::nullopt, false});
   }
   queue_changed_.notify_all();
@@ -55,6 +56,7 @@ void SimWorker::submit(input::StrokeEvent event) {
 void SimWorker::set_auto_load(bool auto_load) {
   {
     std::lock_guard lock(queue_mutex_);
+    ++stats_.submitted;
     queue_.push_back({input::ToolEvent{"brush"}, auto_load, false});
   }
   queue_changed_.notify_all();
@@ -63,6 +65,7 @@ void SimWorker::set_auto_load(bool auto_load) {
 void SimWorker::finish_stroke() {
   {
     std::lock_guard lock(queue_mutex_);
+    ++stats_.submitted;
     queue_.push_back({input::ToolEvent{"brush"}, std::nullopt, true});
   }
   queue_changed_.notify_all();

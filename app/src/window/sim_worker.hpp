@@ -22,10 +22,11 @@
 namespace impasto::app::window {
 
 struct SimStats {
-  double last_event_ms = 0.0;  // time the last applied event took
-  double busy_ms_per_s = 0.0;  // simulation load over the last second
-  std::size_t queued = 0;      // events waiting
-  std::uint64_t applied = 0;   // events applied since the worker started
+  double last_event_ms = 0.0;   // time the last applied event took
+  double busy_ms_per_s = 0.0;   // simulation load over the last second
+  std::size_t queued = 0;       // events waiting
+  std::uint64_t applied = 0;    // events applied since the worker started
+  std::uint64_t submitted = 0;  // jobs queued since the worker started (applied + waiting)
   std::uint64_t events_since_save = 0;
   std::string last_error;  // the most recent event that could not be applied
 };

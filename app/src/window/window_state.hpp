@@ -75,7 +75,8 @@ struct WindowState {
   double frame_ms = 0.0;
   double upload_ms = 0.0;
   int tiles_uploaded = 0;
-  long long pixels_shaded = 0;  // by the last frame's K-M pass (the rest was cached)
+  long long pixels_shaded = 0;     // by the last frame's K-M pass (the rest was cached)
+  double input_latency_ms = -1.0;  // median, pen event to the swap showing it (< 0: none yet)
   std::array<double, 2> cursor_cell{-1, -1};
   bool quit = false;
 };

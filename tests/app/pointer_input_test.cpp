@@ -1,0 +1,288 @@
+// The painting window's mouse path without a window: events queued as GLFW's callbacks
+// deliver them (pointer_events), applied in order by PointerGestures, fed as pen samples
+// through PenFeed (whose sink is the simulation's queue in the window), and the latency
+// measure of the status bar.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <variant>
+#include <vector>
+
+#include "window/pen_feed.hpp"
+#include "window/pointer_events.hpp"
+#include "window/pointer_gestures.hpp"
+#include "window/pointer_latency.hpp"
+
+namespace impasto::app::window {
+namespace {
+
+constexpr double kMmPerPixel = 0.1;
+
+// The window's mouse path with the identity view: window pixel (x, y) is canvas
+// (x, y) * kMmPerPixel. Records what the simulation would be sent.
+struct MousePath {
+  std::vector<paintcore::PenSample> sent;
+  PenFeed feed{[this](input::StrokeEvent event) {
+    sent.push_back(std::get<input::SampleEvent>(event).sample);
+  }};
+  double pan_dx = 0, pan_dy = 0;
+  int rotations = 0;
+  PointerGestures gestures{{
+      [this](const PointerEvent& at, bool tip_down) {
+        paintcore::PenSample s;
+        s.x_mm = at.x * kMmPerPixel;
+        s.y_mm = at.y * kMmPerPixel;
+        s.time_s = at.time_s;
+        s.pressure = tip_down ? 0.6f : 0.0f;
+        s.buttons = paintcore::kPenInRange | (tip_down ? paintcore::kPenTip : 0u);
+        feed.feed(s);
+      },
+      [this](double fx, double fy, double tx, double ty) {
+        pan_dx += tx - fx;
+        pan_dy += ty - fy;
+      },
+      [this](double, double, double, double) { ++rotations; },
+  }};
+};
+
+struct Stroke {
+  std::vector<paintcore::PenSample> down;  // tip-down samples
+  paintcore::PenSample end;                // the tip-up sample that ended it
+};
+
+// Splits the samples sent into strokes: each begins with a tip-down sample after a tip-up
+// one (or the first) and ends with a tip-up sample. Fails the test on a sample that is
+// neither (a hovering sample should never be sent).
+std::vector<Stroke> strokes_of(const std::vector<paintcore::PenSample>& sent) {
+  std::vector<Stroke> strokes;
+  bool open = false;
+  for (const auto& s : sent) {
+    if (s.tip_down()) {
+      if (!open) strokes.emplace_back();
+      strokes.back().down.push_back(s);
+      open = true;
+    } else {
+      EXPECT_TRUE(open) << "a tip-up sample outside a stroke at t=" << s.time_s;
+      if (open) strokes.back().end = s;
+      open = false;
+    }
+  }
+  EXPECT_FALSE(open) << "the last stroke was not ended";
+  return strokes;
+}
+
+TEST(PointerEventQueue, KeepsEveryEventInOrderWithItsTime) {
+  PointerEventQueue queue;
+  queue.set_position(10, 20);
+  queue.button(kLeftButton, true, 1.000);
+  queue.moved(11, 21, 1.001);
+  queue.moved(12, 23, 1.002);
+  queue.button(kLeftButton, false, 1.003);
+  queue.button(kMiddleButton, true, 1.004);
+  ASSERT_EQ(queue.size(), 5u);
+  const std::vector<PointerEvent> events = queue.take();
+  ASSERT_EQ(events.size(), 5u);
+  EXPECT_EQ(queue.size(), 0u);
+  EXPECT_TRUE(queue.take().empty());
+
+  const PointerAction actions[] = {PointerAction::kPress, PointerAction::kMove,
+                                   PointerAction::kMove, PointerAction::kRelease,
+                                   PointerAction::kPress};
+  const int buttons[] = {kLeftButton, -1, -1, kLeftButton, kMiddleButton};
+  // A button event carries no position: it happened where the cursor last was.
+  const double xs[] = {10, 11, 12, 12, 12}, ys[] = {20, 21, 23, 23, 23};
+  const double times[] = {1.000, 1.001, 1.002, 1.003, 1.004};
+  for (std::size_t i = 0; i < events.size(); ++i) {
+    EXPECT_EQ(events[i].action, actions[i]) << i;
+    EXPECT_EQ(events[i].button, buttons[i]) << i;
+    EXPECT_EQ(events[i].x, xs[i]) << i;
+    EXPECT_EQ(events[i].y, ys[i]) << i;
+    EXPECT_EQ(events[i].time_s, times[i]) << i;
+  }
+}
+
+TEST(PointerEventQueue, HoldsTimeThatWentBackwardsAtTheLastTime) {
+  PointerEventQueue queue;
+  queue.moved(1, 1, 2.0);
+  queue.moved(2, 2, 1.5);
+  const auto events = queue.take();
+  ASSERT_EQ(events.size(), 2u);
+  EXPECT_EQ(events[1].time_s, 2.0);
+  EXPECT_EQ(events[1].x, 2.0);
+}
+
+TEST(PointerGestures, ReleaseMovePressWithinOneFrameMakesTwoStrokesWithNothingBetween) {
+  PointerEventQueue queue;
+  queue.set_position(100, 100);
+  queue.button(kLeftButton, true, 0.010);
+  queue.moved(120, 100, 0.011);
+  queue.moved(140, 100, 0.012);
+  queue.button(kLeftButton, false, 0.013);
+  // Between the strokes the cursor crosses the canvas with the button up.
+  queue.moved(200, 150, 0.014);
+  queue.moved(300, 200, 0.015);
+  queue.button(kLeftButton, true, 0.016);
+  queue.moved(320, 200, 0.017);
+  queue.button(kLeftButton, false, 0.018);
+
+  MousePath path;
+  path.gestures.apply(queue.take(), PointerFrame{});  // all of it in one frame
+  const std::vector<Stroke> strokes = strokes_of(path.sent);
+  ASSERT_EQ(strokes.size(), 2u);
+  ASSERT_EQ(strokes[0].down.size(), 3u);
+  ASSERT_EQ(strokes[1].down.size(), 2u);
+  EXPECT_DOUBLE_EQ(strokes[0].down.front().x_mm, 100 * kMmPerPixel);
+  EXPECT_DOUBLE_EQ(strokes[0].end.x_mm, 140 * kMmPerPixel);
+  EXPECT_DOUBLE_EQ(strokes[0].end.time_s, 0.013);
+  // The second stroke starts where the button went down, not where the first one ended.
+  EXPECT_DOUBLE_EQ(strokes[1].down.front().x_mm, 300 * kMmPerPixel);
+  EXPECT_DOUBLE_EQ(strokes[1].down.front().y_mm, 200 * kMmPerPixel);
+  EXPECT_DOUBLE_EQ(strokes[1].down.front().time_s, 0.016);
+  for (const auto& s : path.sent) {
+    EXPECT_FALSE(s.x_mm > 140 * kMmPerPixel && s.x_mm < 300 * kMmPerPixel)
+        << "a sample joins the strokes at x=" << s.x_mm;
+  }
+  EXPECT_FALSE(path.gestures.painting());
+}
+
+TEST(PointerGestures, FastCircleWithinOneFrameReachesTheFeedAsEverySample) {
+  // 360 moves around a 200 px circle, all delivered before one frame.
+  constexpr int kMoves = 360;
+  constexpr double kCx = 400, kCy = 300, kR = 200;
+  PointerEventQueue queue;
+  queue.set_position(kCx + kR, kCy);
+  queue.button(kLeftButton, true, 5.0);
+  for (int i = 1; i <= kMoves; ++i) {
+    const double a = 2.0 * std::numbers::pi * i / kMoves;
+    queue.moved(kCx + kR * std::cos(a), kCy + kR * std::sin(a), 5.0 + 1e-4 * i);
+  }
+  queue.button(kLeftButton, false, 5.0 + 1e-4 * (kMoves + 1));
+  const std::size_t events = queue.size();
+
+  MousePath path;
+  path.gestures.apply(queue.take(), PointerFrame{});
+  ASSERT_EQ(path.sent.size(), events);  // the press, every move and the release
+  EXPECT_EQ(path.feed.fed(), events);
+  const std::vector<Stroke> strokes = strokes_of(path.sent);
+  ASSERT_EQ(strokes.size(), 1u);
+  double worst_radial_mm = 0.0, last_time = -1.0;
+  for (const auto& s : path.sent) {
+    const double r = std::hypot(s.x_mm - kCx * kMmPerPixel, s.y_mm - kCy * kMmPerPixel);
+    worst_radial_mm = std::max(worst_radial_mm, std::abs(r - kR * kMmPerPixel));
+    EXPECT_GT(s.time_s, last_time);  // each sample keeps its own time
+    last_time = s.time_s;
+  }
+  EXPECT_LT(worst_radial_mm, 1e-9);
+}
+
+TEST(PointerGestures, PressOnThePanelsDoesNotPaintAndItsDragStaysTheirs) {
+  PointerFrame frame;
+  frame.canvas_at = [](double x, double) { return x < 500; };  // a panel right of x = 500
+  PointerEventQueue queue;
+  queue.set_position(600, 100);
+  queue.button(kLeftButton, true, 1.0);
+  queue.moved(300, 100, 1.1);  // dragging a slider out over the canvas
+  queue.button(kLeftButton, false, 1.2);
+  queue.button(kLeftButton, true, 1.3);  // a press on the canvas paints
+  queue.moved(310, 100, 1.4);
+  queue.button(kLeftButton, false, 1.5);
+  MousePath path;
+  path.gestures.apply(queue.take(), frame);
+  const std::vector<Stroke> strokes = strokes_of(path.sent);
+  ASSERT_EQ(strokes.size(), 1u);
+  EXPECT_DOUBLE_EQ(strokes[0].down.front().time_s, 1.3);
+}
+
+TEST(PointerGestures, NearTabletOrSpaceKeepsTheMouseFromPainting) {
+  PointerEventQueue queue;
+  queue.set_position(100, 100);
+  queue.button(kLeftButton, true, 1.0);
+  queue.moved(150, 120, 1.1);
+  queue.button(kLeftButton, false, 1.2);
+  const std::vector<PointerEvent> drag = queue.take();
+
+  MousePath near_tablet;
+  PointerFrame tablet_frame;
+  tablet_frame.tablet_near = true;
+  near_tablet.gestures.apply(drag, tablet_frame);
+  EXPECT_TRUE(near_tablet.sent.empty());
+
+  MousePath with_space;
+  PointerFrame space_frame;
+  space_frame.space_down = true;
+  with_space.gestures.apply(drag, space_frame);
+  EXPECT_TRUE(with_space.sent.empty());
+  EXPECT_DOUBLE_EQ(with_space.pan_dx, 50);
+  EXPECT_DOUBLE_EQ(with_space.pan_dy, 20);
+}
+
+TEST(PointerGestures, MiddlePansAndRightRotatesWithEveryMove) {
+  PointerEventQueue queue;
+  queue.set_position(0, 0);
+  queue.button(kMiddleButton, true, 1.0);
+  for (int i = 1; i <= 10; ++i) queue.moved(3.0 * i, -2.0 * i, 1.0 + 0.001 * i);
+  queue.button(kMiddleButton, false, 1.1);
+  queue.button(kRightButton, true, 1.2);
+  for (int i = 1; i <= 7; ++i) queue.moved(30 + i, -20, 1.2 + 0.001 * i);
+  queue.button(kRightButton, false, 1.3);
+  MousePath path;
+  path.gestures.apply(queue.take(), PointerFrame{});
+  EXPECT_TRUE(path.sent.empty());
+  EXPECT_DOUBLE_EQ(path.pan_dx, 30);
+  EXPECT_DOUBLE_EQ(path.pan_dy, -20);
+  EXPECT_EQ(path.rotations, 7);
+}
+
+TEST(SpeedPressure, UsesTheSamplesOwnTimes) {
+  // 150 mm/s, sampled every 2 ms: pressure 1 - 150/375 = 0.6 once the window has filled.
+  SpeedPressure steady;
+  float pressure = 1.0f;
+  for (int i = 0; i <= 100; ++i) pressure = steady.at(0.3 * i, 0.0, 0.002 * i);
+  EXPECT_NEAR(steady.speed_mm_s(), 150.0, 1e-6);
+  EXPECT_NEAR(pressure, 0.6f, 1e-5);
+
+  // The same path delivered in bursts (a frame's events arriving together, 16 ms apart):
+  // the speed is still the path over the time it took, not over the microseconds between
+  // the samples of a burst.
+  SpeedPressure bursts;
+  for (int frame = 0; frame < 12; ++frame) {
+    for (int i = 0; i < 8; ++i) {
+      const int n = frame * 8 + i;
+      pressure = bursts.at(0.3 * n, 0.0, 0.016 * frame + 1e-6 * i);
+    }
+  }
+  EXPECT_NEAR(bursts.speed_mm_s(), 150.0, 15.0);
+  EXPECT_GT(pressure, 0.5f);
+
+  // At rest: full pressure.
+  SpeedPressure rest;
+  for (int i = 0; i < 50; ++i) pressure = rest.at(1.0, 1.0, 0.002 * i);
+  EXPECT_FLOAT_EQ(pressure, 1.0f);
+}
+
+TEST(InputLatency, MeasuresFromEachSamplesTimeToTheFirstSwapAfterItWasApplied) {
+  InputLatency latency(4);
+  EXPECT_FALSE(latency.recent_median_ms());
+  latency.submitted(3, 1.000);
+  latency.submitted(4, 1.002);
+  latency.submitted(7, 1.004);
+  latency.shown(2, 1.010);  // applied before any of them: nothing shown yet
+  EXPECT_EQ(latency.shown_count(), 0u);
+  latency.shown(4, 1.020);  // jobs 3 and 4
+  EXPECT_EQ(latency.shown_count(), 2u);
+  EXPECT_EQ(latency.waiting(), 1u);
+  latency.shown(9, 1.034);  // job 7
+  EXPECT_EQ(latency.shown_count(), 3u);
+  EXPECT_NEAR(*latency.recent_median_ms(), 20.0, 1e-9);  // 20, 18, 30 ms
+  EXPECT_NEAR(*latency.percentile_ms(1.0), 30.0, 1e-9);
+  EXPECT_NEAR(*latency.percentile_ms(0.0), 18.0, 1e-9);
+  // Only the last `recent` count in the median.
+  for (int i = 0; i < 4; ++i) latency.submitted(10 + i, 2.0);
+  latency.shown(20, 2.005);
+  EXPECT_NEAR(*latency.recent_median_ms(), 5.0, 1e-9);
+  EXPECT_EQ(latency.shown_count(), 7u);
+}
+
+}  // namespace
+}  // namespace impasto::app::window
