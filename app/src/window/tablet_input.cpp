@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <vector>
 
 namespace impasto::app::window {
 
@@ -50,15 +51,27 @@ std::size_t feed_tablet_samples(std::span<const input::hid::TabletSamples> polle
                                 double time_offset_s, const TabletSettings& settings,
                                 const TabletTargetGeometry& geometry, PenFeed& feed,
                                 std::string* error) {
-  const std::size_t before = feed.fed();
+  // Several tablets' samples interleaved by their own times (each tablet's order kept), so
+  // the feed never has to hold a time back.
+  struct Timed {
+    const paintcore::PenSample* sample;
+    const input::hid::TabletSamples* tablet;
+  };
+  std::vector<Timed> all;
   for (const input::hid::TabletSamples& tablet : polled) {
-    for (paintcore::PenSample sample : tablet.samples) {
-      sample.time_s += time_offset_s;
-      try {
-        feed.feed(map_tablet_sample(sample, tablet.tablet.area, settings, geometry));
-      } catch (const std::invalid_argument& e) {
-        if (error) *error = tablet.tablet.name + ": " + e.what();
-      }
+    for (const paintcore::PenSample& sample : tablet.samples) all.push_back({&sample, &tablet});
+  }
+  std::stable_sort(all.begin(), all.end(), [](const Timed& a, const Timed& b) {
+    return a.sample->time_s < b.sample->time_s;
+  });
+  const std::size_t before = feed.fed();
+  for (const Timed& timed : all) {
+    paintcore::PenSample sample = *timed.sample;
+    sample.time_s += time_offset_s;
+    try {
+      feed.feed(map_tablet_sample(sample, timed.tablet->tablet.area, settings, geometry));
+    } catch (const std::invalid_argument& e) {
+      if (error) *error = timed.tablet->tablet.name + ": " + e.what();
     }
   }
   return feed.fed() - before;
