@@ -8,11 +8,9 @@
 #include <imgui.h>
 #include <imgui_internal.h>  // the panels' rectangles, to tell where a press landed
 #include <impasto/data/cie.hpp>
-#include <impasto/data/pigments.hpp>
 #include <impasto/input/stroke_import.hpp>
 #include <impasto/paintcore/brush_head.hpp>
 #include <impasto/render/display.hpp>
-#include <impasto/render/kubelka_munk.hpp>
 #include <impasto/render/render_painting.hpp>
 #include <impasto/render_gl/canvas_renderer.hpp>
 #include <impasto/render_gl/gl.hpp>
@@ -37,6 +35,7 @@
 #include "window/recent_files.hpp"
 #include "window/screenshot.hpp"
 #include "window/sim_worker.hpp"
+#include "window/swatch_chips.hpp"
 #include "window/tablet_input.hpp"
 
 namespace impasto::app::window {
@@ -165,6 +164,7 @@ class PaintWindow {
   InputLatency latency_;                 // pen sample's own time -> the swap that shows it
   std::uint64_t applied_at_upload_ = 0;  // simulation jobs applied before this frame's upload
   PaletteBoardPanel board_panel_;
+  SwatchChips swatch_chips_;
 
   // Tablets, read on their own threads, polled once a frame.
   std::unique_ptr<input::hid::TabletManager> tablets_;
@@ -402,41 +402,11 @@ void PaintWindow::sync_gpu() {
   state_.upload_ms = ms_since(start);
 }
 
-// The brush's mix as an opaque swatch: R∞ of the mixed K and S at the light's nodes, to the
-// display like the canvas.
+// The Palette panel's chips, painted and rendered off the UI thread (swatch_chips.hpp).
 void PaintWindow::update_swatch() {
-  if (!state_.mix_changed) return;
-  state_.mix_changed = false;
-  const auto& pigments = data::PigmentDatabase::defaults().all();
-  std::vector<std::string> names;
-  std::vector<float> parts;
-  float total = 0.0f;
-  for (std::size_t i = 0; i < pigments.size() && i < state_.mix_parts.size(); ++i) {
-    if (state_.mix_parts[i] > 0.0f) {
-      names.push_back(pigments[i].name);
-      parts.push_back(state_.mix_parts[i]);
-      total += state_.mix_parts[i];
-    }
-  }
-  if (names.empty()) return;
-  const render::SpectralPalette mix(state_.settings, names);
-  std::vector<float> reflectance(static_cast<std::size_t>(mix.nodes()));
-  for (int n = 0; n < mix.nodes(); ++n) {
-    float K = 0.0f, S = 0.0f;
-    for (int p = 0; p < mix.pigment_count(); ++p) {
-      render::km::accumulate_pigment(parts[static_cast<std::size_t>(p)] / total,
-                                     mix.absorption(p)[n], mix.scattering(p)[n], K, S);
-    }
-    reflectance[static_cast<std::size_t>(n)] = render::km::reflectance_infinite(K, S);
-  }
-  float xyz[3] = {0, 0, 0};
-  for (int c = 0; c < 3; ++c) {
-    for (int n = 0; n < mix.nodes(); ++n)
-      xyz[c] += mix.to_display_xyz(c)[n] * reflectance[static_cast<std::size_t>(n)];
-  }
-  render::DisplayTransform(state_.settings.display).apply(xyz, 1);
-  for (int c = 0; c < 3; ++c)
-    state_.swatch_rgb[static_cast<std::size_t>(c)] = std::clamp(xyz[c], 0.0f, 1.0f);
+  const paintcore::CanvasSpec canvas =
+      worker_->with_painting([](const paintcore::Painting& p) { return p.canvas().spec(); });
+  swatch_chips_.update(state_, canvas);
 }
 
 void PaintWindow::pen_sample(const PointerEvent& at, bool tip_down) {

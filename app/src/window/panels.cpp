@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <string>
 
@@ -118,25 +119,54 @@ void file_menu(PanelContext& c) {
   }
 }
 
+ImVec4 rgba(const std::array<float, 3>& rgb) {
+  return ImVec4(rgb[0], rgb[1], rgb[2], 1.0f);
+}
+
+// A colour chip with its explanation as the tooltip.
+void chip(const char* id, const std::array<float, 3>& rgb, float size, const char* tooltip) {
+  ImGui::ColorButton(id, rgba(rgb), ImGuiColorEditFlags_NoTooltip, ImVec2(size, size));
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tooltip);
+}
+
 void palette_panel(PanelContext& c) {
   WindowState& s = c.state;
   const auto& pigments = data::PigmentDatabase::defaults().all();
   if (s.mix_parts.size() != pigments.size()) s.mix_parts.assign(pigments.size(), 0.0f);
   if (!ImGui::CollapsingHeader("Palette", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  ImGui::ColorButton("##swatch", ImVec4(s.swatch_rgb[0], s.swatch_rgb[1], s.swatch_rgb[2], 1.0f),
-                     ImGuiColorEditFlags_NoTooltip, ImVec2(48, 48));
-  ImGui::SameLine();
-  ImGui::BeginGroup();
-  ImGui::SliderFloat("mm³", &s.load_volume_mm3, 1.0f, 400.0f, "%.0f", ImGuiSliderFlags_Logarithmic);
   bool any = false;
   for (float p : s.mix_parts) any = any || p > 0.0f;
+  // The swatch: the mix as a stroke with this brush and load leaves it on the canvas, beside
+  // its masstone (session/swatch.hpp).
+  char on_canvas_tip[160];
+  std::snprintf(on_canvas_tip, sizeof on_canvas_tip,
+                "on canvas: a stroke with this brush, load and pressure,\nas rendered "
+                "(median wet thickness %.2f mm)",
+                s.swatch_thickness_mm);
+  chip("##on_canvas", s.swatch_on_canvas_rgb, 48.0f, on_canvas_tip);
+  ImGui::SameLine();
+  chip("##masstone", s.swatch_masstone_rgb, 48.0f, "masstone: the mix, opaque");
+  ImGui::SameLine();
+  ImGui::BeginGroup();
+  ImGui::SetNextItemWidth(120.0f);
+  ImGui::SliderFloat("mm³", &s.load_volume_mm3, 1.0f, 400.0f, "%.0f", ImGuiSliderFlags_Logarithmic);
+  if (!any) {
+    ImGui::TextDisabled("on canvas | masstone");
+  } else {
+    ImGui::Text("on canvas %.2f mm%s", s.swatch_thickness_mm, s.swatch_busy ? " ..." : "");
+    ImGui::TextUnformatted("| masstone");
+  }
+  ImGui::EndGroup();
+  ImGui::Checkbox("wipe first", &s.wipe_before_load);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Load onto a clean brush: paint still on it is wiped off first");
+  ImGui::SameLine();
   ImGui::BeginDisabled(!any);
   if (ImGui::Button("Load brush")) {
-    input::LoadEvent load{s.load_volume_mm3, {}};
-    for (std::size_t i = 0; i < pigments.size(); ++i) {
-      if (s.mix_parts[i] > 0.0f) load.mix.push_back({pigments[i].name, s.mix_parts[i]});
-    }
-    c.worker.submit(load);
+    // Both go to the session, so a replay loads the same way.
+    const bool dirty = c.painting.brush_volume_mm3 > 0.0 || c.worker.stats().queued > 0;
+    if (s.wipe_before_load && dirty) c.worker.submit(input::WipeEvent{});
+    c.worker.submit(load_event(s));
   }
   ImGui::EndDisabled();
   ImGui::SameLine();
@@ -147,10 +177,20 @@ void palette_panel(PanelContext& c) {
     s.mix_changed = true;
   }
   ImGui::Text("on brush: %.1f mm³", c.painting.brush_volume_mm3);
-  ImGui::EndGroup();
+  if (!s.swatch_error.empty()) ImGui::TextWrapped("swatch: %s", s.swatch_error.c_str());
+  // Each pigment: its masstone and a layer as thick as the swatch's deposit, then its parts.
+  char layer_tip[96];
+  std::snprintf(layer_tip, sizeof layer_tip, "a %.2f mm layer over the ground",
+                s.swatch_thickness_mm > 0.0 ? s.swatch_thickness_mm : 0.1);
   ImGui::BeginChild("pigments", ImVec2(0, 180), true);
   for (std::size_t i = 0; i < pigments.size(); ++i) {
     ImGui::PushID(static_cast<int>(i));
+    if (i < s.pigment_masstone_rgb.size() && i < s.pigment_layer_rgb.size()) {
+      chip("##masstone", s.pigment_masstone_rgb[i], ImGui::GetFrameHeight(), "masstone");
+      ImGui::SameLine(0.0f, 1.0f);
+      chip("##layer", s.pigment_layer_rgb[i], ImGui::GetFrameHeight(), layer_tip);
+      ImGui::SameLine();
+    }
     ImGui::SetNextItemWidth(90.0f);
     if (ImGui::SliderFloat("##parts", &s.mix_parts[i], 0.0f, 10.0f, "%.1f")) s.mix_changed = true;
     ImGui::SameLine();
@@ -182,7 +222,7 @@ void brush_panel(PanelContext& c) {
   if (ImGui::SliderFloat("stiffness", &stiffness, 0.0f, 1.0f)) s.brush.stiffness = stiffness;
   changed = changed || ImGui::IsItemDeactivatedAfterEdit();
   if (changed) {
-    c.worker.submit(input::BrushEvent{s.brush.head, s.brush.size_mm, s.brush.stiffness, {}});
+    c.worker.submit(brush_event(s));
   }
   ImGui::Checkbox("pressure from speed", &s.pressure_from_speed);
   ImGui::BeginDisabled(s.pressure_from_speed);

@@ -1,7 +1,9 @@
 #pragma once
 // What the painting window's panels show and change, shared by the frame loop
 // (paint_window.cpp) and the panels (panels.cpp).
+#include <impasto/data/pigments.hpp>
 #include <impasto/input/hid_device.hpp>
+#include <impasto/input/stroke_events.hpp>
 #include <impasto/paintcore/brush.hpp>
 #include <impasto/render/render_settings.hpp>
 #include <impasto/render_gl/canvas_view.hpp>
@@ -36,8 +38,17 @@ struct WindowState {
   // --- paint on the brush ---
   std::vector<float> mix_parts;  // per pigment of the database
   float load_volume_mm3 = 40.0f;
-  std::array<float, 3> swatch_rgb{0.5f, 0.5f, 0.5f};
-  bool mix_changed = true;
+  bool wipe_before_load = true;  // "wipe first": Load sends a wipe, then the load
+  // The swatch (session/swatch.hpp), display RGB: the standard stroke with this brush and
+  // load as rendered, the mix's masstone, and the stroke's median wet thickness.
+  std::array<float, 3> swatch_on_canvas_rgb{0.5f, 0.5f, 0.5f};
+  std::array<float, 3> swatch_masstone_rgb{0.5f, 0.5f, 0.5f};
+  double swatch_thickness_mm = 0.0;  // 0: no swatch yet
+  bool swatch_busy = false;          // being painted off the UI thread
+  std::string swatch_error;
+  // Per pigment of the database: its masstone and a layer as thick as the swatch's deposit.
+  std::vector<std::array<float, 3>> pigment_masstone_rgb, pigment_layer_rgb;
+  bool mix_changed = true;  // the light changed: the swatch is redone even for the same stroke
 
   // --- brush and pen ---
   paintcore::BrushSettings brush{"round", 6.0, 0.5};
@@ -80,5 +91,24 @@ struct WindowState {
   std::array<double, 2> cursor_cell{-1, -1};
   bool quit = false;
 };
+
+// The session events the panels send for the brush and the load, built in one place so the
+// swatch paints with exactly what the painting gets.
+inline input::BrushEvent brush_event(const WindowState& s) {
+  input::BrushEvent event;
+  event.head = s.brush.head;
+  event.size_mm = s.brush.size_mm;
+  event.stiffness = s.brush.stiffness;
+  return event;
+}
+inline input::LoadEvent load_event(const WindowState& s) {
+  const auto& pigments = data::PigmentDatabase::defaults().all();
+  input::LoadEvent event;
+  event.volume_mm3 = s.load_volume_mm3;
+  for (std::size_t i = 0; i < pigments.size() && i < s.mix_parts.size(); ++i) {
+    if (s.mix_parts[i] > 0.0f) event.mix.push_back({pigments[i].name, s.mix_parts[i]});
+  }
+  return event;
+}
 
 }  // namespace impasto::app::window

@@ -1,0 +1,75 @@
+#include "window/swatch_chips.hpp"
+
+#include <impasto/data/pigments.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <exception>
+
+namespace impasto::app::window {
+namespace {
+
+std::array<float, 3> clamped(const DisplayRgb& rgb) {
+  return {std::clamp(rgb[0], 0.0f, 1.0f), std::clamp(rgb[1], 0.0f, 1.0f),
+          std::clamp(rgb[2], 0.0f, 1.0f)};
+}
+
+}  // namespace
+
+SwatchChips::~SwatchChips() {
+  if (job_.valid()) job_.wait();
+}
+
+SwatchChips::Result SwatchChips::compute(const SwatchStroke& stroke,
+                                         const render::RenderSettings& settings, double layer_mm) {
+  Result result;
+  if (!stroke.load.mix.empty()) {
+    result.swatch = make_swatch(stroke, settings);
+    layer_mm = result.swatch->deposit.median_mm;
+  }
+  std::vector<std::vector<input::PigmentPart>> singles;
+  for (const auto& pigment : data::PigmentDatabase::defaults().all())
+    singles.push_back({{pigment.name, 1.0}});
+  result.pigment_masstones = render_flat_layers(settings, singles, masstone_thickness_mm(settings));
+  result.pigment_layers = render_flat_layers(settings, singles, layer_mm);
+  return result;
+}
+
+void SwatchChips::update(WindowState& s, const paintcore::CanvasSpec& canvas) {
+  if (job_.valid() && job_.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
+    s.swatch_busy = false;
+    try {
+      const Result result = job_.get();
+      if (result.swatch) {
+        s.swatch_on_canvas_rgb = clamped(result.swatch->on_canvas);
+        s.swatch_masstone_rgb = clamped(result.swatch->masstone);
+        s.swatch_thickness_mm = result.swatch->deposit.median_mm;
+      }
+      s.pigment_masstone_rgb.clear();
+      s.pigment_layer_rgb.clear();
+      for (const DisplayRgb& rgb : result.pigment_masstones)
+        s.pigment_masstone_rgb.push_back(clamped(rgb));
+      for (const DisplayRgb& rgb : result.pigment_layers)
+        s.pigment_layer_rgb.push_back(clamped(rgb));
+      s.swatch_error.clear();
+    } catch (const std::exception& e) {
+      s.swatch_error = e.what();
+    }
+  }
+  if (job_.valid()) return;  // one at a time; the latest settings go next
+  SwatchStroke stroke;
+  stroke.brush = brush_event(s);
+  stroke.load = load_event(s);
+  stroke.pressure = s.mouse_pressure;
+  stroke.dpi = canvas.dpi;
+  stroke.weave_seed = canvas.weave_seed;
+  if (!s.mix_changed && started_ && *started_ == stroke) return;
+  s.mix_changed = false;
+  started_ = stroke;
+  s.swatch_busy = true;
+  // Without a mix the pigment rows still show a layer as thick as the last deposit.
+  const double layer_mm = s.swatch_thickness_mm > 0.0 ? s.swatch_thickness_mm : 0.1;
+  job_ = std::async(std::launch::async, &SwatchChips::compute, stroke, s.settings, layer_mm);
+}
+
+}  // namespace impasto::app::window

@@ -1,0 +1,39 @@
+#pragma once
+// The Palette panel's colour chips, kept up to date off the UI thread: the swatch of the
+// mix (session/swatch.hpp: the standard stroke as rendered, and the masstone) and, per
+// pigment of the database, its masstone and a layer as thick as the swatch's deposit.
+#include <impasto/paintcore/canvas.hpp>
+
+#include <future>
+#include <optional>
+
+#include "session/swatch.hpp"
+#include "window/window_state.hpp"
+
+namespace impasto::app::window {
+
+class SwatchChips {
+ public:
+  SwatchChips() = default;
+  SwatchChips(const SwatchChips&) = delete;
+  SwatchChips& operator=(const SwatchChips&) = delete;
+  ~SwatchChips();  // waits for a computation in flight
+
+  // Takes a finished computation into `state`, and starts the next one when the brush, the
+  // load, the pressure, the canvas or (state.mix_changed) the light differ from the last.
+  // Never blocks.
+  void update(WindowState& state, const paintcore::CanvasSpec& canvas);
+
+ private:
+  struct Result {
+    std::optional<Swatch> swatch;  // none for an empty mix
+    std::vector<DisplayRgb> pigment_masstones, pigment_layers;
+  };
+  static Result compute(const SwatchStroke& stroke, const render::RenderSettings& settings,
+                        double layer_mm);
+
+  std::future<Result> job_;
+  std::optional<SwatchStroke> started_;  // the stroke of the job in flight or last done
+};
+
+}  // namespace impasto::app::window
