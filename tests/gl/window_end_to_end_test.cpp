@@ -3,15 +3,24 @@
 // window and quits. The screenshot must show the canvas with paint and the panels; the
 // session recording must replay to the very same painting as the original strokes.
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <nlohmann/json.hpp>
+#include <numbers>
+#include <sstream>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "impasto/render/image.hpp"
 
@@ -101,6 +110,131 @@ TEST(WindowEndToEnd, ReplayScreenshotShowsPaintAndPanelsAndRecordsTheSession) {
 
 // `impasto render --gpu` draws a painting through the shaders headless; it must match the CPU
 // reference renderer within 2/255 per channel.
+// Live mouse input, driven with xdotool: a fast circle sent as one burst of moves with the
+// button held, then a release, a move and a press within one burst. Every event must reach
+// the session recording as a pen sample with the strokes kept apart.
+struct PenLine {
+  double time_s, x_mm, y_mm;
+  bool tip_down;
+};
+
+std::vector<PenLine> pen_lines(const fs::path& recording) {
+  std::vector<PenLine> lines;
+  std::ifstream in(recording);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::istringstream fields(line);
+    std::string kind;
+    fields >> kind;
+    if (kind != "pen") continue;
+    PenLine pen{};
+    double pressure = 0, tilt_x = 0, tilt_y = 0, rotation = 0;
+    unsigned buttons = 0;
+    fields >> pen.time_s >> pen.x_mm >> pen.y_mm >> pressure >> tilt_x >> tilt_y >> rotation >>
+        buttons;
+    pen.tip_down = (buttons & 1u) != 0;
+    lines.push_back(pen);
+  }
+  return lines;
+}
+
+bool have_xdotool() {
+  return std::system("command -v xdotool >/dev/null 2>&1") == 0;
+}
+
+void xdotool(const std::string& args) {
+  ASSERT_EQ(std::system(("xdotool " + args).c_str()), 0) << args;
+}
+
+TEST(WindowEndToEnd, EveryMouseEventOfAFastCircleAndOfReleaseMovePressIsPainted) {
+  ASSERT_NE(std::getenv("DISPLAY"), nullptr) << "run under xvfb-run -a";
+  if (!have_xdotool()) GTEST_SKIP() << "xdotool is not installed";
+  const fs::path dir =
+      fs::temp_directory_path() / ("impasto_window_mouse_test_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  const fs::path session = dir / "session.strokes";
+  const pid_t window = fork();
+  ASSERT_GE(window, 0);
+  if (window == 0) {
+    execl(IMPASTO_EXECUTABLE, IMPASTO_EXECUTABLE, "paint", "--record", session.c_str(),
+          "--window-width", "1200", "--window-height", "800", static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  // The window is up once it is found and its session has started recording.
+  bool up = false;
+  for (int i = 0; i < 120 && !up; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(250));
+    up = std::system("xdotool search --name '^Impasto$' >/dev/null 2>&1") == 0 &&
+         fs::exists(session) && fs::file_size(session) > 0;
+  }
+  ASSERT_TRUE(up) << "the window did not open";
+  std::this_thread::sleep_for(std::chrono::seconds(1));  // a few frames: the panels laid out
+
+  // The canvas fills the window left of the panels (x < 820 at this size).
+  constexpr int kMoves = 120, kCx = 300, kCy = 400, kR = 150;
+  std::string circle =
+      "mousemove --sync " + std::to_string(kCx + kR) + " " + std::to_string(kCy) + " mousedown 1";
+  for (int i = 1; i <= kMoves; ++i) {
+    const double a = 2.0 * std::numbers::pi * i / kMoves;
+    circle += " mousemove " + std::to_string(std::lround(kCx + kR * std::cos(a))) + " " +
+              std::to_string(std::lround(kCy + kR * std::sin(a)));
+  }
+  xdotool(circle + " mouseup 1");
+  // A stroke down-right, then with the button up a move right, and a second stroke.
+  std::string burst = "mousemove --sync 520 200 mousedown 1";
+  for (int k = 1; k <= 8; ++k) burst += " mousemove " + std::to_string(520 + 5 * k) + " 200";
+  burst += " mouseup 1 mousemove 630 260 mousemove 700 250 mousedown 1";
+  for (int k = 1; k <= 11; ++k) burst += " mousemove " + std::to_string(700 + 5 * k) + " 250";
+  xdotool(burst + " mouseup 1");
+  const std::size_t expected = (1 + kMoves + 1) + (1 + 8 + 1) + (1 + 11 + 1);
+  std::vector<PenLine> pens;
+  for (int i = 0; i < 80 && pens.size() < expected; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(250));
+    pens = pen_lines(session);
+  }
+  kill(window, SIGTERM);
+  waitpid(window, nullptr, 0);
+
+  ASSERT_EQ(pens.size(), expected) << "pen samples recorded, one per mouse event";
+  std::vector<std::vector<PenLine>> strokes;
+  bool open = false;
+  for (const PenLine& pen : pens) {
+    if (pen.tip_down && !open) strokes.emplace_back();
+    if (pen.tip_down || open) strokes.back().push_back(pen);
+    open = pen.tip_down;
+  }
+  ASSERT_EQ(strokes.size(), 3u);
+  EXPECT_EQ(strokes[0].size(), 1u + kMoves + 1);
+  EXPECT_EQ(strokes[1].size(), 1u + 8 + 1);
+  EXPECT_EQ(strokes[2].size(), 1u + 11 + 1);
+  for (std::size_t i = 1; i < pens.size(); ++i) EXPECT_GE(pens[i].time_s, pens[i - 1].time_s);
+
+  // The circle is round: the chords between its samples stay within 1 % of its radius
+  // (one sample a frame would leave a polygon of a few sides).
+  const std::vector<PenLine>& c = strokes[0];
+  double cx = 0, cy = 0;
+  for (std::size_t i = 1; i + 1 < c.size(); ++i) cx += c[i].x_mm, cy += c[i].y_mm;
+  cx /= static_cast<double>(c.size() - 2);
+  cy /= static_cast<double>(c.size() - 2);
+  double r = 0;
+  for (std::size_t i = 1; i + 1 < c.size(); ++i) r += std::hypot(c[i].x_mm - cx, c[i].y_mm - cy);
+  r /= static_cast<double>(c.size() - 2);
+  double worst = 0;
+  for (std::size_t i = 1; i < c.size(); ++i) {
+    const double mx = 0.5 * (c[i].x_mm + c[i - 1].x_mm), my = 0.5 * (c[i].y_mm + c[i - 1].y_mm);
+    worst = std::max(worst, std::abs(std::hypot(mx - cx, my - cy) - r));
+  }
+  EXPECT_LT(worst, 0.01 * r) << "radius " << r << " mm";
+
+  // The second stroke begins where the button went down, far from where the first ended.
+  const PenLine& end = strokes[1].back();
+  const PenLine& start = strokes[2].front();
+  EXPECT_GT(
+      std::hypot(start.x_mm - end.x_mm, start.y_mm - end.y_mm),
+      0.5 * std::hypot(strokes[1].front().x_mm - end.x_mm, strokes[1].front().y_mm - end.y_mm));
+  fs::remove_all(dir);
+}
+
 TEST(RenderCommand, GpuOutputMatchesTheCpuOutput) {
   const fs::path dir =
       fs::temp_directory_path() / ("impasto_render_gpu_test_" + std::to_string(getpid()));
