@@ -7,6 +7,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "command.hpp"
 #include "session/preview.hpp"
@@ -20,6 +21,7 @@ struct ReplayArgs {
   std::string strokes;
   std::optional<double> dpi;
   std::string size;
+  std::vector<std::string> params;
   int threads = 0;
   double source_dpi = 150.0;
   bool no_auto_load = false;
@@ -51,6 +53,8 @@ void run_replay(const ReplayArgs& args) {
   options.dpi = args.dpi;
   if (!args.size.empty()) parse_size(args.size, options);
   options.threads = args.threads;
+  for (const std::string& assignment : args.params)
+    paintcore::set_param(options.params, assignment);
   options.auto_load = !args.no_auto_load;
   input::ImportOptions import;
   import.source_dpi = args.source_dpi;
@@ -80,6 +84,9 @@ const CommandRegistrar registrar("replay", [](CLI::App& root) {
   cmd->add_option("--dpi", args->dpi, "Canvas resolution in cells per inch")
       ->check(CLI::Range(1.0, 20000.0));
   cmd->add_option("--size", args->size, "Canvas size in cells, WIDTHxHEIGHT");
+  cmd->add_option("--param", args->params,
+                  "Set a paint model constant, NAME=VALUE (docs/simulation.md lists them); "
+                  "repeatable");
   cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)")
       ->check(CLI::Range(0, 256));
   cmd->add_option("--source-dpi", args->source_dpi,

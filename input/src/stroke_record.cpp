@@ -3,6 +3,8 @@
 #include <cstdint>
 #include <limits>
 
+#include <impasto/paintcore/paint_body.hpp>
+
 namespace impasto::input::detail {
 
 namespace {
@@ -111,11 +113,19 @@ BrushEvent parse_brush(const Fields& f, const LineContext& where) {
   return brush;
 }
 
-LoadEvent parse_load(const Fields& f, const LineContext& where) {
+LoadEvent parse_load(Fields f, const LineContext& where) {
+  LoadEvent load;
+  // An optional last field body=NAME gives the paint's body.
+  if (f.size() > 1 && !is_quoted(f.back()) && f.back().starts_with("body=")) {
+    load.body = std::string(f.back().substr(5));
+    if (!paintcore::paint_body_from_name(load.body))
+      where.fail("body", "unknown paint body '" + load.body.substr(0, 32) +
+                             "' (known: " + paintcore::paint_body_names() + ")");
+    f.pop_back();
+  }
   if (f.size() < 4 || f.size() % 2 != 0) {
     where.fail("", "'load' takes a volume in mm^3 then \"pigment name\" parts pairs");
   }
-  LoadEvent load;
   load.volume_mm3 = parse_double(f[1], where, "volume");
   if (load.volume_mm3 < 0.0) where.fail("volume", "must not be negative");
   for (std::size_t i = 2; i < f.size(); i += 2) {
@@ -177,6 +187,7 @@ struct LineWriter {
       line.add("\"" + p.pigment + "\"");
       line.add(shortest(p.parts));
     }
+    if (!e.body.empty()) line.add("body=" + e.body);
     return line.text;
   }
   std::string operator()(const WipeEvent&) const { return "wipe"; }

@@ -35,7 +35,8 @@ Brush::Brush(BrushHead head, BrushSettings settings, double cell_mm, int slot_co
       const std::size_t k = static_cast<std::size_t>(j) * cells_ + i;
       // A one-cell brush covers its only cell whatever the shape.
       covers_[k] = cells_ == 1 || head_.covers(u, v);
-      footprint_mm_[k] = static_cast<float>(head_.height(u, v) * half_size_mm);
+      footprint_mm_[k] = static_cast<float>(head_.height(u, v) * half_size_mm +
+                                            head_.bristle_height_mm(u * half_size_mm));
       covered_ += covers_[k];
     }
   if (covered_ == 0) {  // a thin head on a coarse grid: its centre cell still holds paint

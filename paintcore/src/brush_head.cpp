@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 #include <stdexcept>
 
@@ -20,6 +22,22 @@ double BrushHead::field(double u, double v) const {
 
 double BrushHead::height(double u, double v) const {
   return rise * (1.0 - std::clamp(field(u, v), 0.0, 1.0));
+}
+
+double BrushHead::bristle_height_mm(double u_mm) const {
+  const Bristles& b = bristles;
+  if (b.spacing_mm <= 0.0 || b.depth_mm <= 0.0) return 0.0;
+  const double column = std::floor(u_mm / b.spacing_mm);
+  const double phase = u_mm / b.spacing_mm - column;  // 0..1 across one column
+  // Each column's length varies by a fixed pseudo-random amount (the same on every run).
+  auto bits = static_cast<std::uint64_t>(static_cast<std::int64_t>(column)) * 0x9E3779B97F4A7C15ull;
+  bits ^= bits >> 31;
+  bits *= 0xBF58476D1CE4E5B9ull;
+  bits ^= bits >> 29;
+  const double unit = static_cast<double>(bits >> 11) * 0x1.0p-53;  // [0, 1)
+  // A rounded tip: 0 at the column's middle, rising to depth_mm at its edges.
+  const double gap = 0.5 * (1.0 - std::cos(2.0 * std::numbers::pi * (phase - 0.5)));
+  return b.depth_mm * (gap + b.jitter * unit);
 }
 
 namespace {
@@ -101,6 +119,15 @@ BrushHead parse_brush_head(std::istream& in, const std::string& source) {
         parser.fail("more than " + std::to_string(kMaxPerturbations) + " perturbations");
       const auto c = parser.numbers(words, key, 7);
       head.perturbations.push_back({c[0], quadric_from(c, 1)});
+    } else if (key == "bristles") {
+      const auto c = parser.numbers(words, key, 3);
+      if (c[0] < 0.0 || c[0] > 100.0) parser.fail("'bristles' spacing must be in 0..100 mm");
+      if (c[1] < 0.0 || c[1] > 100.0) parser.fail("'bristles' depth must be in 0..100 mm");
+      if (c[2] < 0.0 || c[2] > 1.0) parser.fail("'bristles' jitter must be in 0..1");
+      head.bristles = {c[0], c[1], c[2]};
+    } else if (key == "splay") {
+      head.splay = parser.numbers(words, key, 1)[0];
+      if (head.splay < 0.0 || head.splay > 1.0) parser.fail("'splay' must be in 0..1");
     } else {
       parser.fail("unknown key '" + key + "'");
     }

@@ -7,7 +7,7 @@
 
 namespace impasto::paintcore {
 
-BrushPlacement place_brush(const BrushPose& pose, int brush_cells) {
+BrushPlacement place_brush(const BrushPose& pose, int brush_cells, double spread) {
   const double tilt = std::min(std::hypot(pose.tilt_x_rad, pose.tilt_y_rad), kMaxTiltRad);
   double dir_x = 1.0, dir_y = 0.0;
   if (tilt > 0.0) {
@@ -30,6 +30,10 @@ BrushPlacement place_brush(const BrushPose& pose, int brush_cells) {
   const double ki = 1.0 / stretch - 1.0;
   const double i00 = 1 + ki * dir_x * dir_x, i01 = ki * dir_x * dir_y, i11 = 1 + ki * dir_y * dir_y;
   p.to_brush = {c * i00 + s * i01, c * i01 + s * i11, -s * i00 + c * i01, -s * i01 + c * i11};
+  if (spread != 1.0) {
+    for (double& m : p.to_canvas) m *= spread;
+    for (double& m : p.to_brush) m /= spread;
+  }
   return p;
 }
 

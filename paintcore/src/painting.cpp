@@ -90,7 +90,8 @@ void Painting::set_brush(const BrushSettings& settings, const BrushHead& head) {
   p.history.commit();
 }
 
-void Painting::load_brush(const std::vector<PigmentMixPart>& mix, double volume_mm3) {
+void Painting::load_brush(const std::vector<PigmentMixPart>& mix, double volume_mm3,
+                          PaintBody body) {
   Impl& p = *impl_;
   if (p.brush.empty()) throw std::runtime_error("load_brush: no brush is set (call set_brush)");
   if (!std::isfinite(volume_mm3) || volume_mm3 < 0.0 || volume_mm3 > 1e9)
@@ -126,6 +127,7 @@ void Painting::load_brush(const std::vector<PigmentMixPart>& mix, double volume_
     fraction[slot] += part.parts / total_parts;
   }
   p.brush.ensure_slots(slot_count());
+  p.brush.set_body(body);
   const double area = p.canvas.spec().cell_area_mm2();
   const double height = volume_mm3 / (static_cast<double>(p.brush.covered_cells()) * area);
   const std::size_t cells = p.brush.cell_count();
@@ -174,6 +176,9 @@ void Painting::begin_stroke() {
   p.in_stroke = true;
   p.stroke_touched = false;
   p.last_pose.reset();
+  p.pose_before_last.reset();
+  p.stroke_has_twist = false;
+  p.heading_rad.reset();
 }
 
 void Painting::end_stroke() {
@@ -188,6 +193,10 @@ void Painting::end_stroke() {
 }
 
 namespace {
+
+// A pause between two samples longer than this counts as this long: a still brush has long
+// reached its split by then, and a gap in a recording must not cost unbounded steps.
+constexpr double kMaxSegmentSeconds = 2.0;
 
 // Clips segment a + t (b - a), t in [0, 1], to the box; returns false when it misses.
 bool clip_segment(double ax, double ay, double bx, double by, double lo_x, double lo_y, double hi_x,
@@ -233,39 +242,83 @@ void Painting::stroke_to(const PenSample& sample) {
   validate(sample);  // before anything changes
   if (!p.in_stroke) throw std::runtime_error("stroke_to: no stroke begun (call begin_stroke)");
   if (p.brush.empty()) throw std::runtime_error("stroke_to: no brush is set (call set_brush)");
-  const BrushPose target = pose_from_sample(sample, p.canvas.cell_mm(), p.brush.max_depth_mm());
+  BrushPose target = pose_from_sample(sample, p.canvas.cell_mm(), p.brush.max_depth_mm());
+  // The mouse and most tablets report no twist: then the head trails the hand.
+  p.stroke_has_twist = p.stroke_has_twist || sample.rotation_deg != 0.0f;
+  const bool follows = !p.stroke_has_twist;
+  const bool first = !p.last_pose.has_value();
   const BrushPose from = p.last_pose.value_or(target);
-  p.last_pose = target;
+  const double seconds =
+      first ? 0.0 : std::clamp(sample.time_s - p.last_time_s, 0.0, kMaxSegmentSeconds);
+  const std::optional<BrushPose> before = p.pose_before_last;
+  p.last_time_s = sample.time_s;
   // Only the part of the segment where the brush can reach the canvas is simulated: beyond
   // a margin of two brush widths nothing can touch.
   const double margin = 2.0 * p.brush.cells_across() + 4.0;
   double t0 = 0.0, t1 = 1.0;
   if (!clip_segment(from.x_cells, from.y_cells, target.x_cells, target.y_cells, -margin, -margin,
-                    p.canvas.width_cells() + margin, p.canvas.height_cells() + margin, t0, t1))
+                    p.canvas.width_cells() + margin, p.canvas.height_cells() + margin, t0, t1)) {
+    p.pose_before_last = from;
+    p.last_pose = target;
     return;
-  const double dx = (target.x_cells - from.x_cells) * (t1 - t0);
-  const double dy = (target.y_cells - from.y_cells) * (t1 - t0);
-  // CFL: the brush moves at most one cell per step.
+  }
+  // A curve through the samples where the segment lies wholly near the canvas; the clipped
+  // straight part of it otherwise (a segment from far away needs no curve).
+  const bool whole = t0 == 0.0 && t1 == 1.0;
+  std::array<double, 2> before_xy{};
+  if (before) before_xy = {before->x_cells, before->y_cells};
+  const StrokeSegment curve({from.x_cells, from.y_cells}, {target.x_cells, target.y_cells},
+                            whole && before ? &before_xy : nullptr);
+  const auto position = [&](double t) {
+    if (whole) return curve.at(t);
+    const double u = t0 + (t1 - t0) * t;
+    return std::array<double, 2>{from.x_cells + (target.x_cells - from.x_cells) * u,
+                                 from.y_cells + (target.y_cells - from.y_cells) * u};
+  };
+  const double length =
+      whole ? curve.length()
+            : std::hypot(target.x_cells - from.x_cells, target.y_cells - from.y_cells) * (t1 - t0);
+  // CFL: the brush moves at most one cell per step (the curve's speed varies by at most
+  // half around its mean, hence the margin), and the squeeze at most half a cell.
   // (A hair under a whole cell counts as one: positions come from mm and carry rounding.)
-  const auto count = static_cast<std::int64_t>(std::max(1.0, std::ceil(std::hypot(dx, dy) - 1e-9)));
-  const double move_x = dx / static_cast<double>(count);
-  const double move_y = dy / static_cast<double>(count);
-  const bool moving = dx != 0.0 || dy != 0.0;
+  const double max_seconds = Stepper::max_step_seconds(p.params, p.canvas.cell_mm());
+  const auto count = static_cast<std::int64_t>(std::max(
+      {1.0, std::ceil((whole ? 1.5 : 1.0) * length - 1e-9), std::ceil(seconds / max_seconds)}));
+  const double step_seconds = seconds / static_cast<double>(count);
+  const double follow_cells = std::max(1.0, p.brush.settings().size_mm / p.canvas.cell_mm());
   const auto before_change = [&p](int index) {
     p.history.before_tile_change(index, p.canvas.tile(index));
   };
   p.arena.execute([&] {
+    std::array<double, 2> last = position(0.0);
     for (std::int64_t k = 1; k <= count; ++k) {
-      const double t =
-          moving ? t0 + (t1 - t0) * static_cast<double>(k) / static_cast<double>(count) : 1.0;
-      if (p.stepper.step(p.canvas, p.brush, slot_count(), p.params, lerp(from, target, t), move_x,
-                         move_y, before_change)) {
+      const double t = static_cast<double>(k) / static_cast<double>(count);
+      const std::array<double, 2> here = position(t);
+      const double move_x = here[0] - last[0], move_y = here[1] - last[1];
+      last = here;
+      BrushPose pose = lerp(from, target, whole ? t : t0 + (t1 - t0) * t);
+      pose.x_cells = here[0];
+      pose.y_cells = here[1];
+      const double moved = std::hypot(move_x, move_y);
+      if (follows) {
+        if (moved > 0.0) {
+          const double travel = std::atan2(move_y, move_x);
+          p.heading_rad = p.heading_rad
+                              ? follow_heading(*p.heading_rad, travel, moved, follow_cells)
+                              : heading_for_travel(travel);
+        }
+        pose.twist_rad = p.heading_rad.value_or(0.0);
+      }
+      if (p.stepper.step(p.canvas, p.brush, slot_count(), p.params, pose, move_x, move_y,
+                         step_seconds, before_change)) {
         p.stroke_touched = true;
         ++p.steps;
         p.cells_updated += p.stepper.last_window_cells();
       }
     }
   });
+  p.pose_before_last = from;
+  p.last_pose = target;
 }
 
 // --- drying ------------------------------------------------------------------------------

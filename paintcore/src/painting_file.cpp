@@ -19,8 +19,10 @@ namespace impasto::paintcore {
 namespace {
 
 constexpr char kMagic[8] = {'I', 'M', 'P', 'A', 'S', 'T', 'O', '\0'};
-// Version 2 added the cracks section; version 1 files (without it) still load.
-constexpr std::uint32_t kVersion = 2;
+// Version 2 added the cracks section; version 3 the physical transfer parameters (replacing
+// IMPaSTo's per-step ones, which older files' readers skip), the paint body on the brush and
+// the head's bristles. Versions 1 and 2 still load, with today's default parameters.
+constexpr std::uint32_t kVersion = 3;
 constexpr std::uint32_t kOldestVersion = 1;
 constexpr std::size_t kHeaderBytes = sizeof(kMagic) + 4 + 8;
 constexpr std::uint32_t kMaxStringBytes = 4096;
@@ -241,8 +243,8 @@ void PaintingFile::save(const Painting::Impl& p, const std::filesystem::path& fi
   w.put(spec.dpi);
   w.put(spec.weave_seed);
   const SimulationParams& q = p.params;
-  for (double v : {q.xfer_fraction, q.equal_paint_cutoff_mm, q.max_xfer_mm, q.velocity_cutoff_low,
-                   q.velocity_cutoff_high, q.pressure_coeff, q.min_film_mm})
+  for (double v : {q.deposit_share, q.transfer_length_mm, q.transfer_time_s, q.brush_flow_length_mm,
+                   q.plough, q.squeeze_mm_s, q.min_film_mm, q.settle_time_s, q.wet_support, q.drag})
     w.put(v);
   const int slots = static_cast<int>(p.slots.size());
   w.put(static_cast<std::uint32_t>(slots));
@@ -304,6 +306,13 @@ void PaintingFile::save(const Painting::Impl& p, const std::filesystem::path& fi
   w.put(p.steps);
   w.put(p.cells_updated);
   write_cracks(w, p.canvas.cracks());
+  if (!brush.empty()) {
+    const BrushHead& head = brush.head();
+    w.put(static_cast<std::uint8_t>(brush.body()));
+    for (double v :
+         {head.bristles.spacing_mm, head.bristles.depth_mm, head.bristles.jitter, head.splay})
+      w.put(v);
+  }
 
   Hasher checksum;
   checksum.bytes(w.bytes().data(), w.bytes().size());
@@ -357,10 +366,17 @@ std::unique_ptr<Painting::Impl> PaintingFile::load(const std::filesystem::path& 
   }
   auto p = std::make_unique<Painting::Impl>(spec, threads);
   SimulationParams& q = p->params;
-  for (double* v :
-       {&q.xfer_fraction, &q.equal_paint_cutoff_mm, &q.max_xfer_mm, &q.velocity_cutoff_low,
-        &q.velocity_cutoff_high, &q.pressure_coeff, &q.min_film_mm})
-    *v = r.get_finite("params");
+  if (version >= 3) {
+    for (double* v :
+         {&q.deposit_share, &q.transfer_length_mm, &q.transfer_time_s, &q.brush_flow_length_mm,
+          &q.plough, &q.squeeze_mm_s, &q.min_film_mm, &q.settle_time_s, &q.wet_support, &q.drag})
+      *v = r.get_finite("params");
+  } else {
+    // IMPaSTo's per-step constants: xfer_fraction, equal_paint_cutoff, max_xfer, the two
+    // velocity cut-offs and pressure_coeff are dropped; the adhesion film is kept.
+    for (int k = 0; k < 6; ++k) r.get_finite("params");
+    q.min_film_mm = r.get_finite("params");
+  }
   try {
     validate(q);
   } catch (const std::exception& e) {
@@ -454,6 +470,26 @@ std::unique_ptr<Painting::Impl> PaintingFile::load(const std::filesystem::path& 
   p->steps = r.get<std::uint64_t>("counters.steps");
   p->cells_updated = r.get<std::uint64_t>("counters.cells_updated");
   if (version >= 2) p->canvas.cracks() = read_cracks(r, p->canvas, name);
+  if (version >= 3 && !p->brush.empty()) {
+    const auto body = r.get<std::uint8_t>("brush.body");
+    if (body >= kPaintBodies.size())
+      r.fail("brush.body", "unknown paint body " + std::to_string(body));
+    BrushHead head = p->brush.head();
+    head.bristles.spacing_mm = r.get_finite("brush.head.bristles.spacing_mm");
+    head.bristles.depth_mm = r.get_finite("brush.head.bristles.depth_mm");
+    head.bristles.jitter = r.get_finite("brush.head.bristles.jitter");
+    head.splay = r.get_finite("brush.head.splay");
+    const Bristles& b = head.bristles;
+    if (!(b.spacing_mm >= 0 && b.spacing_mm <= 100 && b.depth_mm >= 0 && b.depth_mm <= 100 &&
+          b.jitter >= 0 && b.jitter <= 1 && head.splay >= 0 && head.splay <= 1))
+      r.fail("brush.head.bristles", "out of range");
+    // The footprint depends on the bristles: rebuild the brush, keeping its paint.
+    Brush rebuilt(head, p->brush.settings(), spec.cell_mm(), slots);
+    rebuilt.volume_mm() = p->brush.volume_mm();
+    rebuilt.pigment_mm() = p->brush.pigment_mm();
+    rebuilt.set_body(static_cast<PaintBody>(body));
+    p->brush = std::move(rebuilt);
+  }
   if (!r.at_end()) r.fail("end", "unexpected bytes after the last field");
   for (int index = 0; index < tile_count; ++index)
     if (p->canvas.tile(index) || p->canvas.cracks().tile(index)) p->canvas.mark_dirty(index);

@@ -8,6 +8,7 @@
 #include "impasto/paintcore/painting.hpp"
 #include "ledger.hpp"
 #include "stepper.hpp"
+#include "stroke_path.hpp"
 #include "undo_history.hpp"
 
 namespace impasto::paintcore {
@@ -33,6 +34,11 @@ struct Painting::Impl {
   bool in_stroke = false;
   bool stroke_touched = false;
   std::optional<BrushPose> last_pose;
+  std::optional<BrushPose> pose_before_last;  // for the curve's tangent (stroke_path.hpp)
+  double last_time_s = 0.0;
+  // A brush that follows the hand: its heading when the pen reports no twist.
+  bool stroke_has_twist = false;
+  std::optional<double> heading_rad;
 };
 
 }  // namespace impasto::paintcore

@@ -1,4 +1,5 @@
 // Totals, hash, counts and memory of a Painting: the checks tests and tools rely on.
+#include <algorithm>
 #include <cmath>
 
 #include "hasher.hpp"
@@ -62,6 +63,36 @@ PaintTotals Painting::canvas_totals() const {
   PaintTotals totals = wet_totals();
   accumulate(totals, dry_totals());
   return totals;
+}
+
+PaintThickness Painting::paint_thickness(double painted_above_mm) const {
+  const Canvas& canvas = impl_->canvas;
+  std::vector<float> thickness;
+  for (int index = 0; index < canvas.tile_count(); ++index) {
+    const Tile* tile = canvas.tile(index);
+    if (!tile) continue;
+    for (int c = 0; c < kTileCells; ++c) {
+      const float t = tile->wet_volume_mm[c] + tile->dry_height_mm[c];
+      if (t > painted_above_mm) thickness.push_back(t);
+    }
+  }
+  PaintThickness result;
+  result.painted_cells = thickness.size();
+  if (thickness.empty()) return result;
+  // The value below which share q of the cells lie (nearest rank).
+  const auto quantile = [&](double q) {
+    const auto rank =
+        static_cast<std::size_t>(std::ceil(q * static_cast<double>(thickness.size()))) - 1;
+    const auto at =
+        thickness.begin() + static_cast<std::ptrdiff_t>(std::min(rank, thickness.size() - 1));
+    std::nth_element(thickness.begin(), at, thickness.end());
+    return static_cast<double>(*at);
+  };
+  result.median_mm = quantile(0.5);
+  result.p90_mm = quantile(0.9);
+  result.p99_mm = quantile(0.99);
+  result.max_mm = *std::max_element(thickness.begin(), thickness.end());
+  return result;
 }
 
 PaintTotals Painting::brush_totals() const {
@@ -130,6 +161,7 @@ std::uint64_t Painting::state_hash() const {
     h.string(brush.head().name);
     h.value(brush.settings().size_mm);
     h.value(brush.settings().stiffness);
+    h.value(static_cast<int>(brush.body()));
     h.bytes(brush.volume_mm().data(), sizeof(float) * brush.cell_count());
     const std::vector<float> zeros(brush.cell_count(), 0.0f);
     for (int s = 0; s < slots; ++s)

@@ -30,9 +30,6 @@ SimBenchmarkResult run_sim_benchmark(int brush_cells, int steps, int threads) {
   const double cell_mm = 25.4 / kDpi;
   const int canvas_cells = 3 * brush_cells + 64;
   Painting painting(CanvasSpec{canvas_cells, canvas_cells, kDpi, 1}, threads);
-  SimulationParams params;
-  params.max_xfer_mm = 0.01;
-  painting.set_params(params);
   painting.set_brush(BrushSettings{"round", brush_cells * cell_mm, 0.2});
   const double brush_area_mm2 = brush_cells * brush_cells * cell_mm * cell_mm;
   painting.load_brush({{"white", 3.0}, {"ultramarine", 1.0}}, 0.5 * brush_area_mm2);

@@ -5,6 +5,55 @@
 #include <string>
 
 namespace impasto::paintcore {
+namespace {
+
+struct NamedParam {
+  const char* name;
+  double SimulationParams::*field;
+};
+
+// One source for the parameters' names.
+constexpr NamedParam kNamedParams[] = {
+    {"deposit_share", &SimulationParams::deposit_share},
+    {"transfer_length_mm", &SimulationParams::transfer_length_mm},
+    {"transfer_time_s", &SimulationParams::transfer_time_s},
+    {"brush_flow_length_mm", &SimulationParams::brush_flow_length_mm},
+    {"plough", &SimulationParams::plough},
+    {"drag", &SimulationParams::drag},
+    {"squeeze_mm_s", &SimulationParams::squeeze_mm_s},
+    {"min_film_mm", &SimulationParams::min_film_mm},
+    {"settle_time_s", &SimulationParams::settle_time_s},
+    {"wet_support", &SimulationParams::wet_support},
+};
+
+}  // namespace
+
+void set_param(SimulationParams& params, const std::string& assignment) {
+  const auto equals = assignment.find('=');
+  const std::string name = assignment.substr(0, equals);
+  for (const NamedParam& p : kNamedParams) {
+    if (name != p.name) continue;
+    if (equals == std::string::npos)
+      throw std::runtime_error("simulation params: '" + name + "' needs a value (NAME=VALUE)");
+    const std::string text = assignment.substr(equals + 1);
+    std::size_t used = 0;
+    double value = 0.0;
+    try {
+      value = std::stod(text, &used);
+    } catch (const std::logic_error&) {
+      used = 0;
+    }
+    if (used == 0 || used != text.size())
+      throw std::runtime_error("simulation params: field '" + name + "' expects a number, got '" +
+                               text.substr(0, 32) + "'");
+    params.*p.field = value;
+    return;
+  }
+  std::string known;
+  for (const NamedParam& p : kNamedParams) known += std::string(known.empty() ? "" : ", ") + p.name;
+  throw std::runtime_error("simulation params: unknown field '" + name.substr(0, 32) +
+                           "' (known: " + known + ")");
+}
 
 void validate(const SimulationParams& p) {
   const auto check = [](double value, const char* field, bool positive) {
@@ -13,18 +62,25 @@ void validate(const SimulationParams& p) {
                                (positive ? "positive" : "non-negative") + " and finite, got " +
                                std::to_string(value));
   };
-  check(p.xfer_fraction, "xfer_fraction", false);
-  if (p.xfer_fraction > 1.0)
-    throw std::runtime_error("simulation params: field 'xfer_fraction' must be <= 1");
-  check(p.equal_paint_cutoff_mm, "equal_paint_cutoff_mm", true);
-  check(p.max_xfer_mm, "max_xfer_mm", false);
-  check(p.velocity_cutoff_low, "velocity_cutoff_low", false);
-  check(p.velocity_cutoff_high, "velocity_cutoff_high", false);
-  if (p.velocity_cutoff_high <= p.velocity_cutoff_low)
-    throw std::runtime_error(
-        "simulation params: field 'velocity_cutoff_high' must exceed 'velocity_cutoff_low'");
-  check(p.pressure_coeff, "pressure_coeff", false);
+  check(p.deposit_share, "deposit_share", false);
+  if (p.deposit_share > 1.0)
+    throw std::runtime_error("simulation params: field 'deposit_share' must be <= 1");
+  check(p.transfer_length_mm, "transfer_length_mm", true);
+  check(p.transfer_time_s, "transfer_time_s", true);
+  check(p.brush_flow_length_mm, "brush_flow_length_mm", true);
+  check(p.plough, "plough", false);
+  check(p.drag, "drag", false);
+  if (p.drag > 1.0) throw std::runtime_error("simulation params: field 'drag' must be <= 1");
+  check(p.squeeze_mm_s, "squeeze_mm_s", false);
   check(p.min_film_mm, "min_film_mm", false);
+  check(p.settle_time_s, "settle_time_s", false);
+  check(p.wet_support, "wet_support", false);
+  if (p.wet_support > 1.0)
+    throw std::runtime_error("simulation params: field 'wet_support' must be <= 1");
+  if (p.plough > 100.0 || p.squeeze_mm_s > 1000.0 || p.settle_time_s > 3600.0)
+    throw std::runtime_error(
+        "simulation params: 'plough' must be <= 100, 'squeeze_mm_s' <= 1000 and "
+        "'settle_time_s' <= 3600");
 }
 
 }  // namespace impasto::paintcore

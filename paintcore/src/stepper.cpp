@@ -10,6 +10,8 @@ namespace impasto::paintcore {
 namespace {
 
 constexpr std::size_t kBaseCacheTiles = 256;
+// Below this film (mm) the squeeze's limit no longer grows: a film that thin barely moves.
+constexpr float kSqueezeMinFilmMm = 0.01f;
 
 // Sets the one-cell border of a padded grid to zero.
 void zero_border(float* grid, int width, int height) {
@@ -113,6 +115,7 @@ void Stepper::penetrate_rows(const StepInputs& in, int r0, int r1) {
   const int n = in.brush->cells_across();
   const double n_limit = n;
   const float* footprint = in.brush->footprint_mm().data();
+  const float* brush_paint = in.brush->volume_mm().data();
   const std::uint8_t* covers = in.brush->covers().data();
   for (int y = r0; y < r1; ++y) {
     int contacts = 0;
@@ -132,9 +135,12 @@ void Stepper::penetrate_rows(const StepInputs& in, int r0, int r1) {
       if (!(bx >= 0.0 && by >= 0.0 && bx < n_limit && by < n_limit)) continue;
       const std::int32_t b = static_cast<int>(by) * n + static_cast<int>(bx);
       if (!covers[b]) continue;
+      // The head presses where its underside is below the paint surface; the paint hanging
+      // under the bristles touches before that (a loaded brush lays a broad mark, a dry one
+      // skips).
       const float penetration = ground[x] + wet[x] - (in.tip_mm + footprint[b]);
-      if (penetration > 0.0f) {
-        pen[x] = penetration;
+      if (penetration + brush_paint[b] > 0.0f) {
+        pen[x] = std::max(penetration, 0.0f);
         cell[x] = b;
         ++contacts;
       }
@@ -154,11 +160,18 @@ void Stepper::velocity_rows(const StepInputs& in, int r0, int r1) {
         brush_cell_.data() + static_cast<std::ptrdiff_t>(y) * w.width;
     float* __restrict vx = vx_.data() + row;
     float* __restrict vy = vy_.data() + row;
-    // v = 1/2 brush motion - c grad p under the brush, 0 elsewhere (branch-free: vectorises).
+    const float* __restrict wet = wet_.data() + row;
+    // v = drag * brush motion - c grad p under the brush, 0 elsewhere (branch-free:
+    // vectorises). The squeeze is a diffusion of the paint down its penetration, flux = h v:
+    // it relaxes toward its limit of an eighth of the penetration difference per step,
+    // v = dp / (8h) (1 - exp(-8 h c)), or thick paint would overshoot into spikes. Below the
+    // limit it is c dp, so many small steps squeeze as much as one large one.
     for (int x = 0; x < w.width; ++x) {
       const bool touches = cell[x] >= 0;
-      const float ux = in.brush_vx - in.gradient_scale * (pen[x + 1] - pen[x - 1]);
-      const float uy = in.brush_vy - in.gradient_scale * (pen[x + s] - pen[x - s]);
+      const float h = std::max(wet[x], kSqueezeMinFilmMm);
+      const float reach = -std::expm1(-8.0f * h * in.gradient_scale) / (8.0f * h);
+      const float ux = in.brush_vx - reach * (pen[x + 1] - pen[x - 1]);
+      const float uy = in.brush_vy - reach * (pen[x + s] - pen[x - s]);
       vx[x] = touches ? std::min(std::max(ux, -1.0f), 1.0f) : 0.0f;
       vy[x] = touches ? std::min(std::max(uy, -1.0f), 1.0f) : 0.0f;
     }
@@ -189,27 +202,26 @@ void Stepper::transfer_rows(const StepInputs& in, int r0, int r1) {
     float* new_wet = new_wet_.data() + row;
     float* xfer = xfer_.data() + first;
     float* ratio = xfer_ratio_.data() + first;
-    // Algorithm 1 per touching cell; branch-free, as the direction varies from cell to cell.
+    // The film split per touching cell; branch-free, as the direction varies from cell to cell.
     for (int x = 0; x < w.width; ++x) {
       const bool touches = cell[x] >= 0;
       const std::int32_t b = cell[x];
       // (Brush cells are read only where touched: other rows may own the rest.)
       const float on_brush = touches ? brush_volume[b] : 0.0f;
-      // a_c: the canvas paint the brush penetrates (fraction of the wet layer's depth).
-      // (The divisions are skipped where they would give 1: a brush through the whole layer,
-      // a brush cell touching one canvas cell. Same values, less latency.)
+      // a_c: the canvas paint the brush reaches, with its head and the paint under it (a
+      // fraction of the wet layer's depth). (The divisions are skipped where they would give
+      // 1: a brush through the whole layer, a brush cell touching one canvas cell. Same
+      // values, less latency.)
+      const float reach = pen[x] + on_brush;
       const float a_c =
-          pen[x] >= wet[x] ? (wet[x] > 0.0f ? new_wet[x] : 0.0f) : new_wet[x] * (pen[x] / wet[x]);
+          reach >= wet[x] ? (wet[x] > 0.0f ? new_wet[x] : 0.0f) : new_wet[x] * (reach / wet[x]);
       // a_b: this cell's share of the paint on the brush cell it touches.
       const std::int32_t sharing = touches ? share[b] : 1;
       const float a_b = sharing == 1 ? on_brush : on_brush / static_cast<float>(sharing);
-      const float paint_diff = a_b - a_c;
-      const bool deposit = paint_diff > 0.0f;
-      const float equal_paint_cutoff =
-          std::min(std::abs(paint_diff) * in.inv_equal_paint_cutoff, 1.0f);
-      const float magnitude =
-          std::min((deposit ? a_b : a_c) * in.source_share * equal_paint_cutoff, in.max_xfer);
-      const float amount = touches ? (deposit ? magnitude : -magnitude) : 0.0f;
+      // The film split (transfer.hpp); exactly 0 where nothing touches.
+      const float amount =
+          touches ? brush_transfer_amount(a_c, a_b, in.relax, in.deposit_share) : 0.0f;
+      const bool deposit = amount > 0.0f;
       // Pigments go in the source's proportions (volume-weighted mixing).
       const float source = deposit ? on_brush : new_wet[x];
       ratio[x] = amount / (source > 0.0f ? source : 1.0f);
@@ -244,6 +256,39 @@ void Stepper::transfer_to_brush(Brush& brush, int slot_count, std::size_t first_
     for (std::size_t k = 0; k < static_cast<std::size_t>(slot_count); ++k)
       pigment[k * brush_cells + bc] -= xfer_pigment_[k * cells + c];
   }
+}
+
+void Stepper::even_out_brush(Brush& brush, int slot_count, double share) {
+  // Each covered cell moves `share` of the way to the brush's mean. The float cells' total is
+  // kept exactly: what rounding added or lost goes back into the fullest cell.
+  const std::size_t cells = brush.cell_count();
+  const std::uint8_t* covers = brush.covers().data();
+  const auto covered = static_cast<double>(brush.covered_cells());
+  const auto even_out = [&](float* amount) {
+    double total = 0.0;
+    std::size_t fullest = 0;
+    for (std::size_t c = 0; c < cells; ++c)
+      if (covers[c]) {
+        total += amount[c];
+        if (amount[c] > amount[fullest] || !covers[fullest]) fullest = c;
+      }
+    if (total <= 0.0) return;
+    const double mean = total / covered;
+    double after = 0.0;
+    for (std::size_t c = 0; c < cells; ++c)
+      if (covers[c]) {
+        amount[c] = std::max(0.0f, static_cast<float>(amount[c] + share * (mean - amount[c])));
+        after += amount[c];
+      }
+    amount[fullest] = static_cast<float>(amount[fullest] + (total - after));
+  };
+  even_out(brush.volume_mm().data());
+  for (int s = 0; s < slot_count; ++s)
+    even_out(brush.pigment_mm().data() + static_cast<std::size_t>(s) * cells);
+}
+
+double Stepper::max_step_seconds(const SimulationParams& params, double cell_mm) {
+  return params.squeeze_mm_s > 0.0 ? 0.5 * cell_mm / params.squeeze_mm_s : 1e300;
 }
 
 void Stepper::scatter(Canvas& canvas, int slot_count, const BeforeTileChange& before_change) {
@@ -300,16 +345,20 @@ void Stepper::scatter(Canvas& canvas, int slot_count, const BeforeTileChange& be
 }
 
 bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const SimulationParams& params,
-                   const BrushPose& pose, double move_x, double move_y,
+                   const BrushPose& pose, double move_x, double move_y, double seconds,
                    const BeforeTileChange& before_change) {
   last_window_cells_ = 0;
-  if (brush.empty()) return false;
+  // A pen that does not press (pressure 0) holds the brush off the paint.
+  if (brush.empty() || !(pose.depth_mm > 0.0)) return false;
   brush.ensure_slots(slot_count);
   StepInputs in{};
   in.canvas = &canvas;
   in.brush = &brush;
   in.slot_count = slot_count;
-  in.placement = place_brush(pose, brush.cells_across());
+  // Bristles splay under pressure: the footprint widens with the depth pressed.
+  const double max_depth = brush.max_depth_mm();
+  const double pressure = max_depth > 0.0 ? std::clamp(pose.depth_mm / max_depth, 0.0, 1.0) : 0.0;
+  in.placement = place_brush(pose, brush.cells_across(), 1.0 + brush.head().splay * pressure);
   const BrushPlacement& placement = in.placement;
   // The window: the canvas cells the brush grid can cover, plus one cell that advection
   // can push paint into, clipped to the canvas.
@@ -332,26 +381,41 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   resize(slot_count, brush.cell_count());
   find_bases(canvas);
 
-  // The tip sinks depth_mm below the paint surface under the brush centre.
-  const int cx =
-      std::clamp(static_cast<int>(std::floor(placement.centre_x)), 0, canvas.width_cells() - 1);
-  const int cy =
-      std::clamp(static_cast<int>(std::floor(placement.centre_y)), 0, canvas.height_cells() - 1);
-  const double surface = static_cast<double>(canvas.base_height_mm(cx, cy)) +
-                         canvas.dry_height_mm(cx, cy) + canvas.wet_volume_mm(cx, cy);
-  in.tip_mm = static_cast<float>(surface - pose.depth_mm);
-  in.brush_vx = static_cast<float>(0.5 * move_x);
-  in.brush_vy = static_cast<float>(0.5 * move_y);
-  // v_p = -c grad p, with grad p as a slope: mm of penetration per mm across.
-  in.gradient_scale = static_cast<float>(params.pressure_coeff * 0.5 / canvas.cell_mm());
+  // The tip sinks depth_mm below the surface it rests on: the ground and dry paint, and the
+  // share of the wet paint that holds the brush up, averaged around the centre (a surface
+  // under one cell would let the brush bob on the paint it has just laid).
+  const int reach = std::clamp(brush.cells_across() / 8, 1, 4);
+  const int cx = static_cast<int>(std::floor(placement.centre_x));
+  const int cy = static_cast<int>(std::floor(placement.centre_y));
+  double rest = 0.0;
+  int rest_cells = 0;
+  for (int y = std::max(cy - reach, 0); y <= std::min(cy + reach, canvas.height_cells() - 1); ++y)
+    for (int x = std::max(cx - reach, 0); x <= std::min(cx + reach, canvas.width_cells() - 1);
+         ++x) {
+      rest += static_cast<double>(canvas.base_height_mm(x, y)) + canvas.dry_height_mm(x, y) +
+              params.wet_support * canvas.wet_volume_mm(x, y);
+      ++rest_cells;
+    }
+  if (rest_cells == 0) {  // the centre is off the canvas: rest on the nearest cell
+    const int x = std::clamp(cx, 0, canvas.width_cells() - 1);
+    const int y = std::clamp(cy, 0, canvas.height_cells() - 1);
+    rest = static_cast<double>(canvas.base_height_mm(x, y)) + canvas.dry_height_mm(x, y) +
+           params.wet_support * canvas.wet_volume_mm(x, y);
+    rest_cells = 1;
+  }
+  in.tip_mm = static_cast<float>(rest / rest_cells - pose.depth_mm);
+  in.brush_vx = static_cast<float>(params.drag * move_x);
+  in.brush_vy = static_cast<float>(params.drag * move_y);
+  // The squeeze moves paint down the penetration's slope (mm/mm) by plough mm per mm
+  // travelled plus squeeze_mm_s per second: in cells this step, per unit slope, over the
+  // central difference's two cells.
+  const double cell_mm = canvas.cell_mm();
+  const double distance_mm = std::hypot(move_x, move_y) * cell_mm;
+  const double squeeze_mm = params.plough * distance_mm + params.squeeze_mm_s * seconds;
+  in.gradient_scale = static_cast<float>(squeeze_mm / cell_mm * 0.5 / cell_mm);
   in.min_film_mm = static_cast<float>(params.min_film_mm);
-  // Algorithm 1's constants, with the velocity cut-off (the same for all cells) folded in.
-  const TransferConstants<float> constants(params);
-  in.source_share =
-      constants.xfer_fraction * smoothstep(constants.velocity_low, constants.velocity_high,
-                                           static_cast<float>(std::hypot(move_x, move_y)));
-  in.inv_equal_paint_cutoff = constants.inv_equal_paint_cutoff;
-  in.max_xfer = constants.max_xfer;
+  in.relax = static_cast<float>(transfer_relaxation(distance_mm, seconds, params));
+  in.deposit_share = static_cast<float>(params.deposit_share);
 
   const int rows = win_.height, cols = win_.width;
   // 1. Gather the window and find where the brush penetrates the paint surface.
@@ -386,7 +450,7 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
     from_.push_back(pigment_.data() + static_cast<std::size_t>(s) * win_.padded());
     to_.push_back(new_pigment_.data() + static_cast<std::size_t>(s) * win_.padded());
   }
-  const bool transfers = in.source_share > 0.0f;  // else too slow to pull paint across
+  const bool transfers = in.relax > 0.0f;  // a brush neither moving nor pressing moves nothing
   parallel_rows(rows, cols, [&](int r0, int r1) {
     advection_.apply_rows(from_.data(), to_.data(), static_cast<int>(from_.size()), r0, r1);
     if (!transfers) return;
@@ -398,6 +462,9 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
                         static_cast<std::size_t>(r1) * cols);
   });
   if (transfers && !in.brush_cells_unique) transfer_to_brush(brush, slot_count, 0, cells);
+  // Paint in the bristles flows toward the tips that gave theirs away.
+  if (distance_mm > 0.0)
+    even_out_brush(brush, slot_count, -std::expm1(-distance_mm / params.brush_flow_length_mm));
 
   scatter(canvas, slot_count, before_change);
   last_window_cells_ = cells;

@@ -21,12 +21,17 @@ class Stepper {
   // Called with a tile index before the step first changes or creates that tile.
   using BeforeTileChange = std::function<void(int tile_index)>;
 
-  // Runs one step with the brush at `pose`, having moved by (move_x, move_y) cells since the
-  // previous step (|move| <= 1, the CFL limit). Returns false, changing nothing, when the
-  // brush touches no paint surface. Call inside the painting's task arena.
+  // Runs one step with the brush at `pose`, having moved by (move_x, move_y) cells in
+  // `seconds` since the previous step (|move| <= 1 and the squeeze at most one cell: the CFL
+  // limits, see max_step_seconds). Returns false, changing nothing, when the brush touches no
+  // paint surface. Call inside the painting's task arena.
   bool step(Canvas& canvas, Brush& brush, int slot_count, const SimulationParams& params,
-            const BrushPose& pose, double move_x, double move_y,
+            const BrushPose& pose, double move_x, double move_y, double seconds,
             const BeforeTileChange& before_change);
+
+  // The longest time one step may take so that the squeeze moves paint at most half a cell
+  // where the penetration's slope is 1.
+  static double max_step_seconds(const SimulationParams& params, double cell_mm);
 
   std::size_t last_window_cells() const { return last_window_cells_; }
 
@@ -46,10 +51,10 @@ class Stepper {
     int slot_count;
     float tip_mm;              // height of the brush tip
     float brush_vx, brush_vy;  // 1/2 the brush motion, cells/step
-    float gradient_scale;      // pressure_coeff / (2 cell_mm): turns penetration differences into v
+    float gradient_scale;      // squeeze per unit slope / (2 cell_mm): penetration differences -> v
     float min_film_mm;
-    float source_share;  // XFER_FRACTION times the velocity cut-off
-    float inv_equal_paint_cutoff, max_xfer;
+    float relax;          // how far this step goes toward the film split (transfer.hpp)
+    float deposit_share;  // the canvas's share of the joint film
     // Each brush cell touches at most one canvas cell: rows may update the brush themselves.
     bool brush_cells_unique;
   };
@@ -63,6 +68,7 @@ class Stepper {
   void transfer_rows(const StepInputs& in, int r0, int r1);
   void transfer_to_brush(Brush& brush, int slot_count, std::size_t first_cell,
                          std::size_t end_cell);
+  void even_out_brush(Brush& brush, int slot_count, double share);
   void scatter(Canvas& canvas, int slot_count, const BeforeTileChange& before_change);
 
   Window win_;

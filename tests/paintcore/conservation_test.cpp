@@ -26,7 +26,6 @@ void expect_conserved(const Painting& p, double tolerance = 1e-5) {
 // A session of strokes in many directions, with tilt and twist, reloads and wipes.
 void paint_session(Painting& p) {
   SimulationParams params;
-  params.max_xfer_mm = 0.005;
   p.set_params(params);
   p.set_brush(round_brush(1.5, 0.3));
   const char* colours[] = {"red", "blue", "white"};
@@ -74,7 +73,6 @@ TEST(Conservation, LongSessionWithLoadsAndWipes) {
 TEST(Conservation, RotatedAndTiltedFlatBrush) {
   Painting p(flat_spec(64, 64));
   SimulationParams params;
-  params.max_xfer_mm = 0.05;
   p.set_params(params);
   p.set_brush(BrushSettings{"flat", 3.0, 0.2});
   p.load_brush({{"ochre", 1.0}}, 10.0);

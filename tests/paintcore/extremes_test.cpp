@@ -73,7 +73,6 @@ TEST(Extremes, FastStrokesAreSubStepped) {
 TEST(Extremes, StrokesLeavingTheCanvasLoseNoPaint) {
   Painting p(flat_spec(64, 64));
   SimulationParams params;
-  params.max_xfer_mm = 0.05;
   p.set_params(params);
   p.set_brush(round_brush(2.0, 0.0));
   p.load_brush({{"red", 1.0}}, 20.0);
@@ -92,7 +91,6 @@ TEST(Extremes, StrokesLeavingTheCanvasLoseNoPaint) {
 TEST(Extremes, BrushLargerThanTheCanvas) {
   Painting p(flat_spec(16, 16));  // 1.6 mm square
   SimulationParams params;
-  params.max_xfer_mm = 0.05;
   p.set_params(params);
   p.set_brush(round_brush(5.0, 0.0));  // 50 cells across
   p.load_brush({{"red", 1.0}}, 20.0);

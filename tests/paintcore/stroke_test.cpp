@@ -44,7 +44,6 @@ TEST(Stroke, LoadedBrushDepositsPaintAlongThePath) {
 TEST(Stroke, CleanBrushPicksUpAndPushesPaintForward) {
   Painting p(flat_spec());
   SimulationParams params;
-  params.max_xfer_mm = 0.01;
   p.set_params(params);
   p.set_brush(round_brush());
   p.load_brush({{"blue", 1.0}}, 20.0);
@@ -83,7 +82,6 @@ TEST(Stroke, MoreLoadDepositsMore) {
   const auto deposit = [](double volume) {
     Painting p(flat_spec());
     SimulationParams params;
-    params.max_xfer_mm = 1.0;  // let the load, not the clamp, decide
     p.set_params(params);
     p.set_brush(round_brush());
     p.load_brush({{"white", 1.0}}, volume);
@@ -105,8 +103,10 @@ TEST(Stroke, PressurePushesPaintOutwards) {
   // Press the clean brush straight down in the band: paint under it spreads sideways.
   const float before_edge = p.canvas().wet_volume_mm(60, 69);
   p.begin_stroke();
-  p.stroke_to(test::pen(6.0, 6.0, 1.0f));
-  p.stroke_to(test::pen(6.0, 6.0, 1.0f));
+  PenSample still = test::pen(6.0, 6.0, 1.0f);
+  p.stroke_to(still);
+  still.time_s = 0.5;  // held down for half a second
+  p.stroke_to(still);
   p.end_stroke();
   EXPECT_GT(p.steps(), 0u);
   EXPECT_NE(p.canvas().wet_volume_mm(60, 69), before_edge);

@@ -19,6 +19,13 @@ struct Overloaded : F... {
 template <class... F>
 Overloaded(F...) -> Overloaded<F...>;
 
+// The body a load record names (checked when the file was read), or the default.
+paintcore::PaintBody load_body(const input::LoadEvent& load) {
+  if (load.body.empty()) return paintcore::kDefaultPaintBody;
+  if (const auto body = paintcore::paint_body_from_name(load.body)) return *body;
+  throw std::runtime_error("load: unknown paint body '" + load.body.substr(0, 32) + "'");
+}
+
 bool has_load_record(const input::StrokeFile& file) {
   for (const auto& event : file.events) {
     if (std::holds_alternative<input::LoadEvent>(event)) return true;
@@ -107,7 +114,7 @@ void SessionPlayer::apply(const input::StrokeEvent& event) {
               data::PigmentDatabase::defaults().get(part.pigment);  // throws for unknown names
               mix.push_back({part.pigment, part.parts});
             }
-            painting_.load_brush(mix, e.volume_mm3);
+            painting_.load_brush(mix, e.volume_mm3, load_body(e));
           },
           [&](const input::WipeEvent&) { painting_.wipe_brush(); },
           [&](const input::DryEvent& e) { painting_.dry(e.fraction); },
@@ -144,6 +151,7 @@ paintcore::CanvasSpec replay_canvas(const input::StrokeFile& file, const ReplayO
 paintcore::Painting replay(const input::StrokeFile& file, const ReplayOptions& options,
                            ReplayReport* report) {
   paintcore::Painting painting(replay_canvas(file, options), options.threads);
+  painting.set_params(options.params);
   SessionPlayer player(painting, options, options.auto_load && !has_load_record(file));
   const auto start = std::chrono::steady_clock::now();
   for (std::size_t i = 0; i < file.events.size(); ++i) {
@@ -167,6 +175,7 @@ nlohmann::json replay_stats(const paintcore::Painting& painting, const ReplayRep
   const auto brush = painting.brush_totals();
   const auto loaded = painting.loaded_totals();
   const auto wiped = painting.wiped_totals();
+  const auto thickness = painting.paint_thickness();
   auto slot_value = [](const paintcore::PaintTotals& totals, std::size_t slot) {
     return slot < totals.pigment.size() ? totals.pigment[slot] : 0.0;
   };
@@ -189,6 +198,13 @@ nlohmann::json replay_stats(const paintcore::Painting& painting, const ReplayRep
       {"loaded_volume", loaded.volume},
       {"wiped_volume", wiped.volume},
       {"pigment_amounts", pigments},
+      {"deposited_share", loaded.volume > 0.0 ? canvas.volume / loaded.volume : 0.0},
+      {"thickness_mm",
+       {{"painted_cells", thickness.painted_cells},
+        {"median", thickness.median_mm},
+        {"p90", thickness.p90_mm},
+        {"p99", thickness.p99_mm},
+        {"max", thickness.max_mm}}},
       {"samples", report.samples},
       {"strokes", report.strokes},
       {"steps", painting.steps()},

@@ -20,7 +20,8 @@ struct ReplayOptions {
   // Overrides the file's canvas record, field by field, when set.
   std::optional<int> width_cells, height_cells;
   std::optional<double> dpi;
-  int threads = 0;  // 0: all cores
+  int threads = 0;                     // 0: all cores
+  paintcore::SimulationParams params;  // the paint model's constants
   // Recordings from other programs carry no brush or paint: give every stroke a clean brush
   // loaded from demo_palette() in turn. Only used when the file has no load record.
   bool auto_load = true;

@@ -83,7 +83,7 @@ void PaletteBoard::lay_out(const std::vector<input::PigmentPart>& mix, double vo
   if (painting_->brush().empty()) set_brush(paintcore::BrushSettings{});
   player_->finish();
   apply(input::WipeEvent{});
-  apply(input::LoadEvent{volume_mm3, mix});
+  apply(input::LoadEvent{volume_mm3, mix, {}});
   // A dab: pressed down and circled once over a third of the brush's width.
   const double radius = painting_->brush().settings().size_mm / 6.0;
   constexpr int kSteps = 16;

@@ -59,6 +59,8 @@ struct PigmentPart {
 struct LoadEvent {
   double volume_mm3 = 0.0;
   std::vector<PigmentPart> mix;
+  // The paint's body (paint_body.hpp); the default body when empty.
+  std::string body;
   bool operator==(const LoadEvent&) const = default;
 };
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "impasto/paintcore/brush_head.hpp"
+#include "impasto/paintcore/paint_body.hpp"
 
 namespace impasto::paintcore {
 
@@ -49,6 +50,10 @@ class Brush {
   }
   void ensure_slots(int slot_count);
 
+  // The body of the paint on the brush (the last paint loaded).
+  PaintBody body() const { return body_; }
+  void set_body(PaintBody body) { body_ = body; }
+
  private:
   BrushHead head_;
   BrushSettings settings_;
@@ -58,6 +63,7 @@ class Brush {
   std::vector<std::uint8_t> covers_;
   std::vector<float> volume_mm_;
   std::vector<float> pigment_mm_;
+  PaintBody body_ = kDefaultPaintBody;
 };
 
 }  // namespace impasto::paintcore

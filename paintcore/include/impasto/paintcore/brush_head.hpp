@@ -26,17 +26,30 @@ struct Perturbation {
   Quadric2 shape;     // Q_i
 };
 
+// The bristles at the head's underside: tips in columns across u, each running along v
+// (the direction the head is drawn in), so they plough furrows along the stroke.
+struct Bristles {
+  double spacing_mm = 0;  // distance between bristle columns; 0: a smooth head (no bristles)
+  double depth_mm = 0;    // how far a gap between bristles rises above their tips
+  double jitter = 0;      // spread of the bristles' lengths, as a share of depth_mm (0..1)
+  bool operator==(const Bristles&) const = default;
+};
+
 struct BrushHead {
   std::string name;
   std::string description;
   double rise = 0.5;  // rise of the underside where F' reaches 0, in half brush sizes
   Quadric2 base;
   std::vector<Perturbation> perturbations;
+  Bristles bristles;
+  double splay = 0;  // under full pressure the footprint widens by this share (0..1)
 
   double field(double u, double v) const;  // F'(u, v)
   bool covers(double u, double v) const { return field(u, v) > 0.0; }
   // Height of the underside above the tip at (u, v), in half brush sizes.
   double height(double u, double v) const;
+  // Height (mm) the bristles add at u_mm across the head (0 at a bristle's tip).
+  double bristle_height_mm(double u_mm) const;
 };
 
 inline constexpr int kMaxPerturbations = 64;

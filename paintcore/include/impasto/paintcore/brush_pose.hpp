@@ -34,7 +34,8 @@ struct BrushPlacement {
   }
 };
 
-BrushPlacement place_brush(const BrushPose& pose, int brush_cells);
+// `spread` (>= 1) widens the footprint about its centre: bristles splaying under pressure.
+BrushPlacement place_brush(const BrushPose& pose, int brush_cells, double spread = 1.0);
 
 // The pose for a pen sample: position mm -> cells, pressure (clamped to 0..1) times the
 // brush's full depth, angles degrees -> radians. Throws std::runtime_error naming the field

@@ -12,7 +12,8 @@ namespace impasto::paintcore {
 // the nearest cell it covers. Every total (volume, each pigment) is kept: the sums of
 // `to`'s float cells are corrected toward `from`'s, and what float rounding still leaves
 // over is returned (from's totals minus to's, in mm^3 for cells of `cell_area_mm2`, summed
-// like Painting::brush_totals) for the ledger. `to` gets at least `from`'s pigment slots.
+// like Painting::brush_totals) for the ledger. `to` gets at least `from`'s pigment slots and
+// the paint's body.
 PaintTotals resample_brush_paint(const Brush& from, Brush& to, double cell_area_mm2);
 
 }  // namespace impasto::paintcore

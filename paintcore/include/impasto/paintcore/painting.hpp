@@ -25,6 +25,12 @@ struct PaintTotals {
   std::vector<double> pigment;  // indexed by slot
 };
 
+// How thick the paint stands (wet + dry above the ground) over the painted cells.
+struct PaintThickness {
+  std::size_t painted_cells = 0;  // cells holding more than the threshold
+  double median_mm = 0, p90_mm = 0, p99_mm = 0, max_mm = 0;
+};
+
 class Painting {
  public:
   explicit Painting(CanvasSpec spec, int threads = 0);  // threads 0: all cores
@@ -49,8 +55,10 @@ class Painting {
   void set_brush(const BrushSettings& settings, const std::filesystem::path& brushes_dir);
   void set_brush(const BrushSettings& settings, const BrushHead& head);
   const Brush& brush() const;
-  // Adds volume_mm3 of paint, mixed by parts, spread evenly over the head's cells.
-  void load_brush(const std::vector<PigmentMixPart>& mix, double volume_mm3);
+  // Adds volume_mm3 of paint, mixed by parts, spread evenly over the head's cells; the paint
+  // on the brush takes the given body (paint_body.hpp).
+  void load_brush(const std::vector<PigmentMixPart>& mix, double volume_mm3,
+                  PaintBody body = kDefaultPaintBody);
   // Removes all paint from the brush; returns what was removed.
   PaintTotals wipe_brush();
 
@@ -85,7 +93,9 @@ class Painting {
   PaintTotals brush_totals() const;
   PaintTotals loaded_totals() const;  // put on the brush by load_brush
   PaintTotals wiped_totals() const;   // taken off by wipe_brush (and brush changes)
-  std::uint64_t state_hash() const;   // canvas, dry layers, brush, ledger, slots, params
+  // Thickness percentiles over the cells holding more than painted_above_mm of paint.
+  PaintThickness paint_thickness(double painted_above_mm = 1e-3) const;
+  std::uint64_t state_hash() const;  // canvas, dry layers, brush, ledger, slots, params
   std::size_t nonfinite_count() const;
   std::uint64_t steps() const;          // simulation steps that touched paint
   std::uint64_t cells_updated() const;  // window cells processed by those steps

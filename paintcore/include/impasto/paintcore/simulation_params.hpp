@@ -1,24 +1,44 @@
 #pragma once
-// The constants of the IMPaSTo paint model (Baxter et al. 2004, section 4). Paint heights
-// are in mm (the paper's "units": ~0.001 for a thin painting, ~0.1 for a thick one) and
-// velocities in canvas cells per simulation step (1 is the CFL limit).
+// The constants of the paint model, in physical units (mm, mm/s, seconds) so that what a
+// stroke leaves depends neither on how densely the pen is sampled nor on the canvas
+// resolution. Paint heights are in mm. docs/simulation.md derives each rule.
+
+#include <string>
 
 namespace impasto::paintcore {
 
 struct SimulationParams {
-  // Algorithm 1 (brush <-> canvas transfer).
-  double xfer_fraction = 0.1;               // share of the source paint moved per step
-  double equal_paint_cutoff_mm = 1.0 / 30;  // transfer fades out as |a_b - a_c| -> 0
-  double max_xfer_mm = 0.001;               // most paint height moved per cell and step
-  double velocity_cutoff_low = 0.2;         // no transfer below this brush speed (cells/step)
-  double velocity_cutoff_high = 0.3;        // full transfer above it
-  // Paint velocity: v = 1/2 brush velocity - pressure_coeff * grad(penetration), clamped.
-  double pressure_coeff = 0.5;  // cells/step per unit slope of the penetration (mm/mm)
+  // Transfer: where brush and canvas paint touch, the joint film splits between the two
+  // surfaces. The canvas's part relaxes toward deposit_share of the joint film by
+  // 1 - exp(-(d / transfer_length_mm + t / transfer_time_s)) over a distance d travelled
+  // and a time t pressed.
+  double deposit_share = 0.25;        // canvas share of the joint film at equilibrium
+  double transfer_length_mm = 0.5;    // distance over which the split is reached (1/e)
+  double transfer_time_s = 0.25;      // time over which a still brush reaches it (1/e)
+  double brush_flow_length_mm = 4.0;  // paint in the bristles evens out over this distance
+  // Squeeze: paint flows down the slope of the brush's penetration (mm/mm) by
+  // plough (mm per mm travelled) plus squeeze_mm_s (mm per second pressed).
+  double plough = 0.5;
+  // The paint the brush touches moves with drag times the brush's velocity (IMPaSTo: 1/2, a
+  // sheared film). Less keeps the canvas weave from printing through thick paint, as contact
+  // under a spent brush follows the weave's peaks.
+  double drag = 0.2;
+  double squeeze_mm_s = 1.5;
   // Adhesion: advection never leaves less than this film (mm) in a cell it takes from.
   double min_film_mm = 0.002;
+  // The brush rests on the ground, the dry paint and this share of the wet paint (0: it
+  // sinks through wet paint to the canvas, 1: it rides on top).
+  double wet_support = 0.5;
+  // Levelling of the wet paint a stroke leaves: it flows for settle_time_s after the stroke
+  // until its slopes are held by the paint body's yield stress (paint_body.hpp).
+  double settle_time_s = 2.0;
 };
 
-// Throws std::runtime_error naming the field when a parameter is negative or not finite.
+// Throws std::runtime_error naming the field when a parameter is out of range or not finite.
 void validate(const SimulationParams& params);
+
+// The parameters by name, for command lines and settings files: sets `name` from "NAME=VALUE"
+// text; throws naming the field (and listing the known names) when it can't. Does not validate.
+void set_param(SimulationParams& params, const std::string& assignment);
 
 }  // namespace impasto::paintcore

@@ -1,0 +1,32 @@
+#pragma once
+// The brush's path between two pen samples: a curve through the samples, not a polygon, and
+// the heading of a brush that trails the hand.
+#include <array>
+
+namespace impasto::paintcore {
+
+// A cubic Hermite segment from `from` to `to` (canvas cells). Its tangent at `from` points
+// along to - before (Catmull-Rom's direction, with the chord's length); its tangent at `to`
+// mirrors that one about the chord, so samples on a circle give a near-exact arc and the next
+// segment starts in the direction this one ends. Without `before` (a stroke's first
+// segment) it is the straight chord. Needs no later sample: no added latency.
+class StrokeSegment {
+ public:
+  StrokeSegment(std::array<double, 2> from, std::array<double, 2> to,
+                const std::array<double, 2>* before);
+  std::array<double, 2> at(double t) const;  // t in [0, 1]
+  double length() const;                     // arc length, from 32 chords
+
+ private:
+  std::array<double, 2> p0_, p1_, m0_, m1_;
+};
+
+// The heading (radians) of a head that trails the hand: after moving distance d along
+// travel direction `travel_rad`, it turns by 1 - exp(-d / follow_length) of the way to
+// the heading that puts the head's +v axis along the travel. Heads are symmetric under a half
+// turn, so it turns the short way modulo pi (a brush drawn back does not flip over).
+double follow_heading(double heading_rad, double travel_rad, double distance, double follow_length);
+// The heading that puts the head's +v axis along the travel direction.
+double heading_for_travel(double travel_rad);
+
+}  // namespace impasto::paintcore
