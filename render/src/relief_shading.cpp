@@ -6,7 +6,7 @@
 
 namespace impasto::render::relief {
 
-ReliefParams relief_params(const RenderSettings& settings, double cell_mm) {
+ReliefParams relief_params(const RenderSettings& settings, double cell_mm, float height_range_mm) {
   constexpr double kRadiansPerDegree = std::numbers::pi / 180.0;
   ReliefParams p;
   p.shadows = settings.shadows;
@@ -33,6 +33,13 @@ ReliefParams relief_params(const RenderSettings& settings, double cell_mm) {
   p.tan_high = elevation + radius < 0.5 * std::numbers::pi
                    ? static_cast<float>(std::tan(elevation + radius))
                    : std::numeric_limits<float>::max();
+  // Past range / tan_low nothing can rise above the disc's lower edge: shadow() would cut
+  // its march there anyway.
+  if (p.tan_low > 0.0f && std::isfinite(height_range_mm)) {
+    const double longest = std::max(0.0f, height_range_mm) / (p.tan_low * p.step_mm);
+    // Two steps beyond it, so float rounding of the cut cannot end the march early.
+    if (longest + 2.0 < p.shadow_steps) p.shadow_steps = static_cast<int>(longest) + 2;
+  }
 
   if (settings.occlusion) {
     p.occlusion_steps_axis = static_cast<int>(std::lround(settings.occlusion_radius_mm / cell_mm));

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -129,6 +130,7 @@ void TileRenderer::reset_caches(const paintcore::Canvas& canvas) {
   tiles_y_ = canvas.tiles_y();
   cell_mm_ = canvas.cell_mm();
   heights_.assign(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_), 0.0f);
+  tile_min_height_.assign(static_cast<std::size_t>(canvas.tile_count()), 0.0f);
   tile_max_height_.assign(static_cast<std::size_t>(canvas.tile_count()), 0.0f);
   std::vector<TileCache> fresh(static_cast<std::size_t>(canvas.tile_count()));
   for (std::size_t i = 0; i < fresh.size() && i < tiles_.size(); ++i) {
@@ -144,9 +146,8 @@ RenderStats TileRenderer::render_all(const paintcore::Canvas& canvas) {
     reset_caches(canvas);
   }
   for (auto& cache : tiles_) cache.baked = false;  // the light or the nodes may have changed
-  relief_ = relief::relief_params(settings_, cell_mm_);
   run_parallel(tiles_.size(), [&](std::size_t i) { store_heights(canvas, static_cast<int>(i)); });
-  max_height_ = *std::max_element(tile_max_height_.begin(), tile_max_height_.end());
+  update_height_range(true);
   RenderStats stats;
   run_parallel(tiles_.size(), [&](std::size_t i) {
     const int index = static_cast<int>(i);
@@ -179,7 +180,7 @@ RenderStats TileRenderer::update(const paintcore::Canvas& canvas,
 
   // Every shading below reads the new heights, the changed tiles' and their neighbours'.
   run_parallel(order.size(), [&](std::size_t k) { store_heights(canvas, order[k]); });
-  max_height_ = *std::max_element(tile_max_height_.begin(), tile_max_height_.end());
+  update_height_range(false);
 
   RenderStats stats;
   std::vector<int> baked(order.size(), 0);
@@ -240,7 +241,8 @@ void TileRenderer::store_heights(const paintcore::Canvas& canvas, int tile_index
   const int origin_y = (tile_index / tiles_x_) * kTileSize;
   const int columns = std::min(kTileSize, width_ - origin_x);
   const int rows = std::min(kTileSize, height_ - origin_y);
-  float highest = 0.0f;
+  float lowest = std::numeric_limits<float>::max();
+  float highest = std::numeric_limits<float>::lowest();
   for (int y = 0; y < rows; ++y) {
     float* row =
         &heights_[static_cast<std::size_t>(origin_y + y) * static_cast<std::size_t>(width_) +
@@ -252,10 +254,20 @@ void TileRenderer::store_heights(const paintcore::Canvas& canvas, int tile_index
                    : canvas.base_height_mm(origin_x + x, origin_y + y) +
                          canvas.dry_height_mm(origin_x + x, origin_y + y) +
                          canvas.wet_volume_mm(origin_x + x, origin_y + y);
+      lowest = std::min(lowest, row[x]);
       highest = std::max(highest, row[x]);
     }
   }
+  tile_min_height_[static_cast<std::size_t>(tile_index)] = lowest;
   tile_max_height_[static_cast<std::size_t>(tile_index)] = highest;
+}
+
+void TileRenderer::update_height_range(bool reset) {
+  max_height_ = *std::max_element(tile_max_height_.begin(), tile_max_height_.end());
+  const float range =
+      max_height_ - *std::min_element(tile_min_height_.begin(), tile_min_height_.end());
+  height_range_ = reset ? range : std::max(height_range_, range);
+  relief_ = relief::relief_params(settings_, cell_mm_, height_range_);
 }
 
 void TileRenderer::bake_dry_stack(const paintcore::Canvas& canvas, int tile_index,

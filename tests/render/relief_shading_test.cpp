@@ -145,6 +145,26 @@ TEST(ReliefShading, TheMaxHeightCutDoesNotChangeTheShadow) {
   }
 }
 
+TEST(ReliefShading, MarchBoundedByTheHeightRangeGivesTheSameShadows) {
+  Field field(120, 60);
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<float> height(0.0f, 0.4f);
+  for (float& h : field.heights) h = height(rng);
+  for (double elevation : {8.0, 30.0, 60.0}) {
+    const RenderSettings s = light_at(160.0, elevation);
+    const auto capped = relief::relief_params(s, kCellMm);
+    const auto bounded = relief::relief_params(s, kCellMm, field.highest());
+    EXPECT_LT(bounded.shadow_steps, capped.shadow_steps) << elevation;  // thin paint: shorter
+    for (int y = 0; y < field.height; y += 2) {
+      for (int x = 0; x < field.width; x += 2) {
+        ASSERT_EQ(relief::shadow(field.view(), x, y, field.highest(), bounded),
+                  relief::shadow(field.view(), x, y, field.highest(), capped))
+            << x << "," << y << " at " << elevation;
+      }
+    }
+  }
+}
+
 TEST(ReliefShading, FurrowsAreOccludedDeeperOnesMore) {
   const auto furrow_occlusion = [](float depth) {
     Field field(41, 41, depth);

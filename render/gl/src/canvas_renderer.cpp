@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -127,7 +128,7 @@ void CanvasRenderer::set_shading(const render::RenderSettings& settings) {
 }
 
 render::relief::Reach CanvasRenderer::relief_reach() const {
-  return render::relief::reach(render::relief::relief_params(settings_, cell_mm_));
+  return render::relief::reach(render::relief::relief_params(settings_, cell_mm_, height_range_));
 }
 
 void CanvasRenderer::upload_tile(const paintcore::Canvas& canvas, int tile_index,
@@ -140,7 +141,8 @@ void CanvasRenderer::upload_tile(const paintcore::Canvas& canvas, int tile_index
   const paintcore::Tile* tile = canvas.tile(tile_index);
 
   scratch.surface.assign(2 * kTileCells, 0.0f);
-  float highest = 0.0f;
+  float lowest = std::numeric_limits<float>::max();
+  float highest = std::numeric_limits<float>::lowest();
   scratch.pigments.assign(static_cast<size_t>(pigment_layers_) * 4 * kTileCells, 0.0f);
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
@@ -153,10 +155,13 @@ void CanvasRenderer::upload_tile(const paintcore::Canvas& canvas, int tile_index
       } else {
         scratch.surface[2 * cell + 1] = canvas.base_height_mm(x0 + x, y0 + y);
       }
+      lowest = std::min(lowest, scratch.surface[2 * cell + 1]);
       highest = std::max(highest, scratch.surface[2 * cell + 1]);
     }
   }
+  tile_min_height_.resize(static_cast<std::size_t>(canvas.tile_count()), 0.0f);
   tile_max_height_.resize(static_cast<std::size_t>(canvas.tile_count()), 0.0f);
+  tile_min_height_[static_cast<std::size_t>(tile_index)] = lowest;
   tile_max_height_[static_cast<std::size_t>(tile_index)] = highest;
   if (tile != nullptr) {
     for (int slot = 0; slot < std::min(tile->slot_count(), palette_.pigment_count()); ++slot) {
@@ -198,6 +203,15 @@ void CanvasRenderer::upload_all(const paintcore::Canvas& canvas) {
   cell_mm_ = canvas.cell_mm();
   TileScratch scratch;
   for (int index = 0; index < canvas.tile_count(); ++index) upload_tile(canvas, index, scratch);
+  update_height_range(true);
+}
+
+void CanvasRenderer::update_height_range(bool reset) {
+  if (tile_max_height_.empty()) return;
+  max_height_ = *std::max_element(tile_max_height_.begin(), tile_max_height_.end());
+  const float range =
+      max_height_ - *std::min_element(tile_min_height_.begin(), tile_min_height_.end());
+  height_range_ = reset ? range : std::max(height_range_, range);
 }
 
 void CanvasRenderer::upload_tiles(const paintcore::Canvas& canvas,
@@ -210,6 +224,7 @@ void CanvasRenderer::upload_tiles(const paintcore::Canvas& canvas,
     }
     upload_tile(canvas, index, scratch);
   }
+  update_height_range(false);
 }
 
 void CanvasRenderer::draw(const CanvasView& view, int viewport_w, int viewport_h) {
@@ -272,7 +287,8 @@ void CanvasRenderer::draw(const CanvasView& view, int viewport_w, int viewport_h
               static_cast<float>(1.0 / settings_.wet_gloss_mm));
   glUniform1f(program.uniform("cell_mm"), static_cast<float>(cell_mm_));
 
-  const render::relief::ReliefParams relief = render::relief::relief_params(settings_, cell_mm_);
+  const render::relief::ReliefParams relief =
+      render::relief::relief_params(settings_, cell_mm_, height_range_);
   glUniform1i(program.uniform("relief_shadows"), relief.shadows ? 1 : 0);
   glUniform1i(program.uniform("relief_occlusion"), relief.occlusion ? 1 : 0);
   glUniform2f(program.uniform("relief_step"), relief.step_x, relief.step_y);
@@ -282,10 +298,7 @@ void CanvasRenderer::draw(const CanvasView& view, int viewport_w, int viewport_h
               relief.tan_low, relief.tan_high);
   glUniform2i(program.uniform("relief_occlusion_steps"), relief.occlusion_steps_axis,
               relief.occlusion_steps_diagonal);
-  const float max_height = tile_max_height_.empty() ? 0.0f
-                                                    : *std::max_element(tile_max_height_.begin(),
-                                                                        tile_max_height_.end());
-  glUniform1f(program.uniform("relief_max_height"), max_height);
+  glUniform1f(program.uniform("relief_max_height"), max_height_);
 
   flakes_->bind(program, settings_, cell_mm_);
   cracks_->bind(program, palette_, settings_);

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <numbers>
 
 namespace impasto::render {
@@ -47,7 +48,12 @@ struct ReliefParams {
   float cell_mm = 1.0f;
 };
 
-ReliefParams relief_params(const RenderSettings& settings, double cell_mm);
+// height_range_mm bounds the difference between any two heights of the canvas: a shadow
+// is no longer than the range over tan(elevation − radius), so the march (and the rim an
+// update re-shades) stops there, short of settings.shadow_reach_mm on thin paint. Any bound
+// gives the same shadows; a tighter one costs less.
+ReliefParams relief_params(const RenderSettings& settings, double cell_mm,
+                           float height_range_mm = std::numeric_limits<float>::infinity());
 
 // How far (cells) beyond a rectangle of changed heights shading can change: the normals'
 // one-cell rim, the occlusion radius all round, and the shadow march downstream of the light.

@@ -81,12 +81,16 @@ class TileRenderer {
   double cell_mm_ = 0.0;
   bool needs_full_render_ = true;
   std::vector<TileCache> tiles_;
-  // The total height of every cell (row-major), each tile's highest, their maximum: what
-  // the normals, shadows and occlusion read across tile boundaries.
+  // The total height of every cell (row-major), each tile's lowest and highest: what the
+  // normals, shadows and occlusion read across tile boundaries.
   std::vector<float> heights_;
-  std::vector<float> tile_max_height_;
+  std::vector<float> tile_min_height_, tile_max_height_;
   float max_height_ = 0.0f;
+  // The largest height range since the last full render: it bounds the shadows' length, of
+  // the heights now and of those an update replaced (whose shadows must be re-shaded away).
+  float height_range_ = 0.0f;
   relief::ReliefParams relief_;
+  void update_height_range(bool reset);
 };
 
 }  // namespace impasto::render

@@ -81,7 +81,13 @@ class CanvasRenderer {
   int pigment_layers_ = 0, node_layers_ = 0;
   std::unique_ptr<FlakeTextures> flakes_;  // sparkles of flake pigments (nothing without)
   std::unique_ptr<CrackTexture> cracks_;   // crack optics per cell (nothing without cracks)
+  std::vector<float> tile_min_height_;     // each tile's lowest total height (mm)
   std::vector<float> tile_max_height_;     // each tile's highest total height (mm)
+  float max_height_ = 0.0f;
+  // The largest height range since the last upload_all: bounds the shadows' length (as
+  // render::TileRenderer keeps it), of the heights now and of those an upload replaced.
+  float height_range_ = 0.0f;
+  void update_height_range(bool reset);
 };
 
 }  // namespace impasto::render_gl
