@@ -15,6 +15,7 @@ namespace {
 constexpr double kMmPerInch = 25.4;
 constexpr double kStrokeSpeedMmPerS = 50.0;
 constexpr double kSampleSpacingMm = 0.2;
+constexpr double kMaxSwatchBrushCells = 128.0;
 
 int cells_for(double mm, double dpi) {
   return std::max(1, static_cast<int>(std::ceil(mm / kMmPerInch * dpi)));
@@ -29,6 +30,10 @@ double stroke_margin_mm(const SwatchStroke& stroke) {
 }
 
 }  // namespace
+
+double swatch_dpi(const SwatchStroke& stroke) {
+  return std::min(stroke.dpi, kMaxSwatchBrushCells / stroke.brush.size_mm * kMmPerInch);
+}
 
 void paint_standard_stroke(paintcore::Painting& painting, const SwatchStroke& stroke,
                            double origin_x_mm, double origin_y_mm) {
@@ -60,8 +65,9 @@ paintcore::Painting paint_swatch_stroke(const SwatchStroke& stroke) {
     throw std::runtime_error("swatch: field 'size_mm' must be positive");
   const double length = stroke_length_mm(stroke);
   const double margin = stroke_margin_mm(stroke);
-  paintcore::CanvasSpec spec{cells_for(length + 2.0 * margin, stroke.dpi),
-                             cells_for(2.0 * margin, stroke.dpi), stroke.dpi, stroke.weave_seed};
+  const double dpi = swatch_dpi(stroke);
+  paintcore::CanvasSpec spec{cells_for(length + 2.0 * margin, dpi), cells_for(2.0 * margin, dpi),
+                             dpi, stroke.weave_seed};
   paintcore::validate(spec);
   paintcore::Painting painting(spec, 1);  // one thread: the window's simulation has the rest
   paint_standard_stroke(painting, stroke, margin, margin);

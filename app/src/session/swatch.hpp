@@ -31,8 +31,12 @@ struct SwatchStroke {
 // Painted through app::SessionPlayer, the path a live session takes.
 void paint_standard_stroke(paintcore::Painting& painting, const SwatchStroke& stroke,
                            double origin_x_mm, double origin_y_mm);
-// The standard stroke on a fresh painting just large enough for it and the brush around it.
+// The standard stroke on a fresh painting just large enough for it and the brush around it,
+// at swatch_dpi(): the canvas's, or coarser where the brush would be more than 128 cells
+// across (the simulation's deposit does not depend on the resolution, and a 60 mm brush at
+// 150 dpi would cost some 20 s instead of a fraction of one).
 paintcore::Painting paint_swatch_stroke(const SwatchStroke& stroke);
+double swatch_dpi(const SwatchStroke& stroke);
 
 // Cells holding more wet paint than this are painted; less is a stroke's smear (the threshold
 // of Painting::paint_thickness and `impasto replay --stats`).
