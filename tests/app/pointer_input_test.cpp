@@ -13,6 +13,7 @@
 #include "window/pointer_events.hpp"
 #include "window/pointer_gestures.hpp"
 #include "window/pointer_latency.hpp"
+#include "window/pointer_server_times.hpp"
 
 namespace impasto::app::window {
 namespace {
@@ -282,6 +283,44 @@ TEST(InputLatency, MeasuresFromEachSamplesTimeToTheFirstSwapAfterItWasApplied) {
   latency.shown(20, 2.005);
   EXPECT_NEAR(*latency.recent_median_ms(), 5.0, 1e-9);
   EXPECT_EQ(latency.shown_count(), 7u);
+}
+
+TEST(ServerTime, MovesOntoTheGlfwClockByItsAgeAcrossTheWrap) {
+  // Monotonic clock 1234.5678 s, GLFW clock 10.0 s: an event 25 ms before the current
+  // millisecond began is 25.8 ms old.
+  const std::uint32_t now_ms = 1234567;
+  auto t = server_time_on_glfw_clock(now_ms - 25, 1234.5678, 10.0);
+  ASSERT_TRUE(t);
+  EXPECT_NEAR(*t, 10.0 - 0.0258, 1e-9);
+  // The server's ms counter wraps at 2^32 (49.7 days): an event just before the wrap, read
+  // just after it.
+  const double after_wrap_s = 4294967296.0 * 1e-3 + 0.003;  // 3 ms past the wrap
+  t = server_time_on_glfw_clock(0xFFFFFFFFu, after_wrap_s, 50.0);
+  ASSERT_TRUE(t);
+  EXPECT_NEAR(*t, 50.0 - 0.004, 1e-6);
+  // A server on another clock: in the future, or older than the limit.
+  EXPECT_FALSE(server_time_on_glfw_clock(now_ms + 5, 1234.5678, 10.0));
+  EXPECT_FALSE(server_time_on_glfw_clock(now_ms - 3000, 1234.5678, 10.0));
+}
+
+TEST(ServerTime, CallbacksTakeTheTimesOfTheirOwnEventsInOrder) {
+  ServerTimeMatcher matcher;
+  matcher.add_button(kLeftButton, true, 1.000);
+  matcher.add_move(10, 10, 1.001);
+  matcher.add_move(10, 10, 1.002);  // GLFW drops a move to where the cursor is
+  matcher.add_move(11, 10, 1.003);
+  matcher.add_button(kLeftButton, false, 1.004);
+  matcher.add_move(12, 10, 1.005);
+  EXPECT_EQ(matcher.button(kLeftButton, true), 1.000);
+  EXPECT_EQ(matcher.move(10, 10), 1.001);
+  EXPECT_EQ(matcher.move(11, 10), 1.003);  // the dropped move is passed over
+  EXPECT_EQ(matcher.button(kLeftButton, false), 1.004);
+  // An event that arrived after the scan has no time here and takes nothing away.
+  EXPECT_FALSE(matcher.move(40, 40));
+  EXPECT_FALSE(matcher.button(kRightButton, true));
+  EXPECT_EQ(matcher.size(), 1u);
+  EXPECT_EQ(matcher.move(12, 10), 1.005);
+  EXPECT_EQ(matcher.size(), 0u);
 }
 
 }  // namespace

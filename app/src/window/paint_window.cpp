@@ -32,6 +32,7 @@
 #include "window/pointer_events.hpp"
 #include "window/pointer_gestures.hpp"
 #include "window/pointer_latency.hpp"
+#include "window/pointer_server_times.hpp"
 #include "window/recent_files.hpp"
 #include "window/screenshot.hpp"
 #include "window/sim_worker.hpp"
@@ -173,6 +174,7 @@ class PaintWindow {
 
   // The mouse: every event from GLFW's callbacks, applied in order once a frame.
   PointerEventQueue pointer_events_;
+  std::unique_ptr<PointerServerTimes> server_times_;  // each event's time, from the X server
   PointerGestures gestures_{{
       [this](const PointerEvent& at, bool tip_down) { pen_sample(at, tip_down); },
       [this](double fx, double fy, double tx, double ty) { pan_view(fx, fy, tx, ty); },
@@ -223,14 +225,17 @@ void PaintWindow::create_window() {
   ImGui::StyleColorsDark();
   // The mouse's events are queued with their times as they arrive. Installed before ImGui's
   // backend, which keeps our button callback and calls it before its own.
+  server_times_ = std::make_unique<PointerServerTimes>(window_);
   glfwSetWindowUserPointer(window_, this);
   glfwSetCursorPosCallback(window_, [](GLFWwindow* window, double x, double y) {
     auto* self = static_cast<PaintWindow*>(glfwGetWindowUserPointer(window));
-    self->pointer_events_.moved(x, y, glfwGetTime());
+    self->pointer_events_.moved(x, y, self->server_times_->move_time(x, y));
   });
   glfwSetMouseButtonCallback(window_, [](GLFWwindow* window, int button, int action, int) {
     auto* self = static_cast<PaintWindow*>(glfwGetWindowUserPointer(window));
-    self->pointer_events_.button(button, action == GLFW_PRESS, glfwGetTime());
+    const bool pressed = action == GLFW_PRESS;
+    self->pointer_events_.button(button, pressed,
+                                 self->server_times_->button_time(button, pressed));
   });
   double cursor_x = 0, cursor_y = 0;
   glfwGetCursorPos(window_, &cursor_x, &cursor_y);
@@ -607,6 +612,7 @@ void PaintWindow::run() {
   int frames_since_idle = 0;
   bool screenshot_done = !options_.screenshot;
   while (!state_.quit) {
+    server_times_->scan();  // the waiting events' own times, before GLFW delivers them
     glfwPollEvents();
     if (glfwWindowShouldClose(window_)) {
       glfwSetWindowShouldClose(window_, GLFW_FALSE);
@@ -640,7 +646,8 @@ void PaintWindow::report_latency() const {
   std::cout << "input latency (pen event to the swap showing it): median "
             << *latency_.percentile_ms(0.5) << " ms, 95th percentile "
             << *latency_.percentile_ms(0.95) << " ms over " << latency_.shown_count()
-            << " samples\n";
+            << " samples; " << server_times_->matched() << " mouse events timed by the window "
+            << "system, " << server_times_->unmatched() << " when delivered\n";
 }
 
 }  // namespace

@@ -1,8 +1,8 @@
 #pragma once
 // Mouse input as the window system delivers it: each cursor move and button change is kept,
-// in order, with the time it reached the window (GLFW's event callbacks), until the frame
-// hands them all to the canvas. Polling the cursor once a frame instead would turn a fast
-// circle into a polygon and join two strokes whose release and press fall in one frame.
+// in order, with its own time (GLFW's event callbacks; the time from pointer_server_times),
+// until the frame hands them all to the canvas. Polling the cursor once a frame instead would turn
+// a fast circle into a polygon and join two strokes whose release and press fall in one frame.
 #include <cstddef>
 #include <vector>
 
@@ -19,7 +19,7 @@ struct PointerEvent {
   PointerAction action = PointerAction::kMove;
   int button = -1;      // the button pressed or released; -1 for a move
   double x = 0, y = 0;  // window coordinates (y down), where the cursor was
-  double time_s = 0;    // when the event reached the window (GLFW time)
+  double time_s = 0;    // when it happened (GLFW's clock)
 };
 
 // Filled by the event callbacks, emptied once a frame. Single-threaded: GLFW calls the

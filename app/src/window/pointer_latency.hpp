@@ -1,6 +1,6 @@
 #pragma once
-// Input latency as the user sees it: from a pen sample's own time (when its event reached
-// the window) to the buffer swap of the first frame drawn after the simulation applied it.
+// Input latency as the user sees it: from a pen sample's own time (its event's, from the
+// window system) to the buffer swap of the first frame drawn after the simulation applied it.
 // Samples are known by their job number in the simulation's queue (SimStats::submitted
 // right after submitting); a frame knows how many jobs were applied before it uploaded.
 #include <cstddef>
