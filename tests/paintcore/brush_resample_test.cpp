@@ -102,6 +102,14 @@ TEST(BrushResample, UndoRestoresTheOldBrushAndRedoTheNew) {
   EXPECT_EQ(p.state_hash(), after);
 }
 
+TEST(BrushResample, ThePaintKeepsItsBody) {
+  Painting p(flat_spec());
+  p.set_brush(round_brush(2.0));
+  p.load_brush({{"red", 1.0}}, 4.0, PaintBody::paste);
+  p.set_brush({"flat", 3.1, 0.5});
+  EXPECT_EQ(p.brush().body(), PaintBody::paste);
+}
+
 TEST(BrushResample, SameGridSameHeadKeepsEveryCell) {
   Painting p = dirty_brush_painting();
   const std::vector<float> volume = p.brush().volume_mm();
