@@ -121,6 +121,7 @@ TEST(CrackCloseUpCanvas, ZoomSwitchesBetweenFarViewAndCloseUp) {
   const int W = canvas.width_cells(), H = canvas.height_cells();
   GpuViewOptions options;
   options.crack_close_up_min_pixels = 6.0f;
+  options.smooth_zoom = false;  // each pixel its cell's colour, to compare with the far view
   CanvasRenderer renderer(W, H, settings,
                           render::SpectralPalette(settings, painting.pigment_slots()), options);
   renderer.upload_all(canvas);

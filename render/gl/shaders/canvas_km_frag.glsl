@@ -1,5 +1,9 @@
 // The canvas seen from above: K-M colour of the wet layer over the baked dry reflectance at
-// the light's quadrature nodes, to XYZ, shaded by the surface normal, to display RGB.
+// the light's quadrature nodes, to XYZ, shaded by the surface normal and the light the
+// relief lets through, to display RGB. At one pixel a cell (and with smooth_zoom off) each
+// pixel shows its cell as the CPU reference renders it; zoomed in, colour, normal and relief
+// light are interpolated between cell centres; zoomed out, the shaded colours of the cells
+// under the pixel are averaged.
 // Assembled after #version, MAX_NODES/MAX_SLOTS defines, km_lib, shading_lib, relief_lib, flakes_lib,
 // cracks_lib, crack_close_up_lib, crack_close_up_canvas_lib and the OpenColorIO display
 // function `vec4 ocio_display(vec4 xyz)`.
@@ -30,6 +34,7 @@ uniform vec2 dry_material;  // (specular, shininess)
 uniform vec2 wet_material;
 uniform float inverse_gloss_mm;  // 1 / RenderSettings::wet_gloss_mm
 uniform float cell_mm;
+uniform bool smooth_zoom;  // GpuViewOptions::smooth_zoom
 
 float component(vec4 v, int i) { return i == 0 ? v.x : i == 1 ? v.y : i == 2 ? v.z : v.w; }
 
@@ -37,16 +42,11 @@ float total_height(ivec2 cell) {
   return texelFetch(surface, clamp(cell, ivec2(0), canvas_cells - 1), 0).g;
 }
 
-void main() {
-  vec2 cell_position = (screen_to_cell * vec3(gl_FragCoord.xy, 1.0)).xy;
-  ivec2 cell = ivec2(floor(cell_position));
-  if (any(lessThan(cell, ivec2(0))) || any(greaterThanEqual(cell, canvas_cells))) {
-    frag_color = vec4(background, 1.0);
-    return;
-  }
-  vec2 wet = texelFetch(surface, cell, 0).rg;
-  float volume = wet.x;
-
+// A cell's K-M colour (display XYZ, before shading): the wet layer of `volume` mm over the
+// dry reflectance, the crack's far-view blend in. With close_up, also the colour as if
+// uncracked and the bare ground's, which the close-up draws.
+vec3 cell_xyz(ivec2 cell, float volume, vec4 crack, bool close_up, out vec3 xyz_uncracked,
+              out vec3 xyz_ground) {
   // Concentration = amount / volume, as the CPU's gather_shares computes it.
   float inverse_volume = volume > 0.0 ? 1.0 / volume : 0.0;
   float concentration[MAX_SLOTS];
@@ -60,11 +60,8 @@ void main() {
   // reflectance below exactly), so bare canvas and dry paint skip the K-M maths, as the CPU
   // reference skips it for wet_volume <= 0.
   bool wet_paint = volume > 0.0;
-  vec4 crack = crack_at(cell);
-  // Zoomed in over a crack: the close-up needs the cell as if uncracked and the bare ground.
-  bool close_up = crack.x > 0.0 && close_up_zoomed(screen_to_cell);
-  vec3 xyz_uncracked = vec3(0.0);
-  vec3 xyz_ground = vec3(0.0);
+  xyz_uncracked = vec3(0.0);
+  xyz_ground = vec3(0.0);
   bool saunderson = saunderson_k.x >= 0.0;
   vec3 xyz = vec3(0.0);
   for (int node = 0; node < node_count; ++node) {
@@ -88,21 +85,116 @@ void main() {
     if (saunderson) R = km_saunderson(R, saunderson_k.x, saunderson_k.y);
     xyz += node_to_xyz[node] * R;
   }
+  return xyz;
+}
 
-  vec3 normal = shade_height_normal(total_height(cell - ivec2(1, 0)), total_height(cell + ivec2(1, 0)),
-                                    total_height(cell - ivec2(0, 1)), total_height(cell + ivec2(0, 1)),
-                                    cell_mm);
+vec3 cell_normal(ivec2 cell) {
+  return shade_height_normal(total_height(cell - ivec2(1, 0)), total_height(cell + ivec2(1, 0)),
+                             total_height(cell - ivec2(0, 1)), total_height(cell + ivec2(0, 1)),
+                             cell_mm);
+}
+
+// Colour, normal, wetness and relief light to a shaded colour (display XYZ, no sparkles).
+vec3 shade_surface(vec3 xyz, vec3 normal, float volume, vec2 visibility) {
   vec2 material = shade_blend(dry_material, wet_material, volume * inverse_gloss_mm);
-  vec2 shading = shade_blinn_phong(normal, to_light, ambient, material,
-                                   relief_visibility(surface, canvas_cells, cell, cell_mm));
+  vec2 shading = shade_blinn_phong(normal, to_light, ambient, material, visibility);
+  return light_intensity * (xyz * shading.x + white_xyz * shading.y);
+}
+
+// One cell as the CPU reference renders it, sparkles included; at close-up zoom over a
+// crack (allow_close_up), the crack's inside at cell_position.
+vec3 cell_colour(ivec2 cell, vec2 cell_position, bool allow_close_up) {
+  float volume = texelFetch(surface, cell, 0).r;
+  vec4 crack = crack_at(cell);
+  // Zoomed in over a crack: the close-up needs the cell as if uncracked and the bare ground.
+  bool close_up = allow_close_up && crack.x > 0.0 && close_up_zoomed(screen_to_cell);
+  vec3 xyz_uncracked;
+  vec3 xyz_ground;
+  vec3 xyz = cell_xyz(cell, volume, crack, close_up, xyz_uncracked, xyz_ground);
+  vec3 normal = cell_normal(cell);
+  vec2 visibility = relief_visibility(surface, canvas_cells, cell, cell_mm);
   vec3 sparkles = light_intensity * flake_sparkles(cell, normal, total_height(cell));
-  vec3 shaded = light_intensity * (xyz * shading.x + white_xyz * shading.y) + sparkles;
+  vec3 shaded = shade_surface(xyz, normal, volume, visibility) + sparkles;
   if (close_up) {
-    vec3 uncracked = light_intensity * (xyz_uncracked * shading.x + white_xyz * shading.y) + sparkles;
+    vec3 uncracked = shade_surface(xyz_uncracked, normal, volume, visibility) + sparkles;
     vec4 inside = crack_close_up_colour(cell, canvas_cells, fract(cell_position), crack, cell_mm,
                                         uncracked, xyz_ground, to_light, ambient, dry_material,
                                         white_xyz, light_intensity);
     shaded = inside.w > 0.0 ? inside.xyz : uncracked;
+  }
+  return shaded;
+}
+
+// Zoomed in: colour, wetness, normal and relief light of the four nearest cell centres
+// blended bilinearly (the normal renormalised), then shaded; the sparkles of the pixel's cell.
+vec3 interpolated_colour(vec2 cell_position, ivec2 cell) {
+  vec2 p = cell_position - 0.5;
+  ivec2 c0 = ivec2(floor(p));
+  vec2 f = p - vec2(c0);
+  vec3 xyz = vec3(0.0);
+  float volume = 0.0;
+  vec3 normal = vec3(0.0);
+  vec2 visibility = vec2(0.0);
+  for (int j = 0; j < 2; ++j) {
+    for (int i = 0; i < 2; ++i) {
+      ivec2 c = clamp(c0 + ivec2(i, j), ivec2(0), canvas_cells - 1);
+      float w = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y);
+      float v = texelFetch(surface, c, 0).r;
+      vec3 unused_uncracked;
+      vec3 unused_ground;
+      xyz += w * cell_xyz(c, v, crack_at(c), false, unused_uncracked, unused_ground);
+      volume += w * v;
+      normal += w * cell_normal(c);
+      visibility += w * relief_visibility(surface, canvas_cells, c, cell_mm);
+    }
+  }
+  vec3 sparkles = light_intensity * flake_sparkles(cell, cell_normal(cell), total_height(cell));
+  return shade_surface(xyz, shade_normalized(normal), volume, visibility) + sparkles;
+}
+
+// Zoomed out: the shaded colours of up to 4 x 4 cells spread over the pixel's footprint,
+// averaged in linear XYZ (no speckle from one cell standing for many).
+vec3 footprint_colour(vec2 cell_position, float cells_per_pixel, out bool any_inside) {
+  int n = int(min(ceil(cells_per_pixel - 1e-3), 4.0));
+  mat2 to_cells = mat2(screen_to_cell[0].xy, screen_to_cell[1].xy);
+  vec3 sum = vec3(0.0);
+  int inside = 0;
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      vec2 offset = (vec2(i, j) + 0.5) / float(n) - 0.5;  // within the pixel
+      vec2 at = cell_position + to_cells * offset;
+      ivec2 c = ivec2(floor(at));
+      if (any(lessThan(c, ivec2(0))) || any(greaterThanEqual(c, canvas_cells))) continue;
+      sum += cell_colour(c, at, false);
+      ++inside;
+    }
+  }
+  any_inside = inside > 0;
+  return inside > 0 ? sum / float(inside) : vec3(0.0);
+}
+
+void main() {
+  vec2 cell_position = (screen_to_cell * vec3(gl_FragCoord.xy, 1.0)).xy;
+  ivec2 cell = ivec2(floor(cell_position));
+  bool outside = any(lessThan(cell, ivec2(0))) || any(greaterThanEqual(cell, canvas_cells));
+  float cells_per_pixel = length(screen_to_cell[0].xy);
+  bool zoomed_out = smooth_zoom && cells_per_pixel > 1.0 + 1e-4;
+  bool zoomed_in = smooth_zoom && cells_per_pixel < 1.0 - 1e-4;
+  vec3 shaded;
+  if (zoomed_out) {
+    bool any_inside;
+    shaded = footprint_colour(cell_position, cells_per_pixel, any_inside);
+    if (!any_inside) {
+      frag_color = vec4(background, 1.0);
+      return;
+    }
+  } else if (outside) {
+    frag_color = vec4(background, 1.0);
+    return;
+  } else if (zoomed_in && !(crack_at(cell).x > 0.0 && close_up_zoomed(screen_to_cell))) {
+    shaded = interpolated_colour(cell_position, cell);
+  } else {
+    shaded = cell_colour(cell, cell_position, true);
   }
   frag_color = vec4(ocio_display(vec4(shaded, 1.0)).rgb, 1.0);
 }

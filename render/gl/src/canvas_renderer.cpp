@@ -286,6 +286,7 @@ void CanvasRenderer::draw(const CanvasView& view, int viewport_w, int viewport_h
   glUniform1f(program.uniform("inverse_gloss_mm"),
               static_cast<float>(1.0 / settings_.wet_gloss_mm));
   glUniform1f(program.uniform("cell_mm"), static_cast<float>(cell_mm_));
+  glUniform1i(program.uniform("smooth_zoom"), options_.smooth_zoom ? 1 : 0);
 
   const render::relief::ReliefParams relief =
       render::relief::relief_params(settings_, cell_mm_, height_range_);

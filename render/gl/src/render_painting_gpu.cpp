@@ -64,6 +64,7 @@ render::Image render_painting_close_up_gpu(const paintcore::Painting& painting,
   auto context = create_headless_context(backend);
   GpuViewOptions options;
   options.crack_close_up_min_pixels = 1.0f;  // shown at any zoom, as the CPU's --zoom does
+  options.smooth_zoom = false;               // cells magnified, as the CPU's close-up shows them
   CanvasRenderer renderer(canvas.width_cells(), canvas.height_cells(), linear,
                           render::SpectralPalette(linear, painting.pigment_slots()), options);
   renderer.upload_all(canvas);

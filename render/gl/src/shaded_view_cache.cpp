@@ -37,7 +37,7 @@ void ShadedViewCache::invalidate_tiles(std::span<const int> tiles) {
   dirty_tiles_.insert(dirty_tiles_.end(), tiles.begin(), tiles.end());
 }
 
-std::array<double, 26> ShadedViewCache::look_of(const CanvasRenderer& renderer,
+std::array<double, 27> ShadedViewCache::look_of(const CanvasRenderer& renderer,
                                                 const CanvasView& view) const {
   const render::RenderSettings& s = renderer.settings();
   const GpuViewOptions& o = renderer.view_options();
@@ -66,7 +66,8 @@ std::array<double, 26> ShadedViewCache::look_of(const CanvasRenderer& renderer,
           s.occlusion ? 1.0 : 0.0,
           s.shadow_light_diameter_deg,
           s.shadow_reach_mm,
-          s.occlusion_radius_mm};
+          s.occlusion_radius_mm,
+          o.smooth_zoom ? 1.0 : 0.0};
 }
 
 std::vector<PixelRect> ShadedViewCache::shift_image(int dx, int dy) {
@@ -129,7 +130,11 @@ CachedDrawStats ShadedViewCache::draw(CanvasRenderer& renderer, const CanvasView
     std::sort(dirty_tiles_.begin(), dirty_tiles_.end());
     dirty_tiles_.erase(std::unique(dirty_tiles_.begin(), dirty_tiles_.end()), dirty_tiles_.end());
     const int tiles_x = (renderer.width_cells() + kTileSize - 1) / kTileSize;
-    const render::relief::Reach reach = renderer.relief_reach();
+    render::relief::Reach reach = renderer.relief_reach();
+    if (renderer.view_options().smooth_zoom) {
+      // Zoomed in, a pixel blends its neighbour cells' shading: one cell more each way.
+      for (int* side : {&reach.left, &reach.top, &reach.right, &reach.bottom}) ++*side;
+    }
     for (int tile : dirty_tiles_) {
       const PixelRect rect = tile_screen_rect(tile, tiles_x, view, viewport_w, viewport_h, reach);
       if (!rect.empty()) regions.push_back(rect);

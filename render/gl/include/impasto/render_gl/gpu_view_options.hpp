@@ -12,6 +12,10 @@ struct GpuViewOptions {
   // Zoomed in to this many screen pixels per cell or more, cracks show their insides (the
   // close-up, docs/cracks.md); further out, their far-view blend. 0: never.
   float crack_close_up_min_pixels = 6.0f;
+  // Zoomed in, colour, normal and relief light interpolated between cell centres (no cell
+  // blocks); zoomed out, the shaded colours of the cells under a pixel averaged (no speckle).
+  // Off: every pixel shows its own cell, as the CPU's close-up magnifies cells.
+  bool smooth_zoom = true;
 };
 
 }  // namespace impasto::render_gl

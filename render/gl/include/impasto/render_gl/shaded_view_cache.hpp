@@ -55,14 +55,14 @@ class ShadedViewCache {
 
  private:
   // Everything a pixel's colour depends on beside the canvas data and the view's centre.
-  std::array<double, 26> look_of(const CanvasRenderer& renderer, const CanvasView& view) const;
+  std::array<double, 27> look_of(const CanvasRenderer& renderer, const CanvasView& view) const;
   // Moves the cached image by (dx, dy) GL pixels; returns the strips left to shade.
   std::vector<PixelRect> shift_image(int dx, int dy);
 
   std::unique_ptr<Framebuffer> image_;
   std::unique_ptr<Framebuffer> spare_;  // the target of a shift, then swapped with image_
   const CanvasRenderer* renderer_ = nullptr;
-  std::array<double, 26> look_{};
+  std::array<double, 27> look_{};
   CanvasView view_;
   bool all_invalid_ = true;
   std::vector<int> dirty_tiles_;
