@@ -1,5 +1,6 @@
 #include "impasto/paintcore/brush.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -25,6 +26,11 @@ Brush::Brush(BrushHead head, BrushSettings settings, double cell_mm, int slot_co
         std::to_string(kMaxBrushCells) + " are allowed");
   cells_ = std::max(1, static_cast<int>(across));
   const double half_size_mm = 0.5 * settings_.size_mm;
+  // Bristle relief never exceeds a tenth of the half width: a hair-fine head has no furrows
+  // deeper than itself.
+  const double bristle_depth = head_.bristles.depth_mm * (1.0 + head_.bristles.jitter);
+  const double bristle_scale =
+      bristle_depth > 0.0 ? std::min(1.0, 0.1 * half_size_mm / bristle_depth) : 1.0;
   footprint_mm_.assign(cell_count(), 0.0f);
   covers_.assign(cell_count(), 0);
   for (int j = 0; j < cells_; ++j)
@@ -35,8 +41,9 @@ Brush::Brush(BrushHead head, BrushSettings settings, double cell_mm, int slot_co
       const std::size_t k = static_cast<std::size_t>(j) * cells_ + i;
       // A one-cell brush covers its only cell whatever the shape.
       covers_[k] = cells_ == 1 || head_.covers(u, v);
-      footprint_mm_[k] = static_cast<float>(head_.height(u, v) * half_size_mm +
-                                            head_.bristle_height_mm(u * half_size_mm));
+      footprint_mm_[k] =
+          static_cast<float>(head_.height(u, v) * half_size_mm +
+                             bristle_scale * head_.bristle_height_mm(u * half_size_mm));
       covered_ += covers_[k];
     }
   if (covered_ == 0) {  // a thin head on a coarse grid: its centre cell still holds paint

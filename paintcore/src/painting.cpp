@@ -8,6 +8,7 @@
 #include <tbb/parallel_for.h>
 
 #include "impasto/paintcore/brush_resample.hpp"
+#include "levelling.hpp"
 #include "painting_impl.hpp"
 
 namespace impasto::paintcore {
@@ -179,6 +180,8 @@ void Painting::begin_stroke() {
   p.pose_before_last.reset();
   p.stroke_has_twist = false;
   p.heading_rad.reset();
+  p.stroke_tiles.clear();
+  p.last_contact.reset();
 }
 
 void Painting::end_stroke() {
@@ -186,10 +189,31 @@ void Painting::end_stroke() {
   if (!p.in_stroke) return;
   p.in_stroke = false;
   p.last_pose.reset();
-  if (p.stroke_touched)
-    p.history.commit();
-  else
+  p.pose_before_last.reset();
+  if (!p.stroke_touched) {
     p.history.discard();  // nothing changed: nothing to undo
+    return;
+  }
+  // The brush lifts where it last touched, leaving a pile; then the stroke's paint levels as
+  // far as its body lets it (both part of the stroke's undo step).
+  if (p.last_contact) {
+    const auto before_change = [&p](int index) {
+      p.history.before_tile_change(index, p.canvas.tile(index));
+      p.stroke_tiles.push_back(index);
+    };
+    p.arena.execute([&] {
+      p.stepper.step(p.canvas, p.brush, slot_count(), p.params, *p.last_contact, 0.0, 0.0, 0.0,
+                     before_change, true);
+    });
+    p.last_contact.reset();
+  }
+  std::sort(p.stroke_tiles.begin(), p.stroke_tiles.end());
+  p.stroke_tiles.erase(std::unique(p.stroke_tiles.begin(), p.stroke_tiles.end()),
+                       p.stroke_tiles.end());
+  std::erase_if(p.stroke_tiles, [&p](int index) { return p.canvas.tile(index) == nullptr; });
+  settle_wet_paint(p.canvas, p.stroke_tiles, slot_count(), p.brush.body(), p.params);
+  p.stroke_tiles.clear();
+  p.history.commit();
 }
 
 namespace {
@@ -288,6 +312,7 @@ void Painting::stroke_to(const PenSample& sample) {
   const double follow_cells = std::max(1.0, p.brush.settings().size_mm / p.canvas.cell_mm());
   const auto before_change = [&p](int index) {
     p.history.before_tile_change(index, p.canvas.tile(index));
+    p.stroke_tiles.push_back(index);
   };
   p.arena.execute([&] {
     std::array<double, 2> last = position(0.0);
@@ -312,6 +337,7 @@ void Painting::stroke_to(const PenSample& sample) {
       if (p.stepper.step(p.canvas, p.brush, slot_count(), p.params, pose, move_x, move_y,
                          step_seconds, before_change)) {
         p.stroke_touched = true;
+        p.last_contact = pose;
         ++p.steps;
         p.cells_updated += p.stepper.last_window_cells();
       }

@@ -39,6 +39,8 @@ struct Painting::Impl {
   // A brush that follows the hand: its heading when the pen reports no twist.
   bool stroke_has_twist = false;
   std::optional<double> heading_rad;
+  std::optional<BrushPose> last_contact;  // where the brush last touched paint: it lifts there
+  std::vector<int> stroke_tiles;          // tiles the stroke changed: where its paint levels
 };
 
 }  // namespace impasto::paintcore

@@ -17,6 +17,7 @@ constexpr NamedParam kNamedParams[] = {
     {"deposit_share", &SimulationParams::deposit_share},
     {"transfer_length_mm", &SimulationParams::transfer_length_mm},
     {"transfer_time_s", &SimulationParams::transfer_time_s},
+    {"lift_share", &SimulationParams::lift_share},
     {"brush_flow_length_mm", &SimulationParams::brush_flow_length_mm},
     {"plough", &SimulationParams::plough},
     {"drag", &SimulationParams::drag},
@@ -65,6 +66,9 @@ void validate(const SimulationParams& p) {
   check(p.deposit_share, "deposit_share", false);
   if (p.deposit_share > 1.0)
     throw std::runtime_error("simulation params: field 'deposit_share' must be <= 1");
+  check(p.lift_share, "lift_share", false);
+  if (p.lift_share > 1.0)
+    throw std::runtime_error("simulation params: field 'lift_share' must be <= 1");
   check(p.transfer_length_mm, "transfer_length_mm", true);
   check(p.transfer_time_s, "transfer_time_s", true);
   check(p.brush_flow_length_mm, "brush_flow_length_mm", true);

@@ -163,13 +163,13 @@ void Stepper::velocity_rows(const StepInputs& in, int r0, int r1) {
     const float* __restrict wet = wet_.data() + row;
     // v = drag * brush motion - c grad p under the brush, 0 elsewhere (branch-free:
     // vectorises). The squeeze is a diffusion of the paint down its penetration, flux = h v:
-    // it relaxes toward its limit of an eighth of the penetration difference per step,
-    // v = dp / (8h) (1 - exp(-8 h c)), or thick paint would overshoot into spikes. Below the
-    // limit it is c dp, so many small steps squeeze as much as one large one.
+    // its coefficient saturates, c / (1 + 8 h c), at an eighth of the penetration difference
+    // per step, or thick paint would overshoot into spikes. Well below that limit it is c,
+    // so many small steps squeeze as much as one large one.
     for (int x = 0; x < w.width; ++x) {
       const bool touches = cell[x] >= 0;
       const float h = std::max(wet[x], kSqueezeMinFilmMm);
-      const float reach = -std::expm1(-8.0f * h * in.gradient_scale) / (8.0f * h);
+      const float reach = in.gradient_scale / (1.0f + 8.0f * h * in.gradient_scale);
       const float ux = in.brush_vx - reach * (pen[x + 1] - pen[x - 1]);
       const float uy = in.brush_vy - reach * (pen[x + s] - pen[x - s]);
       vx[x] = touches ? std::min(std::max(ux, -1.0f), 1.0f) : 0.0f;
@@ -346,7 +346,7 @@ void Stepper::scatter(Canvas& canvas, int slot_count, const BeforeTileChange& be
 
 bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const SimulationParams& params,
                    const BrushPose& pose, double move_x, double move_y, double seconds,
-                   const BeforeTileChange& before_change) {
+                   const BeforeTileChange& before_change, bool lift_off) {
   last_window_cells_ = 0;
   // A pen that does not press (pressure 0) holds the brush off the paint.
   if (brush.empty() || !(pose.depth_mm > 0.0)) return false;
@@ -416,6 +416,12 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   in.min_film_mm = static_cast<float>(params.min_film_mm);
   in.relax = static_cast<float>(transfer_relaxation(distance_mm, seconds, params));
   in.deposit_share = static_cast<float>(params.deposit_share);
+  if (lift_off) {
+    // The brush leaves the paint: the film between bristles and canvas breaks in its
+    // middle, at once (no motion, no squeeze).
+    in.relax = 1.0f;
+    in.deposit_share = static_cast<float>(params.lift_share);
+  }
 
   const int rows = win_.height, cols = win_.width;
   // 1. Gather the window and find where the brush penetrates the paint surface.

@@ -23,11 +23,12 @@ class Stepper {
 
   // Runs one step with the brush at `pose`, having moved by (move_x, move_y) cells in
   // `seconds` since the previous step (|move| <= 1 and the squeeze at most one cell: the CFL
-  // limits, see max_step_seconds). Returns false, changing nothing, when the brush touches no
-  // paint surface. Call inside the painting's task arena.
+  // limits, see max_step_seconds). With lift_off the brush, still, leaves the paint: the
+  // film splits fully by SimulationParams::lift_share. Returns false, changing nothing, when the
+  // brush touches no paint surface. Call inside the painting's task arena.
   bool step(Canvas& canvas, Brush& brush, int slot_count, const SimulationParams& params,
             const BrushPose& pose, double move_x, double move_y, double seconds,
-            const BeforeTileChange& before_change);
+            const BeforeTileChange& before_change, bool lift_off = false);
 
   // The longest time one step may take so that the squeeze moves paint at most half a cell
   // where the penetration's slope is 1.

@@ -91,9 +91,10 @@ TEST(Brush, RasterisesTheHeadAtTheCellSize) {
   EXPECT_EQ(brush.slot_count(), 2);
   const double disc = std::numbers::pi / 4.0 * 40 * 40;
   EXPECT_NEAR(static_cast<double>(brush.covered_cells()), disc, 0.02 * disc);
-  // The underside rises towards the rim: rise * (size / 2) * r^2.
+  // The underside rises towards the rim: rise * (size / 2) * r^2, plus the bristles' relief
+  // across u (cell 20's centre lies at u = 0.025, 0.05 mm from the centre line).
   const float centre = brush.footprint_mm()[20 * 40 + 20];
-  EXPECT_NEAR(centre, 0.5 * 2.0 * (0.025 * 0.025 * 2), 1e-6);
+  EXPECT_NEAR(centre, 0.5 * 2.0 * (0.025 * 0.025 * 2) + brush.head().bristle_height_mm(0.05), 1e-6);
   EXPECT_GT(brush.footprint_mm()[20 * 40 + 38], brush.footprint_mm()[20 * 40 + 30]);
   // Softer brushes sink deeper at the same pressure.
   settings.stiffness = 0.0;

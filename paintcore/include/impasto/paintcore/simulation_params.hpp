@@ -12,13 +12,16 @@ struct SimulationParams {
   // surfaces. The canvas's part relaxes toward deposit_share of the joint film by
   // 1 - exp(-(d / transfer_length_mm + t / transfer_time_s)) over a distance d travelled
   // and a time t pressed.
-  double deposit_share = 0.25;        // canvas share of the joint film at equilibrium
-  double transfer_length_mm = 0.5;    // distance over which the split is reached (1/e)
-  double transfer_time_s = 0.25;      // time over which a still brush reaches it (1/e)
+  double deposit_share = 0.25;      // canvas share of the joint film at equilibrium
+  double transfer_length_mm = 0.5;  // distance over which the split is reached (1/e)
+  double transfer_time_s = 0.25;
+  // Where the brush lifts, the film between bristles and canvas breaks in its middle: the
+  // canvas keeps this share of it (a pile where a stroke ends).
+  double lift_share = 0.5;            // time over which a still brush reaches it (1/e)
   double brush_flow_length_mm = 4.0;  // paint in the bristles evens out over this distance
   // Squeeze: paint flows down the slope of the brush's penetration (mm/mm) by
   // plough (mm per mm travelled) plus squeeze_mm_s (mm per second pressed).
-  double plough = 0.5;
+  double plough = 0.1;
   // The paint the brush touches moves with drag times the brush's velocity (IMPaSTo: 1/2, a
   // sheared film). Less keeps the canvas weave from printing through thick paint, as contact
   // under a spent brush follows the weave's peaks.

@@ -1,0 +1,132 @@
+#include "levelling.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace impasto::paintcore {
+namespace {
+
+constexpr int kMaxIterations = 48;  // the flow is capped per iteration, so few suffice
+
+}  // namespace
+
+double levelling_flow_mm(double h, double drop, double cell_mm, double seconds,
+                         const PaintBodyInfo& body) {
+  if (!(h > 0.0) || !(drop > 0.0)) return 0.0;
+  const double slope = drop / cell_mm;
+  const double weight = kPaintWeightPaPerMm * slope;     // shear stress per mm of depth
+  const double h_yield = body.yield_stress_pa / weight;  // depth of the unyielded plug
+  if (h_yield >= h) return 0.0;                          // the paint holds its slope
+  const double flux_mm2_s =
+      weight * (h - h_yield) * (h - h_yield) * (2.0 * h + h_yield) / (6.0 * body.viscosity_pa_s);
+  // The drop the yield stress still holds at this depth; only the rest may level.
+  const double held = body.yield_stress_pa / (kPaintWeightPaPerMm * h) * cell_mm;
+  const double excess = std::max(drop - held, 0.0);
+  return std::min({flux_mm2_s * seconds / cell_mm, 0.25 * excess, 0.25 * h});
+}
+
+LevellingReport settle_wet_paint(Canvas& canvas, const std::vector<int>& tiles, int slot_count,
+                                 PaintBody body, const SimulationParams& params) {
+  LevellingReport report;
+  if (tiles.empty() || !(params.settle_time_s > 0.0)) return report;
+  const PaintBodyInfo& info = body_info(body);
+  const double cell_mm = canvas.cell_mm();
+  // The working grid: the tiles' bounding box, cells outside the tiles are walls.
+  int tx0 = canvas.tiles_x(), ty0 = canvas.tiles_y(), tx1 = -1, ty1 = -1;
+  for (const int index : tiles) {
+    const int tx = index % canvas.tiles_x(), ty = index / canvas.tiles_x();
+    tx0 = std::min(tx0, tx), ty0 = std::min(ty0, ty), tx1 = std::max(tx1, tx),
+    ty1 = std::max(ty1, ty);
+  }
+  const int w = (tx1 - tx0 + 1) * kTileSize, h = (ty1 - ty0 + 1) * kTileSize;
+  const auto cells = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
+  constexpr std::size_t kMaxCells = std::size_t{1} << 22;  // 4M cells: a long diagonal
+  if (cells > kMaxCells) return report;  // stroke's box is too large: it does not level
+  std::vector<Tile*> tile_at(static_cast<std::size_t>((tx1 - tx0 + 1) * (ty1 - ty0 + 1)), nullptr);
+  for (const int index : tiles) {
+    const int tx = index % canvas.tiles_x() - tx0, ty = index / canvas.tiles_x() - ty0;
+    tile_at[static_cast<std::size_t>(ty * (tx1 - tx0 + 1) + tx)] = canvas.tile_slot(index).get();
+  }
+  // Cells of edge tiles beyond the canvas are walls too.
+  const int canvas_w = canvas.width_cells() - tx0 * kTileSize;
+  const int canvas_h = canvas.height_cells() - ty0 * kTileSize;
+  const auto locate = [&](int x, int y, Tile*& tile, int& c) {
+    tile =
+        x < canvas_w && y < canvas_h
+            ? tile_at[static_cast<std::size_t>((y / kTileSize) * (tx1 - tx0 + 1) + x / kTileSize)]
+            : nullptr;
+    c = (y % kTileSize) * kTileSize + x % kTileSize;
+  };
+  // What crosses each east and south face in one iteration (height, source's shares).
+  std::vector<float> east(cells), south(cells);
+  const int iterations = kMaxIterations;
+  const double seconds = params.settle_time_s / iterations;
+  const auto surface = [](const Tile& t, int c) {
+    return static_cast<double>(t.base_height_mm[static_cast<std::size_t>(c)]) +
+           t.dry_height_mm[static_cast<std::size_t>(c)] +
+           t.wet_volume_mm[static_cast<std::size_t>(c)];
+  };
+  for (int it = 0; it < iterations; ++it) {
+    bool any = false;
+    // 1. Fluxes from the current state (signed: > 0 flows east / south).
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const std::size_t i = static_cast<std::size_t>(y) * w + x;
+        east[i] = south[i] = 0.0f;
+        Tile* a;
+        int ca;
+        locate(x, y, a, ca);
+        if (!a) continue;
+        for (int d = 0; d < 2; ++d) {
+          const int nx = x + (d == 0), ny = y + (d == 1);
+          if (nx >= w || ny >= h) continue;
+          Tile* b;
+          int cb;
+          locate(nx, ny, b, cb);
+          if (!b) continue;
+          const double drop = surface(*a, ca) - surface(*b, cb);
+          const double flow =
+              drop > 0 ? levelling_flow_mm(a->wet_volume_mm[static_cast<std::size_t>(ca)], drop,
+                                           cell_mm, seconds, info)
+                       : -levelling_flow_mm(b->wet_volume_mm[static_cast<std::size_t>(cb)], -drop,
+                                            cell_mm, seconds, info);
+          (d == 0 ? east : south)[i] = static_cast<float>(flow);
+          any = any || flow != 0.0;
+        }
+      }
+    if (!any) break;
+    report.iterations = it + 1;
+    // 2. Move paint and pigments face by face: what one cell loses, the other gains.
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        for (int d = 0; d < 2; ++d) {
+          const std::size_t i = static_cast<std::size_t>(y) * w + x;
+          const float flow = (d == 0 ? east : south)[i];
+          if (flow == 0.0f) continue;
+          Tile *a, *b;
+          int ca, cb;
+          locate(x, y, a, ca);
+          locate(x + (d == 0), y + (d == 1), b, cb);
+          Tile& from = flow > 0 ? *a : *b;
+          Tile& to = flow > 0 ? *b : *a;
+          const auto cf = static_cast<std::size_t>(flow > 0 ? ca : cb);
+          const auto ct = static_cast<std::size_t>(flow > 0 ? cb : ca);
+          const float amount = std::min(std::abs(flow), from.wet_volume_mm[cf]);
+          if (!(amount > 0.0f)) continue;
+          const float share = amount / from.wet_volume_mm[cf];
+          from.wet_volume_mm[cf] -= amount;
+          to.wet_volume_mm[ct] += amount;
+          for (int s = 0; s < std::min({slot_count, from.slot_count(), to.slot_count()}); ++s) {
+            const float moved = from.pigment(s)[cf] * share;
+            from.pigment(s)[cf] -= moved;
+            to.pigment(s)[ct] += moved;
+          }
+          report.moved_mm3 += amount * canvas.spec().cell_area_mm2();
+        }
+  }
+  if (report.iterations > 0)
+    for (const int index : tiles) canvas.mark_dirty(index);
+  return report;
+}
+
+}  // namespace impasto::paintcore

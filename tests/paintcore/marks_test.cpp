@@ -1,0 +1,344 @@
+// The marks a stroke leaves, against the physics they model: how much paint lands, that it
+// does not depend on how the stroke is sampled or on the canvas resolution, bristle furrows,
+// bodies that hold or level, a head that trails the hand, a curve through the samples.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <numbers>
+#include <vector>
+
+#include "impasto/paintcore/painting.hpp"
+#include "levelling.hpp"
+#include "stroke_path.hpp"
+#include "test_util.hpp"
+
+namespace impasto::paintcore {
+namespace {
+
+// A canvas w_mm x h_mm at `dpi`, flat (no weave).
+CanvasSpec canvas_mm(double w_mm, double h_mm, double dpi) {
+  return CanvasSpec{static_cast<int>(std::lround(w_mm / 25.4 * dpi)),
+                    static_cast<int>(std::lround(h_mm / 25.4 * dpi)), dpi, 0};
+}
+
+struct Mark {
+  double deposited_share;  // canvas volume / loaded volume
+  PaintThickness thickness;
+};
+
+struct StrokeSpec {
+  double dpi = 254.0;
+  double spacing_mm = 0.1;  // between pen samples
+  double length_mm = 12.0;
+  double seconds = 1.0;
+  float pressure = 0.7f;
+  BrushSettings brush{"round", 3.0, 0.5};
+  double load_mm3 = 20.0;
+  PaintBody body = kDefaultPaintBody;
+};
+
+// One straight stroke along +x through the canvas's middle, ended by a tip-up sample.
+Painting paint_stroke(const StrokeSpec& spec) {
+  Painting p(
+      canvas_mm(spec.length_mm + 3.0 * spec.brush.size_mm, 2.5 * spec.brush.size_mm, spec.dpi));
+  p.set_brush(spec.brush);
+  p.load_brush({{"white", 1.0}}, spec.load_mm3, spec.body);
+  const double x0 = 1.5 * spec.brush.size_mm, y = 1.25 * spec.brush.size_mm;
+  const auto samples = std::max<long>(1, std::lround(spec.length_mm / spec.spacing_mm));
+  p.begin_stroke();
+  for (long i = 0; i <= samples; ++i) {
+    const double t = static_cast<double>(i) / static_cast<double>(samples);
+    PenSample s = test::pen(x0 + spec.length_mm * t, y, spec.pressure);
+    s.time_s = spec.seconds * t;
+    p.stroke_to(s);
+  }
+  p.end_stroke();
+  return p;
+}
+
+Mark measure(const Painting& p) {
+  return {p.canvas_totals().volume / p.loaded_totals().volume, p.paint_thickness()};
+}
+
+void expect_within(double value, double reference, double tolerance, const char* what) {
+  EXPECT_NEAR(value / reference, 1.0, tolerance) << what << ": " << value << " vs " << reference;
+}
+
+void expect_same_mark(const Mark& a, const Mark& b, double tolerance) {
+  expect_within(a.deposited_share, b.deposited_share, tolerance, "deposit");
+  expect_within(a.thickness.median_mm, b.thickness.median_mm, tolerance, "median thickness");
+  expect_within(a.thickness.p90_mm, b.thickness.p90_mm, tolerance, "p90 thickness");
+  expect_within(a.thickness.p99_mm, b.thickness.p99_mm, tolerance, "p99 thickness");
+}
+
+TEST(Marks, ALoadedBrushLaysThickPaint) {
+  const Mark mark = measure(paint_stroke({}));
+  // Heavy-body impasto: most of the load lands, standing well above a canvas weave.
+  EXPECT_GT(mark.deposited_share, 0.5);
+  EXPECT_GT(mark.thickness.median_mm, 0.2);
+  EXPECT_GT(mark.thickness.p99_mm, 0.5);
+  EXPECT_LT(mark.thickness.max_mm, 5.0);
+}
+
+TEST(Marks, MoreLoadLaysMorePaint) {
+  StrokeSpec light, heavy;
+  light.load_mm3 = 3.0;
+  heavy.load_mm3 = 24.0;
+  const Mark a = measure(paint_stroke(light)), b = measure(paint_stroke(heavy));
+  EXPECT_GT(b.thickness.median_mm, 2.0 * a.thickness.median_mm);
+}
+
+TEST(Marks, DepositDoesNotDependOnSampleSpacing) {
+  StrokeSpec reference;
+  reference.spacing_mm = 0.1;
+  const Mark base = measure(paint_stroke(reference));
+  for (const double spacing : {0.01, 0.03, 0.3, 1.0}) {
+    SCOPED_TRACE(spacing);
+    StrokeSpec spec;
+    spec.spacing_mm = spacing;
+    expect_same_mark(measure(paint_stroke(spec)), base, 0.10);
+  }
+}
+
+TEST(Marks, DepositDoesNotDependOnCanvasResolution) {
+  // A 5 mm head: 20 cells across at 100 dpi (a 3 mm head's 12 are too coarse to converge).
+  StrokeSpec reference;
+  reference.brush.size_mm = 5.0;
+  reference.load_mm3 = 55.0;
+  reference.dpi = 300.0;
+  const Mark base = measure(paint_stroke(reference));
+  for (const double dpi : {100.0, 150.0, 600.0}) {
+    SCOPED_TRACE(dpi);
+    StrokeSpec spec = reference;
+    spec.dpi = dpi;
+    expect_same_mark(measure(paint_stroke(spec)), base, 0.10);
+  }
+}
+
+// Cells holding paint farther than `radius_mm` from (x, y).
+std::size_t painted_beyond(const Painting& p, double x_mm, double y_mm, double radius_mm) {
+  const Canvas& c = p.canvas();
+  std::size_t count = 0;
+  for (int y = 0; y < c.height_cells(); ++y)
+    for (int x = 0; x < c.width_cells(); ++x)
+      if (c.wet_volume_mm(x, y) > 1e-3f &&
+          std::hypot((x + 0.5) * c.cell_mm() - x_mm, (y + 0.5) * c.cell_mm() - y_mm) > radius_mm)
+        ++count;
+  return count;
+}
+
+TEST(Marks, AStillBrushPressedSqueezesPaintOut) {
+  const auto hold = [](double seconds) {
+    Painting p(test::flat_spec(80, 80));
+    p.set_brush(test::round_brush(4.0, 0.3));
+    p.load_brush({{"white", 1.0}}, 20.0);
+    p.begin_stroke();
+    for (int i = 0; i <= 100; ++i) {
+      PenSample s = test::pen(4.0, 4.0, 1.0f);
+      s.time_s = seconds * i / 100.0;
+      p.stroke_to(s);
+    }
+    p.end_stroke();
+    return std::pair{p.paint_thickness().painted_cells, painted_beyond(p, 4.0, 4.0, 1.6)};
+  };
+  const auto tap = hold(0.01), press = hold(2.0);
+  EXPECT_GT(tap.first, 0u);             // a tap leaves paint: the film splits where the brush lifts
+  EXPECT_GT(press.second, tap.second);  // held, paint is pressed out from under the head
+}
+
+// The dominant period (mm) of the thickness across a stroke along x, from a DFT of the
+// profile over the stroke's middle, excluding the edges.
+double furrow_period_mm(const Painting& p) {
+  const Canvas& c = p.canvas();
+  const int x0 = c.width_cells() / 3, x1 = 2 * c.width_cells() / 3;
+  std::vector<double> across;
+  for (int y = 0; y < c.height_cells(); ++y) {
+    double sum = 0.0;
+    for (int x = x0; x < x1; ++x) sum += c.wet_volume_mm(x, y);
+    across.push_back(sum / (x1 - x0));
+  }
+  // The painted band, less a fifth at each side (the edge ridges).
+  const auto first = std::find_if(across.begin(), across.end(), [](double v) { return v > 1e-3; });
+  const auto last = std::find_if(across.rbegin(), across.rend(), [](double v) { return v > 1e-3; });
+  const auto begin = static_cast<std::size_t>(first - across.begin());
+  const std::size_t end = across.size() - static_cast<std::size_t>(last - across.rbegin());
+  const std::size_t margin = (end - begin) / 5;
+  std::vector<double> band(across.begin() + static_cast<std::ptrdiff_t>(begin + margin),
+                           across.begin() + static_cast<std::ptrdiff_t>(end - margin));
+  double mean = 0.0;
+  for (double v : band) mean += v / static_cast<double>(band.size());
+  const auto n = static_cast<double>(band.size());
+  double best_power = 0.0, best_period = 0.0;
+  for (int k = 2; k < static_cast<int>(band.size()) / 2; ++k) {
+    std::complex<double> sum;
+    for (std::size_t i = 0; i < band.size(); ++i)
+      sum += (band[i] - mean) *
+             std::polar(1.0, -2.0 * std::numbers::pi * k * static_cast<double>(i) / n);
+    if (std::norm(sum) > best_power) best_power = std::norm(sum), best_period = n / k;
+  }
+  return best_period * c.cell_mm();
+}
+
+TEST(Marks, FurrowsFollowTheBristleSpacing) {
+  for (const double spacing : {0.6, 1.0}) {
+    SCOPED_TRACE(spacing);
+    BrushHead head = load_named_brush_head("round");
+    head.bristles = {spacing, 0.15, 0.0};
+    head.splay = 0.0;
+    Painting p(canvas_mm(24.0, 12.0, 254.0));
+    p.set_brush(BrushSettings{"round", 6.0, 0.5}, head);
+    p.load_brush({{"white", 1.0}}, 40.0);
+    p.begin_stroke();
+    for (int i = 0; i <= 160; ++i) {
+      PenSample s = test::pen(4.0 + 0.1 * i, 6.0, 0.7f);
+      s.time_s = 0.01 * i;
+      p.stroke_to(s);
+    }
+    p.end_stroke();
+    EXPECT_NEAR(furrow_period_mm(p), spacing, 0.15 * spacing);
+  }
+}
+
+// Height differences between neighbouring cells across a stroke along x (RMS, mm).
+double roughness_across(const Painting& p) {
+  const Canvas& c = p.canvas();
+  double sum = 0.0;
+  int count = 0;
+  for (int y = 1; y < c.height_cells(); ++y)
+    for (int x = c.width_cells() / 3; x < 2 * c.width_cells() / 3; ++x) {
+      if (c.wet_volume_mm(x, y) < 0.05f || c.wet_volume_mm(x, y - 1) < 0.05f) continue;
+      const double d = c.wet_volume_mm(x, y) - c.wet_volume_mm(x, y - 1);
+      sum += d * d;
+      ++count;
+    }
+  return count ? std::sqrt(sum / count) : 0.0;
+}
+
+TEST(Marks, HeavyPaintHoldsItsFurrowsFluidPaintLevels) {
+  StrokeSpec heavy, fluid;
+  fluid.body = PaintBody::fluid;
+  const double held = roughness_across(paint_stroke(heavy));
+  const double levelled = roughness_across(paint_stroke(fluid));
+  EXPECT_GT(held, 0.01);
+  EXPECT_LT(levelled, 0.5 * held);
+}
+
+TEST(Marks, LevellingFlowsOnlyPastTheYieldSlope) {
+  const PaintBodyInfo& heavy = body_info(PaintBody::heavy);
+  // 0.5 mm of heavy paint holds a slope of 60 / (14.7 * 0.5) ~ 8: a 0.5 mm drop over 0.1 mm.
+  EXPECT_EQ(levelling_flow_mm(0.5, 0.5, 0.1, 1.0, heavy), 0.0);
+  EXPECT_GT(levelling_flow_mm(0.5, 1.0, 0.1, 1.0, heavy), 0.0);
+  // Fluid paint flows down the gentlest slope, never more than a quarter of the drop.
+  const PaintBodyInfo& fluid = body_info(PaintBody::fluid);
+  const double flow = levelling_flow_mm(0.5, 0.01, 0.1, 10.0, fluid);
+  EXPECT_GT(flow, 0.0);
+  EXPECT_LE(flow, 0.25 * 0.01);
+  EXPECT_EQ(levelling_flow_mm(0.0, 1.0, 0.1, 1.0, fluid), 0.0);  // no paint, no flow
+}
+
+TEST(Marks, AStrokeEndsInAPile) {
+  const Painting p = paint_stroke({});
+  const Canvas& c = p.canvas();
+  const int y = c.height_cells() / 2;
+  // The thickest cell along the centre line in the stroke's last brush width, against the
+  // mean a little before it.
+  const double cell = c.cell_mm();
+  const int end = static_cast<int>((1.5 * 3.0 + 12.0) / cell);
+  const int width = static_cast<int>(3.0 / cell);
+  float pile = 0.0f;
+  for (int x = end - width / 2; x < end + width / 2; ++x)
+    pile = std::max(pile, c.wet_volume_mm(x, y));
+  double before = 0.0;
+  for (int x = end - 2 * width; x < end - width; ++x) before += c.wet_volume_mm(x, y) / width;
+  EXPECT_GT(pile, 1.3 * before);
+}
+
+// The widest run of painted cells along y (mm), over the stroke's middle third.
+double mark_width_mm(const Painting& p) {
+  const Canvas& c = p.canvas();
+  int widest = 0;
+  for (int x = c.width_cells() / 3; x < 2 * c.width_cells() / 3; ++x) {
+    int painted = 0;
+    for (int y = 0; y < c.height_cells(); ++y) painted += c.wet_volume_mm(x, y) > 1e-3f;
+    widest = std::max(widest, painted);
+  }
+  return widest * c.cell_mm();
+}
+
+TEST(Marks, AFlatHeadTurnsToTheTravelWithoutTwistData) {
+  // A 6 mm flat drawn along x and along y with a mouse (no twist): both marks are about as
+  // wide as the head, not as thin as its edge.
+  for (const bool along_x : {true, false}) {
+    SCOPED_TRACE(along_x);
+    Painting p(test::flat_spec(240, 240));
+    p.set_brush(BrushSettings{"flat", 6.0, 0.5});
+    p.load_brush({{"white", 1.0}}, 30.0);
+    p.begin_stroke();
+    for (int i = 0; i <= 120; ++i) {
+      const double along = 4.0 + 0.13 * i;
+      PenSample s = along_x ? test::pen(along, 12.0, 0.7f) : test::pen(12.0, along, 0.7f);
+      s.time_s = 0.01 * i;
+      p.stroke_to(s);
+    }
+    p.end_stroke();
+    double width = 0.0;
+    if (along_x) {
+      width = mark_width_mm(p);
+    } else {
+      const Canvas& c = p.canvas();
+      int widest = 0;
+      for (int y = c.height_cells() / 3; y < 2 * c.height_cells() / 3; ++y) {
+        int painted = 0;
+        for (int x = 0; x < c.width_cells(); ++x) painted += c.wet_volume_mm(x, y) > 1e-3f;
+        widest = std::max(widest, painted);
+      }
+      width = widest * c.cell_mm();
+    }
+    EXPECT_GT(width, 0.75 * 6.0);
+  }
+}
+
+TEST(Marks, TheHeadTrailsTheHandWithALagSetByDistance) {
+  // Heading for travel along +x puts the head's v axis along x.
+  EXPECT_NEAR(heading_for_travel(0.0), -std::numbers::pi / 2, 1e-12);
+  // After a right-angle turn it has turned 1 - 1/e of the way in one follow length.
+  const double start = heading_for_travel(0.0);
+  const double turned = follow_heading(start, std::numbers::pi / 2, 3.0, 3.0);
+  EXPECT_NEAR(turned - start, (std::numbers::pi / 2) * (1 - std::exp(-1.0)), 1e-9);
+  // A brush drawn straight back does not flip over: heads are symmetric under a half turn.
+  EXPECT_NEAR(follow_heading(start, std::numbers::pi, 10.0, 1.0), start, 1e-9);
+  // Cut into many small moves, the turn is the same: it depends on distance, not on steps.
+  double many = start;
+  for (int i = 0; i < 300; ++i) many = follow_heading(many, std::numbers::pi / 4, 0.01, 3.0);
+  EXPECT_NEAR(many, follow_heading(start, std::numbers::pi / 4, 3.0, 3.0), 1e-9);
+}
+
+TEST(Marks, AFastCircleStaysRound) {
+  // A 10 mm circle from only 12 samples (a fast flick read at 60 Hz): the brush's path
+  // through them stays within 0.5 % of the radius (the polygon's chords fall 3.4 % inside).
+  constexpr int kSamples = 12;
+  constexpr double kRadius = 10.0;
+  const auto point = [](int k) {
+    const double a = 2.0 * std::numbers::pi * k / kSamples;
+    return std::array<double, 2>{kRadius * std::cos(a), kRadius * std::sin(a)};
+  };
+  double worst = 0.0;
+  for (int k = 1; k <= kSamples; ++k) {
+    const auto before = point(k - 1);
+    const StrokeSegment segment(point(k), point(k + 1), &before);
+    for (int i = 0; i <= 50; ++i) {
+      const auto at = segment.at(i / 50.0);
+      worst = std::max(worst, std::abs(std::hypot(at[0], at[1]) - kRadius));
+    }
+  }
+  EXPECT_LT(worst, 0.005 * kRadius);
+  // The first segment of a stroke has no sample before it: a straight chord.
+  const StrokeSegment first({0, 0}, {2, 0}, nullptr);
+  EXPECT_NEAR(first.at(0.5)[1], 0.0, 1e-12);
+  EXPECT_NEAR(first.length(), 2.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace impasto::paintcore
