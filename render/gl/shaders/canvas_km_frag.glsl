@@ -153,9 +153,11 @@ vec3 interpolated_colour(vec2 cell_position, ivec2 cell) {
 }
 
 // Zoomed out: the shaded colours of up to 4 x 4 cells spread over the pixel's footprint,
-// averaged in linear XYZ (no speckle from one cell standing for many).
+// averaged in linear XYZ (no speckle from one cell standing for many). n x n samples for
+// about n cells a pixel each way, so a view near one pixel a cell (the window's fit) still
+// costs one cell a pixel.
 vec3 footprint_colour(vec2 cell_position, float cells_per_pixel, out bool any_inside) {
-  int n = int(min(ceil(cells_per_pixel - 1e-3), 4.0));
+  int n = int(clamp(floor(cells_per_pixel + 0.5), 1.0, 4.0));
   mat2 to_cells = mat2(screen_to_cell[0].xy, screen_to_cell[1].xy);
   vec3 sum = vec3(0.0);
   int inside = 0;
