@@ -67,32 +67,46 @@ TEST(Swatch, OnCanvasChipMatchesTheStrokeOnACanvas) {
   EXPECT_NEAR(static_cast<double>(wet_deposit(canvas).painted_cells),
               static_cast<double>(swatch.deposit.painted_cells),
               0.02 * static_cast<double>(swatch.deposit.painted_cells));
-  const double on_canvas = delta_e(swatch.on_canvas, mean_painted_colour(canvas, settings));
+  const double on_canvas = delta_e(swatch.on_canvas, mean_stroke_colour(canvas, settings));
   const double masstone = delta_e(swatch.masstone, swatch.on_canvas);
   RecordProperty("delta_e_on_canvas", std::to_string(on_canvas));
   RecordProperty("delta_e_masstone", std::to_string(masstone));
   EXPECT_LT(on_canvas, 1.0) << "the masstone is " << masstone << " away";
 }
 
-// The mean colour is the rendered cells' mean: checked against a plain loop over the image.
-TEST(Swatch, MeanPaintedColourIsTheRenderedCellsMean) {
+// The stroke's area spans each column's painted cells, gaps included, and nothing else; the
+// mean colour is the rendered cells' mean over it, checked against a plain loop.
+TEST(Swatch, MeanStrokeColourIsTheRenderedMeanOverTheStrokesArea) {
   const paintcore::Painting painting = paint_swatch_stroke(ultramarine_stroke());
+  const paintcore::Canvas& canvas = painting.canvas();
+  const std::vector<std::uint8_t> area = stroke_area(canvas);
+  const int w = canvas.width_cells();
+  std::size_t inside = 0, painted_inside = 0;
+  for (int y = 0; y < canvas.height_cells(); ++y)
+    for (int x = 0; x < w; ++x) {
+      const bool painted = canvas.wet_volume_mm(x, y) > kPaintedAboveMm;
+      const bool in = area[static_cast<std::size_t>(y * w + x)] != 0;
+      if (painted) {
+        EXPECT_TRUE(in) << x << "," << y;
+      }
+      inside += in;
+      painted_inside += in && painted;
+    }
+  ASSERT_EQ(painted_inside, wet_deposit(painting).painted_cells);
+  EXPECT_LT(inside, 2 * painted_inside);  // the gaps, not the canvas around the stroke
+
   const render::RenderSettings settings = linear_settings();
   render::TileRenderer renderer(settings, painting.pigment_slots());
-  renderer.render_all(painting.canvas());
+  renderer.render_all(canvas);
   const render::Image image = renderer.image();
   std::array<double, 3> sum{};
-  std::size_t count = 0;
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x)
-      if (painting.canvas().wet_volume_mm(x, y) > kPaintedAboveMm) {
+      if (area[static_cast<std::size_t>(y * w + x)])
         for (int c = 0; c < 3; ++c) sum[static_cast<std::size_t>(c)] += image.pixel(x, y)[c];
-        ++count;
-      }
-  ASSERT_EQ(count, wet_deposit(painting).painted_cells);
-  const DisplayRgb mean = mean_painted_colour(painting, settings);
+  const DisplayRgb mean = mean_stroke_colour(painting, settings);
   for (int c = 0; c < 3; ++c)
-    EXPECT_NEAR(mean[static_cast<std::size_t>(c)], sum[static_cast<std::size_t>(c)] / count, 1e-5)
+    EXPECT_NEAR(mean[static_cast<std::size_t>(c)], sum[static_cast<std::size_t>(c)] / inside, 1e-5)
         << "channel " << c;
 }
 

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <stdexcept>
 
 #include "session/replay.hpp"
@@ -96,8 +97,25 @@ Deposit wet_deposit(const paintcore::Painting& painting) {
   return deposit;
 }
 
-DisplayRgb mean_painted_colour(const paintcore::Painting& painting,
-                               const render::RenderSettings& settings) {
+std::vector<std::uint8_t> stroke_area(const paintcore::Canvas& canvas) {
+  const int w = canvas.width_cells(), h = canvas.height_cells();
+  std::vector<std::uint8_t> area(static_cast<std::size_t>(w) * static_cast<std::size_t>(h), 0);
+  for (int x = 0; x < w; ++x) {
+    int first = h, last = -1;
+    for (int y = 0; y < h; ++y)
+      if (canvas.wet_volume_mm(x, y) > kPaintedAboveMm) {
+        first = std::min(first, y);
+        last = y;
+      }
+    for (int y = first; y <= last; ++y)
+      area[static_cast<std::size_t>(y) * static_cast<std::size_t>(w) +
+           static_cast<std::size_t>(x)] = 1;
+  }
+  return area;
+}
+
+DisplayRgb mean_stroke_colour(const paintcore::Painting& painting,
+                              const render::RenderSettings& settings) {
   render::RenderSettings linear = settings;
   linear.display = render::DisplayEncoding::linear_srgb;
   linear.threads = 1;
@@ -105,11 +123,14 @@ DisplayRgb mean_painted_colour(const paintcore::Painting& painting,
   const paintcore::Canvas& canvas = painting.canvas();
   renderer.render_all(canvas);
   const render::Image image = renderer.image();
+  const std::vector<std::uint8_t> area = stroke_area(canvas);
   std::array<double, 3> sum{};
   std::size_t count = 0;
   for (int y = 0; y < image.height; ++y)
     for (int x = 0; x < image.width; ++x) {
-      if (!(canvas.wet_volume_mm(x, y) > kPaintedAboveMm)) continue;
+      if (!area[static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) +
+                static_cast<std::size_t>(x)])
+        continue;
       for (int c = 0; c < 3; ++c) sum[static_cast<std::size_t>(c)] += image.pixel(x, y)[c];
       ++count;
     }
@@ -193,7 +214,7 @@ Swatch make_swatch(const SwatchStroke& stroke, const render::RenderSettings& set
   Swatch swatch;
   const paintcore::Painting painting = paint_swatch_stroke(stroke);
   swatch.deposit = wet_deposit(painting);
-  swatch.on_canvas = mean_painted_colour(painting, settings);
+  swatch.on_canvas = mean_stroke_colour(painting, settings);
   const std::vector<input::PigmentPart>& mix = stroke.load.mix;
   swatch.masstone =
       render_flat_layers(settings, std::span(&mix, 1), masstone_thickness_mm(settings)).front();

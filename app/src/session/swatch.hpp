@@ -2,8 +2,8 @@
 // The Palette panel's swatch: the mix as it will lie on the canvas, found the honest way. A
 // standard stroke with the window's brush, load and pressure is painted by the simulation on
 // a small painting at the canvas's DPI and weave, and rendered by the CPU reference renderer
-// (render::TileRenderer) under the current light; the chip is the mean colour of the cells
-// it painted. Beside it, the masstone: an opaque flat layer of the mix, rendered the same way.
+// (render::TileRenderer) under the current light; the chip is the mean colour over the
+// stroke's area. Beside it, the masstone: an opaque flat layer of the mix, rendered the same way.
 #include <impasto/input/stroke_events.hpp>
 #include <impasto/paintcore/painting.hpp>
 #include <impasto/render/render_settings.hpp>
@@ -51,11 +51,15 @@ Deposit wet_deposit(const paintcore::Painting& painting);
 
 using DisplayRgb = std::array<float, 3>;  // as the renderer writes it under settings.display
 
-// The painting rendered by render::TileRenderer, and the mean of its painted cells' colours,
+// The area of strokes painted along x: in each column, the cells from the first to the last
+// painted one, so the skips between bristles count as the eye sees them, part of the stroke.
+// One flag per cell, row-major.
+std::vector<std::uint8_t> stroke_area(const paintcore::Canvas& canvas);
+// The painting rendered by render::TileRenderer, and the mean colour over stroke_area(),
 // taken in linear light and encoded for settings.display. The ground's colour when nothing
 // is painted.
-DisplayRgb mean_painted_colour(const paintcore::Painting& painting,
-                               const render::RenderSettings& settings);
+DisplayRgb mean_stroke_colour(const paintcore::Painting& painting,
+                              const render::RenderSettings& settings);
 
 // Flat, uniform layers over the flat canvas ground, rendered by render::TileRenderer: one
 // colour per mix, each a layer of `thickness_mm` (pigment names from the default database,
