@@ -150,6 +150,14 @@ void palette_panel(PanelContext& c) {
   ImGui::BeginGroup();
   ImGui::SetNextItemWidth(120.0f);
   ImGui::SliderFloat("mm³", &s.load_volume_mm3, 1.0f, 400.0f, "%.0f", ImGuiSliderFlags_Logarithmic);
+  ImGui::SetNextItemWidth(120.0f);
+  if (ImGui::BeginCombo("body", s.paint_body.c_str())) {
+    for (const paintcore::PaintBodyInfo& body : paintcore::kPaintBodies) {
+      const std::string name(body.name);
+      if (ImGui::Selectable(name.c_str(), name == s.paint_body)) s.paint_body = name;
+    }
+    ImGui::EndCombo();
+  }
   if (!any) {
     ImGui::TextDisabled("on canvas | masstone");
   } else {

@@ -5,6 +5,7 @@
 #include <impasto/input/hid_device.hpp>
 #include <impasto/input/stroke_events.hpp>
 #include <impasto/paintcore/brush.hpp>
+#include <impasto/paintcore/paint_body.hpp>
 #include <impasto/render/render_settings.hpp>
 #include <impasto/render_gl/canvas_view.hpp>
 #include <impasto/render_gl/gpu_view_options.hpp>
@@ -38,6 +39,7 @@ struct WindowState {
   // --- paint on the brush ---
   std::vector<float> mix_parts;  // per pigment of the database
   float load_volume_mm3 = 40.0f;
+  std::string paint_body{paintcore::body_info(paintcore::kDefaultPaintBody).name};
   bool wipe_before_load = true;  // "wipe first": Load sends a wipe, then the load
   // The swatch (session/swatch.hpp), display RGB: the standard stroke with this brush and
   // load as rendered, the mix's masstone, and the stroke's median wet thickness.
@@ -105,6 +107,7 @@ inline input::LoadEvent load_event(const WindowState& s) {
   const auto& pigments = data::PigmentDatabase::defaults().all();
   input::LoadEvent event;
   event.volume_mm3 = s.load_volume_mm3;
+  event.body = s.paint_body;
   for (std::size_t i = 0; i < pigments.size() && i < s.mix_parts.size(); ++i) {
     if (s.mix_parts[i] > 0.0f) event.mix.push_back({pigments[i].name, s.mix_parts[i]});
   }
