@@ -71,6 +71,9 @@ INSTANTIATE_TEST_SUITE_P(
         ErrorCase{"TooFewPenFields", kHeader + "pen 0 0 0\n",
                   "bad.strokes:2: 'pen' takes 8 field(s): time x y pressure tilt_x tilt_y "
                   "rotation buttons, found 3"},
+        ErrorCase{"UnknownBody", kHeader + "load 5 \"Titanium White\" 1 body=gel\n",
+                  "bad.strokes:2: field 'body': unknown paint body 'gel' (known: fluid, soft, "
+                  "heavy, paste)"},
         ErrorCase{"Garbage", kHeader + "pen 0 1x 0 0 0 0 0 0\n",
                   "bad.strokes:2: field 'x': expected a number, found '1x'"},
         ErrorCase{"TimeBackwards", kHeader + "pen 1 0 0 0 0 0 0 0\npen 0.5 0 0 0 0 0 0 0\n",

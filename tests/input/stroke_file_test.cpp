@@ -35,7 +35,8 @@ StrokeFile session() {
       CanvasEvent{2048, 1536, 300.0},
       ToolEvent{"brush"},
       BrushEvent{"round", 4.5, 0.7, {{"bristles", 200.0}, {"splay", 0.125}}},
-      LoadEvent{30.0, {{"Titanium White", 2.0}, {"Ultramarine Blue (Green Shade)", 1.0}}},
+      LoadEvent{30.0, {{"Titanium White", 2.0}, {"Ultramarine Blue (Green Shade)", 1.0}}, {}},
+      LoadEvent{5.0, {{"Titanium White", 1.0}}, "fluid"},
       pen(0.0, 10.0, 20.0, 0.0f, paintcore::kPenInRange),
       // Values with no short decimal form: the writer must keep every bit.
       pen(0.1, 1.0 / 3.0, std::nextafter(20.0, 30.0), 1.0f / 3.0f,
@@ -102,7 +103,7 @@ TEST(StrokeFile, BrushKeysInAnyOrder) {
 
 TEST(StrokeFile, WriterRefusesWhatTheReaderWouldReject) {
   StrokeFile bad;
-  bad.events = {LoadEvent{1.0, {{"Quote \" inside", 1.0}}}};
+  bad.events = {LoadEvent{1.0, {{"Quote \" inside", 1.0}}, {}}};
   std::ostringstream out;
   EXPECT_THROW(format_strokes(out, bad), std::runtime_error);
   bad.events = {pen(0.0, std::numeric_limits<double>::quiet_NaN(), 0.0, 0.5f, 0)};

@@ -1,5 +1,5 @@
 // The painting's crack layer: Painting::set_cracks, and the cracks section of the .impasto
-// file (version 2): round trip, version-1 files, bad records named by file and field.
+// file (since version 2): round trip, older files, bad records named by file and field.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,6 +14,11 @@ namespace impasto::paintcore {
 namespace {
 
 constexpr std::size_t kHeaderBytes = 8 + 4 + 8;  // magic, version, payload size
+constexpr std::uint32_t kVersion = 3;            // what save() writes
+// Version 3's payload: the canvas spec (24 bytes), 11 f64 parameters where older versions
+// had 7, and after the cracks section the brush's body and bristles (u8 + 4 f64).
+constexpr std::size_t kParamsOffset = 4 + 4 + 8 + 8;
+constexpr std::size_t kBrushExtrasBytes = 1 + 4 * 8;
 // Bytes of a cracks section holding one tile with one crack cell.
 constexpr std::size_t kOneCrackSection = 4 + (4 + 4) + (2 + 4 + 4 + 1 + 1);
 
@@ -54,6 +59,19 @@ class CrackFileTest : public ::testing::Test {
       return e.what();
     }
     return "no error";
+  }
+  // A version-2 payload from a version-3 one of a painting with a brush: IMPaSTo's seven
+  // parameters (any valid values, the adhesion film kept) and no brush extras at the end.
+  static std::vector<unsigned char> as_version_two(std::vector<unsigned char> payload) {
+    double min_film = 0.0;
+    std::memcpy(&min_film, payload.data() + kParamsOffset + 6 * 8, 8);
+    std::vector<unsigned char> old(7 * 8);
+    const double values[7] = {0.1, 1.0 / 30, 0.001, 0.2, 0.3, 0.5, min_film};
+    std::memcpy(old.data(), values, sizeof values);
+    payload.erase(payload.begin() + kParamsOffset, payload.begin() + kParamsOffset + 11 * 8);
+    payload.insert(payload.begin() + kParamsOffset, old.begin(), old.end());
+    payload.resize(payload.size() - kBrushExtrasBytes);
+    return payload;
   }
   static std::vector<unsigned char> read(const std::filesystem::path& file) {
     std::ifstream in(file, std::ios::binary);
@@ -155,9 +173,9 @@ TEST_F(CrackFileTest, VersionOneFilesStillLoad) {
   // A version-1 file is a version-2 file without the cracks section (an empty one is a
   // u32 zero at the end of the payload).
   const Painting p = sample();
-  const auto file = dir_ / "v2.impasto";
+  const auto file = dir_ / "v3.impasto";
   p.save(file);
-  std::vector<unsigned char> payload = payload_of(read(file));
+  std::vector<unsigned char> payload = as_version_two(payload_of(read(file)));
   ASSERT_GE(payload.size(), 4u);
   EXPECT_EQ(payload[payload.size() - 4] | payload[payload.size() - 1], 0);
   payload.resize(payload.size() - 4);
@@ -197,7 +215,7 @@ TEST_F(CrackFileTest, BadCrackRecordsInAFileNameTheFileAndField) {
   const auto corrupt = [&](std::size_t offset, const void* value, std::size_t bytes) {
     std::vector<unsigned char> edited = payload;
     std::memcpy(edited.data() + section + offset, value, bytes);
-    write(bad, 2, edited);
+    write(bad, kVersion, edited);
     return load_error(bad);
   };
   const float nan = std::numeric_limits<float>::quiet_NaN(), huge = 1e30f, zero = 0.0f;
@@ -222,7 +240,7 @@ TEST_F(CrackFileTest, BadCrackRecordsInAFileNameTheFileAndField) {
   e = corrupt(12, &cell, 2);
   EXPECT_NE(e.find("cracks.tiles[0].cells[0].cell"), std::string::npos) << e;
   // The unedited bytes, re-written, load.
-  write(bad, 2, payload);
+  write(bad, kVersion, payload);
   EXPECT_EQ(load_error(bad), "no error");
 }
 

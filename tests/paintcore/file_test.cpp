@@ -64,6 +64,26 @@ TEST_F(PaintingFileTest, SaveThenLoadGivesTheSameState) {
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir_), {}), 1);
 }
 
+TEST_F(PaintingFileTest, TheBrushKeepsItsBodyBristlesAndTheParameters) {
+  Painting p(test::flat_spec(64, 64), 1);
+  SimulationParams params;
+  params.deposit_share = 0.4;
+  params.lift_share = 0.6;
+  p.set_params(params);
+  p.set_brush(BrushSettings{"fan", 3.0, 0.5});
+  p.load_brush({{"red", 1.0}}, 4.0, PaintBody::fluid);
+  const auto file = dir_ / "body.impasto";
+  p.save(file);
+  const Painting loaded = Painting::load(file, 1);
+  EXPECT_EQ(loaded.brush().body(), PaintBody::fluid);
+  EXPECT_EQ(loaded.brush().head().bristles, p.brush().head().bristles);
+  EXPECT_EQ(loaded.brush().head().splay, p.brush().head().splay);
+  EXPECT_EQ(loaded.brush().footprint_mm(), p.brush().footprint_mm());
+  EXPECT_EQ(loaded.params().deposit_share, 0.4);
+  EXPECT_EQ(loaded.params().lift_share, 0.6);
+  EXPECT_EQ(loaded.state_hash(), p.state_hash());
+}
+
 TEST_F(PaintingFileTest, LoadedPaintingKeepsPainting) {
   Painting p = sample();
   const auto file = dir_ / "b.impasto";

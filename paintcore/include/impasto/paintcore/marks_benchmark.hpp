@@ -1,0 +1,42 @@
+#pragma once
+// What one standard stroke leaves, for each head and paint body: the figures of
+// `impasto bench marks` (docs/marks.md). The stroke: a head of `size_mm` loaded with 3.5 mm
+// of paint over its covered cells (200 mm^3 for the 8 mm round), drawn 50 mm along +x at
+// pressure 0.7 in one second, sampled every 0.1 mm, on a flat canvas.
+#include <string>
+
+#include "impasto/paintcore/paint_body.hpp"
+#include "impasto/paintcore/painting.hpp"
+
+namespace impasto::paintcore {
+
+struct MarkFigures {
+  std::string head;
+  PaintBody body = kDefaultPaintBody;
+  double size_mm = 0;
+  double load_mm3 = 0;
+  double deposited_share = 0;  // canvas volume / load
+  PaintThickness thickness;
+  double edge_ridge_mm = 0;       // edge crest above the middle third's median, across
+  double furrow_period_mm = 0;    // dominant period of the thickness across the stroke
+  double bristle_spacing_mm = 0;  // the head's spacing, splayed at the stroke's pressure
+  double width_mm = 0;            // painted width across the stroke's middle
+  double seconds_per_step = 0;    // wall time of the stroke / simulation steps
+  std::uint64_t steps = 0;
+};
+
+struct MarkStroke {
+  double dpi = 254.0;
+  double size_mm = 8.0;
+  double length_mm = 50.0;
+  double seconds = 1.0;
+  double spacing_mm = 0.1;
+  float pressure = 0.7f;
+  double load_height_mm = 3.5;  // paint on the head before the stroke
+  int threads = 0;
+};
+
+// Paints the standard stroke with head `head` (from the brushes folder) and `body`.
+MarkFigures measure_mark(const std::string& head, PaintBody body, const MarkStroke& stroke = {});
+
+}  // namespace impasto::paintcore

@@ -1,0 +1,117 @@
+#include "impasto/paintcore/marks_benchmark.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <complex>
+#include <numbers>
+#include <vector>
+
+namespace impasto::paintcore {
+namespace {
+
+// Mean thickness (wet + dry) across the stroke, row by row, over its middle third along x.
+std::vector<double> mean_profile_across(const Canvas& c, int x0, int x1) {
+  std::vector<double> across;
+  for (int y = 0; y < c.height_cells(); ++y) {
+    double sum = 0.0;
+    for (int x = x0; x < x1; ++x) sum += c.wet_volume_mm(x, y) + c.dry_height_mm(x, y);
+    across.push_back(sum / (x1 - x0));
+  }
+  return across;
+}
+
+// The dominant period (in cells) of `band` less its mean, from its discrete Fourier transform.
+double dominant_period_cells(const std::vector<double>& band) {
+  if (band.size() < 6) return 0.0;
+  double mean = 0.0;
+  for (double v : band) mean += v / static_cast<double>(band.size());
+  const auto n = static_cast<double>(band.size());
+  double best_power = 0.0, best_period = 0.0;
+  for (int k = 2; k < static_cast<int>(band.size()) / 2; ++k) {
+    std::complex<double> sum;
+    for (std::size_t i = 0; i < band.size(); ++i)
+      sum += (band[i] - mean) *
+             std::polar(1.0, -2.0 * std::numbers::pi * k * static_cast<double>(i) / n);
+    if (std::norm(sum) > best_power) best_power = std::norm(sum), best_period = n / k;
+  }
+  return best_period;
+}
+
+}  // namespace
+
+MarkFigures measure_mark(const std::string& head_name, PaintBody body, const MarkStroke& stroke) {
+  const double cell_mm = 25.4 / stroke.dpi;
+  const double margin_mm = 1.5 * stroke.size_mm;
+  const CanvasSpec spec{static_cast<int>(std::lround((stroke.length_mm + 2 * margin_mm) / cell_mm)),
+                        static_cast<int>(std::lround(3.0 * stroke.size_mm / cell_mm)), stroke.dpi,
+                        0};
+  Painting painting(spec, stroke.threads);
+  painting.set_brush(BrushSettings{head_name, stroke.size_mm, 0.5});
+  const Brush& brush = painting.brush();
+  MarkFigures f;
+  f.head = head_name;
+  f.body = body;
+  f.size_mm = stroke.size_mm;
+  f.load_mm3 =
+      stroke.load_height_mm * static_cast<double>(brush.covered_cells()) * cell_mm * cell_mm;
+  painting.load_brush({{"white", 1.0}}, f.load_mm3, body);
+
+  const double y = 1.5 * stroke.size_mm;
+  const auto samples = std::max<long>(1, std::lround(stroke.length_mm / stroke.spacing_mm));
+  const auto start = std::chrono::steady_clock::now();
+  painting.begin_stroke();
+  for (long i = 0; i <= samples; ++i) {
+    const double t = static_cast<double>(i) / static_cast<double>(samples);
+    PenSample s;
+    s.time_s = stroke.seconds * t;
+    s.x_mm = margin_mm + stroke.length_mm * t;
+    s.y_mm = y;
+    s.pressure = stroke.pressure;
+    s.buttons = kPenTip | kPenInRange;
+    painting.stroke_to(s);
+  }
+  painting.end_stroke();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  f.steps = painting.steps();
+  f.seconds_per_step = f.steps ? seconds / static_cast<double>(f.steps) : 0.0;
+  f.deposited_share = painting.canvas_totals().volume / painting.loaded_totals().volume;
+  f.thickness = painting.paint_thickness();
+
+  // Across the stroke's middle third: width, edge ridges, furrows.
+  const Canvas& c = painting.canvas();
+  const int x0 = static_cast<int>((margin_mm + stroke.length_mm / 3) / cell_mm);
+  const int x1 = static_cast<int>((margin_mm + 2 * stroke.length_mm / 3) / cell_mm);
+  const std::vector<double> across = mean_profile_across(c, x0, x1);
+  const auto painted = [](double v) { return v > 1e-3; };
+  const auto first = std::find_if(across.begin(), across.end(), painted);
+  const auto last = std::find_if(across.rbegin(), across.rend(), painted);
+  if (first == across.end()) return f;
+  const auto begin = static_cast<std::size_t>(first - across.begin());
+  const std::size_t end = across.size() - static_cast<std::size_t>(last - across.rbegin());
+  f.width_mm = static_cast<double>(end - begin) * cell_mm;
+  const std::size_t third = (end - begin) / 3;
+  std::vector<double> middle(across.begin() + static_cast<std::ptrdiff_t>(begin + third),
+                             across.begin() + static_cast<std::ptrdiff_t>(end - third));
+  std::vector<double> sorted = middle;
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2),
+                   sorted.end());
+  const double middle_median = sorted.empty() ? 0.0 : sorted[sorted.size() / 2];
+  const double edge_crest =
+      std::max(*std::max_element(across.begin() + static_cast<std::ptrdiff_t>(begin),
+                                 across.begin() + static_cast<std::ptrdiff_t>(begin + third)),
+               *std::max_element(across.begin() + static_cast<std::ptrdiff_t>(end - third),
+                                 across.begin() + static_cast<std::ptrdiff_t>(end)));
+  f.edge_ridge_mm = edge_crest - middle_median;
+  // Furrows: the period of the profile over the middle three fifths.
+  const std::size_t fifth = (end - begin) / 5;
+  const std::vector<double> band(across.begin() + static_cast<std::ptrdiff_t>(begin + fifth),
+                                 across.begin() + static_cast<std::ptrdiff_t>(end - fifth));
+  f.furrow_period_mm = dominant_period_cells(band) * cell_mm;
+  f.bristle_spacing_mm =
+      brush.head().bristles.spacing_mm * (1.0 + brush.head().splay * stroke.pressure);
+  return f;
+}
+
+}  // namespace impasto::paintcore
