@@ -51,7 +51,10 @@ class PointerGestures {
 // window together does not read as infinitely fast.
 class SpeedPressure {
  public:
-  void start_stroke() { recent_.clear(), speed_mm_s_ = 0.0; }
+  void start_stroke() {
+    recent_.clear();
+    speed_mm_s_ = 0.0;
+  }
   float at(double x_mm, double y_mm, double time_s);
   double speed_mm_s() const { return speed_mm_s_; }
 
