@@ -23,6 +23,7 @@ struct BenchMarksArgs {
   bool json = false;
   std::vector<std::string> heads;   // empty: every head in the brushes folder
   std::vector<std::string> bodies;  // empty: every body
+  std::vector<std::string> params;  // NAME=VALUE
   paintcore::MarkStroke stroke;
 };
 
@@ -34,7 +35,10 @@ std::vector<std::string> all_heads() {
   return heads;
 }
 
-void run(const BenchMarksArgs& args) {
+void run(BenchMarksArgs args) {
+  for (const std::string& assignment : args.params)
+    paintcore::set_param(args.stroke.params, assignment);
+  paintcore::validate(args.stroke.params);
   const std::vector<std::string> heads = args.heads.empty() ? all_heads() : args.heads;
   std::vector<paintcore::PaintBody> bodies;
   if (args.bodies.empty())
@@ -95,6 +99,8 @@ const CommandRegistrar registrar("bench marks", [](CLI::App& root) {
   cmd->add_option("--spacing", args->stroke.spacing_mm, "Distance between pen samples (mm)")
       ->check(CLI::Range(0.001, 10.0));
   cmd->add_option("--threads", args->stroke.threads, "Threads (0: all cores)");
+  cmd->add_option("--param", args->params,
+                  "Set a paint model constant, NAME=VALUE (docs/simulation.md); repeatable");
   cmd->callback([args] { run(*args); });
 });
 

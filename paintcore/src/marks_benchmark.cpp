@@ -47,14 +47,14 @@ MarkFigures measure_mark(const std::string& head_name, PaintBody body, const Mar
                         static_cast<int>(std::lround(3.0 * stroke.size_mm / cell_mm)), stroke.dpi,
                         0};
   Painting painting(spec, stroke.threads);
+  painting.set_params(stroke.params);
   painting.set_brush(BrushSettings{head_name, stroke.size_mm, 0.5});
   const Brush& brush = painting.brush();
   MarkFigures f;
   f.head = head_name;
   f.body = body;
   f.size_mm = stroke.size_mm;
-  f.load_mm3 =
-      stroke.load_height_mm * static_cast<double>(brush.covered_cells()) * cell_mm * cell_mm;
+  f.load_mm3 = stroke.load_mm3_at_8mm * (stroke.size_mm / 8.0) * (stroke.size_mm / 8.0);
   painting.load_brush({{"white", 1.0}}, f.load_mm3, body);
 
   const double y = 1.5 * stroke.size_mm;

@@ -243,10 +243,7 @@ void PaintingFile::save(const Painting::Impl& p, const std::filesystem::path& fi
   w.put(spec.dpi);
   w.put(spec.weave_seed);
   const SimulationParams& q = p.params;
-  for (double v :
-       {q.deposit_share, q.transfer_length_mm, q.transfer_time_s, q.brush_flow_length_mm, q.plough,
-        q.squeeze_mm_s, q.min_film_mm, q.settle_time_s, q.wet_support, q.drag, q.lift_share})
-    w.put(v);
+  for (const NamedParam& param : simulation_param_fields()) w.put(q.*param.field);
   const int slots = static_cast<int>(p.slots.size());
   w.put(static_cast<std::uint32_t>(slots));
   for (const std::string& name : p.slots) w.put_string(name);
@@ -368,10 +365,8 @@ std::unique_ptr<Painting::Impl> PaintingFile::load(const std::filesystem::path& 
   auto p = std::make_unique<Painting::Impl>(spec, threads);
   SimulationParams& q = p->params;
   if (version >= 3) {
-    for (double* v : {&q.deposit_share, &q.transfer_length_mm, &q.transfer_time_s,
-                      &q.brush_flow_length_mm, &q.plough, &q.squeeze_mm_s, &q.min_film_mm,
-                      &q.settle_time_s, &q.wet_support, &q.drag, &q.lift_share})
-      *v = r.get_finite("params");
+    for (const NamedParam& param : simulation_param_fields())
+      q.*param.field = r.get_finite(std::string("params.") + param.name);
   } else {
     // IMPaSTo's per-step constants: xfer_fraction, equal_paint_cutoff, max_xfer, the two
     // velocity cut-offs and pressure_coeff are dropped; the adhesion film is kept.

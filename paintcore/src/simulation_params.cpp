@@ -7,17 +7,13 @@
 namespace impasto::paintcore {
 namespace {
 
-struct NamedParam {
-  const char* name;
-  double SimulationParams::*field;
-};
-
 // One source for the parameters' names.
 constexpr NamedParam kNamedParams[] = {
     {"deposit_share", &SimulationParams::deposit_share},
     {"transfer_length_mm", &SimulationParams::transfer_length_mm},
     {"transfer_time_s", &SimulationParams::transfer_time_s},
     {"lift_share", &SimulationParams::lift_share},
+    {"tip_film_mm", &SimulationParams::tip_film_mm},
     {"brush_flow_length_mm", &SimulationParams::brush_flow_length_mm},
     {"plough", &SimulationParams::plough},
     {"drag", &SimulationParams::drag},
@@ -28,6 +24,10 @@ constexpr NamedParam kNamedParams[] = {
 };
 
 }  // namespace
+
+std::span<const NamedParam> simulation_param_fields() {
+  return kNamedParams;
+}
 
 void set_param(SimulationParams& params, const std::string& assignment) {
   const auto equals = assignment.find('=');
@@ -69,6 +69,7 @@ void validate(const SimulationParams& p) {
   check(p.lift_share, "lift_share", false);
   if (p.lift_share > 1.0)
     throw std::runtime_error("simulation params: field 'lift_share' must be <= 1");
+  check(p.tip_film_mm, "tip_film_mm", true);
   check(p.transfer_length_mm, "transfer_length_mm", true);
   check(p.transfer_time_s, "transfer_time_s", true);
   check(p.brush_flow_length_mm, "brush_flow_length_mm", true);

@@ -215,9 +215,12 @@ void Stepper::transfer_rows(const StepInputs& in, int r0, int r1) {
       const float reach = pen[x] + on_brush;
       const float a_c =
           reach >= wet[x] ? (wet[x] > 0.0f ? new_wet[x] : 0.0f) : new_wet[x] * (reach / wet[x]);
-      // a_b: this cell's share of the paint on the brush cell it touches.
+      // a_b: this cell's share of the paint on the brush cell it touches, as far as the tips
+      // present it: the rest waits in the bundle's belly (a loaded brush lays an even stroke
+      // until it runs dry, rather than dumping its load at the start).
       const std::int32_t sharing = touches ? share[b] : 1;
-      const float a_b = sharing == 1 ? on_brush : on_brush / static_cast<float>(sharing);
+      const float a_b = std::min(sharing == 1 ? on_brush : on_brush / static_cast<float>(sharing),
+                                 in.tip_film_mm);
       // The film split (transfer.hpp); exactly 0 where nothing touches.
       const float amount =
           touches ? brush_transfer_amount(a_c, a_b, in.relax, in.deposit_share) : 0.0f;
@@ -416,6 +419,7 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   in.min_film_mm = static_cast<float>(params.min_film_mm);
   in.relax = static_cast<float>(transfer_relaxation(distance_mm, seconds, params));
   in.deposit_share = static_cast<float>(params.deposit_share);
+  in.tip_film_mm = static_cast<float>(params.tip_film_mm);
   if (lift_off) {
     // The brush leaves the paint: the film between bristles and canvas breaks in its
     // middle, at once (no motion, no squeeze).

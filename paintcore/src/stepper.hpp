@@ -56,6 +56,7 @@ class Stepper {
     float min_film_mm;
     float relax;          // how far this step goes toward the film split (transfer.hpp)
     float deposit_share;  // the canvas's share of the joint film
+    float tip_film_mm;    // most paint a brush cell's tips present to the canvas
     // Each brush cell touches at most one canvas cell: rows may update the brush themselves.
     bool brush_cells_unique;
   };

@@ -2,6 +2,7 @@
 // file (since version 2): round trip, older files, bad records named by file and field.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -15,8 +16,8 @@ namespace {
 
 constexpr std::size_t kHeaderBytes = 8 + 4 + 8;  // magic, version, payload size
 constexpr std::uint32_t kVersion = 3;            // what save() writes
-// Version 3's payload: the canvas spec (24 bytes), 11 f64 parameters where older versions
-// had 7, and after the cracks section the brush's body and bristles (u8 + 4 f64).
+// Version 3's payload: the canvas spec (24 bytes), the f64 parameters (7 in older versions), and
+// after the cracks section the brush's body and bristles (u8 + 4 f64).
 constexpr std::size_t kParamsOffset = 4 + 4 + 8 + 8;
 constexpr std::size_t kBrushExtrasBytes = 1 + 4 * 8;
 // Bytes of a cracks section holding one tile with one crack cell.
@@ -63,12 +64,17 @@ class CrackFileTest : public ::testing::Test {
   // A version-2 payload from a version-3 one of a painting with a brush: IMPaSTo's seven
   // parameters (any valid values, the adhesion film kept) and no brush extras at the end.
   static std::vector<unsigned char> as_version_two(std::vector<unsigned char> payload) {
+    const auto fields = simulation_param_fields();
+    const auto film = std::find_if(fields.begin(), fields.end(), [](const NamedParam& f) {
+      return std::string(f.name) == "min_film_mm";
+    });
     double min_film = 0.0;
-    std::memcpy(&min_film, payload.data() + kParamsOffset + 6 * 8, 8);
+    std::memcpy(&min_film, payload.data() + kParamsOffset + 8 * (film - fields.begin()), 8);
     std::vector<unsigned char> old(7 * 8);
     const double values[7] = {0.1, 1.0 / 30, 0.001, 0.2, 0.3, 0.5, min_film};
     std::memcpy(old.data(), values, sizeof values);
-    payload.erase(payload.begin() + kParamsOffset, payload.begin() + kParamsOffset + 11 * 8);
+    payload.erase(payload.begin() + kParamsOffset,
+                  payload.begin() + kParamsOffset + static_cast<std::ptrdiff_t>(8 * fields.size()));
     payload.insert(payload.begin() + kParamsOffset, old.begin(), old.end());
     payload.resize(payload.size() - kBrushExtrasBytes);
     return payload;

@@ -1,8 +1,9 @@
 #pragma once
 // What one standard stroke leaves, for each head and paint body: the figures of
-// `impasto bench marks` (docs/marks.md). The stroke: a head of `size_mm` loaded with 3.5 mm
-// of paint over its covered cells (200 mm^3 for the 8 mm round), drawn 50 mm along +x at
-// pressure 0.7 in one second, sampled every 0.1 mm, on a flat canvas.
+// `impasto bench marks` (docs/marks.md). The stroke: a head of `size_mm` loaded with
+// 200 mm^3 x (size / 8 mm)^2 of paint (a brush holds paint by its width, whatever its
+// footprint), drawn 50 mm along +x at pressure 0.7 in one second, sampled every 0.1 mm, on
+// a flat canvas.
 #include <string>
 
 #include "impasto/paintcore/paint_body.hpp"
@@ -32,8 +33,9 @@ struct MarkStroke {
   double seconds = 1.0;
   double spacing_mm = 0.1;
   float pressure = 0.7f;
-  double load_height_mm = 3.5;  // paint on the head before the stroke
+  double load_mm3_at_8mm = 200.0;  // the load of an 8 mm head, scaled by the size squared
   int threads = 0;
+  SimulationParams params;
 };
 
 // Paints the standard stroke with head `head` (from the brushes folder) and `body`.

@@ -3,6 +3,7 @@
 // stroke leaves depends neither on how densely the pen is sampled nor on the canvas
 // resolution. Paint heights are in mm. docs/simulation.md derives each rule.
 
+#include <span>
 #include <string>
 
 namespace impasto::paintcore {
@@ -17,7 +18,10 @@ struct SimulationParams {
   double transfer_time_s = 0.25;
   // Where the brush lifts, the film between bristles and canvas breaks in its middle: the
   // canvas keeps this share of it (a pile where a stroke ends).
-  double lift_share = 0.5;            // time over which a still brush reaches it (1/e)
+  double lift_share = 0.5;
+  // The bristle tips present at most this film (mm) of the brush's paint to the split; the
+  // rest is held in the bundle and flows down as the tips give theirs away.
+  double tip_film_mm = 2.5;           // time over which a still brush reaches it (1/e)
   double brush_flow_length_mm = 4.0;  // paint in the bristles evens out over this distance
   // Squeeze: paint flows down the slope of the brush's penetration (mm/mm) by
   // plough (mm per mm travelled) plus squeeze_mm_s (mm per second pressed).
@@ -39,6 +43,13 @@ struct SimulationParams {
 
 // Throws std::runtime_error naming the field when a parameter is out of range or not finite.
 void validate(const SimulationParams& params);
+
+// Every parameter with its name, in a fixed order (the painting file's): the one list of them.
+struct NamedParam {
+  const char* name;
+  double SimulationParams::*field;
+};
+std::span<const NamedParam> simulation_param_fields();
 
 // The parameters by name, for command lines and settings files: sets `name` from "NAME=VALUE"
 // text; throws naming the field (and listing the known names) when it can't. Does not validate.
