@@ -50,6 +50,7 @@ Brush::Brush(BrushHead head, BrushSettings settings, double cell_mm, int slot_co
     covers_[static_cast<std::size_t>(cells_ / 2) * cells_ + cells_ / 2] = 1;
     covered_ = 1;
   }
+  rim_mm_ = *std::max_element(footprint_mm_.begin(), footprint_mm_.end());
   volume_mm_.assign(cell_count(), 0.0f);
   ensure_slots(slot_count);
 }

@@ -38,6 +38,7 @@ void Stepper::resize(int slot_count, std::size_t brush_cells) {
   if (new_pigment_.size() < n * slots) new_pigment_.resize(n * slots);
   if (brush_cell_.size() < cells) brush_cell_.resize(cells);
   if (xfer_.size() < cells) xfer_.resize(cells);
+  if (contact_weight_.size() < cells) contact_weight_.resize(cells);
   if (xfer_ratio_.size() < cells) xfer_ratio_.resize(cells);
   if (xfer_pigment_.size() < cells * slots) xfer_pigment_.resize(cells * slots);
   brush_share_.assign(brush_cells, 0);
@@ -128,9 +129,27 @@ void Stepper::penetrate_rows(const StepInputs& in, int r0, int r1) {
     const float* ground = ground_.data() + row;
     const float* wet = wet_.data() + row;
     std::int32_t* cell = brush_cell_.data() + static_cast<std::size_t>(y) * w.width;
+    float* weight = contact_weight_.data() + static_cast<std::size_t>(y) * w.width;
     for (int x = 0; x < w.width; ++x, bx += step_x, by += step_y) {
       pen[x] = 0.0f;
       cell[x] = -1;
+      weight[x] = 0.0f;
+      // The head between brush cell centres: coverage and underside interpolated bilinearly,
+      // so that a sharp edge (a flat, a knife) moves smoothly across the canvas cells rather
+      // than jumping a cell at a time (which printed a step pattern).
+      const double u = bx - 0.5, v = by - 0.5;
+      if (!(u > -1.0 && v > -1.0 && u < n_limit && v < n_limit)) continue;
+      const int i0 = static_cast<int>(std::floor(u)), j0 = static_cast<int>(std::floor(v));
+      const auto fx = static_cast<float>(u - i0), fy = static_cast<float>(v - j0);
+      float coverage = 0.0f, underside = 0.0f;
+      for (int k = 0; k < 4; ++k) {
+        const int i = i0 + (k & 1), j = j0 + (k >> 1);
+        const float share = ((k & 1) ? fx : 1.0f - fx) * ((k >> 1) ? fy : 1.0f - fy);
+        const bool inside = i >= 0 && j >= 0 && i < n && j < n;
+        const std::size_t c = inside ? static_cast<std::size_t>(j) * n + i : 0;
+        coverage += inside && covers[c] ? share : 0.0f;
+        underside += share * (inside ? footprint[c] : in.rim_mm);
+      }
       // (Tested before the cast, which truncates towards zero.)
       if (!(bx >= 0.0 && by >= 0.0 && bx < n_limit && by < n_limit)) continue;
       const std::int32_t b = static_cast<int>(by) * n + static_cast<int>(bx);
@@ -138,10 +157,12 @@ void Stepper::penetrate_rows(const StepInputs& in, int r0, int r1) {
       // The head presses where its underside is below the paint surface; the paint hanging
       // under the bristles touches before that (a loaded brush lays a broad mark, a dry one
       // skips).
-      const float penetration = ground[x] + wet[x] - (in.tip_mm + footprint[b]);
+      const float penetration = ground[x] + wet[x] - (in.tip_mm + underside);
       if (penetration + brush_paint[b] > 0.0f) {
         pen[x] = std::max(penetration, 0.0f);
         cell[x] = b;
+        // The head moves the paint in full from half a cell inside its edge.
+        weight[x] = std::clamp(2.0f * coverage - 1.0f, 0.0f, 1.0f);
         ++contacts;
       }
     }
@@ -156,8 +177,8 @@ void Stepper::velocity_rows(const StepInputs& in, int r0, int r1) {
   for (int y = r0; y < r1; ++y) {
     const std::ptrdiff_t row = (y + 1) * s + 1;
     const float* __restrict pen = pen_.data() + row;
-    const std::int32_t* __restrict cell =
-        brush_cell_.data() + static_cast<std::ptrdiff_t>(y) * w.width;
+    const float* __restrict weight =
+        contact_weight_.data() + static_cast<std::ptrdiff_t>(y) * w.width;
     float* __restrict vx = vx_.data() + row;
     float* __restrict vy = vy_.data() + row;
     const float* __restrict wet = wet_.data() + row;
@@ -167,13 +188,12 @@ void Stepper::velocity_rows(const StepInputs& in, int r0, int r1) {
     // per step, or thick paint would overshoot into spikes. Well below that limit it is c,
     // so many small steps squeeze as much as one large one.
     for (int x = 0; x < w.width; ++x) {
-      const bool touches = cell[x] >= 0;
       const float h = std::max(wet[x], kSqueezeMinFilmMm);
       const float reach = in.gradient_scale / (1.0f + 8.0f * h * in.gradient_scale);
       const float ux = in.brush_vx - reach * (pen[x + 1] - pen[x - 1]);
       const float uy = in.brush_vy - reach * (pen[x + s] - pen[x - s]);
-      vx[x] = touches ? std::min(std::max(ux, -1.0f), 1.0f) : 0.0f;
-      vy[x] = touches ? std::min(std::max(uy, -1.0f), 1.0f) : 0.0f;
+      vx[x] = weight[x] * std::min(std::max(ux, -1.0f), 1.0f);
+      vy[x] = weight[x] * std::min(std::max(uy, -1.0f), 1.0f);
     }
     // Cells beyond the canvas do not exist: paint at the edge cannot leave.
     if (w.x0 == 0) vx[0] = std::max(vx[0], 0.0f);
@@ -420,6 +440,7 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   in.relax = static_cast<float>(transfer_relaxation(distance_mm, seconds, params));
   in.deposit_share = static_cast<float>(params.deposit_share);
   in.tip_film_mm = static_cast<float>(params.tip_film_mm);
+  in.rim_mm = brush.rim_mm();
   if (lift_off) {
     // The brush leaves the paint: the film between bristles and canvas breaks in its
     // middle, at once (no motion, no squeeze).

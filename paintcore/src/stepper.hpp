@@ -57,6 +57,7 @@ class Stepper {
     float relax;          // how far this step goes toward the film split (transfer.hpp)
     float deposit_share;  // the canvas's share of the joint film
     float tip_film_mm;    // most paint a brush cell's tips present to the canvas
+    float rim_mm;         // the head's underside beyond its grid (its highest point)
     // Each brush cell touches at most one canvas cell: rows may update the brush themselves.
     bool brush_cells_unique;
   };
@@ -81,6 +82,7 @@ class Stepper {
   // Unpadded per-cell data of the transfer.
   std::vector<std::int32_t> brush_cell_;   // brush cell touching each window cell, or -1
   std::vector<float> xfer_;                // paint height moved brush -> canvas (signed)
+  std::vector<float> contact_weight_;      // how fully the head moves each cell's paint, 0..1
   std::vector<float> xfer_ratio_;          // xfer_ / the source's paint height
   std::vector<float> xfer_pigment_;        // pigment moved brush -> canvas, slot-major
   std::vector<std::int32_t> brush_share_;  // canvas cells touching each brush cell

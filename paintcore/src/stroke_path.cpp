@@ -1,5 +1,6 @@
 #include "stroke_path.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -23,6 +24,7 @@ StrokeSegment::StrokeSegment(std::array<double, 2> from, std::array<double, 2> t
   // A tangent turned back more than a right angle from the chord (a cusp in the samples)
   // would loop: draw the chord instead.
   if (along <= 0.0) m0_ = m1_ = {cx, cy};
+  straight_ = m0_ == m1_;
 }
 
 std::array<double, 2> StrokeSegment::at(double t) const {
@@ -43,6 +45,19 @@ double StrokeSegment::length() const {
     last = next;
   }
   return total;
+}
+
+double StrokeSegment::max_speed() const {
+  constexpr int kChords = 32;
+  if (straight_) return std::hypot(p1_[0] - p0_[0], p1_[1] - p0_[1]);
+  double fastest = 0.0;
+  std::array<double, 2> last = p0_;
+  for (int k = 1; k <= kChords; ++k) {
+    const auto next = at(static_cast<double>(k) / kChords);
+    fastest = std::max(fastest, std::hypot(next[0] - last[0], next[1] - last[1]) * kChords);
+    last = next;
+  }
+  return 1.02 * fastest;
 }
 
 double heading_for_travel(double travel_rad) {

@@ -16,9 +16,14 @@ class StrokeSegment {
                 const std::array<double, 2>* before);
   std::array<double, 2> at(double t) const;  // t in [0, 1]
   double length() const;                     // arc length, from 32 chords
+  // The most the point moves per unit of t (the longest of 32 chords, times 32, with a 2 %
+  // margin on a curve for the speed's variation within a chord): at least length(), and
+  // exactly it on a straight segment.
+  double max_speed() const;
 
  private:
   std::array<double, 2> p0_, p1_, m0_, m1_;
+  bool straight_ = true;
 };
 
 // The heading (radians) of a head that trails the hand: after moving distance d along

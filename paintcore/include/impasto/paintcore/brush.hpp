@@ -36,6 +36,7 @@ class Brush {
   // Height of the head's underside above its tip (mm) and whether the head covers a cell.
   const std::vector<float>& footprint_mm() const { return footprint_mm_; }
   const std::vector<std::uint8_t>& covers() const { return covers_; }
+  float rim_mm() const { return rim_mm_; }  // the underside's highest point
   std::size_t covered_cells() const { return covered_; }
   // Penetration depth (mm) below the paint surface at pressure 1; softer heads sink deeper.
   double max_depth_mm() const;
@@ -61,6 +62,7 @@ class Brush {
   std::size_t covered_ = 0;
   std::vector<float> footprint_mm_;
   std::vector<std::uint8_t> covers_;
+  float rim_mm_ = 0.0f;
   std::vector<float> volume_mm_;
   std::vector<float> pigment_mm_;
   PaintBody body_ = kDefaultPaintBody;
