@@ -51,6 +51,17 @@ Brush::Brush(BrushHead head, BrushSettings settings, double cell_mm, int slot_co
     covered_ = 1;
   }
   rim_mm_ = *std::max_element(footprint_mm_.begin(), footprint_mm_.end());
+  const auto padded = static_cast<std::size_t>(cells_ + 2);
+  padded_footprint_mm_.assign(padded * padded, rim_mm_);
+  padded_coverage_.assign(padded * padded, 0.0f);
+  for (int j = 0; j < cells_; ++j)
+    for (int i = 0; i < cells_; ++i) {
+      const std::size_t k = static_cast<std::size_t>(j) * cells_ + i;
+      const std::size_t p =
+          static_cast<std::size_t>(j + 1) * padded + static_cast<std::size_t>(i + 1);
+      padded_footprint_mm_[p] = footprint_mm_[k];
+      padded_coverage_[p] = covers_[k] ? 1.0f : 0.0f;
+    }
   volume_mm_.assign(cell_count(), 0.0f);
   ensure_slots(slot_count);
 }

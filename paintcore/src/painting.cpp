@@ -190,6 +190,7 @@ void Painting::end_stroke() {
   p.in_stroke = false;
   p.last_pose.reset();
   p.pose_before_last.reset();
+  p.stepper.finish_stroke(p.brush, slot_count(), p.params);
   if (!p.stroke_touched) {
     p.history.discard();  // nothing changed: nothing to undo
     return;

@@ -10,6 +10,8 @@ namespace impasto::paintcore {
 namespace {
 
 constexpr std::size_t kBaseCacheTiles = 256;
+// The bristles even out once per this distance travelled (mm), not every step.
+constexpr double kBrushFlowBatchMm = 0.5;
 // Below this film (mm) the squeeze's limit no longer grows: a film that thin barely moves.
 constexpr float kSqueezeMinFilmMm = 0.01f;
 
@@ -114,10 +116,11 @@ void Stepper::gather_rows(const StepInputs& in, int r0, int r1) {
 void Stepper::penetrate_rows(const StepInputs& in, int r0, int r1) {
   const Window& w = win_;
   const int n = in.brush->cells_across();
-  const double n_limit = n;
-  const float* footprint = in.brush->footprint_mm().data();
+  const float* padded_footprint = in.brush->padded_footprint_mm().data();
+  const float* padded_coverage = in.brush->padded_coverage().data();
+  const std::size_t padded = static_cast<std::size_t>(n) + 2;
+  const auto padded_limit = static_cast<float>(n) + 1.0f;
   const float* brush_paint = in.brush->volume_mm().data();
-  const std::uint8_t* covers = in.brush->covers().data();
   for (int y = r0; y < r1; ++y) {
     int contacts = 0;
     // Brush coordinates are affine in x: start at the row's first cell centre and step.
@@ -136,35 +139,38 @@ void Stepper::penetrate_rows(const StepInputs& in, int r0, int r1) {
       weight[x] = 0.0f;
       // The head between brush cell centres: coverage and underside interpolated bilinearly,
       // so that a sharp edge (a flat, a knife) moves smoothly across the canvas cells rather
-      // than jumping a cell at a time (which printed a step pattern).
-      const double u = bx - 0.5, v = by - 0.5;
-      if (!(u > -1.0 && v > -1.0 && u < n_limit && v < n_limit)) continue;
-      const int i0 = static_cast<int>(std::floor(u)), j0 = static_cast<int>(std::floor(v));
-      const auto fx = static_cast<float>(u - i0), fy = static_cast<float>(v - j0);
-      float coverage = 0.0f, underside = 0.0f;
-      for (int k = 0; k < 4; ++k) {
-        const int i = i0 + (k & 1), j = j0 + (k >> 1);
-        const float share = ((k & 1) ? fx : 1.0f - fx) * ((k >> 1) ? fy : 1.0f - fy);
-        const bool inside = i >= 0 && j >= 0 && i < n && j < n;
-        const std::size_t c = inside ? static_cast<std::size_t>(j) * n + i : 0;
-        coverage += inside && covers[c] ? share : 0.0f;
-        underside += share * (inside ? footprint[c] : in.rim_mm);
-      }
-      // (Tested before the cast, which truncates towards zero.)
-      if (!(bx >= 0.0 && by >= 0.0 && bx < n_limit && by < n_limit)) continue;
-      const std::int32_t b = static_cast<int>(by) * n + static_cast<int>(bx);
-      if (!covers[b]) continue;
+      // than jumping a cell at a time (which printed a step pattern). On the padded grid the
+      // four cells around (u, v) always exist.
+      const auto u = static_cast<float>(bx + 0.5), v = static_cast<float>(by + 0.5);
+      if (!(u >= 0.0f && v >= 0.0f && u < padded_limit && v < padded_limit)) continue;
+      const int i0 = static_cast<int>(u), j0 = static_cast<int>(v);
+      const float fx = u - static_cast<float>(i0), fy = v - static_cast<float>(j0);
+      const std::size_t p = static_cast<std::size_t>(j0) * padded + static_cast<std::size_t>(i0);
+      const float w00 = (1.0f - fx) * (1.0f - fy), w10 = fx * (1.0f - fy);
+      const float w01 = (1.0f - fx) * fy, w11 = fx * fy;
+      const float coverage = w00 * padded_coverage[p] + w10 * padded_coverage[p + 1] +
+                             w01 * padded_coverage[p + padded] +
+                             w11 * padded_coverage[p + padded + 1];
+      const float underside = w00 * padded_footprint[p] + w10 * padded_footprint[p + 1] +
+                              w01 * padded_footprint[p + padded] +
+                              w11 * padded_footprint[p + padded + 1];
+      // The nearest brush cell (its padded index: the padding covers nothing) holds the paint
+      // this canvas cell exchanges. (u + 0.5 >= 0.5: the cast truncates as floor would.)
+      const int in_n = static_cast<int>(u + 0.5f), jn = static_cast<int>(v + 0.5f);
+      const bool covered =
+          padded_coverage[static_cast<std::size_t>(jn) * padded + static_cast<std::size_t>(in_n)] >
+          0.0f;
+      const std::int32_t b = covered ? (jn - 1) * n + (in_n - 1) : 0;
       // The head presses where its underside is below the paint surface; the paint hanging
       // under the bristles touches before that (a loaded brush lays a broad mark, a dry one
       // skips).
       const float penetration = ground[x] + wet[x] - (in.tip_mm + underside);
-      if (penetration + brush_paint[b] > 0.0f) {
-        pen[x] = std::max(penetration, 0.0f);
-        cell[x] = b;
-        // The head moves the paint in full from half a cell inside its edge.
-        weight[x] = std::clamp(2.0f * coverage - 1.0f, 0.0f, 1.0f);
-        ++contacts;
-      }
+      const bool touches = covered && penetration + brush_paint[b] > 0.0f;
+      pen[x] = touches ? std::max(penetration, 0.0f) : 0.0f;
+      cell[x] = touches ? b : -1;
+      // The head moves the paint in full from half a cell inside its edge.
+      weight[x] = touches ? std::clamp(2.0f * coverage - 1.0f, 0.0f, 1.0f) : 0.0f;
+      contacts += touches;
     }
     row_contacts_[static_cast<std::size_t>(y)] = contacts;
   }
@@ -310,6 +316,13 @@ void Stepper::even_out_brush(Brush& brush, int slot_count, double share) {
     even_out(brush.pigment_mm().data() + static_cast<std::size_t>(s) * cells);
 }
 
+void Stepper::finish_stroke(Brush& brush, int slot_count, const SimulationParams& params) {
+  if (brush_flow_pending_mm_ > 0.0 && !brush.empty())
+    even_out_brush(brush, slot_count,
+                   -std::expm1(-brush_flow_pending_mm_ / params.brush_flow_length_mm));
+  brush_flow_pending_mm_ = 0.0;
+}
+
 double Stepper::max_step_seconds(const SimulationParams& params, double cell_mm) {
   return params.squeeze_mm_s > 0.0 ? 0.5 * cell_mm / params.squeeze_mm_s : 1e300;
 }
@@ -440,7 +453,6 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   in.relax = static_cast<float>(transfer_relaxation(distance_mm, seconds, params));
   in.deposit_share = static_cast<float>(params.deposit_share);
   in.tip_film_mm = static_cast<float>(params.tip_film_mm);
-  in.rim_mm = brush.rim_mm();
   if (lift_off) {
     // The brush leaves the paint: the film between bristles and canvas breaks in its
     // middle, at once (no motion, no squeeze).
@@ -493,9 +505,10 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
                         static_cast<std::size_t>(r1) * cols);
   });
   if (transfers && !in.brush_cells_unique) transfer_to_brush(brush, slot_count, 0, cells);
-  // Paint in the bristles flows toward the tips that gave theirs away.
-  if (distance_mm > 0.0)
-    even_out_brush(brush, slot_count, -std::expm1(-distance_mm / params.brush_flow_length_mm));
+  // Paint in the bristles flows toward the tips that gave theirs away: over every
+  // kBrushFlowBatchMm travelled at once (the relaxation composes over distance).
+  brush_flow_pending_mm_ += distance_mm;
+  if (brush_flow_pending_mm_ >= kBrushFlowBatchMm) finish_stroke(brush, slot_count, params);
 
   scatter(canvas, slot_count, before_change);
   last_window_cells_ = cells;

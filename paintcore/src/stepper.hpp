@@ -36,6 +36,10 @@ class Stepper {
 
   std::size_t last_window_cells() const { return last_window_cells_; }
 
+  // Applies what is still pending of the bristles' evening out; call when a stroke ends (and
+  // so before anything else touches the brush).
+  void finish_stroke(Brush& brush, int slot_count, const SimulationParams& params);
+
  private:
   struct Window {
     int x0 = 0, y0 = 0, width = 0, height = 0;  // canvas cells
@@ -57,7 +61,6 @@ class Stepper {
     float relax;          // how far this step goes toward the film split (transfer.hpp)
     float deposit_share;  // the canvas's share of the joint film
     float tip_film_mm;    // most paint a brush cell's tips present to the canvas
-    float rim_mm;         // the head's underside beyond its grid (its highest point)
     // Each brush cell touches at most one canvas cell: rows may update the brush themselves.
     bool brush_cells_unique;
   };
@@ -75,6 +78,7 @@ class Stepper {
   void scatter(Canvas& canvas, int slot_count, const BeforeTileChange& before_change);
 
   Window win_;
+  double brush_flow_pending_mm_ = 0.0;  // distance travelled since the bristles last evened out
   std::size_t last_window_cells_ = 0;
   // Padded window grids (see advection.hpp for the layout).
   std::vector<float> ground_, wet_, pen_, vx_, vy_, new_wet_;

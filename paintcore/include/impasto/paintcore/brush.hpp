@@ -37,6 +37,10 @@ class Brush {
   const std::vector<float>& footprint_mm() const { return footprint_mm_; }
   const std::vector<std::uint8_t>& covers() const { return covers_; }
   float rim_mm() const { return rim_mm_; }  // the underside's highest point
+  // The footprint and coverage (0 or 1) on a grid padded by one cell all round (the rim's
+  // height and 0 there), (N + 2)^2 row-major: interpolation between cells needs no checks.
+  const std::vector<float>& padded_footprint_mm() const { return padded_footprint_mm_; }
+  const std::vector<float>& padded_coverage() const { return padded_coverage_; }
   std::size_t covered_cells() const { return covered_; }
   // Penetration depth (mm) below the paint surface at pressure 1; softer heads sink deeper.
   double max_depth_mm() const;
@@ -63,6 +67,7 @@ class Brush {
   std::vector<float> footprint_mm_;
   std::vector<std::uint8_t> covers_;
   float rim_mm_ = 0.0f;
+  std::vector<float> padded_footprint_mm_, padded_coverage_;
   std::vector<float> volume_mm_;
   std::vector<float> pigment_mm_;
   PaintBody body_ = kDefaultPaintBody;
