@@ -29,8 +29,12 @@ Brush::Brush(BrushHead head, BrushSettings settings, double cell_mm, int slot_co
   // Bristle relief never exceeds a tenth of the half width: a hair-fine head has no furrows
   // deeper than itself.
   const double bristle_depth = head_.bristles.depth_mm * (1.0 + head_.bristles.jitter);
-  const double bristle_scale =
+  double bristle_scale =
       bristle_depth > 0.0 ? std::min(1.0, 0.1 * half_size_mm / bristle_depth) : 1.0;
+  // Nor do bristles finer than the grid can show: their relief fades from 4 cells a column
+  // down to 2 (the Nyquist limit), where it would only alias into a moire.
+  const double columns_cells = head_.bristles.spacing_mm / cell_mm;
+  bristle_scale *= std::clamp((columns_cells - 2.0) / 2.0, 0.0, 1.0);
   footprint_mm_.assign(cell_count(), 0.0f);
   covers_.assign(cell_count(), 0);
   for (int j = 0; j < cells_; ++j)

@@ -22,7 +22,9 @@ double levelling_flow_mm(double h, double drop, double cell_mm, double seconds,
   // The drop the yield stress still holds at this depth; only the rest may level.
   const double held = body.yield_stress_pa / (kPaintWeightPaPerMm * h) * cell_mm;
   const double excess = std::max(drop - held, 0.0);
-  return std::min({flux_mm2_s * seconds / cell_mm, 0.25 * excess, 0.25 * h});
+  // An eighth of the drop per face: a cell higher than all four neighbours by d loses at
+  // most d / 2 and lands level with them (a quarter would flip a checkerboard for ever).
+  return std::min({flux_mm2_s * seconds / cell_mm, 0.125 * excess, 0.25 * h});
 }
 
 LevellingReport settle_wet_paint(Canvas& canvas, const std::vector<int>& tiles, int slot_count,

@@ -23,8 +23,8 @@ LevellingReport settle_wet_paint(Canvas& canvas, const std::vector<int>& tiles, 
 // The height (mm of paint) that crosses one face in `seconds`, from a cell holding h mm of wet
 // paint whose surface stands `drop` mm above its neighbour's, `cell_mm` apart: Bingham film
 // flux rho g S (h - h_y)^2 (2h + h_y) / (6 mu), h_y = tau_y / (rho g S), none where the
-// yield stress holds the slope. Capped to a quarter of what the yield slope allows to move,
-// so that four faces together never overshoot.
+// yield stress holds the slope. Capped to an eighth of the drop the yield slope does not hold
+// (and a quarter of the paint), so that four faces together never overshoot.
 double levelling_flow_mm(double h, double drop, double cell_mm, double seconds,
                          const PaintBodyInfo& body);
 

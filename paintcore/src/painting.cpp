@@ -180,6 +180,8 @@ void Painting::begin_stroke() {
   p.pose_before_last.reset();
   p.stroke_has_twist = false;
   p.heading_rad.reset();
+  p.heading_settled = false;
+  p.stroke_origin.reset();
   p.stroke_tiles.clear();
   p.last_contact.reset();
 }
@@ -328,11 +330,17 @@ void Painting::stroke_to(const PenSample& sample) {
       pose.y_cells = here[1];
       const double moved = std::hypot(move_x, move_y);
       if (follows) {
-        if (moved > 0.0) {
-          const double travel = std::atan2(move_y, move_x);
-          p.heading_rad = p.heading_rad
-                              ? follow_heading(*p.heading_rad, travel, moved, follow_cells)
-                              : heading_for_travel(travel);
+        // Until the brush has left its first spot by a tenth of its size it faces the way it
+        // has gone so far (a first jitter must not set it); then it trails the hand.
+        if (!p.stroke_origin) p.stroke_origin = {from.x_cells, from.y_cells};
+        const double away_x = here[0] - (*p.stroke_origin)[0];
+        const double away_y = here[1] - (*p.stroke_origin)[1];
+        if (p.heading_settled && moved > 0.0) {
+          p.heading_rad =
+              follow_heading(*p.heading_rad, std::atan2(move_y, move_x), moved, follow_cells);
+        } else if (!p.heading_settled && (away_x != 0.0 || away_y != 0.0)) {
+          p.heading_rad = heading_for_travel(std::atan2(away_y, away_x));
+          p.heading_settled = std::hypot(away_x, away_y) >= 0.1 * follow_cells;
         }
         pose.twist_rad = p.heading_rad.value_or(0.0);
       }

@@ -2,6 +2,7 @@
 // The state behind a Painting (shared by painting.cpp and painting_file.cpp).
 #include <tbb/task_arena.h>
 
+#include <array>
 #include <optional>
 
 #include "impasto/paintcore/brush_pose.hpp"
@@ -39,6 +40,8 @@ struct Painting::Impl {
   // A brush that follows the hand: its heading when the pen reports no twist.
   bool stroke_has_twist = false;
   std::optional<double> heading_rad;
+  bool heading_settled = false;                        // it now trails the hand
+  std::optional<std::array<double, 2>> stroke_origin;  // where the stroke began (cells)
   std::optional<BrushPose> last_contact;  // where the brush last touched paint: it lifts there
   std::vector<int> stroke_tiles;          // tiles the stroke changed: where its paint levels
 };

@@ -12,8 +12,6 @@ namespace {
 constexpr std::size_t kBaseCacheTiles = 256;
 // The bristles even out once per this distance travelled (mm), not every step.
 constexpr double kBrushFlowBatchMm = 0.5;
-// Below this film (mm) the squeeze's limit no longer grows: a film that thin barely moves.
-constexpr float kSqueezeMinFilmMm = 0.01f;
 
 // Sets the one-cell border of a padded grid to zero.
 void zero_border(float* grid, int width, int height) {
@@ -41,6 +39,8 @@ void Stepper::resize(int slot_count, std::size_t brush_cells) {
   if (brush_cell_.size() < cells) brush_cell_.resize(cells);
   if (xfer_.size() < cells) xfer_.resize(cells);
   if (contact_weight_.size() < cells) contact_weight_.resize(cells);
+  if (face_east_.size() < cells) face_east_.resize(cells);
+  if (face_south_.size() < cells) face_south_.resize(cells);
   if (xfer_ratio_.size() < cells) xfer_ratio_.resize(cells);
   if (xfer_pigment_.size() < cells * slots) xfer_pigment_.resize(cells * slots);
   brush_share_.assign(brush_cells, 0);
@@ -165,7 +165,8 @@ void Stepper::penetrate_rows(const StepInputs& in, int r0, int r1) {
       // under the bristles touches before that (a loaded brush lays a broad mark, a dry one
       // skips).
       const float penetration = ground[x] + wet[x] - (in.tip_mm + underside);
-      const bool touches = covered && penetration + brush_paint[b] > 0.0f;
+      // Where the brush lifts, the film spans the whole head, bristle gaps and all.
+      const bool touches = covered && (in.lift_off || penetration + brush_paint[b] > 0.0f);
       pen[x] = touches ? std::max(penetration, 0.0f) : 0.0f;
       cell[x] = touches ? b : -1;
       // The head moves the paint in full from half a cell inside its edge.
@@ -182,24 +183,15 @@ void Stepper::velocity_rows(const StepInputs& in, int r0, int r1) {
   const int last_x = in.canvas->width_cells() - 1, last_y = in.canvas->height_cells() - 1;
   for (int y = r0; y < r1; ++y) {
     const std::ptrdiff_t row = (y + 1) * s + 1;
-    const float* __restrict pen = pen_.data() + row;
     const float* __restrict weight =
         contact_weight_.data() + static_cast<std::ptrdiff_t>(y) * w.width;
     float* __restrict vx = vx_.data() + row;
     float* __restrict vy = vy_.data() + row;
-    const float* __restrict wet = wet_.data() + row;
-    // v = drag * brush motion - c grad p under the brush, 0 elsewhere (branch-free:
-    // vectorises). The squeeze is a diffusion of the paint down its penetration, flux = h v:
-    // its coefficient saturates, c / (1 + 8 h c), at an eighth of the penetration difference
-    // per step, or thick paint would overshoot into spikes. Well below that limit it is c,
-    // so many small steps squeeze as much as one large one.
+    // v = drag * brush motion under the head, weighted by how fully it covers the cell
+    // (branch-free: vectorises). The squeeze is a separate pass (squeeze_rows).
     for (int x = 0; x < w.width; ++x) {
-      const float h = std::max(wet[x], kSqueezeMinFilmMm);
-      const float reach = in.gradient_scale / (1.0f + 8.0f * h * in.gradient_scale);
-      const float ux = in.brush_vx - reach * (pen[x + 1] - pen[x - 1]);
-      const float uy = in.brush_vy - reach * (pen[x + s] - pen[x - s]);
-      vx[x] = weight[x] * std::min(std::max(ux, -1.0f), 1.0f);
-      vy[x] = weight[x] * std::min(std::max(uy, -1.0f), 1.0f);
+      vx[x] = weight[x] * in.brush_vx;
+      vy[x] = weight[x] * in.brush_vy;
     }
     // Cells beyond the canvas do not exist: paint at the edge cannot leave.
     if (w.x0 == 0) vx[0] = std::max(vx[0], 0.0f);
@@ -241,12 +233,18 @@ void Stepper::transfer_rows(const StepInputs& in, int r0, int r1) {
       const float reach = pen[x] + on_brush;
       const float a_c =
           reach >= wet[x] ? (wet[x] > 0.0f ? new_wet[x] : 0.0f) : new_wet[x] * (reach / wet[x]);
-      // a_b: this cell's share of the paint on the brush cell it touches, as far as the tips
-      // present it: the rest waits in the bundle's belly (a loaded brush lays an even stroke
-      // until it runs dry, rather than dumping its load at the start).
+      // a_b: the paint on the brush cell it touches (a height, the same for every canvas cell
+      // under that brush cell), as far as the tips present it: the rest waits in the bundle's
+      // belly (a loaded brush lays an even stroke until it runs dry, rather than dumping its
+      // load at the start). Where k canvas cells share the brush cell (a turned or splayed
+      // head), each deposit is at most deposit_share * a_b <= on_brush / k, so together they
+      // never take more than it holds; dividing the height by k instead printed the sharing
+      // pattern into the paint.
       const std::int32_t sharing = touches ? share[b] : 1;
-      const float a_b = std::min(sharing == 1 ? on_brush : on_brush / static_cast<float>(sharing),
-                                 in.tip_film_mm);
+      const float a_b =
+          std::min({on_brush, in.tip_film_mm,
+                    sharing == 1 ? on_brush
+                                 : on_brush * in.inv_deposit_share / static_cast<float>(sharing)});
       // The film split (transfer.hpp); exactly 0 where nothing touches.
       const float amount =
           touches ? brush_transfer_amount(a_c, a_b, in.relax, in.deposit_share) : 0.0f;
@@ -266,6 +264,73 @@ void Stepper::transfer_rows(const StepInputs& in, int r0, int r1) {
         const float source = xfer[x] > 0.0f ? from_brush[cell[x]] : canvas_amount[x];
         moved[x] = source * ratio[x];  // signed like the paint; 0 where nothing moves
         canvas_amount[x] += moved[x];
+      }
+    }
+  }
+}
+
+void Stepper::squeeze_rows(const StepInputs& in, int r0, int r1) {
+  // The squeeze: paint flows across each face between cells, from the side the head presses
+  // deeper to the other, flux = h v with v = 2 c dp per face. Faces, not cell velocities: a
+  // cell-centred gradient cannot see a checkerboard, which then grew under a still brush.
+  // Saturated at an eighth of the penetration difference and a quarter of the source's
+  // paint per face, so four faces together never overshoot or take more than a cell holds.
+  const Window& w = win_;
+  const std::ptrdiff_t s = w.stride();
+  const float c = in.gradient_scale;
+  for (int y = r0; y < r1; ++y) {
+    const std::ptrdiff_t row = (y + 1) * s + 1;
+    const std::size_t first = static_cast<std::size_t>(y) * w.width;
+    const float* pen = pen_.data() + row;
+    const float* wet = new_wet_.data() + row;
+    const float* weight = contact_weight_.data() + first;
+    float* east = face_east_.data() + first;
+    float* south = face_south_.data() + first;
+    const auto share = [c](float dp, float h_from, float h_to, float contact) {
+      // The signed share of the source's paint that crosses (> 0: from this cell).
+      const float h = dp > 0.0f ? h_from : h_to;
+      const float magnitude = std::abs(dp);
+      const float flux = std::min(2.0f * c * h * magnitude / (1.0f + 16.0f * c * h), 0.25f * h);
+      const float ratio = h > 0.0f ? contact * flux / h : 0.0f;
+      return dp > 0.0f ? ratio : -ratio;
+    };
+    for (int x = 0; x < w.width; ++x) {
+      const bool has_east = x + 1 < w.width, has_south = y + 1 < w.height;
+      const float contact_e = has_east ? std::max(weight[x], weight[x + 1]) : 0.0f;
+      const float contact_s = has_south ? std::max(weight[x], weight[x + w.width]) : 0.0f;
+      east[x] = contact_e > 0.0f ? share(pen[x] - pen[x + 1], wet[x], wet[x + 1], contact_e) : 0.0f;
+      south[x] =
+          contact_s > 0.0f ? share(pen[x] - pen[x + s], wet[x], wet[x + s], contact_s) : 0.0f;
+    }
+  }
+}
+
+void Stepper::apply_squeeze_rows(int slot_count, int r0, int r1) {
+  // Every quantity moves with the faces' shares of its source: what one cell gives, its
+  // neighbour gets, computed from the same product (paint and pigments alike).
+  const Window& w = win_;
+  const std::ptrdiff_t s = w.stride();
+  const std::size_t n = w.padded();
+  for (int k = 0; k <= slot_count; ++k) {
+    const float* q =
+        k == 0 ? new_wet_.data() : new_pigment_.data() + static_cast<std::size_t>(k - 1) * n;
+    float* out = k == 0 ? wet_.data() : pigment_.data() + static_cast<std::size_t>(k - 1) * n;
+    for (int y = r0; y < r1; ++y) {
+      const std::ptrdiff_t row = (y + 1) * s + 1;
+      const std::size_t first = static_cast<std::size_t>(y) * w.width;
+      const float* e = face_east_.data() + first;
+      const float* so = face_south_.data() + first;
+      const float* no = y > 0 ? face_south_.data() + first - w.width : nullptr;
+      const float* c = q + row;
+      float* o = out + row;
+      for (int x = 0; x < w.width; ++x) {
+        float value = c[x];
+        // East face: > 0 sends from here, < 0 brings from the east.
+        value += e[x] > 0.0f ? -e[x] * c[x] : -e[x] * c[x + 1];
+        if (x > 0) value += e[x - 1] > 0.0f ? e[x - 1] * c[x - 1] : e[x - 1] * c[x];
+        value += so[x] > 0.0f ? -so[x] * c[x] : -so[x] * c[x + s];
+        if (no) value += no[x] > 0.0f ? no[x] * c[x - s] : no[x] * c[x];
+        o[x] = value;
       }
     }
   }
@@ -453,12 +518,15 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   in.relax = static_cast<float>(transfer_relaxation(distance_mm, seconds, params));
   in.deposit_share = static_cast<float>(params.deposit_share);
   in.tip_film_mm = static_cast<float>(params.tip_film_mm);
+  in.lift_off = lift_off;
   if (lift_off) {
     // The brush leaves the paint: the film between bristles and canvas breaks in its
     // middle, at once (no motion, no squeeze).
     in.relax = 1.0f;
     in.deposit_share = static_cast<float>(params.lift_share);
   }
+  // (With no deposit at all the bound is moot: any finite value above the brush's paint.)
+  in.inv_deposit_share = in.deposit_share > 0.0f ? 1.0f / in.deposit_share : 1e30f;
 
   const int rows = win_.height, cols = win_.width;
   // 1. Gather the window and find where the brush penetrates the paint surface.
@@ -505,6 +573,13 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
                         static_cast<std::size_t>(r1) * cols);
   });
   if (transfers && !in.brush_cells_unique) transfer_to_brush(brush, slot_count, 0, cells);
+  // 4. The squeeze, face by face, into the scratch grids; they become the step's result.
+  if (in.gradient_scale > 0.0f) {
+    parallel_rows(rows, cols, [&](int r0, int r1) { squeeze_rows(in, r0, r1); });
+    parallel_rows(rows, cols, [&](int r0, int r1) { apply_squeeze_rows(slot_count, r0, r1); });
+    std::swap(wet_, new_wet_);
+    std::swap(pigment_, new_pigment_);
+  }
   // Paint in the bristles flows toward the tips that gave theirs away: over every
   // kBrushFlowBatchMm travelled at once (the relaxation composes over distance).
   brush_flow_pending_mm_ += distance_mm;

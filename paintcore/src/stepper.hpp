@@ -56,11 +56,13 @@ class Stepper {
     int slot_count;
     float tip_mm;              // height of the brush tip
     float brush_vx, brush_vy;  // 1/2 the brush motion, cells/step
-    float gradient_scale;      // squeeze per unit slope / (2 cell_mm): penetration differences -> v
+    float gradient_scale;      // squeeze per unit slope / (2 cell_mm): penetration difference -> v
     float min_film_mm;
     float relax;          // how far this step goes toward the film split (transfer.hpp)
     float deposit_share;  // the canvas's share of the joint film
-    float tip_film_mm;    // most paint a brush cell's tips present to the canvas
+    float inv_deposit_share;
+    float tip_film_mm;  // most paint a brush cell's tips present to the canvas
+    bool lift_off;      // the brush leaves the paint (see step)
     // Each brush cell touches at most one canvas cell: rows may update the brush themselves.
     bool brush_cells_unique;
   };
@@ -72,6 +74,8 @@ class Stepper {
   void penetrate_rows(const StepInputs& in, int r0, int r1);
   void velocity_rows(const StepInputs& in, int r0, int r1);
   void transfer_rows(const StepInputs& in, int r0, int r1);
+  void squeeze_rows(const StepInputs& in, int r0, int r1);
+  void apply_squeeze_rows(int slot_count, int r0, int r1);
   void transfer_to_brush(Brush& brush, int slot_count, std::size_t first_cell,
                          std::size_t end_cell);
   void even_out_brush(Brush& brush, int slot_count, double share);
@@ -84,12 +88,13 @@ class Stepper {
   std::vector<float> ground_, wet_, pen_, vx_, vy_, new_wet_;
   std::vector<float> pigment_, new_pigment_;  // slot-major, padded grids
   // Unpadded per-cell data of the transfer.
-  std::vector<std::int32_t> brush_cell_;   // brush cell touching each window cell, or -1
-  std::vector<float> xfer_;                // paint height moved brush -> canvas (signed)
-  std::vector<float> contact_weight_;      // how fully the head moves each cell's paint, 0..1
-  std::vector<float> xfer_ratio_;          // xfer_ / the source's paint height
-  std::vector<float> xfer_pigment_;        // pigment moved brush -> canvas, slot-major
-  std::vector<std::int32_t> brush_share_;  // canvas cells touching each brush cell
+  std::vector<std::int32_t> brush_cell_;       // brush cell touching each window cell, or -1
+  std::vector<float> xfer_;                    // paint height moved brush -> canvas (signed)
+  std::vector<float> contact_weight_;          // how fully the head moves each cell's paint, 0..1
+  std::vector<float> face_east_, face_south_;  // squeeze: signed share crossing each face
+  std::vector<float> xfer_ratio_;              // xfer_ / the source's paint height
+  std::vector<float> xfer_pigment_;            // pigment moved brush -> canvas, slot-major
+  std::vector<std::int32_t> brush_share_;      // canvas cells touching each brush cell
   std::vector<int> row_contacts_;
   std::vector<const float*> from_;  // the quantities advection moves
   std::vector<float*> to_;          // and where they go

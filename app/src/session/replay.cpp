@@ -63,7 +63,7 @@ void SessionPlayer::begin_auto_stroke() {
   double volume = options_.auto_load_mm3;
   if (volume <= 0) {
     const double width = painting_.brush().settings().size_mm;
-    volume = 0.3 * width * width;  // a 0.3 mm film over the head's square
+    volume = 2.0 * width * width;  // a loaded brush: 2 mm of paint over the head's square
   }
   painting_.load_brush({{pigment, 1.0}}, volume);
 }

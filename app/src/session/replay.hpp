@@ -26,7 +26,7 @@ struct ReplayOptions {
   // loaded from demo_palette() in turn. Only used when the file has no load record.
   bool auto_load = true;
   paintcore::BrushSettings default_brush{"round", 6.0, 0.5};
-  double auto_load_mm3 = 0.0;  // 0: enough to cover the head with 0.3 mm of paint
+  double auto_load_mm3 = 0.0;  // 0: a loaded brush, 2 mm of paint over the head's square
 };
 
 // What a replay did, beside the painting itself.
