@@ -10,6 +10,8 @@ namespace impasto::paintcore {
 namespace {
 
 constexpr std::size_t kBaseCacheTiles = 256;
+// Keeps a deposit a relative hair below what its brush cell holds (float rounding).
+constexpr float kBelowBound = 1.0f - 1e-5f;
 // The bristles even out once per this distance travelled (mm), not every step.
 constexpr double kBrushFlowBatchMm = 0.5;
 
@@ -241,7 +243,9 @@ void Stepper::transfer_rows(const StepInputs& in, int r0, int r1) {
       // never take more than it holds; dividing the height by k instead printed the sharing
       // pattern into the paint.
       const std::int32_t sharing = touches ? share[b] : 1;
+      // (A hair below the bound: float rounding must never let the brush cell go negative.)
       const float a_b =
+          kBelowBound *
           std::min({on_brush, in.tip_film_mm,
                     sharing == 1 ? on_brush
                                  : on_brush * in.inv_deposit_share / static_cast<float>(sharing)});
@@ -346,9 +350,13 @@ void Stepper::transfer_to_brush(Brush& brush, int slot_count, std::size_t first_
   for (std::size_t c = first_cell; c < end_cell; ++c) {
     if (xfer_[c] == 0.0f) continue;
     const std::size_t bc = static_cast<std::size_t>(brush_cell_[c]);
-    volume[bc] -= xfer_[c];
-    for (std::size_t k = 0; k < static_cast<std::size_t>(slot_count); ++k)
-      pigment[k * brush_cells + bc] -= xfer_pigment_[k * cells + c];
+    // (Never below zero: a painting file refuses negative paint. The deposit's bound keeps
+    // it a hair above; this only guards the last float rounding.)
+    volume[bc] = std::max(volume[bc] - xfer_[c], 0.0f);
+    for (std::size_t k = 0; k < static_cast<std::size_t>(slot_count); ++k) {
+      float& amount = pigment[k * brush_cells + bc];
+      amount = std::max(amount - xfer_pigment_[k * cells + c], 0.0f);
+    }
   }
 }
 

@@ -346,6 +346,16 @@ TEST(Marks, EveryHeadAndBodyConservesPaint) {
         EXPECT_LT(test::relative_error(present.pigment[s], expected.pigment[s]), 1e-5) << s;
       EXPECT_EQ(p.nonfinite_count(), 0u);
       EXPECT_GT(p.canvas_totals().volume, 0.0);
+      // No cell anywhere holds negative paint (a painting file would refuse it).
+      const auto& brush = p.brush().volume_mm();
+      EXPECT_GE(*std::min_element(brush.begin(), brush.end()), 0.0f);
+      const auto& pigments = p.brush().pigment_mm();
+      EXPECT_GE(*std::min_element(pigments.begin(), pigments.end()), 0.0f);
+      const Canvas& c = p.canvas();
+      float lowest = 0.0f;
+      for (int y = 0; y < c.height_cells(); ++y)
+        for (int x = 0; x < c.width_cells(); ++x) lowest = std::min(lowest, c.wet_volume_mm(x, y));
+      EXPECT_GE(lowest, 0.0f);
     }
 }
 
