@@ -38,7 +38,7 @@ endfunction()
 function(impasto_test_definitions target)
   target_compile_definitions(${target} PRIVATE
     IMPASTO_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
-    IMPASTO_SHARED_DIR="${PROJECT_SOURCE_DIR}/../shared")
+    IMPASTO_TEST_FILES_DIR="${PROJECT_SOURCE_DIR}/tests/data/files")
 endfunction()
 
 # impasto_test(NAME SOURCES... DEPS ...): one GoogleTest executable registered with CTest.

@@ -12,8 +12,7 @@
 namespace impasto::app {
 namespace {
 
-const std::filesystem::path kCapture = std::filesystem::path(IMPASTO_SHARED_DIR) /
-                                       "data/hid/wacom_penpartner__056A_0061.hid-recorder.txt";
+const std::filesystem::path kCapture = std::filesystem::path(IMPASTO_TEST_FILES_DIR) / "hid/wacom_penpartner__056A_0061.hid-recorder.txt";
 
 input::StrokeFile capture_as_strokes() {
   input::StrokeFile file;

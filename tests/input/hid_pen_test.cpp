@@ -11,7 +11,7 @@ namespace {
 using Bytes = std::vector<std::uint8_t>;
 using paintcore::PenSample;
 
-const std::string kHid = IMPASTO_SHARED_DIR "/data/hid/";
+const std::string kHid = IMPASTO_TEST_FILES_DIR "/hid/";
 
 PenDecoder decoder_for(const std::string& stem) {
   const std::string path = kHid + stem + ".rdesc.bin";

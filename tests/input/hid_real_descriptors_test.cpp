@@ -1,4 +1,4 @@
-// The parser against real tablet descriptors (../shared/data/hid). Expected values are read
+// The parser against real tablet descriptors (tests/data/files/hid). Expected values are read
 // off the .hid-decode.txt listings; report sizes are the sums of Report Size x Report Count
 // of each report's main items in those listings.
 #include <impasto/input/hid_pen.hpp>
@@ -11,7 +11,7 @@
 namespace impasto::input::hid {
 namespace {
 
-const std::string kHid = IMPASTO_SHARED_DIR "/data/hid/";
+const std::string kHid = IMPASTO_TEST_FILES_DIR "/hid/";
 
 ReportDescriptor load(const std::string& stem) {
   const std::string path = kHid + stem + ".rdesc.bin";

@@ -12,8 +12,8 @@ namespace impasto::input::hid {
 namespace {
 
 const std::string kCapture =
-    IMPASTO_SHARED_DIR "/data/hid/wacom_penpartner__056A_0061.hid-recorder.txt";
-const std::string kDecoded = IMPASTO_SHARED_DIR "/data/hid/wacom_penpartner__056A_0061.decoded.tsv";
+    IMPASTO_TEST_FILES_DIR "/hid/wacom_penpartner__056A_0061.hid-recorder.txt";
+const std::string kDecoded = IMPASTO_TEST_FILES_DIR "/hid/wacom_penpartner__056A_0061.decoded.tsv";
 
 struct ReferenceRow {
   double time_s;

@@ -1,4 +1,4 @@
-// The importers against the real recordings in ../shared/data/strokes.
+// The importers against the real recordings in tests/data/files/strokes (copies of the team's reference data).
 #include <impasto/input/stroke_import.hpp>
 
 #include <gtest/gtest.h>
@@ -11,7 +11,7 @@ namespace {
 
 using paintcore::PenSample;
 
-const std::string kStrokes = IMPASTO_SHARED_DIR "/data/strokes/";
+const std::string kStrokes = IMPASTO_TEST_FILES_DIR "/strokes/";
 
 TEST(MypaintImport, RealPaintingHasAllEventsAndStrokes) {
   const auto samples = pen_samples(load_strokes_any(kStrokes + "libmypaint_painting30sec.dat"));
@@ -141,7 +141,7 @@ TEST(Tilt, LimitsOfAzimuthAndAltitude) {
 }
 
 TEST(LoadAny, UnknownKindIsAnError) {
-  EXPECT_THROW(load_strokes_any(IMPASTO_SHARED_DIR "/data/strokes/bdalab_LICENSE.MIT.txt"),
+  EXPECT_THROW(load_strokes_any(IMPASTO_TEST_FILES_DIR "/strokes/bdalab_LICENSE.MIT.txt"),
                InputFormatError);
 }
 
