@@ -14,6 +14,7 @@ constexpr NamedParam kNamedParams[] = {
     {"transfer_time_s", &SimulationParams::transfer_time_s},
     {"lift_share", &SimulationParams::lift_share},
     {"tip_film_mm", &SimulationParams::tip_film_mm},
+    {"ground_fill", &SimulationParams::ground_fill},
     {"brush_flow_length_mm", &SimulationParams::brush_flow_length_mm},
     {"plough", &SimulationParams::plough},
     {"drag", &SimulationParams::drag},
@@ -70,6 +71,9 @@ void validate(const SimulationParams& p) {
   if (p.lift_share > 1.0)
     throw std::runtime_error("simulation params: field 'lift_share' must be <= 1");
   check(p.tip_film_mm, "tip_film_mm", true);
+  check(p.ground_fill, "ground_fill", false);
+  if (p.ground_fill > 1.0)
+    throw std::runtime_error("simulation params: field 'ground_fill' must be <= 1");
   check(p.transfer_length_mm, "transfer_length_mm", true);
   check(p.transfer_time_s, "transfer_time_s", true);
   check(p.brush_flow_length_mm, "brush_flow_length_mm", true);

@@ -218,6 +218,7 @@ void Stepper::transfer_rows(const StepInputs& in, int r0, int r1) {
     const std::size_t first = static_cast<std::size_t>(y) * w.width;
     const std::int32_t* cell = brush_cell_.data() + first;
     const float* pen = pen_.data() + row;
+    const float* ground = ground_.data() + row;
     const float* wet = wet_.data() + row;
     float* new_wet = new_wet_.data() + row;
     float* xfer = xfer_.data() + first;
@@ -250,8 +251,10 @@ void Stepper::transfer_rows(const StepInputs& in, int r0, int r1) {
                     sharing == 1 ? on_brush
                                  : on_brush * in.inv_deposit_share / static_cast<float>(sharing)});
       // The film split (transfer.hpp); exactly 0 where nothing touches.
-      const float amount =
-          touches ? brush_transfer_amount(a_c, a_b, in.relax, in.deposit_share) : 0.0f;
+      const float amount = touches
+                               ? brush_transfer_amount(a_c, a_b, in.relax, in.deposit_share,
+                                                       in.ground_fill * (in.footing_mm - ground[x]))
+                               : 0.0f;
       const bool deposit = amount > 0.0f;
       // Pigments go in the source's proportions (volume-weighted mixing).
       const float source = deposit ? on_brush : new_wet[x];
@@ -496,22 +499,26 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   const int reach = std::clamp(brush.cells_across() / 8, 1, 4);
   const int cx = static_cast<int>(std::floor(placement.centre_x));
   const int cy = static_cast<int>(std::floor(placement.centre_y));
-  double rest = 0.0;
+  double rest = 0.0, footing = 0.0;
   int rest_cells = 0;
   for (int y = std::max(cy - reach, 0); y <= std::min(cy + reach, canvas.height_cells() - 1); ++y)
     for (int x = std::max(cx - reach, 0); x <= std::min(cx + reach, canvas.width_cells() - 1);
          ++x) {
-      rest += static_cast<double>(canvas.base_height_mm(x, y)) + canvas.dry_height_mm(x, y) +
-              params.wet_support * canvas.wet_volume_mm(x, y);
+      const double ground =
+          static_cast<double>(canvas.base_height_mm(x, y)) + canvas.dry_height_mm(x, y);
+      rest += ground + params.wet_support * canvas.wet_volume_mm(x, y);
+      footing += ground;
       ++rest_cells;
     }
   if (rest_cells == 0) {  // the centre is off the canvas: rest on the nearest cell
     const int x = std::clamp(cx, 0, canvas.width_cells() - 1);
     const int y = std::clamp(cy, 0, canvas.height_cells() - 1);
-    rest = static_cast<double>(canvas.base_height_mm(x, y)) + canvas.dry_height_mm(x, y) +
-           params.wet_support * canvas.wet_volume_mm(x, y);
+    footing = static_cast<double>(canvas.base_height_mm(x, y)) + canvas.dry_height_mm(x, y);
+    rest = footing + params.wet_support * canvas.wet_volume_mm(x, y);
     rest_cells = 1;
   }
+  in.footing_mm = static_cast<float>(footing / rest_cells);
+  in.ground_fill = static_cast<float>(params.ground_fill);
   in.tip_mm = static_cast<float>(rest / rest_cells - pose.depth_mm);
   in.brush_vx = static_cast<float>(params.drag * move_x);
   in.brush_vy = static_cast<float>(params.drag * move_y);

@@ -63,6 +63,8 @@ class Stepper {
     float inv_deposit_share;
     float tip_film_mm;  // most paint a brush cell's tips present to the canvas
     bool lift_off;      // the brush leaves the paint (see step)
+    float footing_mm;   // the ground and dry paint around the brush's centre (mean)
+    float ground_fill;  // how much of a valley below the footing the paint fills
     // Each brush cell touches at most one canvas cell: rows may update the brush themselves.
     bool brush_cells_unique;
   };

@@ -21,7 +21,10 @@ struct SimulationParams {
   double lift_share = 0.5;
   // The bristle tips present at most this film (mm) of the brush's paint to the split; the
   // rest is held in the bundle and flows down as the tips give theirs away.
-  double tip_film_mm = 2.5;           // time over which a still brush reaches it (1/e)
+  double tip_film_mm = 2.5;
+  // Paint pressed into the ground's valleys (the weave, dry paint) below the brush's footing
+  // stays there: the canvas's part of the film is raised by this share of the valley's depth.
+  double ground_fill = 1.0;           // time over which a still brush reaches it (1/e)
   double brush_flow_length_mm = 4.0;  // paint in the bristles evens out over this distance
   // Squeeze: paint flows down the slope of the brush's penetration (mm/mm) by
   // plough (mm per mm travelled) plus squeeze_mm_s (mm per second pressed).

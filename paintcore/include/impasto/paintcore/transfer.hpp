@@ -6,6 +6,7 @@
 // deposit_share of a_b + a_c. The split is reached by first-order relaxation in the distance
 // travelled and the time pressed, so that the paint moved over a stroke does not depend on
 // how many steps the stroke is cut into (docs/simulation.md, "Transfer").
+#include <algorithm>
 #include <cmath>
 
 #include "impasto/paintcore/simulation_params.hpp"
@@ -21,11 +22,14 @@ inline double transfer_relaxation(double distance_mm, double seconds,
 }
 
 // The signed paint height moved from brush to canvas (> 0 deposits, < 0 picks up) for
-// canvas paint a_c, brush paint a_b and a relaxation `relax` in [0, 1]. A deposit never
-// exceeds deposit_share * a_b, a pick-up never (1 - deposit_share) * a_c.
+// canvas paint a_c, brush paint a_b and a relaxation `relax` in [0, 1]. `fill` (mm) raises
+// the canvas's part where its ground lies below the brush's footing: paint pressed into a
+// valley of the weave or of dry paint stays there, so thick paint buries the texture under
+// it. A deposit never exceeds deposit_share * a_b, a pick-up never (1 - deposit_share) * a_c.
 template <typename T>
-T brush_transfer_amount(T a_c, T a_b, T relax, T deposit_share) {
-  return (deposit_share * (a_b + a_c) - a_c) * relax;
+T brush_transfer_amount(T a_c, T a_b, T relax, T deposit_share, T fill = T(0)) {
+  const T amount = (deposit_share * (a_b + a_c) + fill - a_c) * relax;
+  return std::clamp(amount, -(T(1) - deposit_share) * a_c, deposit_share * a_b);
 }
 
 }  // namespace impasto::paintcore
