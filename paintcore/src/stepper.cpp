@@ -41,8 +41,10 @@ void Stepper::resize(int slot_count, std::size_t brush_cells) {
   if (brush_cell_.size() < cells) brush_cell_.resize(cells);
   if (xfer_.size() < cells) xfer_.resize(cells);
   if (contact_weight_.size() < cells) contact_weight_.resize(cells);
-  if (face_east_.size() < cells) face_east_.resize(cells);
-  if (face_south_.size() < cells) face_south_.resize(cells);
+  for (auto* faces : {&face_east_, &face_south_}) {
+    if (faces->size() < n) faces->resize(n);
+    zero_border(faces->data(), w.width, w.height);
+  }
   if (xfer_ratio_.size() < cells) xfer_ratio_.resize(cells);
   if (xfer_pigment_.size() < cells * slots) xfer_pigment_.resize(cells * slots);
   brush_share_.assign(brush_cells, 0);
@@ -282,39 +284,43 @@ void Stepper::squeeze_rows(const StepInputs& in, int r0, int r1) {
   // cell-centred gradient cannot see a checkerboard, which then grew under a still brush.
   // Saturated at an eighth of the penetration difference and a quarter of the source's
   // paint per face, so four faces together never overshoot or take more than a cell holds.
+  // (Branch-free, and faces on padded grids whose border stays 0: the loops vectorise.)
   const Window& w = win_;
   const std::ptrdiff_t s = w.stride();
   const float c = in.gradient_scale;
+  // The signed share of the source's paint that crosses (> 0: from this cell).
+  const auto share = [c](float dp, float h_from, float h_to, float contact) {
+    const float h = dp > 0.0f ? h_from : h_to;
+    const float flux = std::min(2.0f * c * h * std::abs(dp) / (1.0f + 16.0f * c * h), 0.25f * h);
+    const float ratio = contact * flux / std::max(h, 1e-30f);
+    return dp > 0.0f ? ratio : -ratio;
+  };
   for (int y = r0; y < r1; ++y) {
     const std::ptrdiff_t row = (y + 1) * s + 1;
     const std::size_t first = static_cast<std::size_t>(y) * w.width;
-    const float* pen = pen_.data() + row;
-    const float* wet = new_wet_.data() + row;
-    const float* weight = contact_weight_.data() + first;
-    float* east = face_east_.data() + first;
-    float* south = face_south_.data() + first;
-    const auto share = [c](float dp, float h_from, float h_to, float contact) {
-      // The signed share of the source's paint that crosses (> 0: from this cell).
-      const float h = dp > 0.0f ? h_from : h_to;
-      const float magnitude = std::abs(dp);
-      const float flux = std::min(2.0f * c * h * magnitude / (1.0f + 16.0f * c * h), 0.25f * h);
-      const float ratio = h > 0.0f ? contact * flux / h : 0.0f;
-      return dp > 0.0f ? ratio : -ratio;
-    };
-    for (int x = 0; x < w.width; ++x) {
-      const bool has_east = x + 1 < w.width, has_south = y + 1 < w.height;
-      const float contact_e = has_east ? std::max(weight[x], weight[x + 1]) : 0.0f;
-      const float contact_s = has_south ? std::max(weight[x], weight[x + w.width]) : 0.0f;
-      east[x] = contact_e > 0.0f ? share(pen[x] - pen[x + 1], wet[x], wet[x + 1], contact_e) : 0.0f;
-      south[x] =
-          contact_s > 0.0f ? share(pen[x] - pen[x + s], wet[x], wet[x + s], contact_s) : 0.0f;
+    const float* __restrict pen = pen_.data() + row;
+    const float* __restrict wet = new_wet_.data() + row;
+    const float* __restrict weight = contact_weight_.data() + first;
+    float* __restrict east = face_east_.data() + row;
+    float* __restrict south = face_south_.data() + row;
+    const int last = w.width - 1;
+    for (int x = 0; x < last; ++x)
+      east[x] = share(pen[x] - pen[x + 1], wet[x], wet[x + 1], std::max(weight[x], weight[x + 1]));
+    east[last] = 0.0f;  // the window's edge: no face
+    if (y + 1 < w.height) {
+      const float* __restrict below = weight + w.width;
+      for (int x = 0; x < w.width; ++x)
+        south[x] = share(pen[x] - pen[x + s], wet[x], wet[x + s], std::max(weight[x], below[x]));
+    } else {
+      std::fill_n(south, w.width, 0.0f);
     }
   }
 }
 
 void Stepper::apply_squeeze_rows(int slot_count, int r0, int r1) {
   // Every quantity moves with the faces' shares of its source: what one cell gives, its
-  // neighbour gets, computed from the same product (paint and pigments alike).
+  // neighbour gets, computed from the same product (paint and pigments alike). Each face
+  // adds its two terms, one of them exactly 0 (branch-free: the loop vectorises).
   const Window& w = win_;
   const std::ptrdiff_t s = w.stride();
   const std::size_t n = w.padded();
@@ -324,19 +330,17 @@ void Stepper::apply_squeeze_rows(int slot_count, int r0, int r1) {
     float* out = k == 0 ? wet_.data() : pigment_.data() + static_cast<std::size_t>(k - 1) * n;
     for (int y = r0; y < r1; ++y) {
       const std::ptrdiff_t row = (y + 1) * s + 1;
-      const std::size_t first = static_cast<std::size_t>(y) * w.width;
-      const float* e = face_east_.data() + first;
-      const float* so = face_south_.data() + first;
-      const float* no = y > 0 ? face_south_.data() + first - w.width : nullptr;
-      const float* c = q + row;
-      float* o = out + row;
+      const float* __restrict e = face_east_.data() + row;    // e[-1]: the west face
+      const float* __restrict so = face_south_.data() + row;  // so[-s]: the north face
+      const float* __restrict c = q + row;
+      float* __restrict o = out + row;
       for (int x = 0; x < w.width; ++x) {
+        const float ee = e[x], ew = e[x - 1], es = so[x], en = so[x - s];
         float value = c[x];
-        // East face: > 0 sends from here, < 0 brings from the east.
-        value += e[x] > 0.0f ? -e[x] * c[x] : -e[x] * c[x + 1];
-        if (x > 0) value += e[x - 1] > 0.0f ? e[x - 1] * c[x - 1] : e[x - 1] * c[x];
-        value += so[x] > 0.0f ? -so[x] * c[x] : -so[x] * c[x + s];
-        if (no) value += no[x] > 0.0f ? no[x] * c[x - s] : no[x] * c[x];
+        value += -(std::max(ee, 0.0f) * c[x]) - std::min(ee, 0.0f) * c[x + 1];
+        value += std::max(ew, 0.0f) * c[x - 1] + std::min(ew, 0.0f) * c[x];
+        value += -(std::max(es, 0.0f) * c[x]) - std::min(es, 0.0f) * c[x + s];
+        value += std::max(en, 0.0f) * c[x - s] + std::min(en, 0.0f) * c[x];
         o[x] = value;
       }
     }
