@@ -218,6 +218,18 @@ TEST(Marks, HeavyPaintHoldsItsRidgesFluidPaintLevels) {
   EXPECT_NEAR(fluid.deposited_share, heavy.deposited_share, 0.02);
 }
 
+TEST(Marks, AKnifePlanesThePaintAndLeavesRidgesAtItsEnds) {
+  const MarkStroke stroke;
+  const MarkFigures paste = measure_mark("knife", PaintBody::paste, stroke);
+  const MarkFigures fluid = measure_mark("knife", PaintBody::fluid, stroke);
+  // A plane under the blade: most cells within a few percent of one height.
+  EXPECT_LT(paste.thickness.p90_mm - paste.thickness.median_mm, 0.1 * paste.thickness.median_mm);
+  // Sharp ridges where the blade's ends pass, kept by stiff paint, levelled by fluid paint.
+  EXPECT_GT(paste.edge_ridge_mm, 0.2);
+  EXPECT_LT(fluid.edge_ridge_mm, 0.2 * paste.edge_ridge_mm);
+  EXPECT_EQ(paste.bristle_spacing_mm, 0.0);  // a smooth blade
+}
+
 TEST(Marks, LevellingFlowsOnlyPastTheYieldSlope) {
   const PaintBodyInfo& heavy = body_info(PaintBody::heavy);
   // 0.5 mm of heavy paint holds a slope of 60 / (14.7 * 0.5) ~ 8: a 0.5 mm drop over 0.1 mm.
