@@ -1,7 +1,10 @@
 #include "levelling.hpp"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace impasto::paintcore {
 namespace {
@@ -41,26 +44,34 @@ LevellingReport settle_wet_paint(Canvas& canvas, const std::vector<int>& tiles, 
     ty1 = std::max(ty1, ty);
   }
   const int w = (tx1 - tx0 + 1) * kTileSize, h = (ty1 - ty0 + 1) * kTileSize;
-  const auto cells = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
-  constexpr std::size_t kMaxCells = std::size_t{1} << 22;  // 4M cells: a long diagonal
-  if (cells > kMaxCells) return report;  // stroke's box is too large: it does not level
-  std::vector<Tile*> tile_at(static_cast<std::size_t>((tx1 - tx0 + 1) * (ty1 - ty0 + 1)), nullptr);
+  const auto tiles_across = static_cast<std::size_t>(tx1 - tx0 + 1);
+  std::vector<Tile*> tile_at(tiles_across * static_cast<std::size_t>(ty1 - ty0 + 1), nullptr);
   for (const int index : tiles) {
     const int tx = index % canvas.tiles_x() - tx0, ty = index / canvas.tiles_x() - ty0;
-    tile_at[static_cast<std::size_t>(ty * (tx1 - tx0 + 1) + tx)] = canvas.tile_slot(index).get();
+    tile_at[static_cast<std::size_t>(ty) * tiles_across + static_cast<std::size_t>(tx)] =
+        canvas.tile_slot(index).get();
   }
   // Cells of edge tiles beyond the canvas are walls too.
   const int canvas_w = canvas.width_cells() - tx0 * kTileSize;
   const int canvas_h = canvas.height_cells() - ty0 * kTileSize;
   const auto locate = [&](int x, int y, Tile*& tile, int& c) {
-    tile =
-        x < canvas_w && y < canvas_h
-            ? tile_at[static_cast<std::size_t>((y / kTileSize) * (tx1 - tx0 + 1) + x / kTileSize)]
-            : nullptr;
+    tile = x < w && y < h && x < canvas_w && y < canvas_h
+               ? tile_at[static_cast<std::size_t>(y / kTileSize) * tiles_across +
+                         static_cast<std::size_t>(x / kTileSize)]
+               : nullptr;
     c = (y % kTileSize) * kTileSize + x % kTileSize;
   };
-  // What crosses each east and south face in one iteration (height, source's shares).
-  std::vector<float> east(cells), south(cells);
+  // What crosses each east and south face of each listed tile's cells in one iteration. Only
+  // the stroke's tiles are visited (not their bounding box: a long diagonal covers few of it).
+  std::vector<float> east(tiles.size() * kTileCells), south(tiles.size() * kTileCells);
+  const auto for_each_cell = [&](auto&& body) {
+    for (std::size_t k = 0; k < tiles.size(); ++k) {
+      const int x0 = (tiles[k] % canvas.tiles_x() - tx0) * kTileSize;
+      const int y0 = (tiles[k] / canvas.tiles_x() - ty0) * kTileSize;
+      for (int c = 0; c < kTileCells; ++c)
+        body(k * kTileCells + static_cast<std::size_t>(c), x0 + c % kTileSize, y0 + c / kTileSize);
+    }
+  };
   const int iterations = kMaxIterations;
   const double seconds = params.settle_time_s / iterations;
   const auto surface = [](const Tile& t, int c) {
@@ -69,22 +80,23 @@ LevellingReport settle_wet_paint(Canvas& canvas, const std::vector<int>& tiles, 
            t.wet_volume_mm[static_cast<std::size_t>(c)];
   };
   for (int it = 0; it < iterations; ++it) {
-    bool any = false;
-    // 1. Fluxes from the current state (signed: > 0 flows east / south).
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x) {
-        const std::size_t i = static_cast<std::size_t>(y) * w + x;
-        east[i] = south[i] = 0.0f;
+    // 1. Fluxes from the current state (signed: > 0 flows east / south). Each face is
+    // computed alone from the state: tiles in parallel, the same bits on any thread count.
+    std::vector<std::uint8_t> tile_flows(tiles.size(), 0);
+    tbb::parallel_for(std::size_t{0}, tiles.size(), [&](std::size_t k) {
+      const int x0 = (tiles[k] % canvas.tiles_x() - tx0) * kTileSize;
+      const int y0 = (tiles[k] / canvas.tiles_x() - ty0) * kTileSize;
+      for (int c = 0; c < kTileCells; ++c) {
+        const std::size_t i = k * kTileCells + static_cast<std::size_t>(c);
+        const int x = x0 + c % kTileSize, y = y0 + c / kTileSize;
         Tile* a;
         int ca;
         locate(x, y, a, ca);
-        if (!a) continue;
+        if (!a) return;
         for (int d = 0; d < 2; ++d) {
-          const int nx = x + (d == 0), ny = y + (d == 1);
-          if (nx >= w || ny >= h) continue;
           Tile* b;
           int cb;
-          locate(nx, ny, b, cb);
+          locate(x + (d == 0), y + (d == 1), b, cb);
           if (!b) continue;
           const double drop = surface(*a, ca) - surface(*b, cb);
           const double flow =
@@ -93,38 +105,39 @@ LevellingReport settle_wet_paint(Canvas& canvas, const std::vector<int>& tiles, 
                        : -levelling_flow_mm(b->wet_volume_mm[static_cast<std::size_t>(cb)], -drop,
                                             cell_mm, seconds, info);
           (d == 0 ? east : south)[i] = static_cast<float>(flow);
-          any = any || flow != 0.0;
+          if (flow != 0.0) tile_flows[k] = 1;
         }
       }
-    if (!any) break;
+    });
+    if (std::none_of(tile_flows.begin(), tile_flows.end(), [](std::uint8_t f) { return f != 0; }))
+      break;
     report.iterations = it + 1;
     // 2. Move paint and pigments face by face: what one cell loses, the other gains.
-    for (int y = 0; y < h; ++y)
-      for (int x = 0; x < w; ++x)
-        for (int d = 0; d < 2; ++d) {
-          const std::size_t i = static_cast<std::size_t>(y) * w + x;
-          const float flow = (d == 0 ? east : south)[i];
-          if (flow == 0.0f) continue;
-          Tile *a, *b;
-          int ca, cb;
-          locate(x, y, a, ca);
-          locate(x + (d == 0), y + (d == 1), b, cb);
-          Tile& from = flow > 0 ? *a : *b;
-          Tile& to = flow > 0 ? *b : *a;
-          const auto cf = static_cast<std::size_t>(flow > 0 ? ca : cb);
-          const auto ct = static_cast<std::size_t>(flow > 0 ? cb : ca);
-          const float amount = std::min(std::abs(flow), from.wet_volume_mm[cf]);
-          if (!(amount > 0.0f)) continue;
-          const float share = amount / from.wet_volume_mm[cf];
-          from.wet_volume_mm[cf] -= amount;
-          to.wet_volume_mm[ct] += amount;
-          for (int s = 0; s < std::min({slot_count, from.slot_count(), to.slot_count()}); ++s) {
-            const float moved = from.pigment(s)[cf] * share;
-            from.pigment(s)[cf] -= moved;
-            to.pigment(s)[ct] += moved;
-          }
-          report.moved_mm3 += amount * canvas.spec().cell_area_mm2();
+    for_each_cell([&](std::size_t i, int x, int y) {
+      for (int d = 0; d < 2; ++d) {
+        const float flow = (d == 0 ? east : south)[i];
+        if (flow == 0.0f) continue;
+        Tile *a, *b;
+        int ca, cb;
+        locate(x, y, a, ca);
+        locate(x + (d == 0), y + (d == 1), b, cb);
+        Tile& from = flow > 0 ? *a : *b;
+        Tile& to = flow > 0 ? *b : *a;
+        const auto cf = static_cast<std::size_t>(flow > 0 ? ca : cb);
+        const auto ct = static_cast<std::size_t>(flow > 0 ? cb : ca);
+        const float amount = std::min(std::abs(flow), from.wet_volume_mm[cf]);
+        if (!(amount > 0.0f)) continue;
+        const float share = amount / from.wet_volume_mm[cf];
+        from.wet_volume_mm[cf] -= amount;
+        to.wet_volume_mm[ct] += amount;
+        for (int s = 0; s < std::min({slot_count, from.slot_count(), to.slot_count()}); ++s) {
+          const float moved = from.pigment(s)[cf] * share;
+          from.pigment(s)[cf] -= moved;
+          to.pigment(s)[ct] += moved;
         }
+        report.moved_mm3 += amount * canvas.spec().cell_area_mm2();
+      }
+    });
   }
   if (report.iterations > 0)
     for (const int index : tiles) canvas.mark_dirty(index);

@@ -214,7 +214,8 @@ void Painting::end_stroke() {
   p.stroke_tiles.erase(std::unique(p.stroke_tiles.begin(), p.stroke_tiles.end()),
                        p.stroke_tiles.end());
   std::erase_if(p.stroke_tiles, [&p](int index) { return p.canvas.tile(index) == nullptr; });
-  settle_wet_paint(p.canvas, p.stroke_tiles, slot_count(), p.brush.body(), p.params);
+  p.arena.execute(
+      [&] { settle_wet_paint(p.canvas, p.stroke_tiles, slot_count(), p.brush.body(), p.params); });
   p.stroke_tiles.clear();
   p.history.commit();
 }
