@@ -64,13 +64,12 @@ LevellingReport settle_wet_paint(Canvas& canvas, const std::vector<int>& tiles, 
   // What crosses each east and south face of each listed tile's cells in one iteration. Only
   // the stroke's tiles are visited (not their bounding box: a long diagonal covers few of it).
   std::vector<float> east(tiles.size() * kTileCells), south(tiles.size() * kTileCells);
-  const auto for_each_cell = [&](auto&& body) {
-    for (std::size_t k = 0; k < tiles.size(); ++k) {
-      const int x0 = (tiles[k] % canvas.tiles_x() - tx0) * kTileSize;
-      const int y0 = (tiles[k] / canvas.tiles_x() - ty0) * kTileSize;
-      for (int c = 0; c < kTileCells; ++c)
-        body(k * kTileCells + static_cast<std::size_t>(c), x0 + c % kTileSize, y0 + c / kTileSize);
-    }
+  // Calls body(face index, x, y) for every cell of listed tile k (bounding-box coordinates).
+  const auto for_tile_cells = [&](std::size_t k, auto&& body) {
+    const int x0 = (tiles[k] % canvas.tiles_x() - tx0) * kTileSize;
+    const int y0 = (tiles[k] / canvas.tiles_x() - ty0) * kTileSize;
+    for (int c = 0; c < kTileCells; ++c)
+      body(k * kTileCells + static_cast<std::size_t>(c), x0 + c % kTileSize, y0 + c / kTileSize);
   };
   const int iterations = kMaxIterations;
   const double seconds = params.settle_time_s / iterations;
@@ -84,15 +83,12 @@ LevellingReport settle_wet_paint(Canvas& canvas, const std::vector<int>& tiles, 
     // computed alone from the state: tiles in parallel, the same bits on any thread count.
     std::vector<std::uint8_t> tile_flows(tiles.size(), 0);
     tbb::parallel_for(std::size_t{0}, tiles.size(), [&](std::size_t k) {
-      const int x0 = (tiles[k] % canvas.tiles_x() - tx0) * kTileSize;
-      const int y0 = (tiles[k] / canvas.tiles_x() - ty0) * kTileSize;
-      for (int c = 0; c < kTileCells; ++c) {
-        const std::size_t i = k * kTileCells + static_cast<std::size_t>(c);
-        const int x = x0 + c % kTileSize, y = y0 + c / kTileSize;
+      for_tile_cells(k, [&](std::size_t i, int x, int y) {
+        east[i] = south[i] = 0.0f;
         Tile* a;
         int ca;
         locate(x, y, a, ca);
-        if (!a) return;
+        if (!a) return;  // beyond the canvas's edge: a wall
         for (int d = 0; d < 2; ++d) {
           Tile* b;
           int cb;
@@ -107,37 +103,38 @@ LevellingReport settle_wet_paint(Canvas& canvas, const std::vector<int>& tiles, 
           (d == 0 ? east : south)[i] = static_cast<float>(flow);
           if (flow != 0.0) tile_flows[k] = 1;
         }
-      }
+      });
     });
     if (std::none_of(tile_flows.begin(), tile_flows.end(), [](std::uint8_t f) { return f != 0; }))
       break;
     report.iterations = it + 1;
     // 2. Move paint and pigments face by face: what one cell loses, the other gains.
-    for_each_cell([&](std::size_t i, int x, int y) {
-      for (int d = 0; d < 2; ++d) {
-        const float flow = (d == 0 ? east : south)[i];
-        if (flow == 0.0f) continue;
-        Tile *a, *b;
-        int ca, cb;
-        locate(x, y, a, ca);
-        locate(x + (d == 0), y + (d == 1), b, cb);
-        Tile& from = flow > 0 ? *a : *b;
-        Tile& to = flow > 0 ? *b : *a;
-        const auto cf = static_cast<std::size_t>(flow > 0 ? ca : cb);
-        const auto ct = static_cast<std::size_t>(flow > 0 ? cb : ca);
-        const float amount = std::min(std::abs(flow), from.wet_volume_mm[cf]);
-        if (!(amount > 0.0f)) continue;
-        const float share = amount / from.wet_volume_mm[cf];
-        from.wet_volume_mm[cf] -= amount;
-        to.wet_volume_mm[ct] += amount;
-        for (int s = 0; s < std::min({slot_count, from.slot_count(), to.slot_count()}); ++s) {
-          const float moved = from.pigment(s)[cf] * share;
-          from.pigment(s)[cf] -= moved;
-          to.pigment(s)[ct] += moved;
+    for (std::size_t k = 0; k < tiles.size(); ++k)
+      for_tile_cells(k, [&](std::size_t i, int x, int y) {
+        for (int d = 0; d < 2; ++d) {
+          const float flow = (d == 0 ? east : south)[i];
+          if (flow == 0.0f) continue;
+          Tile *a, *b;
+          int ca, cb;
+          locate(x, y, a, ca);
+          locate(x + (d == 0), y + (d == 1), b, cb);
+          Tile& from = flow > 0 ? *a : *b;
+          Tile& to = flow > 0 ? *b : *a;
+          const auto cf = static_cast<std::size_t>(flow > 0 ? ca : cb);
+          const auto ct = static_cast<std::size_t>(flow > 0 ? cb : ca);
+          const float amount = std::min(std::abs(flow), from.wet_volume_mm[cf]);
+          if (!(amount > 0.0f)) continue;
+          const float share = amount / from.wet_volume_mm[cf];
+          from.wet_volume_mm[cf] -= amount;
+          to.wet_volume_mm[ct] += amount;
+          for (int s = 0; s < std::min({slot_count, from.slot_count(), to.slot_count()}); ++s) {
+            const float moved = from.pigment(s)[cf] * share;
+            from.pigment(s)[cf] -= moved;
+            to.pigment(s)[ct] += moved;
+          }
+          report.moved_mm3 += amount * canvas.spec().cell_area_mm2();
         }
-        report.moved_mm3 += amount * canvas.spec().cell_area_mm2();
-      }
-    });
+      });
   }
   if (report.iterations > 0)
     for (const int index : tiles) canvas.mark_dirty(index);
