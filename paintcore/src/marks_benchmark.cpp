@@ -38,7 +38,34 @@ double dominant_period_cells(const std::vector<double>& band) {
   return best_period;
 }
 
+// The painted band of a profile across a stroke: [begin, end) of the values above 1 um.
+struct PaintedBand {
+  std::size_t begin = 0, end = 0;
+  std::size_t width() const { return end - begin; }
+};
+PaintedBand painted_band(const std::vector<double>& across) {
+  const auto painted = [](double v) { return v > 1e-3; };
+  const auto first = std::find_if(across.begin(), across.end(), painted);
+  if (first == across.end()) return {};
+  const auto last = std::find_if(across.rbegin(), across.rend(), painted);
+  return {static_cast<std::size_t>(first - across.begin()),
+          across.size() - static_cast<std::size_t>(last - across.rbegin())};
+}
+
+// Furrows: the period (cells) of the profile over the band's middle three fifths.
+double furrow_period_cells(const std::vector<double>& across, PaintedBand band) {
+  const std::size_t fifth = band.width() / 5;
+  return dominant_period_cells(
+      std::vector<double>(across.begin() + static_cast<std::ptrdiff_t>(band.begin + fifth),
+                          across.begin() + static_cast<std::ptrdiff_t>(band.end - fifth)));
+}
+
 }  // namespace
+
+double furrow_period_mm(const Canvas& canvas, int x0, int x1) {
+  const std::vector<double> across = mean_profile_across(canvas, x0, x1);
+  return furrow_period_cells(across, painted_band(across)) * canvas.cell_mm();
+}
 
 MarkFigures measure_mark(const std::string& head_name, PaintBody body, const MarkStroke& stroke) {
   const double cell_mm = 25.4 / stroke.dpi;
@@ -84,31 +111,23 @@ MarkFigures measure_mark(const std::string& head_name, PaintBody body, const Mar
   const int x0 = static_cast<int>((margin_mm + stroke.length_mm / 3) / cell_mm);
   const int x1 = static_cast<int>((margin_mm + 2 * stroke.length_mm / 3) / cell_mm);
   const std::vector<double> across = mean_profile_across(c, x0, x1);
-  const auto painted = [](double v) { return v > 1e-3; };
-  const auto first = std::find_if(across.begin(), across.end(), painted);
-  const auto last = std::find_if(across.rbegin(), across.rend(), painted);
-  if (first == across.end()) return f;
-  const auto begin = static_cast<std::size_t>(first - across.begin());
-  const std::size_t end = across.size() - static_cast<std::size_t>(last - across.rbegin());
-  f.width_mm = static_cast<double>(end - begin) * cell_mm;
-  const std::size_t third = (end - begin) / 3;
+  const PaintedBand band = painted_band(across);
+  if (band.width() == 0) return f;
+  const std::size_t begin = band.begin, end = band.end;
+  f.width_mm = static_cast<double>(band.width()) * cell_mm;
+  const std::size_t third = band.width() / 3;
   std::vector<double> middle(across.begin() + static_cast<std::ptrdiff_t>(begin + third),
                              across.begin() + static_cast<std::ptrdiff_t>(end - third));
-  std::vector<double> sorted = middle;
-  std::nth_element(sorted.begin(), sorted.begin() + static_cast<std::ptrdiff_t>(sorted.size() / 2),
-                   sorted.end());
-  const double middle_median = sorted.empty() ? 0.0 : sorted[sorted.size() / 2];
+  std::nth_element(middle.begin(), middle.begin() + static_cast<std::ptrdiff_t>(middle.size() / 2),
+                   middle.end());
+  const double middle_median = middle.empty() ? 0.0 : middle[middle.size() / 2];
   const double edge_crest =
       std::max(*std::max_element(across.begin() + static_cast<std::ptrdiff_t>(begin),
                                  across.begin() + static_cast<std::ptrdiff_t>(begin + third)),
                *std::max_element(across.begin() + static_cast<std::ptrdiff_t>(end - third),
                                  across.begin() + static_cast<std::ptrdiff_t>(end)));
   f.edge_ridge_mm = edge_crest - middle_median;
-  // Furrows: the period of the profile over the middle three fifths.
-  const std::size_t fifth = (end - begin) / 5;
-  const std::vector<double> band(across.begin() + static_cast<std::ptrdiff_t>(begin + fifth),
-                                 across.begin() + static_cast<std::ptrdiff_t>(end - fifth));
-  f.furrow_period_mm = dominant_period_cells(band) * cell_mm;
+  f.furrow_period_mm = furrow_period_cells(across, band) * cell_mm;
   f.bristle_spacing_mm =
       brush.head().bristles.spacing_mm * (1.0 + brush.head().splay * stroke.pressure);
   return f;

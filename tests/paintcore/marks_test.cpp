@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <complex>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -151,39 +150,6 @@ TEST(Marks, AStillBrushPressedSqueezesPaintOut) {
   EXPECT_GT(press.second, tap.second);  // held, paint is pressed out from under the head
 }
 
-// The dominant period (mm) of the thickness across a stroke along x, from a DFT of the
-// profile over the stroke's middle, excluding the edges.
-double furrow_period_mm(const Painting& p) {
-  const Canvas& c = p.canvas();
-  const int x0 = c.width_cells() / 3, x1 = 2 * c.width_cells() / 3;
-  std::vector<double> across;
-  for (int y = 0; y < c.height_cells(); ++y) {
-    double sum = 0.0;
-    for (int x = x0; x < x1; ++x) sum += c.wet_volume_mm(x, y);
-    across.push_back(sum / (x1 - x0));
-  }
-  // The painted band, less a fifth at each side (the edge ridges).
-  const auto first = std::find_if(across.begin(), across.end(), [](double v) { return v > 1e-3; });
-  const auto last = std::find_if(across.rbegin(), across.rend(), [](double v) { return v > 1e-3; });
-  const auto begin = static_cast<std::size_t>(first - across.begin());
-  const std::size_t end = across.size() - static_cast<std::size_t>(last - across.rbegin());
-  const std::size_t margin = (end - begin) / 5;
-  std::vector<double> band(across.begin() + static_cast<std::ptrdiff_t>(begin + margin),
-                           across.begin() + static_cast<std::ptrdiff_t>(end - margin));
-  double mean = 0.0;
-  for (double v : band) mean += v / static_cast<double>(band.size());
-  const auto n = static_cast<double>(band.size());
-  double best_power = 0.0, best_period = 0.0;
-  for (int k = 2; k < static_cast<int>(band.size()) / 2; ++k) {
-    std::complex<double> sum;
-    for (std::size_t i = 0; i < band.size(); ++i)
-      sum += (band[i] - mean) *
-             std::polar(1.0, -2.0 * std::numbers::pi * k * static_cast<double>(i) / n);
-    if (std::norm(sum) > best_power) best_power = std::norm(sum), best_period = n / k;
-  }
-  return best_period * c.cell_mm();
-}
-
 TEST(Marks, FurrowsFollowTheBristleSpacing) {
   for (const double spacing : {0.6, 1.0}) {
     SCOPED_TRACE(spacing);
@@ -200,7 +166,8 @@ TEST(Marks, FurrowsFollowTheBristleSpacing) {
       p.stroke_to(s);
     }
     p.end_stroke();
-    EXPECT_NEAR(furrow_period_mm(p), spacing, 0.15 * spacing);
+    const int width = p.canvas().width_cells();
+    EXPECT_NEAR(furrow_period_mm(p.canvas(), width / 3, 2 * width / 3), spacing, 0.15 * spacing);
   }
 }
 
@@ -241,6 +208,30 @@ TEST(Marks, LevellingFlowsOnlyPastTheYieldSlope) {
   EXPECT_GT(flow, 0.0);
   EXPECT_LE(flow, 0.125 * 0.01);
   EXPECT_EQ(levelling_flow_mm(0.0, 1.0, 0.1, 1.0, fluid), 0.0);  // no paint, no flow
+}
+
+TEST(Marks, LevellingTreatsAPartialEdgeTileLikeAFullOne) {
+  // Two equal blocks of fluid paint, one in a full tile and one in the canvas's last tile,
+  // 36 of whose 64 columns lie on the canvas: both level alike.
+  Canvas canvas(CanvasSpec{100, 64, 254.0, 0});
+  for (const int index : {0, 1}) canvas.ensure_tile(index, 1);
+  for (int y = 20; y < 30; ++y)
+    for (const int x0 : {10, 74}) {
+      Tile& tile = *canvas.tile_slot(x0 / kTileSize);
+      for (int x = x0; x < x0 + 10; ++x) {
+        const auto c = static_cast<std::size_t>(y * kTileSize + x % kTileSize);
+        tile.wet_volume_mm[c] = 1.0f;
+        tile.pigment(0)[c] = 1.0f;
+      }
+    }
+  SimulationParams params;
+  const LevellingReport report = settle_wet_paint(canvas, {0, 1}, 1, PaintBody::fluid, params);
+  EXPECT_GT(report.iterations, 0);
+  for (int y = 15; y < 35; ++y)
+    for (int dx = -5; dx < 15; ++dx)
+      EXPECT_EQ(canvas.wet_volume_mm(10 + dx, y), canvas.wet_volume_mm(74 + dx, y))
+          << dx << "," << y;
+  EXPECT_LT(canvas.wet_volume_mm(79, 25), 0.9f);  // it did level
 }
 
 TEST(Marks, AStrokeEndsInAPile) {
@@ -402,7 +393,7 @@ TEST(Marks, AFastCircleStaysRound) {
   // The first segment of a stroke has no sample before it: a straight chord.
   const StrokeSegment first({0, 0}, {2, 0}, nullptr);
   EXPECT_NEAR(first.at(0.5)[1], 0.0, 1e-12);
-  EXPECT_NEAR(first.length(), 2.0, 1e-12);
+  EXPECT_NEAR(first.max_speed(), 2.0, 1e-12);
 }
 
 }  // namespace

@@ -38,6 +38,11 @@ struct MarkStroke {
   SimulationParams params;
 };
 
+// The dominant period (mm) of the paint's thickness across a stroke drawn along x, from a
+// discrete Fourier transform of its profile averaged over canvas columns [x0, x1), over the
+// middle three fifths of the painted band (the edge ridges left out); 0 where none is painted.
+double furrow_period_mm(const Canvas& canvas, int x0, int x1);
+
 // Paints the standard stroke with head `head` (from the brushes folder) and `body`.
 MarkFigures measure_mark(const std::string& head, PaintBody body, const MarkStroke& stroke = {});
 
