@@ -35,18 +35,6 @@ std::array<double, 2> StrokeSegment::at(double t) const {
           h00 * p0_[1] + h10 * m0_[1] + h01 * p1_[1] + h11 * m1_[1]};
 }
 
-double StrokeSegment::length() const {
-  constexpr int kChords = 32;
-  double total = 0.0;
-  std::array<double, 2> last = p0_;
-  for (int k = 1; k <= kChords; ++k) {
-    const auto next = at(static_cast<double>(k) / kChords);
-    total += std::hypot(next[0] - last[0], next[1] - last[1]);
-    last = next;
-  }
-  return total;
-}
-
 double StrokeSegment::max_speed() const {
   constexpr int kChords = 32;
   if (straight_) return std::hypot(p1_[0] - p0_[0], p1_[1] - p0_[1]);

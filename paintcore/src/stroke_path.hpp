@@ -15,10 +15,9 @@ class StrokeSegment {
   StrokeSegment(std::array<double, 2> from, std::array<double, 2> to,
                 const std::array<double, 2>* before);
   std::array<double, 2> at(double t) const;  // t in [0, 1]
-  double length() const;                     // arc length, from 32 chords
   // The most the point moves per unit of t (the longest of 32 chords, times 32, with a 2 %
-  // margin on a curve for the speed's variation within a chord): at least length(), and
-  // exactly it on a straight segment.
+  // margin on a curve for the speed's variation within a chord): at least the arc length,
+  // and exactly the chord's length on a straight segment.
   double max_speed() const;
 
  private:
