@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "image_difference.hpp"
 #include "impasto/paintcore/canvas.hpp"
 #include "impasto/paintcore/painting.hpp"
 #include "impasto/render/tile_renderer.hpp"
@@ -18,6 +19,8 @@
 
 namespace impasto::render_gl {
 namespace {
+
+using test::max_difference;
 
 using paintcore::kTileCells;
 using paintcore::kTileSize;
@@ -152,15 +155,6 @@ INSTANTIATE_TEST_SUITE_P(
                            render::DisplayEncoding::linear_srgb, false,
                            render::ReflectanceStorage::float32}),
     [](const ::testing::TestParamInfo<Case>& info) { return info.param.name; });
-
-// Max |GPU - CPU| over every channel of two images of the same size.
-double max_difference(const render::Image& a, const render::Image& b) {
-  double worst = 0.0;
-  for (std::size_t i = 0; i < a.rgb.size(); ++i) {
-    worst = std::max(worst, std::abs(double(a.rgb[i]) - b.rgb[i]));
-  }
-  return worst;
-}
 
 render::Image read_back(const Framebuffer& target) {
   const auto rgba = target.read_rgba_float();

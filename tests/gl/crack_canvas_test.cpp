@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "image_difference.hpp"
 #include "impasto/paintcore/painting.hpp"
 #include "impasto/render/tile_renderer.hpp"
 #include "impasto/render_gl/canvas_renderer.hpp"
@@ -17,6 +18,8 @@
 
 namespace impasto::render_gl {
 namespace {
+
+using test::max_difference;
 
 using paintcore::kTileCells;
 using paintcore::kTileSize;
@@ -62,14 +65,6 @@ paintcore::Canvas cracked_canvas() {
     set_crack(canvas, x, std::min(99, y + 1), {depth, half_width, shape, walls});
   }
   return canvas;
-}
-
-double max_difference(const render::Image& a, const render::Image& b) {
-  double worst = 0.0;
-  for (std::size_t i = 0; i < a.rgb.size(); ++i) {
-    worst = std::max(worst, std::abs(double(a.rgb[i]) - b.rgb[i]));
-  }
-  return worst;
 }
 
 TEST(CrackCanvas, GpuMatchesCpuWithinTwoLevelsOf255) {

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "image_difference.hpp"
 #include "impasto/paintcore/canvas.hpp"
 #include "impasto/render/tile_renderer.hpp"
 #include "impasto/render_gl/canvas_renderer.hpp"
@@ -21,6 +22,8 @@
 
 namespace impasto::render_gl {
 namespace {
+
+using test::max_difference;
 
 using paintcore::kTileSize;
 
@@ -55,14 +58,6 @@ paintcore::Canvas thick_canvas() {
   paintcore::Canvas canvas({170, 110, 150.0, 5});
   paint_ridges(canvas, 2.5f, {0, 1, 3, 4});
   return canvas;
-}
-
-double max_difference(const render::Image& a, const render::Image& b) {
-  double worst = 0.0;
-  for (std::size_t i = 0; i < a.rgb.size(); ++i) {
-    worst = std::max(worst, std::abs(double(a.rgb[i]) - b.rgb[i]));
-  }
-  return worst;
 }
 
 struct Light {
