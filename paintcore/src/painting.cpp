@@ -200,10 +200,7 @@ void Painting::end_stroke() {
   // The brush lifts where it last touched, leaving a pile; then the stroke's paint levels as
   // far as its body lets it (both part of the stroke's undo step).
   if (p.last_contact) {
-    const auto before_change = [&p](int index) {
-      p.history.before_tile_change(index, p.canvas.tile(index));
-      p.stroke_tiles.push_back(index);
-    };
+    const auto before_change = [&p](int index) { p.before_stroke_tile_change(index); };
     p.arena.execute([&] {
       p.stepper.step(p.canvas, p.brush, slot_count(), p.params, *p.last_contact, 0.0, 0.0, 0.0,
                      before_change, true);
@@ -315,10 +312,7 @@ void Painting::stroke_to(const PenSample& sample) {
       std::max({1.0, std::ceil(cells_per_t - 1e-9), std::ceil(seconds / max_seconds)}));
   const double step_seconds = seconds / static_cast<double>(count);
   const double follow_cells = std::max(1.0, p.brush.settings().size_mm / p.canvas.cell_mm());
-  const auto before_change = [&p](int index) {
-    p.history.before_tile_change(index, p.canvas.tile(index));
-    p.stroke_tiles.push_back(index);
-  };
+  const auto before_change = [&p](int index) { p.before_stroke_tile_change(index); };
   p.arena.execute([&] {
     std::array<double, 2> last = position(0.0);
     for (std::int64_t k = 1; k <= count; ++k) {

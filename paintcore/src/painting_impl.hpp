@@ -44,6 +44,13 @@ struct Painting::Impl {
   std::optional<std::array<double, 2>> stroke_origin;  // where the stroke began (cells)
   std::optional<BrushPose> last_contact;  // where the brush last touched paint: it lifts there
   std::vector<int> stroke_tiles;          // tiles the stroke changed: where its paint levels
+
+  // What a stroke's steps call before they first change a tile: keep it for undo, and note
+  // it as the stroke's.
+  void before_stroke_tile_change(int index) {
+    history.before_tile_change(index, canvas.tile(index));
+    stroke_tiles.push_back(index);
+  }
 };
 
 }  // namespace impasto::paintcore
