@@ -10,6 +10,11 @@ bool SampleEvent::operator==(const SampleEvent& other) const {
          a.rotation_deg == b.rotation_deg && a.buttons == b.buttons;
 }
 
+std::string StrokeFile::where(std::size_t i) const {
+  if (!source.empty() && i < lines.size()) return source + ":" + std::to_string(lines[i]);
+  return "record " + std::to_string(i + 1);
+}
+
 std::vector<paintcore::PenSample> pen_samples(const StrokeFile& file) {
   std::vector<paintcore::PenSample> samples;
   for (const StrokeEvent& event : file.events) {

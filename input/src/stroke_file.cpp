@@ -1,5 +1,6 @@
 #include <impasto/input/stroke_file.hpp>
 
+#include <fstream>
 #include <istream>
 #include <ostream>
 #include <sstream>
@@ -16,21 +17,28 @@ constexpr std::string_view kMagic = "impasto-strokes";
 void parse_header(const std::string& line, const detail::LineContext& where, StrokeFile& file) {
   const auto fields = detail::split_fields(line, where);
   if (fields.size() != 2 || fields[0] != kMagic) {
-    where.fail("", "not an Impasto stroke file (the first line must be 'impasto-strokes 1')");
+    where.fail("", "not an Impasto stroke file (the first line must be 'impasto-strokes " +
+                       std::to_string(kStrokeFormatVersion) + "')");
   }
   file.version = static_cast<int>(detail::parse_integer(fields[1], where, "version"));
-  if (file.version != kStrokeFormatVersion) {
+  if (file.version < kOldestStrokeFormatVersion || file.version > kStrokeFormatVersion) {
     where.fail("version", "unsupported version " + std::string(fields[1]) +
-                              " (this program reads version " +
+                              " (this program reads versions " +
+                              std::to_string(kOldestStrokeFormatVersion) + " to " +
                               std::to_string(kStrokeFormatVersion) + ")");
   }
 }
 
-// Rules that span lines: one canvas record before the first sample, time never goes back.
+// Rules that span lines: one canvas record and one origin before the first sample, time
+// never goes back.
 class SessionChecks {
  public:
   void check(const StrokeEvent& event, const detail::LineContext& where) {
-    if (std::holds_alternative<CanvasEvent>(event)) {
+    if (std::holds_alternative<OriginEvent>(event)) {
+      if (seen_origin_) where.fail("", "a second 'from' record");
+      if (seen_sample_) where.fail("", "'from' must come before the first pen sample");
+      seen_origin_ = true;
+    } else if (std::holds_alternative<CanvasEvent>(event)) {
       if (seen_canvas_) where.fail("", "a second 'canvas' record");
       if (seen_sample_) where.fail("", "'canvas' must come before the first pen sample");
       seen_canvas_ = true;
@@ -46,6 +54,7 @@ class SessionChecks {
 
  private:
   bool seen_canvas_ = false;
+  bool seen_origin_ = false;
   bool seen_sample_ = false;
   double last_time_s_ = 0.0;
 };
@@ -54,6 +63,7 @@ class SessionChecks {
 
 StrokeFile parse_strokes(std::istream& in, const std::string& source_name) {
   StrokeFile file;
+  file.source = source_name;
   std::string line;
   int line_number = 0;
   if (!std::getline(in, line)) throw InputFormatError(source_name, 1, "", "empty file");
@@ -63,11 +73,30 @@ StrokeFile parse_strokes(std::istream& in, const std::string& source_name) {
   while (std::getline(in, line)) {
     ++line_number;
     const detail::LineContext where{source_name, line_number};
-    const auto fields = detail::split_fields(line, where);
-    if (fields.empty()) continue;  // blank or comment
-    StrokeEvent event = detail::parse_record(fields, where);
-    checks.check(event, where);
+    // getline reached the end of the input without a newline: the last write was torn.
+    const bool torn = in.eof() && !line.empty();
+    const auto skip_torn = [&] {
+      file.warnings.push_back(source_name + ":" + std::to_string(line_number) +
+                              ": the last line is cut short (no newline: a torn write); "
+                              "skipped, everything before it is kept");
+    };
+    if (torn && file.version >= 2) {
+      skip_torn();
+      break;
+    }
+    StrokeEvent event;
+    try {
+      const auto fields = detail::split_fields(line, where);
+      if (fields.empty()) continue;  // blank or comment
+      event = detail::parse_record(fields, where);
+      checks.check(event, where);
+    } catch (const InputFormatError&) {
+      if (!torn) throw;
+      skip_torn();
+      break;
+    }
     file.events.push_back(std::move(event));
+    file.lines.push_back(line_number);
   }
   if (in.bad()) throw InputFormatError(source_name, line_number, "", "read error");
   return file;
@@ -92,10 +121,10 @@ std::string format_event(const StrokeEvent& event) {
 }
 
 void format_strokes(std::ostream& out, const StrokeFile& file) {
-  if (file.version != kStrokeFormatVersion) {
+  if (file.version < kOldestStrokeFormatVersion || file.version > kStrokeFormatVersion) {
     throw std::runtime_error("cannot write stroke file version " + std::to_string(file.version));
   }
-  out << kMagic << ' ' << kStrokeFormatVersion << '\n';
+  out << kMagic << ' ' << file.version << '\n';
   for (const StrokeEvent& event : file.events) out << format_event(event) << '\n';
 }
 
@@ -109,16 +138,16 @@ void write_stroke_file(const std::filesystem::path& path, const StrokeFile& file
   if (!out) throw std::runtime_error(path.string() + ": write failed");
 }
 
-StrokeRecorder::StrokeRecorder(const std::filesystem::path& path)
-    : path_(path), out_(path, std::ios::binary | std::ios::trunc) {
-  if (!out_) throw std::runtime_error(path.string() + ": cannot create the file");
-  out_ << kMagic << ' ' << kStrokeFormatVersion << '\n' << std::flush;
+StrokeRecorder::StrokeRecorder(const std::filesystem::path& path) : file_(path) {
+  if (!file_.append_line(std::string(kMagic) + ' ' + std::to_string(kStrokeFormatVersion))) {
+    throw std::runtime_error(file_.error());
+  }
 }
 
-void StrokeRecorder::record(const StrokeEvent& event) {
-  out_ << format_event(event) << '\n' << std::flush;
-  if (!out_) throw std::runtime_error(path_.string() + ": write failed");
+bool StrokeRecorder::record(const StrokeEvent& event) {
+  if (!file_.append_line(format_event(event))) return false;
   ++count_;
+  return true;
 }
 
 }  // namespace impasto::input

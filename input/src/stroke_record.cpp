@@ -142,6 +142,76 @@ LoadEvent parse_load(Fields f, const LineContext& where) {
   return load;
 }
 
+// A file path in a record: in double quotes, with '"', '%' and control characters written
+// as %XX, so that any path fits on one line and reads back the same.
+std::string quoted_path(const std::string& path) {
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string out = "\"";
+  for (char c : path) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '"' || c == '%' || u < 0x20 || u == 0x7f) {
+      out += '%';
+      out += kHex[u >> 4];
+      out += kHex[u & 15];
+    } else {
+      out += c;
+    }
+  }
+  return out + "\"";
+}
+
+std::string parse_path(std::string_view field, const LineContext& where) {
+  if (!is_quoted(field)) where.fail("path", "a path is written in double quotes");
+  const std::string_view text = unquote(field);
+  if (text.empty()) where.fail("path", "empty path");
+  const auto hex = [&](char c) -> int {
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+    where.fail("path", "'%' must be followed by two hex digits");
+  };
+  std::string path;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] != '%') {
+      path += text[i];
+      continue;
+    }
+    if (i + 2 >= text.size()) {
+      where.fail("path", "'%' must be followed by two hex digits");
+    }
+    path += static_cast<char>(hex(text[i + 1]) * 16 + hex(text[i + 2]));
+    i += 2;
+  }
+  if (path.find('\0') != std::string::npos) where.fail("path", "NUL in path");
+  return path;
+}
+
+std::string hash_text(std::uint64_t hash) {
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string text(16, '0');
+  for (int i = 15; i >= 0; --i, hash >>= 4) text[static_cast<std::size_t>(i)] = kHex[hash & 15];
+  return text;
+}
+
+std::uint64_t parse_hash(std::string_view text, const LineContext& where) {
+  if (text.size() != 16) where.fail("state_hash", "expected 16 hex digits");
+  std::uint64_t hash = 0;
+  for (char c : text) {
+    int digit = -1;
+    if (c >= '0' && c <= '9') digit = c - '0';
+    if (c >= 'a' && c <= 'f') digit = c - 'a' + 10;
+    if (digit < 0) where.fail("state_hash", "expected 16 lower-case hex digits");
+    hash = hash * 16 + static_cast<std::uint64_t>(digit);
+  }
+  return hash;
+}
+
+OriginEvent parse_origin(const Fields& f, const LineContext& where) {
+  if (f.size() == 2 && f[1] == "new") return OriginEvent{};
+  if (f.size() != 3) where.fail("", "'from' takes 'new' or a \"path\" and its state hash");
+  return OriginEvent{false, parse_path(f[1], where), parse_hash(f[2], where)};
+}
+
 struct RecordLine {
   std::string text;
   void add(std::string_view field) {
@@ -194,6 +264,13 @@ struct LineWriter {
   std::string operator()(const DryEvent& e) const { return "dry " + shortest(e.fraction); }
   std::string operator()(const UndoEvent&) const { return "undo"; }
   std::string operator()(const RedoEvent&) const { return "redo"; }
+  std::string operator()(const OriginEvent& e) const {
+    if (e.new_canvas) return "from new";
+    return "from " + quoted_path(e.painting) + " " + hash_text(e.state_hash);
+  }
+  std::string operator()(const SavedEvent& e) const {
+    return "saved " + quoted_path(e.painting) + " " + hash_text(e.state_hash);
+  }
 };
 
 }  // namespace
@@ -223,6 +300,11 @@ StrokeEvent parse_record(const Fields& f, const LineContext& where) {
   if (kind == "redo") {
     expect_count(f, 1, where, "none");
     return RedoEvent{};
+  }
+  if (kind == "from") return parse_origin(f, where);
+  if (kind == "saved") {
+    expect_count(f, 3, where, "\"path\" state_hash");
+    return SavedEvent{parse_path(f[1], where), parse_hash(f[2], where)};
   }
   std::string shown;
   for (char c : kind.substr(0, 40)) shown += (c >= 0x20 && c < 0x7f) ? c : '?';

@@ -101,26 +101,26 @@ wipe
   expect_conserved(painting, 1e-5);
 }
 
-TEST(Replay, UnknownToolNamesTheRecord) {
+TEST(Replay, UnknownToolNamesTheFileAndLine) {
   std::istringstream text("impasto-strokes 1\ntool trowel\n");
   const auto file = input::parse_strokes(text, "bad.strokes");
   try {
     replay(file, {});
     FAIL() << "expected an error";
   } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("record 1"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("bad.strokes:2: "), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("trowel"), std::string::npos) << e.what();
   }
 }
 
-TEST(Replay, UnknownPigmentNamesTheRecordAndThePigment) {
+TEST(Replay, UnknownPigmentNamesTheFileLineAndThePigment) {
   std::istringstream text("impasto-strokes 1\nwipe\nload 5 \"Unobtainium Blue\" 1\n");
   const auto file = input::parse_strokes(text, "bad.strokes");
   try {
     replay(file, {});
     FAIL() << "expected an error";
   } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("record 2"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("bad.strokes:3: "), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("Unobtainium Blue"), std::string::npos) << e.what();
   }
 }

@@ -44,10 +44,10 @@ INSTANTIATE_TEST_SUITE_P(
         ErrorCase{"Empty", "", "bad.strokes:1: empty file"},
         ErrorCase{"NoHeader", "pen 0 0 0 0 0 0 0 0\n",
                   "bad.strokes:1: not an Impasto stroke file (the first line must be "
-                  "'impasto-strokes 1')"},
-        ErrorCase{"UnknownVersion", "impasto-strokes 2\n",
-                  "bad.strokes:1: field 'version': unsupported version 2 (this program reads "
-                  "version 1)"},
+                  "'impasto-strokes 2')"},
+        ErrorCase{"UnknownVersion", "impasto-strokes 3\n",
+                  "bad.strokes:1: field 'version': unsupported version 3 (this program reads "
+                  "versions 1 to 2)"},
         ErrorCase{"VersionNotANumber", "impasto-strokes one\n",
                   "bad.strokes:1: field 'version': expected an integer, found 'one'"},
         ErrorCase{"UnknownRecord", kHeader + "\nsplash 1 2\n",

@@ -56,7 +56,7 @@ TEST(StrokeFile, WriteThenReadGivesIdenticalEvents) {
   std::stringstream text;
   format_strokes(text, original);
   const StrokeFile read = parse_strokes(text, "memory");
-  EXPECT_EQ(read.version, 1);
+  EXPECT_EQ(read.version, kStrokeFormatVersion);
   ASSERT_EQ(read.events.size(), original.events.size());
   for (std::size_t i = 0; i < read.events.size(); ++i) {
     EXPECT_EQ(read.events[i], original.events[i]) << "event " << i;
@@ -68,7 +68,7 @@ TEST(StrokeFile, FirstLineIsTheVersionHeader) {
   format_strokes(text, session());
   std::string first;
   std::getline(text, first);
-  EXPECT_EQ(first, "impasto-strokes 1");
+  EXPECT_EQ(first, "impasto-strokes 2");
 }
 
 TEST(StrokeFile, ReadsCommentsBlankLinesAndQuotedNames) {
@@ -148,7 +148,7 @@ TEST(StrokeRecorder, EveryRecordIsOnDiskAtOnce) {
   StrokeRecorder recorder(tmp.path());
   StrokeFile so_far;
   for (const StrokeEvent& event : expected.events) {
-    recorder.record(event);
+    EXPECT_TRUE(recorder.record(event));
     so_far.events.push_back(event);
     // Read while the recorder is still open: nothing may be waiting in a buffer.
     EXPECT_EQ(read_stroke_file(tmp.path()), so_far);

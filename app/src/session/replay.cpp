@@ -26,13 +26,6 @@ paintcore::PaintBody load_body(const input::LoadEvent& load) {
   throw std::runtime_error("load: unknown paint body '" + load.body.substr(0, 32) + "'");
 }
 
-bool has_load_record(const input::StrokeFile& file) {
-  for (const auto& event : file.events) {
-    if (std::holds_alternative<input::LoadEvent>(event)) return true;
-  }
-  return false;
-}
-
 std::string hex64(std::uint64_t value) {
   char text[17];
   std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(value));
@@ -40,6 +33,13 @@ std::string hex64(std::uint64_t value) {
 }
 
 }  // namespace
+
+bool has_load_record(const input::StrokeFile& file) {
+  for (const auto& event : file.events) {
+    if (std::holds_alternative<input::LoadEvent>(event)) return true;
+  }
+  return false;
+}
 
 const std::vector<std::string>& demo_palette() {
   static const std::vector<std::string> palette = {
@@ -120,6 +120,9 @@ void SessionPlayer::apply(const input::StrokeEvent& event) {
           [&](const input::DryEvent& e) { painting_.dry(e.fraction); },
           [&](const input::UndoEvent&) { painting_.undo(); },
           [&](const input::RedoEvent&) { painting_.redo(); },
+          // Where the session began and was saved: used by rebuild_session (rebuild.hpp).
+          [&](const input::OriginEvent&) {},
+          [&](const input::SavedEvent&) {},
       },
       event);
 }
@@ -158,7 +161,7 @@ paintcore::Painting replay(const input::StrokeFile& file, const ReplayOptions& o
     try {
       player.apply(file.events[i]);
     } catch (const std::exception& e) {
-      throw std::runtime_error("record " + std::to_string(i + 1) + ": " + e.what());
+      throw std::runtime_error(file.where(i) + ": " + e.what());
     }
   }
   player.finish();

@@ -36,6 +36,9 @@ struct ReplayReport {
   double seconds = 0.0;  // wall time of the simulation
 };
 
+// Whether the file loads the brush anywhere (if not, a replay auto-loads it per stroke).
+bool has_load_record(const input::StrokeFile& file);
+
 // Pigments the auto-loaded brush cycles through, one per stroke.
 const std::vector<std::string>& demo_palette();
 

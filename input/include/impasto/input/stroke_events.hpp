@@ -3,14 +3,18 @@
 // they happened, so that a whole session can be replayed. Files: docs/stroke-format.md.
 #include <impasto/paintcore/pen_sample.hpp>
 
+#include <cstdint>
 #include <string>
 #include <variant>
 #include <vector>
 
 namespace impasto::input {
 
-// The version of the stroke file format this program reads and writes.
-inline constexpr int kStrokeFormatVersion = 1;
+// The version of the stroke file format this program writes, and the oldest it reads.
+// Version 2 adds the `from` and `saved` records and ends every record with a newline, so a
+// last line without one is a torn write.
+inline constexpr int kStrokeFormatVersion = 2;
+inline constexpr int kOldestStrokeFormatVersion = 1;
 
 // One pen sample. A stroke is a maximal run of samples whose tip bit (kPenTip) is set.
 struct SampleEvent {
@@ -83,14 +87,41 @@ struct RedoEvent {
   bool operator==(const RedoEvent&) const = default;
 };
 
-using StrokeEvent = std::variant<SampleEvent, CanvasEvent, ToolEvent, BrushEvent, LoadEvent,
-                                 WipeEvent, DryEvent, UndoEvent, RedoEvent>;
+// The painting a session started from: a new canvas (the `canvas` record gives it), or a
+// painting file as it was then (path and Painting::state_hash()).
+struct OriginEvent {
+  bool new_canvas = true;
+  std::string painting;  // when !new_canvas
+  std::uint64_t state_hash = 0;
+  bool operator==(const OriginEvent&) const = default;
+};
 
-// A whole stroke file: its format version and its records in order.
+// The painting was saved here (by the user, or an autosave): the file and the state it holds.
+struct SavedEvent {
+  std::string painting;
+  std::uint64_t state_hash = 0;
+  bool operator==(const SavedEvent&) const = default;
+};
+
+using StrokeEvent =
+    std::variant<SampleEvent, CanvasEvent, ToolEvent, BrushEvent, LoadEvent, WipeEvent, DryEvent,
+                 UndoEvent, RedoEvent, OriginEvent, SavedEvent>;
+
+// A whole stroke file: its format version and its records in order. Two files are equal
+// when their versions and events are; where they were read from does not count.
 struct StrokeFile {
   int version = kStrokeFormatVersion;
   std::vector<StrokeEvent> events;
-  bool operator==(const StrokeFile&) const = default;
+  // Where the file was read from, for messages: its name, each event's line, and what the
+  // reader let pass with a warning (a torn last line).
+  std::string source;
+  std::vector<int> lines;
+  std::vector<std::string> warnings;
+  bool operator==(const StrokeFile& other) const {
+    return version == other.version && events == other.events;
+  }
+  // "FILE:LINE" of event i, or "record N" when the file was not read from text.
+  std::string where(std::size_t i) const;
 };
 
 // A stroke: the index range [begin, end) of its samples in a list of pen samples.

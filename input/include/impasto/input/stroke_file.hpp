@@ -4,14 +4,17 @@
 #include <impasto/input/stroke_events.hpp>
 
 #include <filesystem>
-#include <fstream>
 #include <iosfwd>
 #include <string>
+
+#include "impasto/input/append_only_file.hpp"
 
 namespace impasto::input {
 
 // Parses a stroke file from a stream; source_name is used in error messages.
-// Throws InputFormatError naming the source, the line and the field.
+// Throws InputFormatError naming the source, the line and the field. A last line without
+// its newline is a torn write: it is skipped with a warning in StrokeFile::warnings (in a
+// version 1 file only when it does not parse), and everything before it is kept.
 StrokeFile parse_strokes(std::istream& in, const std::string& source_name);
 
 // Reads a stroke file; throws InputFormatError (also when it cannot be opened).
@@ -27,20 +30,29 @@ std::string format_event(const StrokeEvent& event);
 // Writes a stroke file; throws std::runtime_error naming the path when it cannot.
 void write_stroke_file(const std::filesystem::path& path, const StrokeFile& file);
 
-// Appends events to a stroke file as they happen. Every record is flushed at once, so a
-// crash loses at most the record being written.
+// Appends events to a stroke file as they happen, each as one whole line written at once
+// (a crash of the program loses nothing written; sync() makes it survive a power cut too).
+// A write that fails (a full disk) stops the recording there: the file stays a readable
+// prefix of the session and error() says why; the caller shows it.
 class StrokeRecorder {
  public:
-  // Creates (truncates) the file and writes the header line.
+  // Creates the file, which must not exist yet (a symlink there is refused), and writes the
+  // header line. Throws std::runtime_error naming the path when it cannot.
   explicit StrokeRecorder(const std::filesystem::path& path);
 
-  void record(const StrokeEvent& event);
-  const std::filesystem::path& path() const { return path_; }
+  // Records one event. False once the file cannot take it (error()). Throws
+  // InputFormatError for an event that cannot be written exactly (NaN).
+  bool record(const StrokeEvent& event);
+  // Makes every record so far durable. False when it cannot (error()).
+  bool sync() { return file_.sync(); }
+  bool needs_sync() const { return file_.dirty(); }
+  bool failed() const { return file_.failed(); }
+  const std::string& error() const { return file_.error(); }
+  const std::filesystem::path& path() const { return file_.path(); }
   std::size_t events_recorded() const { return count_; }
 
  private:
-  std::filesystem::path path_;
-  std::ofstream out_;
+  AppendOnlyFile file_;
   std::size_t count_ = 0;
 };
 

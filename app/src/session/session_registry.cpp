@@ -1,0 +1,168 @@
+#include "session/session_registry.hpp"
+
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace impasto::app {
+namespace {
+
+constexpr const char* kMagic = "impasto-session 1";
+
+// A path on one line: '%' and control characters as %XX.
+std::string encode(const std::string& text) {
+  static constexpr char kHex[] = "0123456789abcdef";
+  std::string out;
+  for (char c : text) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '%' || u < 0x20 || u == 0x7f) {
+      out += '%';
+      out += kHex[u >> 4];
+      out += kHex[u & 15];
+    } else {
+      out += c;
+    }
+  }
+  return out;
+}
+
+std::string decode(const std::string& text) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '%' && i + 2 < text.size()) {
+      out += static_cast<char>(std::stoi(text.substr(i + 1, 2), nullptr, 16));
+      i += 2;
+    } else {
+      out += text[i];
+    }
+  }
+  return out;
+}
+
+std::string entry_text(const SessionEntry& e) {
+  std::ostringstream text;
+  text << kMagic << "\n";
+  text << "pid " << e.pid << "\n";
+  text << "painting " << (e.painting ? encode(e.painting->string()) : std::string("new")) << "\n";
+  text << "strokes " << encode(e.strokes.string()) << "\n";
+  text << "autosave " << encode(e.autosave.string()) << "\n";
+  return text.str();
+}
+
+SessionEntry parse_entry(const std::filesystem::path& file, const std::string& text) {
+  SessionEntry e;
+  e.entry = file;
+  e.id = file.stem().string();
+  std::istringstream in(text);
+  std::string line;
+  if (!std::getline(in, line) || line != kMagic) {
+    throw std::runtime_error(file.string() + ": not a session entry");
+  }
+  while (std::getline(in, line)) {
+    const auto space = line.find(' ');
+    if (space == std::string::npos) continue;
+    const std::string key = line.substr(0, space);
+    const std::string value = line.substr(space + 1);
+    if (key == "pid") e.pid = std::atol(value.c_str());
+    if (key == "painting" && value != "new") e.painting = decode(value);
+    if (key == "strokes") e.strokes = decode(value);
+    if (key == "autosave") e.autosave = decode(value);
+  }
+  if (e.strokes.empty()) throw std::runtime_error(file.string() + ": names no recording");
+  // The autosave lives beside the entry, whatever the entry says.
+  e.autosave = file.parent_path() / (e.id + ".autosave.impasto");
+  return e;
+}
+
+}  // namespace
+
+LiveSession::LiveSession(const std::filesystem::path& folder, const std::string& id,
+                         const std::optional<std::filesystem::path>& painting,
+                         const std::filesystem::path& strokes) {
+  entry_.id = id;
+  entry_.entry = folder / (id + ".session");
+  entry_.painting = painting;
+  entry_.strokes = strokes;
+  entry_.autosave = folder / (id + ".autosave.impasto");
+  entry_.pid = static_cast<long>(::getpid());
+  const auto fail = [&](const std::string& what) {
+    const std::string why = std::strerror(errno);
+    if (fd_ >= 0) ::close(fd_);
+    throw std::runtime_error(entry_.entry.string() + ": " + what + ": " + why);
+  };
+  fd_ = ::open(entry_.entry.c_str(), O_RDWR | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600);
+  if (fd_ < 0) fail("cannot create the session entry");
+  if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) fail("cannot lock the session entry");
+  const std::string text = entry_text(entry_);
+  if (::write(fd_, text.data(), text.size()) != static_cast<ssize_t>(text.size())) {
+    ::unlink(entry_.entry.c_str());
+    fail("cannot write the session entry");
+  }
+  ::fsync(fd_);
+  if (const int dir = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC); dir >= 0) {
+    ::fsync(dir);
+    ::close(dir);
+  }
+}
+
+LiveSession::~LiveSession() {
+  if (fd_ >= 0) ::close(fd_);
+}
+
+void LiveSession::end_cleanly() {
+  ::unlink(entry_.autosave.c_str());
+  ::unlink(entry_.entry.c_str());
+  if (fd_ >= 0) ::close(fd_);
+  fd_ = -1;
+}
+
+std::vector<SessionEntry> unfinished_sessions(const std::filesystem::path& folder,
+                                              std::vector<std::string>* problems) {
+  std::vector<std::pair<std::filesystem::file_time_type, SessionEntry>> found;
+  std::error_code error;
+  for (const auto& item : std::filesystem::directory_iterator(folder, error)) {
+    if (item.path().extension() != ".session") continue;
+    const int fd = ::open(item.path().c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+    if (fd < 0) continue;
+    // A running session holds its entry's lock; the lock of a dead one is gone with it.
+    const bool live = ::flock(fd, LOCK_SH | LOCK_NB) != 0;
+    std::string text;
+    if (!live) {
+      char buffer[4096];
+      ssize_t n = 0;
+      while ((n = ::read(fd, buffer, sizeof buffer)) > 0 && text.size() < 65536) {
+        text.append(buffer, static_cast<std::size_t>(n));
+      }
+    }
+    ::close(fd);
+    if (live) continue;
+    try {
+      SessionEntry entry = parse_entry(item.path(), text);
+      std::error_code time_error;
+      auto when = std::filesystem::last_write_time(entry.strokes, time_error);
+      if (time_error) when = std::filesystem::last_write_time(item.path(), time_error);
+      found.emplace_back(when, std::move(entry));
+    } catch (const std::exception& e) {
+      if (problems) problems->push_back(e.what());
+    }
+  }
+  std::sort(found.begin(), found.end(),
+            [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::vector<SessionEntry> sessions;
+  for (auto& [when, entry] : found) sessions.push_back(std::move(entry));
+  return sessions;
+}
+
+void discard_session(const SessionEntry& session) {
+  ::unlink(session.autosave.c_str());
+  ::unlink(session.entry.c_str());
+}
+
+}  // namespace impasto::app

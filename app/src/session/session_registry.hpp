@@ -1,0 +1,53 @@
+#pragma once
+// The running sessions, as entries in the recovery folder (recovery_folder.hpp): one file
+// "<id>.session" per session, naming its painting, its recording and its autosave, and held
+// locked (flock) by the process for as long as it runs. An entry nobody holds is a session
+// that did not end cleanly (a crash, a kill, a power cut): the window offers to recover it at
+// start and `impasto recover` lists and rebuilds it.
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace impasto::app {
+
+struct SessionEntry {
+  std::string id;                                 // the entry's file stem
+  std::filesystem::path entry;                    // <folder>/<id>.session
+  std::optional<std::filesystem::path> painting;  // the painting file it was opened from
+  std::filesystem::path strokes;                  // its recording
+  std::filesystem::path autosave;                 // <folder>/<id>.autosave.impasto
+  long pid = 0;
+};
+
+class LiveSession {
+ public:
+  // Creates the entry exclusively (never through a symlink), syncs it and locks it.
+  // Throws std::runtime_error naming the file when it cannot.
+  LiveSession(const std::filesystem::path& folder, const std::string& id,
+              const std::optional<std::filesystem::path>& painting,
+              const std::filesystem::path& strokes);
+  // Unlocks without removing: a session that did not end_cleanly() stays recoverable.
+  ~LiveSession();
+  LiveSession(const LiveSession&) = delete;
+  LiveSession& operator=(const LiveSession&) = delete;
+
+  // The session ended as the user chose (saved, or discarded on purpose): removes the entry
+  // and the autosave. The recording stays.
+  void end_cleanly();
+  const SessionEntry& entry() const { return entry_; }
+
+ private:
+  SessionEntry entry_;
+  int fd_ = -1;
+};
+
+// The entries in `folder` that no running process holds, newest first. Entries that cannot be
+// read are skipped (their problem is in `problems` when given).
+std::vector<SessionEntry> unfinished_sessions(const std::filesystem::path& folder,
+                                              std::vector<std::string>* problems = nullptr);
+
+// Forgets an unfinished session: removes its entry and autosave (its recording stays).
+void discard_session(const SessionEntry& session);
+
+}  // namespace impasto::app
