@@ -1,6 +1,7 @@
 #pragma once
 // A fast 64-bit hash of byte ranges, used for state hashes and file checksums. Not
 // cryptographic; stable across runs and platforms of the same endianness.
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <string>
@@ -8,6 +9,8 @@
 namespace impasto::paintcore {
 
 class Hasher {
+  friend class StreamHasher;
+
  public:
   void bytes(const void* data, std::size_t size) {
     const auto* p = static_cast<const unsigned char*>(data);
@@ -45,6 +48,38 @@ class Hasher {
     state_ ^= state_ >> 29;
   }
   std::uint64_t state_ = 0x6a09e667f3bcc909ull;
+};
+
+// Hasher::bytes over a range given in pieces (a file read or written in chunks): the same
+// digest as one call over the whole range.
+class StreamHasher {
+ public:
+  void bytes(const void* data, std::size_t size) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    while (size > 0) {
+      const std::size_t take = std::min(size, sizeof(pending_) - pending_size_);
+      std::memcpy(pending_ + pending_size_, p, take);
+      pending_size_ += take;
+      p += take;
+      size -= take;
+      if (pending_size_ == sizeof(pending_)) {
+        std::uint64_t word;
+        std::memcpy(&word, pending_, 8);
+        hasher_.add(word);
+        pending_size_ = 0;
+      }
+    }
+  }
+  std::uint64_t digest() const {
+    Hasher last = hasher_;
+    last.bytes(pending_, pending_size_);  // the tail word, as Hasher::bytes ends
+    return last.digest();
+  }
+
+ private:
+  Hasher hasher_;
+  unsigned char pending_[8] = {};
+  std::size_t pending_size_ = 0;
 };
 
 }  // namespace impasto::paintcore

@@ -1,18 +1,17 @@
 // The native painting file (.impasto), described in docs/painting-format.md:
 //   "IMPASTO\0", u32 version, u64 payload size, payload, u64 checksum of the payload.
 // Little-endian, as the machines Impasto runs on are.
-#include <fcntl.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <cerrno>
+#include <array>
 #include <cmath>
 #include <cstring>
-#include <fstream>
-#include <iterator>
+#include <limits>
 #include <stdexcept>
 
 #include "hasher.hpp"
+#include "impasto/files/atomic_file.hpp"
+#include "impasto/files/input_file.hpp"
 #include "painting_impl.hpp"
 
 namespace impasto::paintcore {
@@ -26,33 +25,76 @@ constexpr std::uint32_t kVersion = 3;
 constexpr std::uint32_t kOldestVersion = 1;
 constexpr std::size_t kHeaderBytes = sizeof(kMagic) + 4 + 8;
 constexpr std::uint32_t kMaxStringBytes = 4096;
+// No cell holds a metre of paint: larger amounts (FLT_MAX in a crafted file) are refused.
+constexpr float kMaxAmountMm = 1000.0f;
+// Pigment in less paint than this (a denormal) is dropped on load: 1 / volume would overflow.
+constexpr float kMinPaintedVolumeMm = std::numeric_limits<float>::min();
+// The smallest stored wet tile (index and two planes) and dry tile (index, volume, count).
+constexpr std::uint64_t kMinWetTileBytes = 4 + 2 * kTileCells * sizeof(float);
+constexpr std::uint64_t kMinDryTileBytes = 4 + kTileCells * sizeof(float) + 1;
 
-class Writer {
+// Where the payload goes: counted first (the header holds its size), then hashed and written
+// to the file as it is produced, tile by tile, so saving never builds a copy of the painting.
+class CountingSink {
  public:
-  template <typename T>
-  void put(const T& value) {
-    const auto* p = reinterpret_cast<const unsigned char*>(&value);
-    bytes_.insert(bytes_.end(), p, p + sizeof(T));
-  }
-  void put_floats(const float* values, std::size_t count) {
-    const auto* p = reinterpret_cast<const unsigned char*>(values);
-    bytes_.insert(bytes_.end(), p, p + count * sizeof(float));
-  }
-  void put_zeros(std::size_t count) { bytes_.insert(bytes_.end(), count * sizeof(float), 0); }
-  void put_string(const std::string& s) {
-    put(static_cast<std::uint32_t>(s.size()));
-    bytes_.insert(bytes_.end(), s.begin(), s.end());
-  }
-  std::vector<unsigned char>& bytes() { return bytes_; }
+  void write(const void*, std::size_t size) { bytes_ += size; }
+  std::uint64_t bytes() const { return bytes_; }
 
  private:
-  std::vector<unsigned char> bytes_;
+  std::uint64_t bytes_ = 0;
 };
 
+class HashingFileSink {
+ public:
+  explicit HashingFileSink(files::AtomicFile& file) : file_(file) {}
+  void write(const void* data, std::size_t size) {
+    hasher_.bytes(data, size);
+    file_.write(data, size);
+    bytes_ += size;
+  }
+  std::uint64_t bytes() const { return bytes_; }
+  std::uint64_t digest() const { return hasher_.digest(); }
+
+ private:
+  files::AtomicFile& file_;
+  StreamHasher hasher_;
+  std::uint64_t bytes_ = 0;
+};
+
+template <typename Sink>
+class Writer {
+ public:
+  explicit Writer(Sink& sink) : sink_(sink) {}
+  template <typename T>
+  void put(const T& value) {
+    sink_.write(&value, sizeof(T));
+  }
+  void put_floats(const float* values, std::size_t count) {
+    sink_.write(values, count * sizeof(float));
+  }
+  void put_zeros(std::size_t count) {
+    static constexpr float zeros[kTileCells] = {};
+    for (std::size_t left = count; left > 0;) {
+      const std::size_t n = std::min<std::size_t>(left, kTileCells);
+      sink_.write(zeros, n * sizeof(float));
+      left -= n;
+    }
+  }
+  void put_string(const std::string& s) {
+    put(static_cast<std::uint32_t>(s.size()));
+    sink_.write(s.data(), s.size());
+  }
+
+ private:
+  Sink& sink_;
+};
+
+// Reads fields from the file through a small buffer; every read is checked against the bytes
+// left, so a declared size larger than the file fails before anything is allocated for it.
 class Reader {
  public:
-  Reader(const unsigned char* data, std::size_t size, std::string file)
-      : data_(data), size_(size), file_(std::move(file)) {}
+  Reader(files::InputFile& in, std::uint64_t size, std::uint64_t offset, std::string file)
+      : in_(in), size_(size), offset_(offset), file_(std::move(file)) {}
 
   [[noreturn]] void fail(const std::string& field, const std::string& why) const {
     throw std::runtime_error(file_ + ": field '" + field + "': " + why);
@@ -61,8 +103,7 @@ class Reader {
   T get(const std::string& field) {
     need(sizeof(T), field);
     T value;
-    std::memcpy(&value, data_ + pos_, sizeof(T));
-    pos_ += sizeof(T);
+    read(&value, sizeof(T));
     return value;
   }
   double get_finite(const std::string& field) {
@@ -70,21 +111,22 @@ class Reader {
     if (!std::isfinite(value)) fail(field, "is not a finite number");
     return value;
   }
-  // Reads count floats into out, which must all be finite and >= 0.
+  // Reads count amounts (mm of paint) into out: each finite, >= 0 and at most kMaxAmountMm.
   void get_amounts(float* out, std::size_t count, const std::string& field) {
     need(count * sizeof(float), field);
-    std::memcpy(out, data_ + pos_, count * sizeof(float));
-    pos_ += count * sizeof(float);
+    read(out, count * sizeof(float));
     for (std::size_t i = 0; i < count; ++i)
-      if (!std::isfinite(out[i]) || out[i] < 0.0f)
-        fail(field, "value " + std::to_string(i) + " is negative or not finite");
+      if (!std::isfinite(out[i]) || out[i] < 0.0f || out[i] > kMaxAmountMm)
+        fail(field, "value " + std::to_string(i) + " (" + std::to_string(out[i]) +
+                        ") is negative, not finite or above " + std::to_string(kMaxAmountMm) +
+                        " mm");
   }
   std::string get_string(const std::string& field) {
     const auto size = get<std::uint32_t>(field + " length");
     if (size > kMaxStringBytes) fail(field, "length " + std::to_string(size) + " is absurd");
     need(size, field);
-    std::string s(reinterpret_cast<const char*>(data_ + pos_), size);
-    pos_ += size;
+    std::string s(size, '\0');
+    read(s.data(), size);
     return s;
   }
   std::uint32_t get_count(const std::string& field, std::uint32_t max) {
@@ -92,22 +134,57 @@ class Reader {
     if (n > max) fail(field, std::to_string(n) + " exceeds the limit " + std::to_string(max));
     return n;
   }
+  // A count of records of at least `record_bytes` each must fit in the bytes left.
+  std::uint32_t get_count(const std::string& field, std::uint32_t max, std::uint64_t record_bytes) {
+    const auto n = get_count(field, max);
+    if (n * record_bytes > left())
+      fail(field, std::to_string(n) + " records of " + std::to_string(record_bytes) +
+                      " bytes do not fit in the " + std::to_string(left()) +
+                      " bytes left (a truncated or crafted file)");
+    return n;
+  }
+  std::uint64_t left() const { return size_ - pos_; }
   bool at_end() const { return pos_ == size_; }
 
  private:
-  void need(std::size_t bytes, const std::string& field) const {
-    if (size_ - pos_ < bytes)
+  void need(std::uint64_t bytes, const std::string& field) const {
+    if (left() < bytes)
       fail(field, "the file is truncated (needs " + std::to_string(bytes) + " bytes at offset " +
-                      std::to_string(kHeaderBytes + pos_) + ", " + std::to_string(size_ - pos_) +
-                      " left)");
+                      std::to_string(offset_ + pos_) + ", " + std::to_string(left()) + " left)");
   }
-  const unsigned char* data_;
-  std::size_t size_;
-  std::size_t pos_ = 0;
+  void read(void* out, std::size_t bytes) {
+    in_.read_exact(out, bytes);
+    pos_ += bytes;
+  }
+  files::InputFile& in_;
+  std::uint64_t size_;
+  std::uint64_t offset_;
+  std::uint64_t pos_ = 0;
   std::string file_;
 };
 
-void write_quadric(Writer& w, const Quadric2& q) {
+// A cell's pigment is part of its paint: a crafted or damaged file whose amounts exceed the
+// cell's volume (or put pigment where there is no paint) would make concentrations above 1,
+// up to Inf. Such cells are scaled back to their volume; rounding (1e-6) is left alone.
+void repair_pigment(const float* volume, float* pigment, int slots, std::size_t cells) {
+  for (std::size_t c = 0; c < cells; ++c) {
+    double sum = 0.0;
+    for (int s = 0; s < slots; ++s) sum += pigment[static_cast<std::size_t>(s) * cells + c];
+    if (sum <= 0.0) continue;
+    double scale = 1.0;
+    if (!(volume[c] >= kMinPaintedVolumeMm))
+      scale = 0.0;
+    else if (sum > volume[c] * (1.0 + 1e-3))
+      scale = volume[c] / sum;
+    if (scale == 1.0) continue;
+    for (int s = 0; s < slots; ++s)
+      pigment[static_cast<std::size_t>(s) * cells + c] =
+          static_cast<float>(pigment[static_cast<std::size_t>(s) * cells + c] * scale);
+  }
+}
+
+template <typename W>
+void write_quadric(W& w, const Quadric2& q) {
   for (double c : {q.uu, q.vv, q.uv, q.u_lin, q.v_lin, q.constant}) w.put(c);
 }
 
@@ -117,7 +194,8 @@ Quadric2 read_quadric(Reader& r, const std::string& field) {
   return q;
 }
 
-void write_totals(Writer& w, const PaintTotals& t, int slots) {
+template <typename W>
+void write_totals(W& w, const PaintTotals& t, int slots) {
   w.put(t.volume);
   for (int s = 0; s < slots; ++s)
     w.put(static_cast<std::size_t>(s) < t.pigment.size() ? t.pigment[static_cast<std::size_t>(s)]
@@ -133,7 +211,8 @@ PaintTotals read_totals(Reader& r, int slots, const std::string& field) {
 }
 
 // Cracks, sparse twice over: only tiles with a crack, and in them only the crack cells.
-void write_cracks(Writer& w, const CrackLayer& cracks) {
+template <typename W>
+void write_cracks(W& w, const CrackLayer& cracks) {
   w.put(static_cast<std::uint32_t>(cracks.allocated_tiles()));
   for (int index = 0; index < cracks.tile_extent(); ++index) {
     const CrackTile* tile = cracks.tile(index);
@@ -193,50 +272,17 @@ CrackLayer read_cracks(Reader& r, const Canvas& canvas, const std::string& file)
   return cracks;
 }
 
-void write_file_atomically(const std::filesystem::path& file,
-                           const std::vector<unsigned char>& bytes) {
-  const std::string target = file.string();
-  const std::string temp = target + ".tmp." + std::to_string(::getpid());
-  const auto fail = [&](const std::string& what) {
-    const std::string why = std::strerror(errno);
-    ::unlink(temp.c_str());
-    throw std::runtime_error(target + ": cannot save (" + what + ": " + why + ")");
-  };
-  const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) fail("open " + temp);
-  std::size_t written = 0;
-  while (written < bytes.size()) {
-    const ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      ::close(fd);
-      fail("write");
-    }
-    written += static_cast<std::size_t>(n);
-  }
-  if (::fsync(fd) != 0) {
-    ::close(fd);
-    fail("fsync");
-  }
-  if (::close(fd) != 0) fail("close");
-  if (::rename(temp.c_str(), target.c_str()) != 0) fail("rename");
-  // Make the rename itself durable.
-  const std::filesystem::path dir = file.has_parent_path() ? file.parent_path() : ".";
-  if (const int dfd = ::open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC); dfd >= 0) {
-    ::fsync(dfd);
-    ::close(dfd);
-  }
-}
-
 }  // namespace
 
 struct PaintingFile {
+  template <typename W>
+  static void write_payload(const Painting::Impl& p, W& w);
   static void save(const Painting::Impl& p, const std::filesystem::path& file);
   static std::unique_ptr<Painting::Impl> load(const std::filesystem::path& file, int threads);
 };
 
-void PaintingFile::save(const Painting::Impl& p, const std::filesystem::path& file) {
-  Writer w;
+template <typename W>
+void PaintingFile::write_payload(const Painting::Impl& p, W& w) {
   const CanvasSpec& spec = p.canvas.spec();
   w.put(static_cast<std::int32_t>(spec.width_cells));
   w.put(static_cast<std::int32_t>(spec.height_cells));
@@ -311,26 +357,30 @@ void PaintingFile::save(const Painting::Impl& p, const std::filesystem::path& fi
          {head.bristles.spacing_mm, head.bristles.depth_mm, head.bristles.jitter, head.splay})
       w.put(v);
   }
+}
 
-  Hasher checksum;
-  checksum.bytes(w.bytes().data(), w.bytes().size());
-  Writer out;
-  for (char c : kMagic) out.put(c);
-  out.put(kVersion);
-  out.put(static_cast<std::uint64_t>(w.bytes().size()));
-  out.bytes().insert(out.bytes().end(), w.bytes().begin(), w.bytes().end());
-  out.put(checksum.digest());
-  write_file_atomically(file, out.bytes());
+void PaintingFile::save(const Painting::Impl& p, const std::filesystem::path& file) {
+  CountingSink counter;
+  Writer<CountingSink> count(counter);
+  write_payload(p, count);
+  files::AtomicFile out(file);
+  Writer<files::AtomicFile> header(out);
+  for (char c : kMagic) header.put(c);
+  header.put(kVersion);
+  header.put(counter.bytes());
+  HashingFileSink sink(out);
+  Writer<HashingFileSink> payload(sink);
+  write_payload(p, payload);
+  if (sink.bytes() != counter.bytes())
+    throw std::logic_error("painting save: the payload changed size between passes");
+  header.put(sink.digest());
+  out.commit();
 }
 
 std::unique_ptr<Painting::Impl> PaintingFile::load(const std::filesystem::path& file, int threads) {
   const std::string name = file.string();
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw std::runtime_error(name + ": cannot open painting file");
-  const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)),
-                                         std::istreambuf_iterator<char>());
-  if (in.bad()) throw std::runtime_error(name + ": read error");
-  Reader header(bytes.data(), bytes.size(), name);
+  files::InputFile in(file, "painting", files::kMaxPaintingBytes);
+  Reader header(in, std::min<std::uint64_t>(in.size(), kHeaderBytes), 0, name);
   for (char c : kMagic)
     if (header.get<char>("magic") != c) header.fail("magic", "not an Impasto painting file");
   const auto version = header.get<std::uint32_t>("version");
@@ -339,19 +389,30 @@ std::unique_ptr<Painting::Impl> PaintingFile::load(const std::filesystem::path& 
                                std::to_string(kOldestVersion) + " to " + std::to_string(kVersion) +
                                ")");
   const auto payload_size = header.get<std::uint64_t>("payload_size");
-  if (payload_size != bytes.size() - kHeaderBytes - 8 || bytes.size() < kHeaderBytes + 8)
+  if (in.size() < kHeaderBytes + 8 || payload_size != in.size() - kHeaderBytes - 8)
     header.fail("payload_size", "says " + std::to_string(payload_size) +
-                                    " bytes but the file has " + std::to_string(bytes.size()) +
+                                    " bytes but the file has " + std::to_string(in.size()) +
                                     " in all (truncated or padded file)");
-  const unsigned char* payload = bytes.data() + kHeaderBytes;
-  Hasher checksum;
-  checksum.bytes(payload, payload_size);
-  std::uint64_t stored;
-  std::memcpy(&stored, payload + payload_size, 8);
-  if (stored != checksum.digest())
-    header.fail("checksum", "does not match the contents (the file is corrupt)");
+  // First pass: the checksum, in chunks; nothing is built from a corrupt file.
+  {
+    StreamHasher checksum;
+    std::vector<unsigned char> chunk(std::min<std::uint64_t>(payload_size, 1 << 20));
+    for (std::uint64_t left = payload_size; left > 0;) {
+      const auto n = static_cast<std::size_t>(std::min<std::uint64_t>(left, chunk.size()));
+      in.read_exact(chunk.data(), n);
+      checksum.bytes(chunk.data(), n);
+      left -= n;
+    }
+    std::uint64_t stored;
+    in.read_exact(&stored, 8);
+    if (stored != checksum.digest())
+      header.fail("checksum", "does not match the contents (the file is corrupt)");
+  }
+  in.rewind();
+  std::array<unsigned char, kHeaderBytes> skipped;
+  in.read_exact(skipped.data(), skipped.size());
 
-  Reader r(payload, payload_size, name);
+  Reader r(in, payload_size, kHeaderBytes, name);
   CanvasSpec spec;
   spec.width_cells = r.get<std::int32_t>("canvas.width_cells");
   spec.height_cells = r.get<std::int32_t>("canvas.height_cells");
@@ -384,7 +445,8 @@ std::unique_ptr<Painting::Impl> PaintingFile::load(const std::filesystem::path& 
     if (p->slots.back().empty()) r.fail("slots[" + std::to_string(s) + "]", "empty pigment name");
   }
   const int tile_count = p->canvas.tile_count();
-  const auto tiles = r.get_count("tiles.count", static_cast<std::uint32_t>(tile_count));
+  const auto tiles = r.get_count("tiles.count", static_cast<std::uint32_t>(tile_count),
+                                 kMinWetTileBytes + slots * kTileCells * sizeof(float));
   int previous = -1;
   for (std::uint32_t k = 0; k < tiles; ++k) {
     const std::string field = "tiles[" + std::to_string(k) + "]";
@@ -395,14 +457,17 @@ std::unique_ptr<Painting::Impl> PaintingFile::load(const std::filesystem::path& 
     Tile& tile = p->canvas.ensure_tile(index, slots);
     r.get_amounts(tile.dry_height_mm.data(), kTileCells, field + ".dry_height");
     r.get_amounts(tile.wet_volume_mm.data(), kTileCells, field + ".wet_volume");
-    if (slots > 0)
+    if (slots > 0) {
       r.get_amounts(tile.pigment_mm.data(), tile.pigment_mm.size(), field + ".pigment");
+      repair_pigment(tile.wet_volume_mm.data(), tile.pigment_mm.data(), slots, kTileCells);
+    }
   }
-  const auto layers = r.get_count("dry_layers.count", 1u << 24);
+  const auto layers = r.get_count("dry_layers.count", 1u << 24, 4);
   for (std::uint32_t l = 0; l < layers; ++l) {
     DryLayer layer;
     const std::string lfield = "dry_layers[" + std::to_string(l) + "]";
-    const auto count = r.get_count(lfield + ".tiles", static_cast<std::uint32_t>(tile_count));
+    const auto count =
+        r.get_count(lfield + ".tiles", static_cast<std::uint32_t>(tile_count), kMinDryTileBytes);
     previous = -1;
     for (std::uint32_t k = 0; k < count; ++k) {
       const std::string field = lfield + ".tiles[" + std::to_string(k) + "]";
@@ -425,6 +490,7 @@ std::unique_ptr<Painting::Impl> PaintingFile::load(const std::filesystem::path& 
       }
       tile.pigment_mm.resize(static_cast<std::size_t>(nslots) * kTileCells);
       r.get_amounts(tile.pigment_mm.data(), tile.pigment_mm.size(), field + ".pigment");
+      repair_pigment(tile.volume_mm.data(), tile.pigment_mm.data(), nslots, kTileCells);
       layer.tiles.push_back(std::move(tile));
     }
     p->canvas.dry_layers().push_back(std::move(layer));
@@ -458,8 +524,11 @@ std::unique_ptr<Painting::Impl> PaintingFile::load(const std::filesystem::path& 
       r.fail("brush.cells_across", std::to_string(across) + " does not match the brush size (" +
                                        std::to_string(p->brush.cells_across()) + " cells)");
     r.get_amounts(p->brush.volume_mm().data(), p->brush.cell_count(), "brush.volume");
-    if (slots > 0)
+    if (slots > 0) {
       r.get_amounts(p->brush.pigment_mm().data(), p->brush.pigment_mm().size(), "brush.pigment");
+      repair_pigment(p->brush.volume_mm().data(), p->brush.pigment_mm().data(), slots,
+                     static_cast<std::size_t>(p->brush.cell_count()));
+    }
   }
   p->ledger.loaded = read_totals(r, slots, "ledger.loaded");
   p->ledger.wiped = read_totals(r, slots, "ledger.wiped");
