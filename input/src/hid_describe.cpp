@@ -71,9 +71,13 @@ std::string describe_pen(const PenDecoder& decoder) {
   std::ostringstream out;
   const TabletArea area = decoder.area();
   out << "active area " << mm(area.width_mm) << " x " << mm(area.height_mm)
-      << (area.from_descriptor ? "" : " (no length unit in the descriptor: assumed)") << "\n";
+      << (area.from_descriptor ? ""
+          : area.from_model    ? " (from the model table or handshake)"
+                               : " (no length unit in the descriptor: assumed)")
+      << (decoder.wacom_vendor_page() ? ", Wacom vendor usages (0xFF0D) mapped" : "") << "\n";
   for (const PenReportLayout& l : decoder.layouts()) {
-    out << "pen report " << int{l.report_id} << " (" << l.bytes << " bytes):";
+    out << "pen report " << int{l.report_id} << " (" << l.bytes << " bytes"
+        << (l.outside_pen_collection ? ", outside a pen collection" : "") << "):";
     out << " x 0.." << l.x.logical_max << ", y 0.." << l.y.logical_max;
     if (l.pressure.present()) {
       out << ", pressure " << (l.pressure.logical_max - l.pressure.logical_min + 1) << " levels";

@@ -11,16 +11,35 @@ namespace {
 
 using paintcore::PenSample;
 
+using UsageMap = Usage (*)(Usage);
+
+Usage same_usage(Usage u) {
+  return u;
+}
+
 // True when the field lies in a collection that makes it part of a pen: a Stylus collection,
 // or a Digitizer/Pen application collection.
-bool in_pen_collection(const ReportDescriptor& d, const ReportField& field) {
+bool in_pen_collection(const ReportDescriptor& d, const ReportField& field, UsageMap map) {
   for (int c = field.collection; c >= 0; c = d.collections[static_cast<std::size_t>(c)].parent) {
     const Collection& collection = d.collections[static_cast<std::size_t>(c)];
-    if (collection.usage == usage::kStylus) return true;
+    const Usage u = map(collection.usage);
+    if (u == usage::kStylus) return true;
     if (collection.type == static_cast<std::uint8_t>(CollectionType::kApplication) &&
-        (collection.usage == usage::kPen || collection.usage == usage::kDigitizer)) {
+        (u == usage::kPen || u == usage::kDigitizer)) {
       return true;
     }
+  }
+  return false;
+}
+
+// Touch contacts carry X, Y and a Tip Switch too: never a pen.
+bool in_touch_collection(const ReportDescriptor& d, const ReportField& field) {
+  constexpr Usage kTouchScreen = make_usage(page::kDigitizer, 0x04);
+  constexpr Usage kTouchPad = make_usage(page::kDigitizer, 0x05);
+  constexpr Usage kFinger = make_usage(page::kDigitizer, 0x22);
+  for (int c = field.collection; c >= 0; c = d.collections[static_cast<std::size_t>(c)].parent) {
+    const Usage u = d.collections[static_cast<std::size_t>(c)].usage;
+    if (u == kTouchScreen || u == kTouchPad || u == kFinger) return true;
   }
   return false;
 }
@@ -82,27 +101,70 @@ void assign(PenReportLayout& layout, Usage u, const PenAxis& axis) {
   if (!slot->present()) *slot = axis;
 }
 
-std::vector<PenReportLayout> find_pen_layouts(const ReportDescriptor& d) {
+// Where the pen's fields may be: in pen collections only, or anywhere but touch collections
+// (then X and Y must be absolute and a pressure or tip switch present).
+enum class Search { kPenCollections, kAnyCollection };
+
+std::vector<PenReportLayout> find_pen_layouts(const ReportDescriptor& d, Search search,
+                                              UsageMap map) {
   std::vector<PenReportLayout> layouts;
+  const bool anywhere = search == Search::kAnyCollection;
   for (const ReportInfo& report : d.reports) {
     if (report.type != ReportType::kInput) continue;
     PenReportLayout layout;
     layout.report_id = report.report_id;
     layout.bytes = report.bytes(d.has_report_ids);
+    layout.outside_pen_collection = anywhere;
+    PenAxis buttons[3];
     for (std::size_t i = 0; i < d.fields.size(); ++i) {
       const ReportField& field = d.fields[i];
       if (field.type != ReportType::kInput || field.report_id != report.report_id) continue;
-      if (field.is_constant() || !field.is_variable() || !in_pen_collection(d, field)) continue;
+      if (field.is_constant() || !field.is_variable()) continue;
+      if (anywhere ? (in_touch_collection(d, field) || field.is_relative())
+                   : !in_pen_collection(d, field, map)) {
+        continue;
+      }
       // Usages beyond the field's elements are never reported; do not walk huge ranges.
       const std::uint32_t n = static_cast<std::uint32_t>(
           std::min<std::uint64_t>(field.count, std::max<std::uint64_t>(field.usage_count(), 1)));
       for (std::uint32_t e = 0; e < n; ++e) {
-        assign(layout, field.usage_at(e), axis_of(field, static_cast<int>(i), e));
+        const Usage u = map(field.usage_at(e));
+        const PenAxis axis = axis_of(field, static_cast<int>(i), e);
+        assign(layout, u, axis);
+        if (anywhere && usage_page(u) == page::kButton && usage_id(u) >= 1 && usage_id(u) <= 3 &&
+            !buttons[usage_id(u) - 1].present()) {
+          buttons[usage_id(u) - 1] = axis;
+        }
       }
     }
-    if (layout.x.present() && layout.y.present()) layouts.push_back(layout);
+    if (!layout.x.present() || !layout.y.present()) continue;
+    if (anywhere) {
+      if (!layout.pressure.present() && !layout.tip.present()) continue;
+      if (!layout.tip.present()) layout.tip = buttons[0];
+      if (!layout.barrel1.present()) layout.barrel1 = buttons[1];
+      if (!layout.barrel2.present()) layout.barrel2 = buttons[2];
+    }
+    layouts.push_back(layout);
   }
   return layouts;
+}
+
+struct FoundLayouts {
+  std::vector<PenReportLayout> layouts;
+  bool wacom_vendor_page = false;
+};
+
+// Pen-collection reports first, then pen reports found elsewhere under other report IDs
+// (the Huion H610 describes its vendor report 7 as a pen but sends report 9 by default).
+FoundLayouts find_any_pen_layouts(const ReportDescriptor& d) {
+  std::vector<PenReportLayout> layouts = find_pen_layouts(d, Search::kPenCollections, same_usage);
+  for (PenReportLayout& l : find_pen_layouts(d, Search::kAnyCollection, same_usage)) {
+    const bool known = std::any_of(layouts.begin(), layouts.end(),
+                                   [&](const auto& p) { return p.report_id == l.report_id; });
+    if (!known) layouts.push_back(std::move(l));
+  }
+  if (!layouts.empty()) return {std::move(layouts), false};
+  return {find_pen_layouts(d, Search::kPenCollections, wacom_equivalent_usage), true};
 }
 
 // mm per logical unit of a position axis, when its unit is a length.
@@ -145,8 +207,15 @@ double PenAxis::physical(std::int64_t value, double scale) const {
          scale;
 }
 
+Usage wacom_equivalent_usage(Usage u) {
+  constexpr std::uint16_t kWacomDigitizerPage = 0xFF0D;
+  if (usage_page(u) != kWacomDigitizerPage) return u;
+  const std::uint16_t sub_page = static_cast<std::uint16_t>(usage_id(u) >> 8);
+  return make_usage(sub_page == 0 ? page::kDigitizer : sub_page, usage_id(u) & 0xFF);
+}
+
 std::string unsupported_reason(const ReportDescriptor& descriptor) {
-  if (!find_pen_layouts(descriptor).empty()) return "";
+  if (!find_any_pen_layouts(descriptor).layouts.empty()) return "";
   const auto vendor_defined = [](std::uint16_t page, const std::string& where) {
     return "its pen reports are vendor-defined (" + where + usage_page_name(page) +
            "); Impasto reads only standard HID digitizer reports";
@@ -155,7 +224,7 @@ std::string unsupported_reason(const ReportDescriptor& descriptor) {
   for (const ReportField& f : descriptor.fields) {
     if (f.type != ReportType::kInput || f.is_constant() || f.usages.empty()) continue;
     const std::uint16_t page = usage_page(f.usage_at(0));
-    if (page >= page::kVendorFirst && in_pen_collection(descriptor, f)) {
+    if (page >= page::kVendorFirst && in_pen_collection(descriptor, f, same_usage)) {
       return vendor_defined(page, "usage page ");
     }
   }
@@ -165,25 +234,45 @@ std::string unsupported_reason(const ReportDescriptor& descriptor) {
       return vendor_defined(usage_page(c.usage), "application collection of ");
     }
   }
-  return "it has no pen report (X and Y in a Digitizer Pen or Stylus collection)";
+  return "it has no pen report (X and Y in a Digitizer Pen or Stylus collection, or absolute "
+         "X, Y and Tip Pressure or Tip Switch in any other)";
 }
 
 PenDecoder::PenDecoder(ReportDescriptor descriptor, DecoderOptions options)
     : descriptor_(std::move(descriptor)), options_(options) {
-  layouts_ = find_pen_layouts(descriptor_);
+  FoundLayouts found = find_any_pen_layouts(descriptor_);
+  layouts_ = std::move(found.layouts);
+  wacom_vendor_page_ = found.wacom_vendor_page;
   if (layouts_.empty())
     throw UnsupportedTablet("unsupported tablet: " + unsupported_reason(descriptor_));
   if (!(options_.fallback_lines_per_mm > 0.0)) {
     throw std::invalid_argument("fallback_lines_per_mm must be positive");
   }
+  // Each report scales its own extents: a tablet's default and full-resolution reports
+  // differ.
+  for (PenReportLayout& l : layouts_) {
+    const auto x = mm_per_logical(l.x);
+    const auto y = mm_per_logical(l.y);
+    const std::int64_t span_x = l.x.logical_max - l.x.logical_min;
+    const std::int64_t span_y = l.y.logical_max - l.y.logical_min;
+    const bool known = options_.known_width_mm && options_.known_height_mm &&
+                       *options_.known_width_mm > 0.0 && *options_.known_height_mm > 0.0 &&
+                       span_x > 0 && span_y > 0;
+    l.area_from_descriptor = x.has_value() && y.has_value();
+    l.area_from_model = !l.area_from_descriptor && known;
+    if (l.area_from_model) {
+      l.mm_per_x = *options_.known_width_mm / static_cast<double>(span_x);
+      l.mm_per_y = *options_.known_height_mm / static_cast<double>(span_y);
+    } else {
+      l.mm_per_x = x.value_or(1.0 / options_.fallback_lines_per_mm);
+      l.mm_per_y = y.value_or(1.0 / options_.fallback_lines_per_mm);
+    }
+  }
   const PenReportLayout& first = layouts_.front();
-  const auto x = mm_per_logical(first.x);
-  const auto y = mm_per_logical(first.y);
-  area_.from_descriptor = x.has_value() && y.has_value();
-  mm_per_x_ = x.value_or(1.0 / options_.fallback_lines_per_mm);
-  mm_per_y_ = y.value_or(1.0 / options_.fallback_lines_per_mm);
-  area_.width_mm = static_cast<double>(first.x.logical_max - first.x.logical_min) * mm_per_x_;
-  area_.height_mm = static_cast<double>(first.y.logical_max - first.y.logical_min) * mm_per_y_;
+  area_.from_descriptor = first.area_from_descriptor;
+  area_.from_model = first.area_from_model;
+  area_.width_mm = static_cast<double>(first.x.logical_max - first.x.logical_min) * first.mm_per_x;
+  area_.height_mm = static_cast<double>(first.y.logical_max - first.y.logical_min) * first.mm_per_y;
 }
 
 std::optional<PenSample> PenDecoder::decode(std::span<const std::uint8_t> report, double time_s,
@@ -209,8 +298,8 @@ std::optional<PenSample> PenDecoder::decode(std::span<const std::uint8_t> report
 
   PenSample s;
   s.time_s = time_s;
-  s.x_mm = static_cast<double>(value(layout->x) - layout->x.logical_min) * mm_per_x_;
-  s.y_mm = static_cast<double>(value(layout->y) - layout->y.logical_min) * mm_per_y_;
+  s.x_mm = static_cast<double>(value(layout->x) - layout->x.logical_min) * layout->mm_per_x;
+  s.y_mm = static_cast<double>(value(layout->y) - layout->y.logical_min) * layout->mm_per_y;
   if (layout->pressure.present()) {
     s.pressure = static_cast<float>(layout->pressure.normalised(value(layout->pressure)));
   }

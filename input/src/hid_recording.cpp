@@ -13,8 +13,6 @@ namespace impasto::input::hid {
 
 namespace {
 
-constexpr std::size_t kMaxBinaryDescriptor = 64 * 1024;
-
 int hex_digit(char c) {
   if (c >= '0' && c <= '9') return c - '0';
   if (c >= 'a' && c <= 'f') return c - 'a' + 10;
@@ -26,11 +24,6 @@ std::string trim(const std::string& text) {
   const std::size_t first = text.find_first_not_of(" \t\r");
   if (first == std::string::npos) return "";
   return text.substr(first, text.find_last_not_of(" \t\r") - first + 1);
-}
-
-// "N: name" -> the text after the tag, or nullopt if the line has another tag.
-bool has_tag(const std::string& line, char tag) {
-  return line.size() >= 2 && line[0] == tag && line[1] == ':';
 }
 
 // The byte count and bytes after a tag: "R: 3 05 0d 09" or "E: 0.5 3 02 00 01".
@@ -48,34 +41,6 @@ std::vector<std::uint8_t> counted_bytes(const std::string& rest, const std::stri
                           std::to_string(bytes.size()));
   }
   return bytes;
-}
-
-std::string read_all(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputFormatError(path.string(), 0, "", "cannot open the file");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  return text;
-}
-
-// The part of an "E:" line after the tag: "seconds count bytes...".
-RecordedReport parse_event(const std::string& rest, const std::string& source, int line) {
-  std::istringstream words(rest);
-  std::string time_text;
-  words >> time_text;
-  RecordedReport report;
-  report.time_s = detail::parse_double(time_text, {source, line}, "time");
-  std::string bytes_text((std::istreambuf_iterator<char>(words)), std::istreambuf_iterator<char>());
-  report.bytes = counted_bytes(bytes_text, source, line, "E");
-  return report;
-}
-
-bool looks_like_recording(const std::string& text) {
-  std::istringstream in(text);
-  std::string line;
-  while (std::getline(in, line)) {
-    if (has_tag(line, 'R') || has_tag(line, 'E')) return true;
-  }
-  return false;
 }
 
 }  // namespace
@@ -109,6 +74,18 @@ std::vector<std::uint8_t> parse_hex_bytes(const std::string& text, const std::st
     i = end;
   }
   return bytes;
+}
+
+// The part of an "E:" line after the tag: "seconds count bytes...".
+RecordedReport parse_recorder_event(const std::string& rest, const std::string& source, int line) {
+  std::istringstream words(rest);
+  std::string time_text;
+  words >> time_text;
+  RecordedReport report;
+  report.time_s = detail::parse_double(time_text, {source, line}, "time");
+  std::string bytes_text((std::istreambuf_iterator<char>(words)), std::istreambuf_iterator<char>());
+  report.bytes = counted_bytes(bytes_text, source, line, "E");
+  return report;
 }
 
 HidRecording parse_hid_recording(std::istream& in, const std::string& source) {
@@ -156,7 +133,30 @@ HidRecording parse_hid_recording(std::istream& in, const std::string& source) {
         break;
       }
       case 'E':
-        recording.reports.push_back(parse_event(rest, source, line_number));
+        recording.reports.push_back(parse_recorder_event(rest, source, line_number));
+        break;
+      case 'S': {
+        std::istringstream words(rest);
+        std::string index_text;
+        words >> index_text;
+        std::uint32_t index = 0;
+        for (char c : index_text) {
+          const int d = hex_digit(c);
+          if (d < 0 || index > 0xF) where.fail("S", "bad string index '" + index_text + "'");
+          index = index * 16 + static_cast<std::uint32_t>(d);
+        }
+        if (index_text.empty()) where.fail("S", "expected 'S: index count bytes'");
+        std::string bytes_text((std::istreambuf_iterator<char>(words)),
+                               std::istreambuf_iterator<char>());
+        recording.init.strings.push_back({static_cast<std::uint8_t>(index),
+                                          counted_bytes(bytes_text, source, line_number, "S")});
+        break;
+      }
+      case 'F':
+        recording.init.feature_reports.push_back(counted_bytes(rest, source, line_number, "F"));
+        break;
+      case 'O':
+        recording.init.output_reports.push_back(counted_bytes(rest, source, line_number, "O"));
         break;
       default:
         break;  // D:, and tags of later hid-recorder versions, carry nothing we need
@@ -195,66 +195,30 @@ void write_hid_recording(std::ostream& out, const HidRecording& recording) {
   char id[48];
   std::snprintf(id, sizeof id, "I: %x %04x %04x\n", recording.bus, recording.vendor_id,
                 recording.product_id);
-  out << id << "D: 0\n";
+  out << id;
+  const auto bytes_line = [&](const char* tag, const std::vector<std::uint8_t>& bytes) {
+    out << tag << bytes.size();
+    for (std::uint8_t b : bytes) {
+      char hex[4];
+      std::snprintf(hex, sizeof hex, " %02x", b);
+      out << hex;
+    }
+    out << "\n";
+  };
+  for (const StringDescriptor& s : recording.init.strings) {
+    char tag[16];
+    std::snprintf(tag, sizeof tag, "S: %02x ", s.index);
+    bytes_line(tag, s.bytes);
+  }
+  for (const auto& f : recording.init.feature_reports) bytes_line("F: ", f);
+  for (const auto& o : recording.init.output_reports) bytes_line("O: ", o);
+  out << "D: 0\n";
   for (const RecordedReport& report : recording.reports) out << recorder_event_line(report) << "\n";
 }
 
-std::vector<std::uint8_t> load_descriptor_bytes(const std::filesystem::path& path) {
-  const std::string text = read_all(path);
-  if (path.extension() == ".bin") {
-    if (text.size() > kMaxBinaryDescriptor) {
-      throw InputFormatError(path.string(), 0, "", "too large for a report descriptor");
-    }
-    return {text.begin(), text.end()};
-  }
-  if (looks_like_recording(text)) {
-    std::istringstream in(text);
-    return parse_hid_recording(in, path.string()).descriptor;
-  }
-  std::vector<std::uint8_t> bytes;
-  std::istringstream in(text);
-  std::string line;
-  int line_number = 0;
-  while (std::getline(in, line)) {
-    ++line_number;
-    const std::string content = trim(line.substr(0, line.find('#')));
-    const auto more = parse_hex_bytes(content, path.string(), line_number);
-    bytes.insert(bytes.end(), more.begin(), more.end());
-  }
-  if (bytes.empty()) throw InputFormatError(path.string(), 0, "", "no descriptor bytes");
-  return bytes;
-}
-
-std::vector<RecordedReport> load_reports(const std::filesystem::path& path) {
-  const std::string text = read_all(path);
-  std::istringstream in(text);
-  if (looks_like_recording(text)) {
-    // Reports only: the capture's descriptor is not needed (nor required) here.
-    std::vector<RecordedReport> reports;
-    std::string line;
-    int line_number = 0;
-    while (std::getline(in, line)) {
-      ++line_number;
-      const std::string text = trim(line);
-      if (has_tag(text, 'E'))
-        reports.push_back(parse_event(text.substr(2), path.string(), line_number));
-    }
-    return reports;
-  }
-  std::vector<RecordedReport> reports;
-  std::string line;
-  int line_number = 0;
-  while (std::getline(in, line)) {
-    ++line_number;
-    const std::string content = trim(line.substr(0, line.find('#')));
-    if (content.empty()) continue;
-    reports.push_back({0.0, parse_hex_bytes(content, path.string(), line_number)});
-  }
-  return reports;
-}
-
 std::vector<paintcore::PenSample> decode_recording(const HidRecording& recording) {
-  const TabletDecoder decoder(recording.descriptor, recording.vendor_id, recording.product_id);
+  const TabletDecoder decoder(recording.descriptor, recording.vendor_id, recording.product_id,
+                              recording.init, default_tablet_models());
   std::vector<paintcore::PenSample> samples;
   for (const RecordedReport& r : recording.reports) {
     if (auto s = decoder.decode(r.bytes, r.time_s)) samples.push_back(*s);

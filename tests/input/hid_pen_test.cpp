@@ -114,7 +114,8 @@ TEST(PenDecoder, NoPenIsUnsupported) {
                        0x31, 0x75, 0x08, 0x95, 0x02, 0x81, 0x06, 0xC0};
   const ReportDescriptor d = parse_report_descriptor(mouse);
   EXPECT_EQ(unsupported_reason(d),
-            "it has no pen report (X and Y in a Digitizer Pen or Stylus collection)");
+            "it has no pen report (X and Y in a Digitizer Pen or Stylus collection, or absolute "
+            "X, Y and Tip Pressure or Tip Switch in any other)");
   EXPECT_THROW(PenDecoder{d}, UnsupportedTablet);
 }
 

@@ -135,16 +135,23 @@ TEST(RealDescriptors, WacomIntuosProMGen3) {
   EXPECT_NEAR(pen.area().height_mm, 148.0, 1e-9);
 }
 
-TEST(RealDescriptors, WacomIntuosSGen3IsUnsupported) {
+// Its pen is in Wacom's vendor page 0xFF0D: read through the usages Linux's wacom driver maps
+// them to (0xFF0D0130 -> X, ...), report 16 spans 152 x 95 mm (cm, exponent -3).
+TEST(RealDescriptors, WacomIntuosSGen3ThroughItsVendorPage) {
   const ReportDescriptor d = load("wacom_intuos_s_3rd_gen__056A_0374__000A");
   EXPECT_EQ(input_report_bits(d),
             (std::map<int, std::uint32_t>{{16, 208}, {17, 64}, {19, 64}, {172, 1528}}));
-  try {
-    PenDecoder pen(d);
-    FAIL() << "decoded a vendor-defined pen";
-  } catch (const UnsupportedTablet& e) {
-    EXPECT_NE(std::string(e.what()).find("vendor-defined"), std::string::npos) << e.what();
-  }
+  EXPECT_EQ(unsupported_reason(d), "");
+  const PenDecoder pen(d);
+  EXPECT_TRUE(pen.wacom_vendor_page());
+  ASSERT_EQ(pen.layouts().size(), 1u);  // the pad's report 17 has no X and Y
+  EXPECT_EQ(pen.layouts()[0].report_id, 16);
+  EXPECT_EQ(pen.layouts()[0].bytes, 27u);
+  EXPECT_EQ(pen.layouts()[0].pressure.logical_max, 4095);
+  EXPECT_TRUE(pen.layouts()[0].in_range.present());
+  EXPECT_TRUE(pen.layouts()[0].barrel2.present());
+  EXPECT_NEAR(pen.area().width_mm, 152.0, 1e-9);
+  EXPECT_NEAR(pen.area().height_mm, 95.0, 1e-9);
 }
 
 }  // namespace

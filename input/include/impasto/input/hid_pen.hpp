@@ -43,12 +43,24 @@ struct PenReportLayout {
   std::size_t bytes = 0;  // on the wire, report ID included
   PenAxis x, y, pressure, tilt_x, tilt_y, twist;
   PenAxis in_range, tip, barrel1, barrel2, eraser, invert;
+  // Found outside any pen collection (a Huion's "mouse" report 9): Button 1..3 stand for the
+  // tip and the two barrel buttons.
+  bool outside_pen_collection = false;
+  // mm per logical unit of x and y, and where the scale came from.
+  double mm_per_x = 0.0;
+  double mm_per_y = 0.0;
+  bool area_from_descriptor = false;
+  bool area_from_model = false;
 };
 
 struct DecoderOptions {
   // When the descriptor gives no usable length unit for X and Y, logical units are taken
   // as this many per mm (100 is common: 2540 lines per inch).
   double fallback_lines_per_mm = 100.0;
+  // The active area from elsewhere (the model table, a vendor handshake): used instead of
+  // the fallback when the descriptor's X and Y units are not lengths.
+  std::optional<double> known_width_mm;
+  std::optional<double> known_height_mm;
 };
 
 // The tablet's active area in mm, and whether the descriptor stated it.
@@ -56,12 +68,16 @@ struct TabletArea {
   double width_mm = 0.0;
   double height_mm = 0.0;
   bool from_descriptor = false;
+  bool from_model = false;  // from DecoderOptions' known area
 };
 
 class PenDecoder {
  public:
   // Finds the pen reports: input reports with X and Y in a Digitizer Pen or Digitizer
-  // application collection or in a Stylus collection. Throws UnsupportedTablet if none.
+  // application collection or in a Stylus collection; else input reports with absolute X
+  // and Y plus Tip Pressure or a Tip Switch in any collection but a touch one; else the
+  // same in Wacom's vendor page 0xFF0D, mapped to the standard usages as the Linux wacom
+  // driver maps them. Throws UnsupportedTablet if none.
   explicit PenDecoder(ReportDescriptor descriptor, DecoderOptions options = {});
 
   // Decodes one raw input report taken at time_s. Reports that are not pen reports (pad
@@ -74,17 +90,23 @@ class PenDecoder {
   const ReportDescriptor& descriptor() const { return descriptor_; }
   const std::vector<PenReportLayout>& layouts() const { return layouts_; }
   TabletArea area() const { return area_; }
-  double mm_per_logical_x() const { return mm_per_x_; }
-  double mm_per_logical_y() const { return mm_per_y_; }
+  // Whether the pen was found through Wacom's vendor usages (0xFF0D).
+  bool wacom_vendor_page() const { return wacom_vendor_page_; }
+  // Of the first pen report (each layout has its own).
+  double mm_per_logical_x() const { return layouts_.front().mm_per_x; }
+  double mm_per_logical_y() const { return layouts_.front().mm_per_y; }
 
  private:
   ReportDescriptor descriptor_;
   std::vector<PenReportLayout> layouts_;
   DecoderOptions options_;
   TabletArea area_;
-  double mm_per_x_ = 0.0;
-  double mm_per_y_ = 0.0;
+  bool wacom_vendor_page_ = false;
 };
+
+// The standard usage a Wacom vendor usage stands for (Linux's wacom_equivalent_usage):
+// 0xFF0D00uu -> Digitizer 0x00uu, 0xFF0Dppuu -> page pp usage uu; others unchanged.
+Usage wacom_equivalent_usage(Usage u);
 
 // Why a descriptor has no pen report, or an empty string when it has one.
 std::string unsupported_reason(const ReportDescriptor& descriptor);
