@@ -30,9 +30,15 @@ void setup(CLI::App& root) {
   cmd->add_option("--screenshot", args->screenshot,
                   "Save a PNG of the whole window once the replay is applied");
   cmd->add_flag("--exit", args->options.exit_after, "Quit after the replay and screenshot");
-  cmd->add_option("--record", args->record,
-                  "Record this session's input here (default: beside the painting)");
-  cmd->add_flag("--no-record", args->options.no_record, "Do not record this session's input");
+  cmd->add_option(
+      "--record", args->record,
+      "Record this session's input here, a new file (default: beside the painting, or in the "
+      "recovery folder)");
+  cmd->add_flag("--no-record", args->options.no_record,
+                "Do not record this session's input (nor keep it for crash recovery)");
+  cmd->add_option("--autosave-seconds", args->options.autosave_seconds,
+                  "Autosave to the recovery folder at least this often while painting")
+      ->check(CLI::Range(5.0, 86400.0));
   cmd->add_option("--window-width", args->options.window_width, "Window width in pixels")
       ->check(CLI::Range(320, 8192));
   cmd->add_option("--window-height", args->options.window_height, "Window height in pixels")

@@ -2,6 +2,7 @@
 #include <impasto/input/stroke_import.hpp>
 #include <impasto/render/render_painting.hpp>
 
+#include <algorithm>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -11,6 +12,7 @@
 
 #include "command.hpp"
 #include "session/preview.hpp"
+#include "session/rebuild.hpp"
 #include "session/replay.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).
@@ -60,8 +62,25 @@ void run_replay(const ReplayArgs& args) {
   import.source_dpi = args.source_dpi;
   const input::StrokeFile file = input::load_strokes_any(args.strokes, import);
 
+  for (const auto& warning : file.warnings) std::cerr << "impasto: warning: " << warning << "\n";
+  // A window session names the painting it began from and marks its saves: rebuild from
+  // them (rebuild.hpp), unless the canvas is forced, which means a blank one.
+  const bool marked = std::any_of(file.events.begin(), file.events.end(), [](const auto& e) {
+    return std::holds_alternative<input::OriginEvent>(e) ||
+           std::holds_alternative<input::SavedEvent>(e);
+  });
+  std::optional<RebuiltSession> rebuilt;
+  if (marked && !options.width_cells && !options.height_cells && !options.dpi) {
+    rebuilt.emplace(rebuild_session(file, options));
+    for (const auto& warning : rebuilt->warnings) {
+      if (std::find(file.warnings.begin(), file.warnings.end(), warning) == file.warnings.end())
+        std::cerr << "impasto: warning: " << warning << "\n";
+    }
+  }
   ReplayReport report;
-  paintcore::Painting painting = replay(file, options, &report);
+  paintcore::Painting painting =
+      rebuilt ? std::move(rebuilt->painting) : replay(file, options, &report);
+  if (rebuilt) report = rebuilt->report;
   if (!args.out.empty()) painting.save(args.out);
   if (!args.preview.empty()) render::write_png(args.preview, render_preview(painting));
   if (!args.png.empty()) {

@@ -73,8 +73,9 @@ RebuiltSession rebuild_session(const input::StrokeFile& file, const ReplayOption
     if (!base) continue;
     ReplayReport report;
     if (!replay_from(*base, file, mark->next, options, true, report)) continue;
-    return {std::move(*base), mark->painting + " (marked at " + mark->where + ")", warnings,
-            report};
+    return {std::move(*base),
+            mark->painting + " as marked at " + mark->where + ", and the records after it",
+            warnings, report};
   }
   for (const auto& event : file.events) {
     const auto* origin = std::get_if<input::OriginEvent>(&event);
@@ -89,7 +90,7 @@ RebuiltSession rebuild_session(const input::StrokeFile& file, const ReplayOption
   painting.set_params(options.params);
   ReplayReport report;
   replay_from(painting, file, 0, options, false, report);
-  return {std::move(painting), "a new canvas", warnings, report};
+  return {std::move(painting), "the whole recording, replayed onto a new canvas", warnings, report};
 }
 
 }  // namespace impasto::app

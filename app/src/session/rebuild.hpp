@@ -15,7 +15,7 @@ namespace impasto::app {
 
 struct RebuiltSession {
   paintcore::Painting painting;
-  std::string base;  // what it started from: "a new canvas", "<file> (saved at <file>:<line>)"
+  std::string base;                   // what it was rebuilt from, in words
   std::vector<std::string> warnings;  // a torn last line, a start painting that is gone
   ReplayReport report;
 };

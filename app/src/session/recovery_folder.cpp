@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <chrono>
 #include <cstdlib>
@@ -66,10 +67,17 @@ std::filesystem::path recovery_folder() {
 
 std::string unique_session_stem(const std::string& stem) {
   const auto now = std::chrono::system_clock::now();
-  const std::time_t seconds = std::chrono::system_clock::to_time_t(now);
-  const auto micros =
-      std::chrono::duration_cast<std::chrono::microseconds>(now.time_since_epoch()).count() %
-      1000000;
+  // Strictly increasing within the process, so that even two sessions in one microsecond
+  // differ; the process id tells processes apart.
+  static std::atomic<long long> last_micros{0};
+  long long micros =
+      std::chrono::duration_cast<std::chrono::microseconds>(now.time_since_epoch()).count();
+  long long last = last_micros.load();
+  do {
+    if (micros <= last) micros = last + 1;
+  } while (!last_micros.compare_exchange_weak(last, micros));
+  const std::time_t seconds = static_cast<std::time_t>(micros / 1000000);
+  micros %= 1000000;
   std::tm local{};
   ::localtime_r(&seconds, &local);
   char stamp[64];

@@ -18,6 +18,9 @@ struct PaintOptions {
   int window_height = 900;
   paintcore::CanvasSpec new_canvas{1024, 768, 150.0, 1};  // when no painting is opened
   int wavelengths = 8;
+  // An autosave to the recovery folder at least this often while painting (and whenever the
+  // pen rests a few seconds).
+  double autosave_seconds = 120.0;
 };
 
 // Opens the window and runs until it is closed. Throws std::runtime_error when no window

@@ -25,6 +25,11 @@
 #include <memory>
 #include <stdexcept>
 
+#include "session/preview.hpp"
+#include "session/rebuild.hpp"
+#include "session/recovery_folder.hpp"
+#include "session/session_registry.hpp"
+#include "session/session_start.hpp"
 #include "window/paint_options.hpp"
 #include "window/palette_board_panel.hpp"
 #include "window/panels.hpp"
@@ -35,6 +40,7 @@
 #include "window/pointer_server_times.hpp"
 #include "window/recent_files.hpp"
 #include "window/screenshot.hpp"
+#include "window/session_banner.hpp"
 #include "window/sim_worker.hpp"
 #include "window/swatch_chips.hpp"
 #include "window/tablet_input.hpp"
@@ -48,30 +54,13 @@ double ms_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// Where an unsaved painting's sessions are kept for recovery: $XDG_STATE_HOME/impasto/sessions
-// (~/.local/state when unset), never the working folder.
-std::filesystem::path untitled_sessions_dir() {
-  if (const char* state = std::getenv("XDG_STATE_HOME"); state && *state) {
-    return std::filesystem::path(state) / "impasto" / "sessions";
-  }
-  if (const char* home = std::getenv("HOME"); home && *home) {
-    return std::filesystem::path(home) / ".local" / "state" / "impasto" / "sessions";
-  }
-  return std::filesystem::temp_directory_path() / "impasto-sessions";
-}
+// An autosave waits for this long without pen input (or for options.autosave_seconds of
+// painting), and never comes sooner than this after the last one.
+constexpr double kAutosaveQuiet_s = 3.0;
 
-// Where a session's input is recorded: beside the painting (or in the recovery folder for a
-// painting not saved yet), named by the time the session started.
-std::filesystem::path session_record_path(const std::optional<std::filesystem::path>& painting) {
-  char stamp[32];
-  const std::time_t now = std::time(nullptr);
-  std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", std::localtime(&now));
-  const std::string name = (painting ? painting->stem().string() : std::string("untitled")) +
-                           ".session-" + stamp + ".strokes";
-  if (painting) return painting->parent_path() / name;
-  const auto folder = untitled_sessions_dir();
-  std::filesystem::create_directories(folder);
-  return folder / name;
+// The painting a recovered session ends with, from its recording (rebuild.hpp).
+RebuiltSession rebuild_entry(const SessionEntry& entry) {
+  return rebuild_session(input::read_stroke_file(entry.strokes), ReplayOptions{});
 }
 
 std::vector<std::string> brush_heads() {
@@ -144,8 +133,15 @@ class PaintWindow {
   TabletTargetGeometry tablet_geometry() const;
   void open_board_for(const std::optional<std::filesystem::path>& painting);
   PaintingSnapshot snapshot();
-  std::optional<std::filesystem::path> record_path_for(
-      const std::optional<std::filesystem::path>& painting) const;
+  // Starts a session's recording and its recovery entry: beside `painting` when its folder
+  // can be written, else in the recovery folder (and says so). `origin` is the file the
+  // painting starts as (none: a new canvas).
+  SessionRecording begin_session(const std::optional<std::filesystem::path>& painting,
+                                 const std::optional<std::filesystem::path>& origin);
+  void end_session();  // the user closed the painting on purpose: nothing to recover
+  void maybe_autosave();
+  void handle_recovery(const RecoveryChoice& choice);
+  void show_preview(const paintcore::Painting& painting);
   FileActions file_actions();
 
   PaintOptions options_;
@@ -183,6 +179,17 @@ class PaintWindow {
   SpeedPressure speed_pressure_;
   int window_w_ = 0, window_h_ = 0;  // this frame's window size
   double session_start_s_ = 0;
+
+  // Crash recovery: this session's entry, what the window has to say about it, the sessions
+  // that did not end cleanly (offered at start), and the preview of one of them.
+  std::unique_ptr<LiveSession> live_session_;
+  std::string notice_;
+  std::vector<SessionEntry> recoverable_;
+  std::optional<std::size_t> previewing_;
+  std::unique_ptr<RebuiltSession> preview_;
+  unsigned preview_texture_ = 0;
+  int preview_w_ = 0, preview_h_ = 0;
+  double last_input_s_ = 0.0, last_autosave_s_ = 0.0;
 };
 
 PaintWindow::PaintWindow(const PaintOptions& options) : options_(options) {
@@ -202,6 +209,7 @@ PaintWindow::~PaintWindow() {
   tablets_.reset();
   worker_.reset();
   renderer_.reset();
+  if (preview_texture_) glDeleteTextures(1, &preview_texture_);
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
@@ -245,11 +253,118 @@ void PaintWindow::create_window() {
   session_start_s_ = glfwGetTime();
 }
 
-std::optional<std::filesystem::path> PaintWindow::record_path_for(
-    const std::optional<std::filesystem::path>& painting) const {
-  if (options_.no_record) return std::nullopt;
-  if (options_.record) return options_.record;
-  return session_record_path(painting);
+SessionRecording PaintWindow::begin_session(const std::optional<std::filesystem::path>& painting,
+                                            const std::optional<std::filesystem::path>& origin) {
+  SessionRecording recording;
+  recording.opened_from = origin;
+  live_session_.reset();
+  notice_.clear();
+  if (options_.no_record) return recording;
+  SessionStart start = start_session_recording(painting, options_.record);
+  recording.recorder = std::move(start.recorder);
+  recording.not_recording = start.not_recording;
+  live_session_ = std::move(start.live);
+  notice_ = start.notice;
+  return recording;
+}
+
+void PaintWindow::end_session() {
+  if (live_session_) live_session_->end_cleanly();
+  live_session_.reset();
+}
+
+// Between strokes, once the pen has rested kAutosaveQuiet_s or the painting has gone on for
+// options.autosave_seconds since the last autosave.
+void PaintWindow::maybe_autosave() {
+  if (!live_session_ || canvas_feed_.in_stroke() || !worker_->idle()) return;
+  if (worker_->stats().events_since_autosave == 0) return;
+  const double now = glfwGetTime();
+  if (now - last_autosave_s_ < kAutosaveQuiet_s) return;
+  const bool quiet = now - last_input_s_ >= kAutosaveQuiet_s;
+  const bool due = now - last_autosave_s_ >= options_.autosave_seconds;
+  if (!quiet && !due) return;
+  worker_->autosave(live_session_->entry().autosave);
+  last_autosave_s_ = now;
+}
+
+// The recovered painting's false-colour view, at most 480 px across, as a texture.
+void PaintWindow::show_preview(const paintcore::Painting& painting) {
+  const render::Image full = render_preview(painting);
+  const int step = std::max(1, (std::max(full.width, full.height) + 479) / 480);
+  preview_w_ = std::max(1, full.width / step);
+  preview_h_ = std::max(1, full.height / step);
+  std::vector<float> rgb;
+  rgb.reserve(static_cast<std::size_t>(preview_w_) * preview_h_ * 3);
+  for (int y = 0; y < preview_h_; ++y) {
+    for (int x = 0; x < preview_w_; ++x) {
+      const float* p = full.pixel(x * step, y * step);
+      rgb.insert(rgb.end(), p, p + 3);
+    }
+  }
+  if (!preview_texture_) glGenTextures(1, &preview_texture_);
+  glBindTexture(GL_TEXTURE_2D, preview_texture_);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB32F, preview_w_, preview_h_, 0, GL_RGB, GL_FLOAT,
+               rgb.data());
+  glBindTexture(GL_TEXTURE_2D, 0);
+}
+
+void PaintWindow::handle_recovery(const RecoveryChoice& choice) {
+  if (choice.kind == RecoveryChoice::kNone) return;
+  if (choice.kind == RecoveryChoice::kLater) {
+    recoverable_.clear();
+    previewing_.reset();
+    preview_.reset();
+    return;
+  }
+  const SessionEntry entry = recoverable_.at(choice.index);
+  try {
+    switch (choice.kind) {
+      case RecoveryChoice::kPreview:
+        preview_ = std::make_unique<RebuiltSession>(rebuild_entry(entry));
+        show_preview(preview_->painting);
+        previewing_ = choice.index;
+        return;
+      case RecoveryChoice::kRecover: {
+        if (worker_->stats().events_since_save > 0) {
+          state_.message = "save or close this painting first (File menu), then recover";
+          return;
+        }
+        if (previewing_ != choice.index || !preview_) {
+          preview_ = std::make_unique<RebuiltSession>(rebuild_entry(entry));
+        }
+        end_session();
+        SessionRecording recording = begin_session(entry.painting, std::nullopt);
+        // The new session starts from the recovered painting, kept as its first autosave.
+        if (live_session_) {
+          preview_->painting.save(live_session_->entry().autosave);
+          recording.opened_from = live_session_->entry().autosave;
+        }
+        worker_->replace_painting(std::move(preview_->painting), std::move(recording), true);
+        open_board_for(entry.painting);
+        if (entry.painting) state_.file = entry.painting;
+        notice_ = "Recovered (from " + preview_->base + "): save it to keep it." +
+                  (notice_.empty() ? "" : " " + notice_);
+        rendered_slots_.clear();
+        canvas_w_ = canvas_h_ = 0;
+        state_.hidden_dry_layers.clear();
+        break;
+      }
+      case RecoveryChoice::kDiscard:
+        break;
+      default:
+        return;
+    }
+  } catch (const std::exception& e) {
+    state_.message = std::string("cannot recover: ") + e.what();
+    return;
+  }
+  discard_session(entry);
+  recoverable_.erase(recoverable_.begin() + static_cast<std::ptrdiff_t>(choice.index));
+  previewing_.reset();
+  preview_.reset();
 }
 
 void PaintWindow::start_session() {
@@ -265,7 +380,16 @@ void PaintWindow::start_session() {
     remember_recent_file(*options_.painting);
   }
   open_board_for(options_.painting);
-  worker_ = std::make_unique<SimWorker>(std::move(painting), record_path_for(options_.painting));
+  worker_ = std::make_unique<SimWorker>(std::move(painting),
+                                        begin_session(options_.painting, options_.painting));
+  // Sessions that did not end cleanly are offered for recovery (not in scripted replays).
+  if (!options_.replay) {
+    try {
+      recoverable_ = unfinished_sessions(recovery_folder());
+    } catch (const std::exception&) {
+      // no recovery folder: begin_session has said so
+    }
+  }
   if (strokes) {
     // The recorded events take the same path as live input: the worker's queue.
     const bool has_load = std::any_of(
@@ -434,6 +558,7 @@ void PaintWindow::submit_pen_event(input::StrokeEvent event) {
   const auto* sample = std::get_if<input::SampleEvent>(&event);
   const double time_s = sample ? sample->sample.time_s : 0.0;
   worker_->submit(std::move(event));
+  last_input_s_ = glfwGetTime();
   // Only this thread submits, so the count just read is this event's job number.
   if (sample) latency_.submitted(worker_->stats().submitted, time_s);
 }
@@ -539,7 +664,9 @@ void PaintWindow::run_pending_action() {
         spec.height_cells = state_.new_height;
         spec.dpi = state_.new_dpi;
         paintcore::validate(spec);
-        worker_->replace_painting(paintcore::Painting(spec), record_path_for(std::nullopt));
+        end_session();
+        worker_->replace_painting(paintcore::Painting(spec),
+                                  begin_session(std::nullopt, std::nullopt));
         open_board_for(std::nullopt);
         state_.file.reset();
         state_.message = "new painting";
@@ -548,7 +675,9 @@ void PaintWindow::run_pending_action() {
       case PendingAction::kOpen:
       case PendingAction::kOpenRecent: {
         const auto file = state_.pending_path;
-        worker_->replace_painting(paintcore::Painting::load(file), record_path_for(file));
+        paintcore::Painting opened = paintcore::Painting::load(file);
+        end_session();
+        worker_->replace_painting(std::move(opened), begin_session(file, file));
         open_board_for(file);
         state_.file = file;
         remember_recent_file(file);
@@ -590,6 +719,15 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   const FileActions files = file_actions();
   PanelContext context{state_, *worker_, painting, *palette_, files, board_panel_};
   draw_panels(context);
+  draw_session_banners(worker_->stats(), notice_);
+  const RecoveryChoice recovery = draw_recovery_offer(recoverable_, previewing_);
+  if (previewing_ && preview_texture_) {
+    ImGui::Begin("Recover unsaved work");
+    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(preview_texture_)),
+                 ImVec2(static_cast<float>(preview_w_), static_cast<float>(preview_h_)));
+    ImGui::TextDisabled("rebuilt from %s", preview_->base.c_str());
+    ImGui::End();
+  }
   ImGui::Render();
 
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -606,6 +744,7 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   latency_.shown(applied_at_upload_, glfwGetTime() - session_start_s_);
   state_.input_latency_ms = latency_.recent_median_ms().value_or(-1.0);
   state_.frame_ms = ms_since(start);
+  handle_recovery(recovery);
 }
 
 void PaintWindow::run() {
@@ -635,9 +774,17 @@ void PaintWindow::run() {
       screenshot_done = true;
       std::cout << "wrote " << options_.screenshot->string() << "\n";
     }
+    maybe_autosave();
     if (options_.exit_after && screenshot_done && worker_->idle()) break;
   }
   report_latency();
+  // Closed as the user chose: nothing to recover. A crash never gets here.
+  worker_->wait_idle();
+  const std::string recording_error = worker_->stats().recording_error;
+  worker_.reset();  // syncs and closes the recording
+  end_session();
+  // A session that could not be recorded fails the command, so scripts notice.
+  if (!recording_error.empty()) throw std::runtime_error(recording_error);
 }
 
 // The session's input latency, for measuring it (docs/window.md).

@@ -28,13 +28,28 @@ struct SimStats {
   std::uint64_t applied = 0;    // events applied since the worker started
   std::uint64_t submitted = 0;  // jobs queued since the worker started (applied + waiting)
   std::uint64_t events_since_save = 0;
+  std::uint64_t events_since_autosave = 0;
   std::string last_error;  // the most recent event that could not be applied
+  // Why the session is not being recorded (the recording stopped, or never started); empty
+  // while it is. It stays until the painting is replaced: the window shows it as a banner.
+  std::string recording_error;
+  std::string autosave_error;  // the last autosave's failure; empty once one succeeds
+  std::uint64_t autosaves = 0;
+};
+
+// What a session is recorded with: the recorder (none when recording is off or could not
+// start, with the reason), and the painting file it was opened from (none: a new canvas).
+struct SessionRecording {
+  std::unique_ptr<input::StrokeRecorder> recorder;
+  std::string not_recording;  // why there is no recorder, when that is a problem
+  std::optional<std::filesystem::path> opened_from;
 };
 
 class SimWorker {
  public:
-  // Takes the painting; records to `record_to` when set (the file is created at once).
-  SimWorker(paintcore::Painting painting, std::optional<std::filesystem::path> record_to);
+  // Takes the painting and the recording; writes the recording's header (canvas, brush and
+  // `from`, so the file rebuilds the painting alone).
+  SimWorker(paintcore::Painting painting, SessionRecording recording);
   ~SimWorker();
   SimWorker(const SimWorker&) = delete;
   SimWorker& operator=(const SimWorker&) = delete;
@@ -58,11 +73,16 @@ class SimWorker {
     std::lock_guard lock(painting_mutex_);
     return f(static_cast<const paintcore::Painting&>(painting_));
   }
-  // Waits for the queue to drain, then replaces the painting (new, open) and the recording.
-  void replace_painting(paintcore::Painting painting,
-                        std::optional<std::filesystem::path> record_to);
-  // Saves under the lock (after the queue drained); resets events_since_save.
+  // Waits for the queue to drain, then replaces the painting (new, open, recovered) and the
+  // recording; `unsaved`: the painting differs from its file (a recovered one).
+  void replace_painting(paintcore::Painting painting, SessionRecording recording,
+                        bool unsaved = false);
+  // Saves under the lock (after the queue drained); resets events_since_save and marks the
+  // save in the recording.
   void save(const std::filesystem::path& file);
+  // Queues an autosave to `file` (atomic, as every save), done between strokes on the
+  // worker's thread and marked in the recording; its failure goes to stats().autosave_error.
+  void autosave(const std::filesystem::path& file);
 
   SimStats stats() const;
   std::optional<std::filesystem::path> recording_path() const;
@@ -72,14 +92,25 @@ class SimWorker {
     input::StrokeEvent event;
     std::optional<bool> auto_load;  // a change of auto-load, in order with the events
     bool finish = false;            // end an open stroke
+    std::optional<std::filesystem::path> autosave_to;
   };
   void run();
-  void start_recording(const std::optional<std::filesystem::path>& record_to);
+  void start_recording(SessionRecording recording);
+  // Writes to the recording; on its first failure keeps the reason and stops recording.
+  // Holding painting_mutex_.
+  void record(const input::StrokeEvent& event);
+  // Syncs the recording when `now` (a stroke ended) or when it has waited kSyncEvery.
+  void sync_recording(bool now);
+  void mark_saved(const std::filesystem::path& file);
+  void do_autosave(const std::filesystem::path& file);
 
   paintcore::Painting painting_;
   ReplayOptions options_;
   std::unique_ptr<SessionPlayer> player_;
   std::unique_ptr<input::StrokeRecorder> recorder_;
+  std::string recording_error_;  // guarded by painting_mutex_, copied into stats_
+  double last_sync_s_ = 0.0;
+  bool tip_was_down_ = false;
   mutable std::mutex painting_mutex_;
 
   mutable std::mutex queue_mutex_;

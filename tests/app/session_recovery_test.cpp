@@ -1,0 +1,288 @@
+// Crash recovery without a window: the recovery folder is private and never /tmp, session
+// names never collide, an entry is offered for recovery only once its process is gone, a
+// recording rebuilds its painting from the latest save it marks (and from earlier ones when
+// that is gone), and a painting in a read-only folder records into the recovery folder.
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <impasto/input/stroke_file.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <set>
+#include <string>
+
+#include "session/rebuild.hpp"
+#include "session/recovery_folder.hpp"
+#include "session/session_registry.hpp"
+#include "session/session_start.hpp"
+
+namespace impasto::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+class ScopedEnv {
+ public:
+  ScopedEnv(const char* name, const std::optional<std::string>& value) : name_(name) {
+    if (const char* old = std::getenv(name)) old_ = old;
+    if (value) {
+      ::setenv(name, value->c_str(), 1);
+    } else {
+      ::unsetenv(name);
+    }
+  }
+  ~ScopedEnv() {
+    if (old_) {
+      ::setenv(name_, old_->c_str(), 1);
+    } else {
+      ::unsetenv(name_);
+    }
+  }
+
+ private:
+  const char* name_;
+  std::optional<std::string> old_;
+};
+
+class TempDir {
+ public:
+  explicit TempDir(const std::string& name)
+      : path_(fs::temp_directory_path() / (name + "_" + std::to_string(::getpid()))) {
+    fs::remove_all(path_);
+    fs::create_directories(path_);
+  }
+  ~TempDir() {
+    std::error_code error;
+    fs::permissions(path_, fs::perms::owner_all, fs::perm_options::add, error);
+    fs::remove_all(path_, error);
+  }
+  const fs::path& path() const { return path_; }
+
+ private:
+  fs::path path_;
+};
+
+unsigned mode_of(const fs::path& path) {
+  struct stat info {};
+  ::lstat(path.c_str(), &info);
+  return info.st_mode & 0777;
+}
+
+TEST(RecoveryFolder, IsPrivateUnderXdgStateHome) {
+  TempDir dir("impasto_state");
+  ScopedEnv state("XDG_STATE_HOME", dir.path().string());
+  const fs::path folder = recovery_folder();
+  EXPECT_EQ(folder, dir.path() / "impasto");
+  EXPECT_EQ(mode_of(folder), 0700u);
+  // A folder left open to others is closed again.
+  fs::permissions(folder, fs::perms::all);
+  recovery_folder();
+  EXPECT_EQ(mode_of(folder), 0700u);
+}
+
+TEST(RecoveryFolder, ASymlinkedFolderIsRefused) {
+  TempDir dir("impasto_state_link");
+  fs::create_directories(dir.path() / "elsewhere");
+  fs::create_directory_symlink(dir.path() / "elsewhere", dir.path() / "impasto");
+  ScopedEnv state("XDG_STATE_HOME", dir.path().string());
+  EXPECT_THROW(recovery_folder(), std::runtime_error);
+}
+
+TEST(RecoveryFolder, NeverTmpWithoutHomeOrXdgStateHome) {
+  ScopedEnv state("XDG_STATE_HOME", std::nullopt);
+  ScopedEnv home("HOME", std::nullopt);
+  try {
+    const fs::path folder = recovery_folder();  // the password database's home
+    EXPECT_EQ(folder.filename(), "impasto");
+    EXPECT_NE(folder.string().rfind(fs::temp_directory_path().string(), 0), 0u) << folder;
+    EXPECT_EQ(mode_of(folder), 0700u);
+  } catch (const std::runtime_error& e) {
+    // No home at all: an error that says what to set, rather than a shared folder.
+    EXPECT_NE(std::string(e.what()).find("XDG_STATE_HOME"), std::string::npos) << e.what();
+  }
+}
+
+TEST(SessionNames, SessionsStartedInTheSameSecondGetTheirOwnFiles) {
+  std::set<std::string> names;
+  for (int i = 0; i < 1000; ++i) names.insert(unique_session_stem("p"));
+  EXPECT_EQ(names.size(), 1000u);
+  const std::string name = *names.begin();
+  EXPECT_NE(name.find("-" + std::to_string(::getpid())), std::string::npos) << name;
+  // A second process: its own pid, so its own name even in the same microsecond.
+  TempDir dir("impasto_names");
+  ScopedEnv state("XDG_STATE_HOME", dir.path().string());
+  const pid_t child = ::fork();
+  if (child == 0) {
+    SessionStart start = start_session_recording(std::nullopt, std::nullopt);
+    ::_exit(start.recorder && start.live ? 0 : 1);
+  }
+  SessionStart mine = start_session_recording(std::nullopt, std::nullopt);
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+  ASSERT_TRUE(mine.recorder && mine.live);
+  int recordings = 0;
+  for (const auto& item : fs::directory_iterator(dir.path() / "impasto"))
+    recordings += item.path().extension() == ".strokes";
+  EXPECT_EQ(recordings, 2);
+}
+
+TEST(SessionRegistry, AnEntryIsOfferedOnlyOnceItsSessionIsGone) {
+  TempDir dir("impasto_registry");
+  const fs::path strokes = dir.path() / "s.strokes";
+  {
+    LiveSession live(dir.path(), "one", fs::path("/p/a b.impasto"), strokes);
+    EXPECT_TRUE(unfinished_sessions(dir.path()).empty()) << "a running session was offered";
+    EXPECT_EQ(mode_of(live.entry().entry), 0600u);
+    EXPECT_THROW(LiveSession(dir.path(), "one", std::nullopt, strokes), std::runtime_error);
+  }  // gone without ending cleanly: a crash
+  auto found = unfinished_sessions(dir.path());
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].id, "one");
+  EXPECT_EQ(found[0].painting, fs::path("/p/a b.impasto"));
+  EXPECT_EQ(found[0].strokes, strokes);
+  EXPECT_EQ(found[0].autosave, dir.path() / "one.autosave.impasto");
+  discard_session(found[0]);
+  EXPECT_TRUE(unfinished_sessions(dir.path()).empty());
+  {
+    LiveSession live(dir.path(), "two", std::nullopt, strokes);
+    live.end_cleanly();
+  }
+  EXPECT_TRUE(unfinished_sessions(dir.path()).empty()) << "a cleanly ended session was offered";
+}
+
+// A short session: a loaded brush and a few strokes on a small canvas.
+input::SampleEvent pen(double t, double x, double y, bool down) {
+  paintcore::PenSample s;
+  s.time_s = t;
+  s.x_mm = x;
+  s.y_mm = y;
+  s.pressure = down ? 0.8f : 0.0f;
+  s.buttons = paintcore::kPenInRange | (down ? paintcore::kPenTip : 0u);
+  return {s};
+}
+
+std::vector<input::StrokeEvent> stroke(double y) {
+  std::vector<input::StrokeEvent> events;
+  events.push_back(input::LoadEvent{20.0, {{"Ultramarine Blue", 1.0}}, {}});
+  for (int i = 0; i <= 8; ++i) events.push_back(pen(0.01 * i, 2.0 + 0.8 * i, y, i < 8));
+  return events;
+}
+
+// Plays events onto `painting` as the window does and records them, with marks for saves.
+struct LiveRun {
+  paintcore::Painting painting{paintcore::CanvasSpec{80, 60, 254.0, 1}, 1};
+  ReplayOptions options;
+  SessionPlayer player{painting, options, false};
+  input::StrokeFile recording;
+
+  LiveRun() {
+    options.threads = 1;
+    const auto& spec = painting.canvas().spec();
+    recording.events.push_back(input::CanvasEvent{spec.width_cells, spec.height_cells, spec.dpi});
+  }
+  void play(const std::vector<input::StrokeEvent>& events) {
+    for (const auto& e : events) {
+      recording.events.push_back(e);
+      player.apply(e);
+    }
+    player.finish();
+  }
+  void save(const fs::path& file, bool as_origin = false) {
+    painting.save(file);
+    if (as_origin) {
+      recording.events.push_back(input::OriginEvent{false, file.string(), painting.state_hash()});
+    } else {
+      recording.events.push_back(input::SavedEvent{file.string(), painting.state_hash()});
+    }
+  }
+};
+
+TEST(Rebuild, FromTheLatestMarkedSaveAndEarlierOnesWhenItIsGone) {
+  TempDir dir("impasto_rebuild");
+  LiveRun live;
+  live.play(stroke(3.0));
+  live.save(dir.path() / "start.impasto", true);  // the session "opened" this painting
+  live.play(stroke(4.0));
+  live.save(dir.path() / "autosave.impasto");
+  live.play(stroke(5.0));
+  const std::uint64_t expected = live.painting.state_hash();
+  ReplayOptions options;
+  options.threads = 1;
+
+  RebuiltSession rebuilt = rebuild_session(live.recording, options);
+  EXPECT_EQ(rebuilt.painting.state_hash(), expected);
+  EXPECT_NE(rebuilt.base.find("autosave.impasto"), std::string::npos) << rebuilt.base;
+  EXPECT_EQ(rebuilt.report.strokes, 1u) << "only the strokes after the autosave are replayed";
+
+  fs::remove(dir.path() / "autosave.impasto");
+  rebuilt = rebuild_session(live.recording, options);
+  EXPECT_EQ(rebuilt.painting.state_hash(), expected);
+  EXPECT_NE(rebuilt.base.find("start.impasto"), std::string::npos) << rebuilt.base;
+  EXPECT_TRUE(rebuilt.warnings.empty());
+
+  // The start painting changed since, and nothing else is left: a blank canvas, said aloud.
+  paintcore::Painting(paintcore::CanvasSpec{80, 60, 254.0, 1}, 1)
+      .save(dir.path() / "start.impasto");
+  rebuilt = rebuild_session(live.recording, options);
+  ASSERT_EQ(rebuilt.warnings.size(), 1u);
+  EXPECT_NE(rebuilt.warnings[0].find("start.impasto"), std::string::npos) << rebuilt.warnings[0];
+}
+
+TEST(Rebuild, AnUndoReachingBackPastASaveUsesAnEarlierBase) {
+  TempDir dir("impasto_rebuild_undo");
+  LiveRun live;
+  live.save(dir.path() / "start.impasto", true);
+  live.play(stroke(3.0));
+  live.save(dir.path() / "saved.impasto");
+  live.play({input::UndoEvent{}, input::UndoEvent{}});  // the stroke and its load
+  live.play(stroke(5.0));
+  ReplayOptions options;
+  options.threads = 1;
+  const RebuiltSession rebuilt = rebuild_session(live.recording, options);
+  EXPECT_EQ(rebuilt.painting.state_hash(), live.painting.state_hash());
+  EXPECT_NE(rebuilt.base.find("start.impasto"), std::string::npos) << rebuilt.base;
+}
+
+// Run as another user when root, for whom no folder is read-only.
+TEST(SessionStart, APaintingInAReadOnlyFolderRecordsIntoTheRecoveryFolder) {
+  TempDir dir("impasto_readonly");
+  const fs::path folder = dir.path() / "gallery";
+  const fs::path state = dir.path() / "state";
+  fs::create_directories(folder);
+  fs::create_directories(state);
+  const fs::path painting = folder / "study.impasto";
+  paintcore::Painting(paintcore::CanvasSpec{16, 16, 150.0, 1}, 1).save(painting);
+  fs::permissions(folder, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
+                              fs::perms::group_exec | fs::perms::others_read |
+                              fs::perms::others_exec);
+  fs::permissions(dir.path(), fs::perms::all, fs::perm_options::add);
+  const uid_t nobody = 65534;
+  if (::geteuid() == 0) {
+    ASSERT_EQ(::chown(state.c_str(), nobody, nobody), 0);
+  }
+  const pid_t child = ::fork();
+  if (child == 0) {
+    if (::geteuid() == 0 && (::setgid(nobody) != 0 || ::setuid(nobody) != 0)) ::_exit(10);
+    ::setenv("XDG_STATE_HOME", state.c_str(), 1);
+    SessionStart start = start_session_recording(painting, std::nullopt);
+    if (!start.recorder) ::_exit(11);
+    if (start.recorder->path().parent_path() != state / "impasto") ::_exit(12);
+    if (start.notice.find("cannot be written") == std::string::npos) ::_exit(13);
+    if (!start.live || start.live->entry().painting != painting) ::_exit(14);
+    ::_exit(0);
+  }
+  int status = 0;
+  ::waitpid(child, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0) << "10 setuid, 11 no recording, 12 wrong folder, 13 no notice, "
+                                       "14 no recovery entry";
+  EXPECT_FALSE(fs::exists(folder / "study.impasto.strokes"));
+}
+
+}  // namespace
+}  // namespace impasto::app
