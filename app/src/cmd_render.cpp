@@ -106,6 +106,7 @@ void run(const RenderArgs& args) {
   settings.ambient = args.ambient;
   validate(settings);
   const paintcore::Painting painting = paintcore::Painting::load(args.painting, args.threads);
+  check_render_memory(painting.canvas(), args.painting);
   if (args.zoom > 0) {
     // The close-up: the region magnified, its cracks shaded point by point.
     const CellRegion region =

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 #include <stdexcept>
@@ -116,10 +117,12 @@ class Reader {
     need(count * sizeof(float), field);
     read(out, count * sizeof(float));
     for (std::size_t i = 0; i < count; ++i)
-      if (!std::isfinite(out[i]) || out[i] < 0.0f || out[i] > kMaxAmountMm)
-        fail(field, "value " + std::to_string(i) + " (" + std::to_string(out[i]) +
-                        ") is negative, not finite or above " + std::to_string(kMaxAmountMm) +
-                        " mm");
+      if (!std::isfinite(out[i]) || out[i] < 0.0f || out[i] > kMaxAmountMm) {
+        char why[96];
+        std::snprintf(why, sizeof why, " (%g) is negative, not finite or above %g mm",
+                      static_cast<double>(out[i]), static_cast<double>(kMaxAmountMm));
+        fail(field, "value " + std::to_string(i) + why);
+      }
   }
   std::string get_string(const std::string& field) {
     const auto size = get<std::uint32_t>(field + " length");

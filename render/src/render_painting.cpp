@@ -1,8 +1,19 @@
 #include "impasto/render/render_painting.hpp"
 
+#include "impasto/files/memory_budget.hpp"
 #include "impasto/render/tile_renderer.hpp"
 
 namespace impasto::render {
+
+void check_render_memory(const paintcore::Canvas& canvas, const std::string& where) {
+  const auto cells =
+      static_cast<std::uint64_t>(canvas.tiles_x()) * canvas.tiles_y() * paintcore::kTileCells;
+  files::check_allocation(where,
+                          "rendering the " + std::to_string(canvas.width_cells()) + " x " +
+                              std::to_string(canvas.height_cells()) +
+                              "-cell canvas (canvas.width_cells x canvas.height_cells)",
+                          28 * cells);
+}
 
 Image render_painting(const paintcore::Painting& painting, const RenderSettings& settings) {
   TileRenderer renderer(settings, painting.pigment_slots());

@@ -1,5 +1,7 @@
 #include "impasto/render/tile_renderer.hpp"
 
+#include "impasto/render/render_painting.hpp"
+
 #include <Imath/half.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -47,7 +49,7 @@ int gather_shares(int slot_count, float volume_mm, const AmountOf& amount_of,
   const float inverse_volume = 1.0f / volume_mm;
   for (int k = 0; k < slot_count; ++k) {
     const auto [slot, amount] = amount_of(k);
-    if (amount > 0.0f) shares[static_cast<std::size_t>(count++)] = {slot, amount * inverse_volume};
+    if (amount > 0.0f) shares[static_cast<std::size_t>(count++)] = {slot, pigment_concentration(amount, inverse_volume)};
   }
   return count;
 }
@@ -124,6 +126,7 @@ void TileRenderer::run_parallel(std::size_t count, const Work& work) const {
 }
 
 void TileRenderer::reset_caches(const paintcore::Canvas& canvas) {
+  check_render_memory(canvas, "render");
   width_ = canvas.width_cells();
   height_ = canvas.height_cells();
   tiles_x_ = canvas.tiles_x();

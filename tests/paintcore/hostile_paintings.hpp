@@ -73,6 +73,12 @@ inline Painting empty_painting() {
   return Painting(CanvasSpec{64, 64, 254.0, 1}, 1);
 }
 
+// The pigments of painted_tile(): names the renderer's database knows.
+inline const std::vector<std::string>& hostile_slots() {
+  static const std::vector<std::string> slots = {"Titanium White", "Ultramarine Blue"};
+  return slots;
+}
+
 // One tile of paint: a brush loaded with two pigments, one dab.
 inline Painting painted_tile() {
   Painting p(CanvasSpec{64, 64, 254.0, 1}, 1);
@@ -81,7 +87,7 @@ inline Painting painted_tile() {
   brush.size_mm = 1.0;
   brush.stiffness = 0.5;
   p.set_brush(brush);
-  p.load_brush({{"red", 1.0}, {"blue", 1.0}}, 3.0);
+  p.load_brush({{hostile_slots()[0], 1.0}, {hostile_slots()[1], 1.0}}, 3.0);
   p.begin_stroke();
   for (int i = 0; i < 8; ++i) {
     PenSample s;
@@ -123,7 +129,7 @@ inline std::vector<HostilePainting> hostile_paintings() {
     patch_payload(b, tiles_count_offset({}) + 4, std::uint32_t{1u << 24});
     out.push_back({"huge_dry_layer_count", b, "dry_layers.count"});
   }
-  const std::vector<std::string> slots = {"red", "blue"};
+  const std::vector<std::string>& slots = hostile_slots();
   const auto painted = saved_bytes(painted_tile());
   {
     auto b = painted;
@@ -133,7 +139,7 @@ inline std::vector<HostilePainting> hostile_paintings() {
   {
     auto b = painted;  // pigment in a cell with almost no paint: repaired on load
     const std::size_t cell = 64 * 63 + 63;
-    patch_payload(b, wet_volume_offset(slots) + 4 * cell, 1e-30f);
+    patch_payload(b, wet_volume_offset(slots) + 4 * cell, 1e-40f);  // a denormal
     patch_payload(b, wet_volume_offset(slots) + 4 * (kTileCells + cell), 1.0f);
     patch_payload(b, wet_volume_offset(slots) + 4 * (2 * kTileCells + cell), 1e-38f);
     out.push_back({"pigment_without_paint", b, ""});
@@ -141,9 +147,17 @@ inline std::vector<HostilePainting> hostile_paintings() {
   {
     auto b = painted;  // more pigment than paint in a cell: repaired on load
     const std::size_t cell = 64 * 10 + 5;
-    patch_payload(b, wet_volume_offset(slots) + 4 * cell, 0.001f);
+    patch_payload(b, wet_volume_offset(slots) + 4 * cell, 1e-37f);
     patch_payload(b, wet_volume_offset(slots) + 4 * (kTileCells + cell), 900.0f);
     out.push_back({"pigment_over_volume", b, ""});
+  }
+  {
+    auto b = painted;  // the largest amounts a cell may hold: a metre of paint, all pigment
+    const std::size_t cell = 64 * 20 + 20;
+    patch_payload(b, wet_volume_offset(slots) - 4 * (kTileCells - cell), 1000.0f);  // dry height
+    patch_payload(b, wet_volume_offset(slots) + 4 * cell, 1000.0f);
+    patch_payload(b, wet_volume_offset(slots) + 4 * (kTileCells + cell), 1000.0f);
+    out.push_back({"largest_amounts", b, ""});
   }
   return out;
 }

@@ -1,7 +1,17 @@
 #pragma once
+// A pigment's concentration in its layer: amount / volume (given as 1 / volume), at most
+// kMaxConcentration. A cell's pigment is part of its paint, so real mixes stay at or below 1
+// (up to rounding) and are untouched; a degenerate cell (a denormal volume, more pigment than
+// paint) would otherwise reach Kubelka-Munk as Inf and render NaN.
+inline constexpr float kMaxConcentration = 4.0f;
+inline float pigment_concentration(float amount, float inverse_volume) {
+  return std::min(amount * inverse_volume, kMaxConcentration);
+}
+
 // One paint layer of a cell composited over what lies beneath it, at every wavelength node:
 // stages 1–3 of IMPaSTo Fig. 6 for a whole cell. Inline so the tile renderer, the colour
 // benchmark and the tests run the very same code.
+#include <algorithm>
 #include <span>
 
 #include "impasto/render/kubelka_munk.hpp"

@@ -1,12 +1,19 @@
 #pragma once
 // One-call rendering of a whole painting to an image or a file.
 #include <filesystem>
+#include <string>
 
 #include "impasto/paintcore/painting.hpp"
 #include "impasto/render/image.hpp"
 #include "impasto/render/render_settings.hpp"
 
 namespace impasto::render {
+
+// The memory a whole-canvas render takes (shaded tiles, heights and the image: 28 bytes a
+// cell), checked against the memory budget before anything is allocated: a crafted 193-byte
+// painting declaring a 131072 x 131072 canvas fails here at once. Throws std::runtime_error
+// "<where>: ..." naming the canvas fields.
+void check_render_memory(const paintcore::Canvas& canvas, const std::string& where);
 
 // Every tile of the painting rendered with `settings` (pigments from the default database,
 // named by the painting's slots).

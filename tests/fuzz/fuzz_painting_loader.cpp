@@ -1,0 +1,50 @@
+// Fuzz target: any bytes as a painting file, as they are and with the header's size and the
+// checksum made to match (so that mutations reach the fields). Nothing may crash or allocate
+// what a field declares. The bytes go to an in-memory file (memfd), read by its /proc name.
+#include <sys/mman.h>
+#include <unistd.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "hasher.hpp"
+#include "impasto/paintcore/painting.hpp"
+
+namespace paintcore = impasto::paintcore;
+
+namespace {
+
+void load(const std::vector<std::uint8_t>& bytes) {
+  static const int fd = ::memfd_create("impasto_fuzz_painting", MFD_CLOEXEC);
+  if (fd < 0) std::abort();
+  if (::ftruncate(fd, 0) != 0 ||
+      ::pwrite(fd, bytes.data(), bytes.size(), 0) != static_cast<ssize_t>(bytes.size()))
+    std::abort();
+  try {
+    (void)paintcore::Painting::load("/proc/self/fd/" + std::to_string(fd), 1);
+  } catch (const std::runtime_error&) {
+  }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  std::vector<std::uint8_t> bytes(data, data + size);
+  load(bytes);
+  constexpr std::size_t kHeader = 8 + 4 + 8;
+  if (bytes.size() >= kHeader + 8) {
+    const std::uint64_t payload = bytes.size() - kHeader - 8;
+    std::memcpy(bytes.data() + 12, &payload, 8);
+    paintcore::Hasher checksum;
+    checksum.bytes(bytes.data() + kHeader, payload);
+    const std::uint64_t digest = checksum.digest();
+    std::memcpy(bytes.data() + bytes.size() - 8, &digest, 8);
+    load(bytes);
+  }
+  return 0;
+}
