@@ -95,7 +95,9 @@ TEST(PaletteBoard, PickUpLoadsTheCanvasBrushThroughTheRecordedSession) {
   {
     paintcore::Painting canvas({200, 150, 100.0, 1});
     canvas.set_brush({"round", 6.0, 0.5});
-    SimWorker worker(std::move(canvas), record);
+    SessionRecording recording;
+    recording.recorder = std::make_unique<input::StrokeRecorder>(record);
+    SimWorker worker(std::move(canvas), std::move(recording));
     // What the window's "Pick up onto brush" submits.
     worker.submit(input::WipeEvent{});
     worker.submit(*load);

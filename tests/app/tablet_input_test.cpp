@@ -158,7 +158,10 @@ TEST(TabletFeed, RecordedReportStreamPaintsAndRecordsExactlyWhatTheWindowWould) 
   std::uint64_t live_hash = 0;
   std::size_t fed = 0;
   {
-    SimWorker worker(paintcore::Painting({g.canvas_w_cells, g.canvas_h_cells, 101.6, 1}), record);
+    SessionRecording recording;
+    recording.recorder = std::make_unique<input::StrokeRecorder>(record);
+    SimWorker worker(paintcore::Painting({g.canvas_w_cells, g.canvas_h_cells, 101.6, 1}),
+                     std::move(recording));
     worker.submit(input::BrushEvent{"round", 3.0, 0.5, {}});
     worker.submit(input::LoadEvent{200.0, {{"Pyrrole Red", 1.0}}, {}});
     PenFeed feed([&](input::StrokeEvent e) { worker.submit(std::move(e)); });
