@@ -7,13 +7,14 @@
 #include <cmath>
 
 #include "parallel_rows.hpp"
+#include "simd_clones.hpp"
 
 namespace impasto::paintcore {
 
 namespace {
 
 // The shares one row of cells sends. Branch-free so that it vectorises.
-void prepare_row(int width, const float* __restrict vx, const float* __restrict vy,
+IMPASTO_SIMD_CLONES void prepare_row(int width, const float* __restrict vx, const float* __restrict vy,
                  const float* __restrict volume, float min_film_mm, float* __restrict stay,
                  float* __restrict east, float* __restrict west, float* __restrict south,
                  float* __restrict north, float* __restrict south_east,
@@ -48,7 +49,7 @@ void prepare_row(int width, const float* __restrict vx, const float* __restrict 
 
 // One row of the gather: each cell sums the shares its neighbours send it, in a fixed order
 // of terms, so that the sum is the same on any thread.
-void gather_row(int width, std::ptrdiff_t s, const float* __restrict c, float* __restrict o,
+IMPASTO_SIMD_CLONES void gather_row(int width, std::ptrdiff_t s, const float* __restrict c, float* __restrict o,
                 const float* __restrict from_self, const float* __restrict from_w,
                 const float* __restrict from_e, const float* __restrict from_n,
                 const float* __restrict from_s, const float* __restrict from_nw,

@@ -3,15 +3,15 @@
 #include <algorithm>
 #include <cmath>
 
+#include "contact_rows.hpp"
 #include "impasto/paintcore/transfer.hpp"
 #include "parallel_rows.hpp"
+#include "simd_clones.hpp"
 
 namespace impasto::paintcore {
 namespace {
 
 constexpr std::size_t kBaseCacheTiles = 256;
-// Keeps a deposit a relative hair below what its brush cell holds (float rounding).
-constexpr float kBelowBound = 1.0f - 1e-5f;
 // The bristles even out once per this distance travelled (mm), not every step.
 constexpr double kBrushFlowBatchMm = 0.5;
 
@@ -39,6 +39,9 @@ void Stepper::resize(int slot_count, std::size_t brush_cells) {
   if (pigment_.size() < n * slots) pigment_.resize(n * slots);
   if (new_pigment_.size() < n * slots) new_pigment_.resize(n * slots);
   if (brush_cell_.size() < cells) brush_cell_.resize(cells);
+  if (brush_paint_at_.size() < cells) brush_paint_at_.resize(cells);
+  if (brush_pigment_at_.size() < cells * slots) brush_pigment_at_.resize(cells * slots);
+  if (brush_share_cap_.size() < cells) brush_share_cap_.resize(cells);
   if (xfer_.size() < cells) xfer_.resize(cells);
   if (contact_weight_.size() < cells) contact_weight_.resize(cells);
   for (auto* faces : {&face_east_, &face_south_}) {
@@ -47,7 +50,7 @@ void Stepper::resize(int slot_count, std::size_t brush_cells) {
   }
   if (xfer_ratio_.size() < cells) xfer_ratio_.resize(cells);
   if (xfer_pigment_.size() < cells * slots) xfer_pigment_.resize(cells * slots);
-  brush_share_.assign(brush_cells, 0);
+  if (brush_share_.size() < brush_cells) brush_share_.resize(brush_cells);
   row_contacts_.assign(static_cast<std::size_t>(w.height), 0);
   for (auto* grid : {&ground_, &wet_, &pen_, &vx_, &vy_, &new_wet_})
     zero_border(grid->data(), w.width, w.height);
@@ -80,7 +83,7 @@ void Stepper::find_bases(const Canvas& canvas) {
       bases_.push_back(base_heights(canvas, canvas.tile_index(tx, ty)));
 }
 
-void Stepper::gather_rows(const StepInputs& in, int r0, int r1) {
+IMPASTO_SIMD_CLONES void Stepper::gather_rows(const StepInputs& in, int r0, int r1) {
   const Window& w = win_;
   const std::size_t n = w.padded();
   for (int y = r0; y < r1; ++y) {
@@ -119,69 +122,51 @@ void Stepper::gather_rows(const StepInputs& in, int r0, int r1) {
 
 void Stepper::penetrate_rows(const StepInputs& in, int r0, int r1) {
   const Window& w = win_;
-  const int n = in.brush->cells_across();
-  const float* padded_footprint = in.brush->padded_footprint_mm().data();
-  const float* padded_coverage = in.brush->padded_coverage().data();
-  const std::size_t padded = static_cast<std::size_t>(n) + 2;
-  const auto padded_limit = static_cast<float>(n) + 1.0f;
-  const float* brush_paint = in.brush->volume_mm().data();
+  const std::size_t cells = static_cast<std::size_t>(w.width) * w.height;
+  const std::size_t brush_cells = in.brush->cell_count();
+  HeadRow head{in.brush->padded_coverage().data(), in.brush->padded_footprint_mm().data(),
+               in.brush->volume_mm().data(), in.brush->cells_across()};
+  // Brush coordinates are affine in x: from the row's first cell centre, in steps.
+  head.step_u = static_cast<float>(in.placement.to_brush[0]);
+  head.step_v = static_cast<float>(in.placement.to_brush[2]);
+  head.tip_mm = in.tip_mm;
+  head.lift_off = in.lift_off;
+  // A head square to the canvas rows, to a thousandth of a cell across the window (a head
+  // settled on the travel's heading), takes the aligned kernel, at the row's middle: the
+  // bilinear weights change by less than that.
+  const double drift_v = std::abs(in.placement.to_brush[2]) * w.width;
+  const double drift_u = std::abs(in.placement.to_brush[0]) * w.width;
+  const bool along_u = drift_v <= 1e-3, along_v = !along_u && drift_u <= 1e-3;
   for (int y = r0; y < r1; ++y) {
-    int contacts = 0;
-    // Brush coordinates are affine in x: start at the row's first cell centre and step.
     double bx, by;
     in.placement.brush_coords(w.x0 + 0.5, w.y0 + y + 0.5, bx, by);
-    const double step_x = in.placement.to_brush[0], step_y = in.placement.to_brush[2];
+    const double middle = 0.5 * w.width;
+    head.u0 = static_cast<float>(bx + 0.5 + (along_v ? in.placement.to_brush[0] * middle : 0.0));
+    head.v0 = static_cast<float>(by + 0.5 + (along_u ? in.placement.to_brush[2] * middle : 0.0));
     const std::size_t row = static_cast<std::size_t>(y + 1) * w.stride() + 1;
+    const std::size_t first = static_cast<std::size_t>(y) * w.width;
     float* pen = pen_.data() + row;
     const float* ground = ground_.data() + row;
     const float* wet = wet_.data() + row;
-    std::int32_t* cell = brush_cell_.data() + static_cast<std::size_t>(y) * w.width;
-    float* weight = contact_weight_.data() + static_cast<std::size_t>(y) * w.width;
-    for (int x = 0; x < w.width; ++x, bx += step_x, by += step_y) {
-      pen[x] = 0.0f;
-      cell[x] = -1;
-      weight[x] = 0.0f;
-      // The head between brush cell centres: coverage and underside interpolated bilinearly,
-      // so that a sharp edge (a flat, a knife) moves smoothly across the canvas cells rather
-      // than jumping a cell at a time (which printed a step pattern). On the padded grid the
-      // four cells around (u, v) always exist.
-      const auto u = static_cast<float>(bx + 0.5), v = static_cast<float>(by + 0.5);
-      if (!(u >= 0.0f && v >= 0.0f && u < padded_limit && v < padded_limit)) continue;
-      const int i0 = static_cast<int>(u), j0 = static_cast<int>(v);
-      const float fx = u - static_cast<float>(i0), fy = v - static_cast<float>(j0);
-      const std::size_t p = static_cast<std::size_t>(j0) * padded + static_cast<std::size_t>(i0);
-      const float w00 = (1.0f - fx) * (1.0f - fy), w10 = fx * (1.0f - fy);
-      const float w01 = (1.0f - fx) * fy, w11 = fx * fy;
-      const float coverage = w00 * padded_coverage[p] + w10 * padded_coverage[p + 1] +
-                             w01 * padded_coverage[p + padded] +
-                             w11 * padded_coverage[p + padded + 1];
-      const float underside = w00 * padded_footprint[p] + w10 * padded_footprint[p + 1] +
-                              w01 * padded_footprint[p + padded] +
-                              w11 * padded_footprint[p + padded + 1];
-      // The nearest brush cell (its padded index: the padding covers nothing) holds the paint
-      // this canvas cell exchanges. (u + 0.5 >= 0.5: the cast truncates as floor would.)
-      const int in_n = static_cast<int>(u + 0.5f), jn = static_cast<int>(v + 0.5f);
-      const bool covered =
-          padded_coverage[static_cast<std::size_t>(jn) * padded + static_cast<std::size_t>(in_n)] >
-          0.0f;
-      const std::int32_t b = covered ? (jn - 1) * n + (in_n - 1) : 0;
-      // The head presses where its underside is below the paint surface; the paint hanging
-      // under the bristles touches before that (a loaded brush lays a broad mark, a dry one
-      // skips).
-      const float penetration = ground[x] + wet[x] - (in.tip_mm + underside);
-      // Where the brush lifts, the film spans the whole head, bristle gaps and all.
-      const bool touches = covered && (in.lift_off || penetration + brush_paint[b] > 0.0f);
-      pen[x] = touches ? std::max(penetration, 0.0f) : 0.0f;
-      cell[x] = touches ? b : -1;
-      // The head moves the paint in full from half a cell inside its edge.
-      weight[x] = touches ? std::clamp(2.0f * coverage - 1.0f, 0.0f, 1.0f) : 0.0f;
-      contacts += touches;
+    std::int32_t* cell = brush_cell_.data() + first;
+    float* weight = contact_weight_.data() + first;
+    float* on_brush = brush_paint_at_.data() + first;
+    row_contacts_[static_cast<std::size_t>(y)] =
+        along_u || along_v ? penetrate_aligned_row(w.width, head, along_v, ground, wet, pen, cell,
+                                                   weight, on_brush)
+                           : penetrate_row(w.width, head, ground, wet, pen, cell, weight, on_brush);
+    // The brush's pigments at each touching cell, read now: the transfer then needs no
+    // gathers, and rows may update the brush while others still read these copies.
+    for (int s = 0; s < in.slot_count; ++s) {
+      const std::size_t k = static_cast<std::size_t>(s);
+      gather_brush_row(w.width, brush_cell_.data() + first,
+                       in.brush->pigment_mm().data() + k * brush_cells,
+                       brush_pigment_at_.data() + k * cells + first);
     }
-    row_contacts_[static_cast<std::size_t>(y)] = contacts;
   }
 }
 
-void Stepper::velocity_rows(const StepInputs& in, int r0, int r1) {
+IMPASTO_SIMD_CLONES void Stepper::velocity_rows(const StepInputs& in, int r0, int r1) {
   const Window& w = win_;
   const std::ptrdiff_t s = w.stride();
   const int last_x = in.canvas->width_cells() - 1, last_y = in.canvas->height_cells() - 1;
@@ -211,74 +196,26 @@ void Stepper::transfer_rows(const StepInputs& in, int r0, int r1) {
   const Window& w = win_;
   const std::size_t n = w.padded();
   const std::size_t cells = static_cast<std::size_t>(w.width) * w.height;
-  const std::size_t brush_cells = in.brush->cell_count();
-  const float* brush_volume = in.brush->volume_mm().data();
-  const float* brush_pigment = in.brush->pigment_mm().data();
-  const std::int32_t* share = brush_share_.data();
+  const FilmSplit split{in.tip_film_mm, in.relax,      in.deposit_share,
+                        in.ground_fill, in.footing_mm, in.sharing_binds};
   for (int y = r0; y < r1; ++y) {
     const std::size_t row = static_cast<std::size_t>(y + 1) * w.stride() + 1;
     const std::size_t first = static_cast<std::size_t>(y) * w.width;
-    const std::int32_t* cell = brush_cell_.data() + first;
-    const float* pen = pen_.data() + row;
-    const float* ground = ground_.data() + row;
-    const float* wet = wet_.data() + row;
-    float* new_wet = new_wet_.data() + row;
-    float* xfer = xfer_.data() + first;
-    float* ratio = xfer_ratio_.data() + first;
-    // The film split per touching cell; branch-free, as the direction varies from cell to cell.
-    for (int x = 0; x < w.width; ++x) {
-      const bool touches = cell[x] >= 0;
-      const std::int32_t b = cell[x];
-      // (Brush cells are read only where touched: other rows may own the rest.)
-      const float on_brush = touches ? brush_volume[b] : 0.0f;
-      // a_c: the canvas paint the brush reaches, with its head and the paint under it (a
-      // fraction of the wet layer's depth). (The divisions are skipped where they would give
-      // 1: a brush through the whole layer, a brush cell touching one canvas cell. Same
-      // values, less latency.)
-      const float reach = pen[x] + on_brush;
-      const float a_c =
-          reach >= wet[x] ? (wet[x] > 0.0f ? new_wet[x] : 0.0f) : new_wet[x] * (reach / wet[x]);
-      // a_b: the paint on the brush cell it touches (a height, the same for every canvas cell
-      // under that brush cell), as far as the tips present it: the rest waits in the bundle's
-      // belly (a loaded brush lays an even stroke until it runs dry, rather than dumping its
-      // load at the start). Where k canvas cells share the brush cell (a turned or splayed
-      // head), each deposit is at most deposit_share * a_b <= on_brush / k, so together they
-      // never take more than it holds; dividing the height by k instead printed the sharing
-      // pattern into the paint.
-      const std::int32_t sharing = touches ? share[b] : 1;
-      // (A hair below the bound: float rounding must never let the brush cell go negative.)
-      const float a_b =
-          kBelowBound *
-          std::min({on_brush, in.tip_film_mm,
-                    sharing == 1 ? on_brush
-                                 : on_brush * in.inv_deposit_share / static_cast<float>(sharing)});
-      // The film split (transfer.hpp); exactly 0 where nothing touches.
-      const float amount = touches
-                               ? brush_transfer_amount(a_c, a_b, in.relax, in.deposit_share,
-                                                       in.ground_fill * (in.footing_mm - ground[x]))
-                               : 0.0f;
-      const bool deposit = amount > 0.0f;
-      // Pigments go in the source's proportions (volume-weighted mixing).
-      const float source = deposit ? on_brush : new_wet[x];
-      ratio[x] = amount / (source > 0.0f ? source : 1.0f);
-      xfer[x] = amount;
-      new_wet[x] += amount;
-    }
+    transfer_row(w.width, split, brush_cell_.data() + first, brush_paint_at_.data() + first,
+                 brush_share_cap_.data() + first, pen_.data() + row, ground_.data() + row,
+                 wet_.data() + row, new_wet_.data() + row, xfer_.data() + first,
+                 xfer_ratio_.data() + first);
     for (int s = 0; s < in.slot_count; ++s) {
       const std::size_t k = static_cast<std::size_t>(s);
-      float* canvas_amount = new_pigment_.data() + k * n + row;
-      float* moved = xfer_pigment_.data() + k * cells + first;
-      const float* from_brush = brush_pigment + k * brush_cells;
-      for (int x = 0; x < w.width; ++x) {
-        const float source = xfer[x] > 0.0f ? from_brush[cell[x]] : canvas_amount[x];
-        moved[x] = source * ratio[x];  // signed like the paint; 0 where nothing moves
-        canvas_amount[x] += moved[x];
-      }
+      transfer_pigment_row(w.width, xfer_.data() + first, xfer_ratio_.data() + first,
+                           brush_pigment_at_.data() + k * cells + first,
+                           new_pigment_.data() + k * n + row,
+                           xfer_pigment_.data() + k * cells + first);
     }
   }
 }
 
-void Stepper::squeeze_rows(const StepInputs& in, int r0, int r1) {
+IMPASTO_SIMD_CLONES void Stepper::squeeze_rows(const StepInputs& in, int r0, int r1) {
   // The squeeze: paint flows across each face between cells, from the side the head presses
   // deeper to the other, flux = h v with v = 2 c dp per face. Faces, not cell velocities: a
   // cell-centred gradient cannot see a checkerboard, which then grew under a still brush.
@@ -317,7 +254,7 @@ void Stepper::squeeze_rows(const StepInputs& in, int r0, int r1) {
   }
 }
 
-void Stepper::apply_squeeze_rows(int slot_count, int r0, int r1) {
+IMPASTO_SIMD_CLONES void Stepper::apply_squeeze_rows(int slot_count, int r0, int r1) {
   // Every quantity moves with the faces' shares of its source: what one cell gives, its
   // neighbour gets, computed from the same product (paint and pigments alike). Each face
   // adds its two terms, one of them exactly 0 (branch-free: the loop vectorises).
@@ -347,9 +284,24 @@ void Stepper::apply_squeeze_rows(int slot_count, int r0, int r1) {
   }
 }
 
+void Stepper::share_brush_cells(std::size_t cells, float inv_deposit_share) {
+  // Counts the canvas cells touching each brush cell, then caps each one's deposit so that
+  // together they never take more than their brush cell holds.
+  std::fill(brush_share_.begin(), brush_share_.end(), 0);
+  for (std::size_t c = 0; c < cells; ++c)
+    if (brush_cell_[c] >= 0) ++brush_share_[static_cast<std::size_t>(brush_cell_[c])];
+  for (std::size_t c = 0; c < cells; ++c) {
+    const std::int32_t b = brush_cell_[c];
+    const std::int32_t sharing = b >= 0 ? brush_share_[static_cast<std::size_t>(b)] : 1;
+    brush_share_cap_[c] =
+        sharing == 1 ? brush_paint_at_[c]
+                     : brush_paint_at_[c] * inv_deposit_share / static_cast<float>(sharing);
+  }
+}
+
 void Stepper::transfer_to_brush(Brush& brush, int slot_count, std::size_t first_cell,
                                 std::size_t end_cell) {
-  // In a fixed order: exactly what each canvas cell gained, its brush cell lost.
+  // In canvas order: exactly what each canvas cell gained, its brush cell lost.
   const std::size_t cells = static_cast<std::size_t>(win_.width) * win_.height;
   const std::size_t brush_cells = brush.cell_count();
   float* volume = brush.volume_mm().data();
@@ -546,6 +498,16 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   }
   // (With no deposit at all the bound is moot: any finite value above the brush's paint.)
   in.inv_deposit_share = in.deposit_share > 0.0f ? 1.0f / in.deposit_share : 1e30f;
+  // A brush cell may touch several canvas cells (a turned, tilted or splayed head): at most
+  // as many as its parallelogram's bounding box holds cell centres. Each of k sharers takes
+  // at most deposit_share of what the tips present, so the cap of on_brush / k binds only
+  // where k * deposit_share > 1 (a lift-off, a steep tilt); only then are sharers counted.
+  {
+    const auto& m = in.placement.to_canvas;
+    const double most_sharing = (std::floor(std::abs(m[0]) + std::abs(m[1])) + 1.0) *
+                                (std::floor(std::abs(m[2]) + std::abs(m[3])) + 1.0);
+    in.sharing_binds = most_sharing * in.deposit_share > 1.0;
+  }
 
   const int rows = win_.height, cols = win_.width;
   // 1. Gather the window and find where the brush penetrates the paint surface.
@@ -564,16 +526,9 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
     advection_.prepare_rows(r0, r1, vx_.data(), vy_.data(), wet_.data(), in.min_film_mm);
   });
 
-  // A brush cell may touch several canvas cells (rotation, tilt): each gets an equal share
-  // of its paint, so together they never take more than the brush cell holds.
-  const std::size_t cells = static_cast<std::size_t>(cols) * rows;
-  std::int32_t most_shared = 0;
-  for (std::size_t c = 0; c < cells; ++c)
-    if (brush_cell_[c] >= 0)
-      most_shared = std::max(most_shared, ++brush_share_[static_cast<std::size_t>(brush_cell_[c])]);
-  in.brush_cells_unique = most_shared <= 1;
-
   // 3. Advect volume and every active pigment with the same shares, then the transfer.
+  const std::size_t cells = static_cast<std::size_t>(cols) * rows;
+  if (in.sharing_binds) share_brush_cells(cells, in.inv_deposit_share);
   from_.assign({wet_.data()});
   to_.assign({new_wet_.data()});
   for (int s = 0; s < slot_count; ++s) {
@@ -583,18 +538,24 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   const bool transfers = in.relax > 0.0f;  // a brush neither moving nor pressing moves nothing
   parallel_rows(rows, cols, [&](int r0, int r1) {
     advection_.apply_rows(from_.data(), to_.data(), static_cast<int>(from_.size()), r0, r1);
-    if (!transfers) return;
-    transfer_rows(in, r0, r1);
-    // Where no two canvas cells share a brush cell, rows own their brush cells: the brush
-    // side is done here, with the same arithmetic as the serial path below.
-    if (in.brush_cells_unique)
-      transfer_to_brush(brush, slot_count, static_cast<std::size_t>(r0) * cols,
-                        static_cast<std::size_t>(r1) * cols);
+    if (transfers) transfer_rows(in, r0, r1);
   });
-  if (transfers && !in.brush_cells_unique) transfer_to_brush(brush, slot_count, 0, cells);
-  // 4. The squeeze, face by face, into the scratch grids; they become the step's result.
-  if (in.gradient_scale > 0.0f) {
-    parallel_rows(rows, cols, [&](int r0, int r1) { squeeze_rows(in, r0, r1); });
+  // 4. The brush gives what the canvas took, and the squeeze's faces. Canvas rows that share
+  // a brush cell lie less than a chunk apart, so chunks of one parity never write the same
+  // brush cell: each set runs in parallel, and every brush cell's sum has one fixed order.
+  const bool squeezes = in.gradient_scale > 0.0f;
+  if (transfers || squeezes) {
+    const auto& m = in.placement.to_canvas;
+    const int chunk = static_cast<int>(std::floor(std::abs(m[2]) + std::abs(m[3]))) + 2;
+    parallel_row_chunks(rows, chunk, cols, [&](int r0, int r1) {
+      if (transfers)
+        transfer_to_brush(brush, slot_count, static_cast<std::size_t>(r0) * cols,
+                          static_cast<std::size_t>(r1) * cols);
+      if (squeezes) squeeze_rows(in, r0, r1);
+    });
+  }
+  // 5. The squeeze applied, into the scratch grids; they become the step's result.
+  if (squeezes) {
     parallel_rows(rows, cols, [&](int r0, int r1) { apply_squeeze_rows(slot_count, r0, r1); });
     std::swap(wet_, new_wet_);
     std::swap(pigment_, new_pigment_);

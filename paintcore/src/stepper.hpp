@@ -65,8 +65,9 @@ class Stepper {
     bool lift_off;      // the brush leaves the paint (see step)
     float footing_mm;   // the ground and dry paint around the brush's centre (mean)
     float ground_fill;  // how much of a valley below the footing the paint fills
-    // Each brush cell touches at most one canvas cell: rows may update the brush themselves.
-    bool brush_cells_unique;
+    // Canvas cells sharing a brush cell may together take more than it holds: each deposit
+    // is capped by brush_share_cap_ (see step).
+    bool sharing_binds;
   };
 
   void resize(int slot_count, std::size_t brush_cells);
@@ -78,6 +79,7 @@ class Stepper {
   void transfer_rows(const StepInputs& in, int r0, int r1);
   void squeeze_rows(const StepInputs& in, int r0, int r1);
   void apply_squeeze_rows(int slot_count, int r0, int r1);
+  void share_brush_cells(std::size_t cells, float inv_deposit_share);
   void transfer_to_brush(Brush& brush, int slot_count, std::size_t first_cell,
                          std::size_t end_cell);
   void even_out_brush(Brush& brush, int slot_count, double share);
@@ -91,6 +93,9 @@ class Stepper {
   std::vector<float> pigment_, new_pigment_;  // slot-major, padded grids
   // Unpadded per-cell data of the transfer.
   std::vector<std::int32_t> brush_cell_;       // brush cell touching each window cell, or -1
+  std::vector<float> brush_paint_at_;          // its paint height (0 where none touches)
+  std::vector<float> brush_pigment_at_;        // and its pigments, slot-major
+  std::vector<float> brush_share_cap_;         // on_brush / (deposit_share * sharers), if binding
   std::vector<float> xfer_;                    // paint height moved brush -> canvas (signed)
   std::vector<float> contact_weight_;          // how fully the head moves each cell's paint, 0..1
   std::vector<float> face_east_, face_south_;  // squeeze: signed share crossing each face

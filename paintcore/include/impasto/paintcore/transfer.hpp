@@ -29,7 +29,9 @@ inline double transfer_relaxation(double distance_mm, double seconds,
 template <typename T>
 T brush_transfer_amount(T a_c, T a_b, T relax, T deposit_share, T fill = T(0)) {
   const T amount = (deposit_share * (a_b + a_c) + fill - a_c) * relax;
-  return std::clamp(amount, -(T(1) - deposit_share) * a_c, deposit_share * a_b);
+  // (std::clamp's rule on values, not references: callers' loops vectorise.)
+  const T least = -(T(1) - deposit_share) * a_c, most = deposit_share * a_b;
+  return amount < least ? least : (most < amount ? most : amount);
 }
 
 }  // namespace impasto::paintcore

@@ -1,0 +1,204 @@
+#include "contact_rows.hpp"
+
+#include <algorithm>
+#include <cstddef>
+
+#include "impasto/paintcore/brush.hpp"
+
+#include "impasto/paintcore/transfer.hpp"
+#include "simd_clones.hpp"
+
+namespace impasto::paintcore {
+namespace {
+
+// Keeps a deposit a relative hair below what its brush cell holds (float rounding).
+constexpr float kBelowBound = 1.0f - 1e-5f;
+
+// What one canvas cell's contact writes, from the head interpolated there: shared by both
+// row kernels. Returns 1 where the brush touches the cell.
+[[gnu::always_inline]] inline int write_contact(int x, float coverage, float underside,
+                                                bool covered, std::int32_t b, float paint,
+                                                float surface, float tip_mm, bool lift_off,
+                                                float* pen, std::int32_t* cell, float* weight,
+                                                float* on_brush) {
+  // The head presses where its underside is below the paint surface; the paint hanging
+  // under the bristles touches before that (a loaded brush lays a broad mark, a dry one
+  // skips).
+  const float penetration = surface - (tip_mm + underside);
+  // Where the brush lifts, the film spans the whole head, bristle gaps and all.
+  const bool touches = covered & (lift_off | (penetration + paint > 0.0f));
+  // (Masks by multiplication, of finite values: selects here became branches.)
+  const int hit = touches;
+  const float mask = static_cast<float>(hit);
+  pen[x] = mask * greater(penetration, 0.0f);
+  cell[x] = (b + 1) * hit - 1;
+  on_brush[x] = mask * paint;
+  // The head moves the paint in full from half a cell inside its edge.
+  weight[x] = mask * lesser(greater(2.0f * coverage - 1.0f, 0.0f), 1.0f);
+  return hit;
+}
+
+}  // namespace
+
+IMPASTO_SIMD_CLONES int penetrate_row(int width, const HeadRow& head,
+                                      const float* __restrict ground, const float* __restrict wet,
+                                      float* __restrict pen, std::int32_t* __restrict cell,
+                                      float* __restrict weight, float* __restrict on_brush) {
+  const float* coverage_grid = head.coverage;
+  const float* footprint_grid = head.footprint;
+  const float* brush_paint = head.paint;
+  const int n = head.cells, padded = n + 2;
+  const auto limit = static_cast<float>(n) + 1.0f;
+  const float u0 = head.u0, v0 = head.v0, step_u = head.step_u, step_v = head.step_v;
+  const float tip_mm = head.tip_mm;
+  const bool lift_off = head.lift_off;
+  int contacts = 0;
+  for (int x = 0; x < width; ++x) {
+    // The head between brush cell centres: coverage and underside interpolated bilinearly,
+    // so that a sharp edge (a flat, a knife) moves smoothly across the canvas cells rather
+    // than jumping a cell at a time (which printed a step pattern). On the padded grid the
+    // four cells around (u, v) always exist; cells off the head read its corner, masked.
+    const float u_raw = u0 + static_cast<float>(x) * step_u;
+    const float v_raw = v0 + static_cast<float>(x) * step_v;
+    const bool inside = (u_raw >= 0.0f) & (v_raw >= 0.0f) & (u_raw < limit) & (v_raw < limit);
+    const float u = inside ? u_raw : 0.0f, v = inside ? v_raw : 0.0f;
+    const int i0 = static_cast<int>(u), j0 = static_cast<int>(v);
+    const float fx = u - static_cast<float>(i0), fy = v - static_cast<float>(j0);
+    const int p = j0 * padded + i0;
+    const float w00 = (1.0f - fx) * (1.0f - fy), w10 = fx * (1.0f - fy);
+    const float w01 = (1.0f - fx) * fy, w11 = fx * fy;
+    const float coverage = w00 * coverage_grid[p] + w10 * coverage_grid[p + 1] +
+                           w01 * coverage_grid[p + padded] + w11 * coverage_grid[p + padded + 1];
+    const float underside = w00 * footprint_grid[p] + w10 * footprint_grid[p + 1] +
+                            w01 * footprint_grid[p + padded] + w11 * footprint_grid[p + padded + 1];
+    // The nearest brush cell (its padded index: the padding covers nothing) holds the paint
+    // this canvas cell exchanges. (u + 0.5 >= 0.5: the cast truncates as floor would.)
+    const int i_near = static_cast<int>(u + 0.5f), j_near = static_cast<int>(v + 0.5f);
+    const bool covered = inside & (coverage_grid[j_near * padded + i_near] > 0.0f);
+    const std::int32_t b = covered ? (j_near - 1) * n + (i_near - 1) : 0;
+    contacts += write_contact(x, coverage, underside, covered, b, brush_paint[b],
+                              ground[x] + wet[x], tip_mm, lift_off, pen, cell, weight, on_brush);
+  }
+  return contacts;
+}
+
+IMPASTO_SIMD_CLONES int penetrate_aligned_row(int width, const HeadRow& head, bool along_v,
+                                              const float* __restrict ground,
+                                              const float* __restrict wet, float* __restrict pen,
+                                              std::int32_t* __restrict cell,
+                                              float* __restrict weight,
+                                              float* __restrict on_brush) {
+  const int n = head.cells, padded = n + 2;
+  const auto limit = static_cast<float>(n) + 1.0f;
+  // The row walks the head along t (u, or v for a head turned a quarter) at a fixed s.
+  const float t0 = along_v ? head.v0 : head.u0, step_t = along_v ? head.step_v : head.step_u;
+  const float s = along_v ? head.u0 : head.v0;
+  const float tip_mm = head.tip_mm;
+  const bool lift_off = head.lift_off;
+  if (!(s >= 0.0f && s < limit)) {  // the row passes beside the head
+    std::fill_n(pen, width, 0.0f);
+    std::fill_n(cell, width, -1);
+    std::fill_n(weight, width, 0.0f);
+    std::fill_n(on_brush, width, 0.0f);
+    return 0;
+  }
+  // The two brush lines s lies between, blended once for the whole canvas row, and the
+  // nearest line (the padding's lines cover nothing).
+  const int s0 = static_cast<int>(s), s_near = static_cast<int>(s + 0.5f);
+  const float fs = s - static_cast<float>(s0);
+  // Grid index of (t = k, s = line): rows are u, columns v.
+  const std::ptrdiff_t t_stride = along_v ? padded : 1, s_stride = along_v ? 1 : padded;
+  float coverage_line[kMaxBrushCells + 2], footprint_line[kMaxBrushCells + 2];
+  float nearest_line[kMaxBrushCells + 2];
+  for (int k = 0; k < padded; ++k) {
+    const std::ptrdiff_t i = k * t_stride + s0 * s_stride;
+    coverage_line[k] = (1.0f - fs) * head.coverage[i] + fs * head.coverage[i + s_stride];
+    footprint_line[k] = (1.0f - fs) * head.footprint[i] + fs * head.footprint[i + s_stride];
+    nearest_line[k] = head.coverage[k * t_stride + s_near * s_stride];
+  }
+  // The brush cell (unpadded) at padded line position k is first_cell + k * cell_step.
+  const std::int32_t cell_step = along_v ? n : 1;
+  const std::int32_t first_cell = along_v ? (s_near - 1) - n : (s_near - 1) * n - 1;
+  const float* brush_paint = head.paint;
+  const float* blended_coverage = coverage_line;
+  const float* blended_footprint = footprint_line;
+  const float* nearest_coverage = nearest_line;
+  int contacts = 0;
+  for (int x = 0; x < width; ++x) {
+    const float t_raw = t0 + static_cast<float>(x) * step_t;
+    const bool inside = (t_raw >= 0.0f) & (t_raw < limit);
+    const float t = inside ? t_raw : 0.0f;
+    const int k0 = static_cast<int>(t);
+    const float ft = t - static_cast<float>(k0);
+    const float coverage = (1.0f - ft) * blended_coverage[k0] + ft * blended_coverage[k0 + 1];
+    const float underside = (1.0f - ft) * blended_footprint[k0] + ft * blended_footprint[k0 + 1];
+    const int k_near = static_cast<int>(t + 0.5f);
+    const bool covered = inside & (nearest_coverage[k_near] > 0.0f);
+    const std::int32_t b = covered ? first_cell + k_near * cell_step : 0;
+    contacts += write_contact(x, coverage, underside, covered, b, brush_paint[b],
+                              ground[x] + wet[x], tip_mm, lift_off, pen, cell, weight, on_brush);
+  }
+  return contacts;
+}
+
+IMPASTO_SIMD_CLONES void gather_brush_row(int width, const std::int32_t* __restrict cell,
+                                          const float* __restrict from, float* __restrict at) {
+  // (Cell 0 stands in for none, masked: amounts are finite.)
+  for (int x = 0; x < width; ++x)
+    at[x] = from[cell[x] < 0 ? 0 : cell[x]] * static_cast<float>(cell[x] >= 0);
+}
+
+IMPASTO_SIMD_CLONES void transfer_row(int width, const FilmSplit& split,
+                                      const std::int32_t* __restrict cell,
+                                      const float* __restrict on_brush,
+                                      const float* __restrict share_cap,
+                                      const float* __restrict pen, const float* __restrict ground,
+                                      const float* __restrict wet, float* __restrict new_wet,
+                                      float* __restrict xfer, float* __restrict ratio) {
+  const float tip_film_mm = split.tip_film_mm, relax = split.relax;
+  const float deposit_share = split.deposit_share, ground_fill = split.ground_fill;
+  const float footing_mm = split.footing_mm;
+  const bool capped = split.capped;
+  // Branch-free, as the direction varies from cell to cell.
+  for (int x = 0; x < width; ++x) {
+    const bool touches = cell[x] >= 0;
+    // a_c: the canvas paint the brush reaches, with its head and the paint under it (a
+    // fraction of the wet layer's depth).
+    const float reach = pen[x] + on_brush[x];
+    const bool wet_here = wet[x] > 0.0f;
+    const float depth_share = lesser(reach / (wet_here ? wet[x] : 1.0f), 1.0f);
+    const float a_c = wet_here ? new_wet[x] * depth_share : 0.0f;
+    // a_b: the paint on the brush cell it touches (a height, the same for every canvas cell
+    // under that brush cell), as far as the tips present it: the rest waits in the bundle's
+    // belly (a loaded brush lays an even stroke until it runs dry, rather than dumping its
+    // load at the start). Where k canvas cells share the brush cell, share_cap keeps each
+    // deposit to deposit_share * a_b <= on_brush / k, so together they never take more than
+    // it holds; dividing the height by k instead printed the sharing pattern into the paint.
+    // (A hair below the bound: float rounding must never let the brush cell go negative.)
+    const float cap = capped ? share_cap[x] : tip_film_mm;
+    const float a_b = kBelowBound * lesser(lesser(on_brush[x], tip_film_mm), cap);
+    // The film split (transfer.hpp); exactly 0 where nothing touches.
+    const float amount = brush_transfer_amount(a_c, a_b, relax, deposit_share,
+                                               ground_fill * (footing_mm - ground[x]));
+    const float moved = touches ? amount : 0.0f;
+    // Pigments go in the source's proportions (volume-weighted mixing).
+    const float source = moved > 0.0f ? on_brush[x] : new_wet[x];
+    ratio[x] = moved / (source > 0.0f ? source : 1.0f);
+    xfer[x] = moved;
+    new_wet[x] += moved;
+  }
+}
+
+IMPASTO_SIMD_CLONES void transfer_pigment_row(int width, const float* __restrict xfer,
+                                              const float* __restrict ratio,
+                                              const float* __restrict on_brush,
+                                              float* __restrict canvas_amount,
+                                              float* __restrict moved) {
+  for (int x = 0; x < width; ++x) {
+    const float source = xfer[x] > 0.0f ? on_brush[x] : canvas_amount[x];
+    moved[x] = source * ratio[x];  // signed like the paint; 0 where nothing moves
+    canvas_amount[x] += moved[x];
+  }
+}
+
+}  // namespace impasto::paintcore

@@ -1,0 +1,66 @@
+#pragma once
+// The row kernels of the brush's contact with the canvas: where the head presses, and the
+// film split between brush and canvas. Free functions over one row with restrict-qualified
+// arrays and no branches, so that they vectorise (with gathers where the CPU has them: see
+// simd_clones.hpp). Stepper calls them; they hold no state.
+#include <cstdint>
+
+namespace impasto::paintcore {
+
+// The head's grids, padded by one cell of nothing on every side, and how it sits on a row.
+struct HeadRow {
+  const float* coverage;         // padded, (cells + 2)^2
+  const float* footprint;        // the underside's height above the tip, mm, padded
+  const float* paint;            // the brush's paint height per (unpadded) cell, mm
+  int cells = 0;                 // across the unpadded grid
+  float u0 = 0, v0 = 0;          // padded brush coordinates of the row's first cell centre
+  float step_u = 0, step_v = 0;  // and their change per canvas cell
+  float tip_mm = 0;              // height of the brush tip
+  bool lift_off = false;         // the brush leaves the paint: every covered cell touches
+};
+
+// Writes, per canvas cell of the row: how deep the head presses (pen), the brush cell it
+// touches or -1 (cell), how fully it moves the paint (weight) and the paint on that brush
+// cell (on_brush, 0 where none touches). Returns how many cells touch.
+int penetrate_row(int width, const HeadRow& head, const float* __restrict ground,
+                  const float* __restrict wet, float* __restrict pen, std::int32_t* __restrict cell,
+                  float* __restrict weight, float* __restrict on_brush);
+
+// The same for a head square to the canvas rows (step_v == 0, or step_u == 0 with along_v:
+// turned a quarter): the row then crosses the head along one grid axis at a fixed position on
+// the other, so the two grid lines it lies between are blended once and each cell
+// interpolates along the row only (6 gathers a cell instead of 10). Agrees with
+// penetrate_row to float rounding.
+int penetrate_aligned_row(int width, const HeadRow& head, bool along_v,
+                          const float* __restrict ground, const float* __restrict wet,
+                          float* __restrict pen, std::int32_t* __restrict cell,
+                          float* __restrict weight, float* __restrict on_brush);
+
+// at[x] = from[cell[x]], or 0 where cell[x] < 0.
+void gather_brush_row(int width, const std::int32_t* __restrict cell, const float* __restrict from,
+                      float* __restrict at);
+
+struct FilmSplit {
+  float tip_film_mm = 0;    // most paint a brush cell's tips present to the canvas
+  float relax = 0;          // how far this step goes toward the split (transfer.hpp)
+  float deposit_share = 0;  // the canvas's share of the joint film
+  float ground_fill = 0;    // how much of a valley below the footing the paint fills
+  float footing_mm = 0;     // the ground and dry paint around the brush's centre
+  bool capped = false;      // whether share_cap binds (brush cells shared, see Stepper::step)
+};
+
+// The paint each touching cell exchanges with its brush cell (xfer, > 0 onto the canvas) and
+// that as a share of its source's paint (ratio); new_wet gains it.
+void transfer_row(int width, const FilmSplit& split, const std::int32_t* __restrict cell,
+                  const float* __restrict on_brush, const float* __restrict share_cap,
+                  const float* __restrict pen, const float* __restrict ground,
+                  const float* __restrict wet, float* __restrict new_wet, float* __restrict xfer,
+                  float* __restrict ratio);
+
+// One pigment's share of the exchange: from the brush where paint went onto the canvas, from
+// the canvas where it came off; canvas_amount gains it and moved records it.
+void transfer_pigment_row(int width, const float* __restrict xfer, const float* __restrict ratio,
+                          const float* __restrict on_brush, float* __restrict canvas_amount,
+                          float* __restrict moved);
+
+}  // namespace impasto::paintcore

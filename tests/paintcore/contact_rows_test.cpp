@@ -1,0 +1,131 @@
+// The contact's row kernels: the aligned fast path against the general bilinear one, and the
+// film split's bounds.
+#include "contact_rows.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+namespace impasto::paintcore {
+namespace {
+
+struct TestHead {
+  int n = 12;
+  std::vector<float> coverage, footprint, paint;
+  explicit TestHead(unsigned seed) {
+    std::mt19937 random(seed);
+    std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+    const int padded = n + 2;
+    coverage.assign(static_cast<std::size_t>(padded * padded), 0.0f);
+    footprint.assign(coverage.size(), 0.0f);
+    paint.resize(static_cast<std::size_t>(n * n));
+    for (int j = 1; j <= n; ++j)
+      for (int i = 1; i <= n; ++i) {
+        const auto p = static_cast<std::size_t>(j * padded + i);
+        coverage[p] = unit(random) < 0.85f ? unit(random) : 0.0f;
+        footprint[p] = 0.3f * unit(random);
+      }
+    for (float& h : paint) h = unit(random) < 0.2f ? 0.0f : 0.5f * unit(random);
+  }
+  HeadRow row(float u0, float v0, float step_u, float step_v) const {
+    HeadRow h{coverage.data(), footprint.data(), paint.data(), n};
+    h.u0 = u0, h.v0 = v0, h.step_u = step_u, h.step_v = step_v, h.tip_mm = 0.1f;
+    return h;
+  }
+};
+
+struct RowResult {
+  std::vector<float> pen, weight, on_brush;
+  std::vector<std::int32_t> cell;
+  int contacts = 0;
+};
+
+template <typename Kernel>
+RowResult run(int width, const std::vector<float>& ground, const std::vector<float>& wet,
+              Kernel kernel) {
+  RowResult r;
+  r.pen.resize(static_cast<std::size_t>(width));
+  r.weight.resize(r.pen.size());
+  r.on_brush.resize(r.pen.size());
+  r.cell.resize(r.pen.size());
+  r.contacts = kernel(width, ground.data(), wet.data(), r.pen.data(), r.cell.data(),
+                      r.weight.data(), r.on_brush.data());
+  return r;
+}
+
+// Every canvas row across the head, for a head square to the rows (step along u) and one
+// turned a quarter (step along v), splayed so that cells share brush cells.
+TEST(ContactRows, AlignedKernelAgreesWithTheBilinearOne) {
+  const TestHead head(7);
+  const int width = 24;
+  std::vector<float> ground(width), wet(width);
+  for (int x = 0; x < width; ++x) {
+    ground[static_cast<std::size_t>(x)] = 0.05f * static_cast<float>(x % 3);
+    wet[static_cast<std::size_t>(x)] = 0.02f * static_cast<float>(x % 5);
+  }
+  int rows = 0, touching = 0;
+  for (const bool along_v : {false, true})
+    for (float s = -1.3f; s < 15.0f; s += 0.37f) {
+      const float t0 = -2.1f, step = 0.8f;
+      const HeadRow h = along_v ? head.row(s, t0, 0.0f, step) : head.row(t0, s, step, 0.0f);
+      const RowResult general =
+          run(width, ground, wet, [&](int w, auto... a) { return penetrate_row(w, h, a...); });
+      const RowResult aligned = run(width, ground, wet, [&](int w, auto... a) {
+        return penetrate_aligned_row(w, h, along_v, a...);
+      });
+      ++rows;
+      touching += general.contacts;
+      ASSERT_EQ(general.contacts, aligned.contacts) << "s " << s << " along_v " << along_v;
+      for (int x = 0; x < width; ++x) {
+        const auto i = static_cast<std::size_t>(x);
+        ASSERT_EQ(general.cell[i], aligned.cell[i]) << "x " << x << " s " << s;
+        EXPECT_NEAR(general.pen[i], aligned.pen[i], 1e-6f);
+        EXPECT_NEAR(general.weight[i], aligned.weight[i], 1e-5f);
+        EXPECT_EQ(general.on_brush[i], aligned.on_brush[i]);
+      }
+    }
+  EXPECT_GT(rows, 80);
+  EXPECT_GT(touching, 300);  // the rows really cross the head
+}
+
+// The film split never takes more than deposit_share of what the tips present, nor more than
+// the canvas holds, and nothing moves where nothing touches.
+TEST(ContactRows, TransferStaysWithinTheFilmSplitsBounds) {
+  std::mt19937 random(3);
+  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  const int width = 64;
+  std::vector<std::int32_t> cell(width);
+  std::vector<float> on_brush(width), cap(width), pen(width), ground(width), wet(width),
+      new_wet(width), xfer(width), ratio(width);
+  for (int x = 0; x < width; ++x) {
+    const auto i = static_cast<std::size_t>(x);
+    cell[i] = x % 7 == 0 ? -1 : x;
+    on_brush[i] = cell[i] < 0 ? 0.0f : 2.0f * unit(random);
+    cap[i] = on_brush[i] * unit(random);
+    pen[i] = 0.2f * unit(random);
+    ground[i] = 0.1f * unit(random);
+    wet[i] = x % 5 == 0 ? 0.0f : unit(random);
+    new_wet[i] = wet[i];
+  }
+  const std::vector<float> before = new_wet;
+  const FilmSplit split{0.6f, 0.7f, 0.25f, 1.0f, 0.05f, true};
+  transfer_row(width, split, cell.data(), on_brush.data(), cap.data(), pen.data(), ground.data(),
+               wet.data(), new_wet.data(), xfer.data(), ratio.data());
+  for (int x = 0; x < width; ++x) {
+    const auto i = static_cast<std::size_t>(x);
+    if (cell[i] < 0) {
+      EXPECT_EQ(xfer[i], 0.0f);
+      continue;
+    }
+    const float presented = std::min({on_brush[i], split.tip_film_mm, cap[i]});
+    EXPECT_LE(xfer[i], split.deposit_share * presented) << x;
+    EXPECT_GE(xfer[i], -(1.0f - split.deposit_share) * before[i] - 1e-6f) << x;
+    EXPECT_FLOAT_EQ(new_wet[i], before[i] + xfer[i]);
+    EXPECT_TRUE(std::isfinite(ratio[i]));
+  }
+}
+
+}  // namespace
+}  // namespace impasto::paintcore
