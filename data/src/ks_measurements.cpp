@@ -6,6 +6,7 @@
 
 #include "impasto/data/ks_fit.hpp"
 #include "impasto/data/spectral_csv.hpp"
+#include "impasto/files/message_text.hpp"
 
 namespace impasto::data {
 namespace {
@@ -44,8 +45,8 @@ std::vector<std::pair<std::string, double>> parse_mix(std::string_view text,
     const auto amount =
         equals == std::string_view::npos ? std::nullopt : parse_double(part.substr(equals + 1));
     if (name.empty() || !amount || *amount < 0) {
-      throw std::runtime_error(where + "expected 'Pigment=concentration' (>= 0), got '" +
-                               std::string(part) + "'");
+      throw std::runtime_error(where + "expected 'Pigment=concentration' (>= 0), got " +
+                               files::excerpt(part));
     }
     parts.emplace_back(name, *amount);
   }

@@ -4,6 +4,7 @@
 
 #include "impasto/data/data_dir.hpp"
 #include "impasto/data/pigments.hpp"
+#include "impasto/files/message_text.hpp"
 
 namespace impasto::data {
 namespace {
@@ -34,8 +35,8 @@ PigmentDatabase PigmentDatabase::load(const std::filesystem::path& dir) {
     Pigment pigment = read_pigment_file(file);
     for (std::size_t i = 0; i < db.pigments_.size(); ++i) {
       if (db.pigments_[i].name == pigment.name) {
-        throw std::runtime_error(file.string() + ": pigment '" + pigment.name +
-                                 "' is also defined in " + sources[i].string());
+        throw std::runtime_error(file.string() + ": pigment " + files::excerpt(pigment.name) +
+                                 " is also defined in " + sources[i].string());
       }
     }
     db.pigments_.push_back(std::move(pigment));

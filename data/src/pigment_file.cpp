@@ -3,21 +3,26 @@
 
 #include "impasto/data/pigments.hpp"
 #include "impasto/data/spectral_csv.hpp"
+#include "impasto/files/confined_path.hpp"
+#include "impasto/files/message_text.hpp"
 
 namespace impasto::data {
 namespace {
 
-// The '# flakes:' file of a pigment, relative to the pigment file's folder; it must exist
-// (its contents are read by the renderer, which knows the flake format).
+// The '# flakes:' file of a pigment, relative to the pigment file's folder and inside its
+// library, the folder above (data/ holds pigments/ and flakes/): no absolute path, no climbing
+// out, no symlink out. It must exist (the renderer reads it, knowing the flake format).
 std::filesystem::path flake_file(const std::map<std::string, std::string>& metadata,
                                  const std::filesystem::path& pigment_file) {
   const auto entry = metadata.find("flakes");
   if (entry == metadata.end()) return {};
   const std::string where = pigment_file.string() + ": field 'flakes': ";
   if (entry->second.empty()) throw std::runtime_error(where + "names no file");
-  const std::filesystem::path file = pigment_file.parent_path() / entry->second;
+  const std::filesystem::path folder = std::filesystem::absolute(pigment_file).parent_path();
+  const std::filesystem::path file = files::confined_path(
+      folder.parent_path(), folder, entry->second, pigment_file.string() + ": field 'flakes'");
   if (!std::filesystem::is_regular_file(file)) {
-    throw std::runtime_error(where + file.string() + " is not a file");
+    throw std::runtime_error(where + files::excerpt(file.string()) + " is not a file");
   }
   return std::filesystem::absolute(file).lexically_normal();
 }

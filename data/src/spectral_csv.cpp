@@ -12,6 +12,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "impasto/files/input_file.hpp"
+#include "impasto/files/message_text.hpp"
 #include "spectral_text.hpp"
 
 namespace impasto::data {
@@ -19,8 +21,6 @@ namespace {
 
 using detail::format_number;
 using detail::trim;
-
-constexpr std::uintmax_t kMaxFileBytes = 64u << 20;  // far beyond any spectral table
 
 struct QuantityInfo {
   SpectralQuantity quantity;
@@ -92,18 +92,18 @@ class CsvLineSplitter {
 double parse_number(const std::optional<std::string>& cell, const std::string& where,
                     std::string_view column_name) {
   if (!cell || trim(*cell).empty()) {
-    throw std::runtime_error(where + "missing value in column '" + std::string(column_name) + "'");
+    throw std::runtime_error(where + "missing value in column " + files::excerpt(column_name));
   }
   const std::string_view text = trim(*cell);
   double value = 0.0;
   const auto result = std::from_chars(text.data(), text.data() + text.size(), value);
   if (result.ec != std::errc() || result.ptr != text.data() + text.size()) {
-    throw std::runtime_error(where + "'" + std::string(text) + "' in column '" +
-                             std::string(column_name) + "' is not a number");
+    throw std::runtime_error(where + files::excerpt(text) + " in column " +
+                             files::excerpt(column_name) + " is not a number");
   }
   if (!std::isfinite(value)) {
-    throw std::runtime_error(where + "value '" + std::string(text) + "' in column '" +
-                             std::string(column_name) + "' is not finite");
+    throw std::runtime_error(where + "value " + files::excerpt(text) + " in column " +
+                             files::excerpt(column_name) + " is not finite");
   }
   return value;
 }
@@ -131,8 +131,8 @@ std::vector<std::string> parse_header(const Cells& cells, const std::string& sou
       throw std::runtime_error(location(source, line, c + 1) + "empty column name");
     }
     if (!seen.insert(name).second) {
-      throw std::runtime_error(location(source, line, c + 1) + "column name '" + name +
-                               "' appears twice");
+      throw std::runtime_error(location(source, line, c + 1) + "column name " +
+                               files::excerpt(name) + " appears twice");
     }
     names.push_back(name);
   }
@@ -194,8 +194,8 @@ SpectralTable parse_spectral_csv(std::string_view text, const std::string& sourc
       const std::string key(trim(body.substr(0, colon)));
       const std::string value(trim(body.substr(colon + 1)));
       if (!table.metadata.emplace(key, value).second) {
-        throw std::runtime_error(location(source_name, line_number, 1) + "metadata key '" + key +
-                                 "' given twice");
+        throw std::runtime_error(location(source_name, line_number, 1) + "metadata key " +
+                                 files::excerpt(key) + " given twice");
       }
       table.metadata_lines[key] = line_number;
       if (key == "quantity") {
@@ -256,18 +256,7 @@ SpectralTable parse_spectral_csv(std::string_view text, const std::string& sourc
 }
 
 SpectralTable read_spectral_csv(const std::filesystem::path& path) {
-  std::error_code error;
-  const auto bytes = std::filesystem::file_size(path, error);
-  if (error) throw std::runtime_error(path.string() + ": cannot read (" + error.message() + ")");
-  if (bytes > kMaxFileBytes) {
-    throw std::runtime_error(path.string() + ": file of " + std::to_string(bytes) +
-                             " bytes is too large for a spectral CSV");
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path.string() + ": cannot open");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_spectral_csv(text.str(), path.string());
+  return parse_spectral_csv(files::read_text_file(path, "spectral CSV"), path.string());
 }
 
 }  // namespace impasto::data

@@ -1,10 +1,10 @@
 // Writing spectral CSV files (docs/spectral-csv.md) and assembling tables to write.
 #include <csv.h>
 
-#include <fstream>
 #include <stdexcept>
 
 #include "impasto/data/spectral_csv.hpp"
+#include "impasto/files/atomic_file.hpp"
 #include "spectral_text.hpp"
 
 namespace impasto::data {
@@ -47,10 +47,7 @@ std::string format_spectral_csv(const SpectralTable& table) {
 }
 
 void write_spectral_csv(const std::filesystem::path& path, const SpectralTable& table) {
-  const std::string text = format_spectral_csv(table);
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  if (!out) throw std::runtime_error(path.string() + ": cannot write");
+  files::write_file_atomically(path, format_spectral_csv(table));
 }
 
 SpectralTable make_spectral_table(SpectralQuantity quantity, std::vector<Spectrum> columns,
