@@ -1,18 +1,23 @@
 // impasto hid ...: pen tablets through USB HID. List the tablets on this machine, describe a
 // report descriptor, decode recorded reports to a table, record a live tablet.
+#include <impasto/input/hid_capture.hpp>
 #include <impasto/input/hid_describe.hpp>
 #include <impasto/input/hid_device.hpp>
 #include <impasto/input/hid_recording.hpp>
 #include <impasto/input/hid_tablet.hpp>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <optional>
+#include <sstream>
 #include <stdexcept>
+#include <tuple>
 
 #include "command.hpp"
 
@@ -23,17 +28,15 @@ namespace {
 
 namespace hid = impasto::input::hid;
 
-std::string hex4(unsigned value) {
-  char text[8];
-  std::snprintf(text, sizeof text, "%04x", value & 0xFFFFu);
-  return text;
-}
-
-void list_tablets() {
+void list_tablets(bool handshake) {
   if (!hid::hid_available()) {
     throw std::runtime_error("this impasto was built without hidapi: no tablet access");
   }
-  const auto tablets = hid::find_pen_tablets();
+  std::string models_error;
+  (void)hid::default_tablet_models(&models_error);
+  if (!models_error.empty())
+    std::cerr << "warning: no tablet model table: " << models_error << "\n";
+  const auto tablets = hid::find_pen_tablets(hid::this_machine(handshake));
   if (tablets.empty()) {
     const std::size_t devices = hid::enumerate_hid_devices().size();
     std::cout << "No pen tablets found: " << devices << " HID device(s) seen"
@@ -41,69 +44,116 @@ void list_tablets() {
               << ", none declares a pen digitizer.\n";
     return;
   }
-  bool any_unreadable = false;
-  for (const hid::PenTabletInfo& t : tablets) {
-    any_unreadable = any_unreadable || !t.readable;
-    std::cout << t.device.path << "  " << hex4(t.device.vendor_id) << ":"
-              << hex4(t.device.product_id) << "  " << t.device.manufacturer << " "
-              << t.device.product << "\n";
-    if (!t.unsupported_reason.empty()) {
-      std::cout << "  unsupported: " << t.unsupported_reason << "\n";
-      continue;
-    }
-    const hid::TabletDecoder decoder(t.descriptor, t.device.vendor_id, t.device.product_id);
-    std::cout << "  " << decoder.describe();
-    if (!t.readable) std::cout << "  no permission to read " << t.device.path << "\n";
-  }
+  std::cout << hid::describe_tablet_list(tablets);
+  const bool any_unreadable = std::any_of(tablets.begin(), tablets.end(),
+                                          [](const hid::PenTabletInfo& t) { return !t.readable; });
   if (any_unreadable) {
     std::cout << "Install packaging/udev/70-impasto-tablets.rules in /etc/udev/rules.d, then "
                  "replug the tablet (or log in again).\n";
   }
 }
 
-void describe(const std::string& path) {
-  const auto bytes = hid::load_descriptor_bytes(path);
-  const hid::ReportDescriptor descriptor = hid::parse_report_descriptor(bytes, path);
-  std::cout << path << ": " << bytes.size() << " bytes, " << hid::describe_reports(descriptor);
-  const std::string reason = hid::unsupported_reason(descriptor);
-  std::optional<hid::GraphireTablet> vendor_protocol;
-  try {  // a capture names its device, which may speak a known vendor protocol
-    const hid::HidRecording capture = hid::read_hid_recording(path);
-    vendor_protocol = hid::find_graphire_tablet(capture.vendor_id, capture.product_id);
-  } catch (const std::runtime_error&) {
+// What a command knows of the tablet besides its descriptor: its ids (--id, or a capture's
+// I: line) and its handshake (--strings: a probe file or a capture with S: lines).
+struct TabletContext {
+  std::uint16_t vendor = 0;
+  std::uint16_t product = 0;
+  hid::InitExchange init;
+};
+
+std::pair<std::uint16_t, std::uint16_t> parse_id(const std::string& text) {
+  unsigned vendor = 0, product = 0;
+  char extra = 0;
+  if (std::sscanf(text.c_str(), "%x:%x%c", &vendor, &product, &extra) != 2 || vendor > 0xFFFF ||
+      product > 0xFFFF) {
+    throw std::runtime_error("--id: expected VID:PID in hex (e.g. 256c:006e), got '" + text + "'");
   }
-  if (vendor_protocol) {
-    std::cout << "pen: "
-              << hid::TabletDecoder(bytes, 0x056A, vendor_protocol->product_id).describe();
-  } else if (reason.empty()) {
-    std::cout << hid::describe_pen(hid::PenDecoder(descriptor));
-  } else {
-    std::cout << "pen: unsupported: " << reason << "\n";
+  return {static_cast<std::uint16_t>(vendor), static_cast<std::uint16_t>(product)};
+}
+
+hid::InitExchange read_strings(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error(path + ": cannot open");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (hid::detect_capture_format(text, false) == hid::CaptureFormat::kHidRecorder) {
+    std::istringstream capture(text);
+    return hid::parse_hid_recording(capture, path).init;
+  }
+  return hid::parse_string_probe(text, path);
+}
+
+// A capture names its device and carries its handshake; --id and --strings override.
+TabletContext tablet_context(const std::string& capture_path, const std::string& id,
+                             const std::string& strings,
+                             const std::vector<std::uint8_t>& descriptor) {
+  TabletContext context;
+  try {
+    const hid::HidRecording capture = hid::read_hid_recording(capture_path);
+    if (capture.descriptor == descriptor) {
+      context.vendor = capture.vendor_id;
+      context.product = capture.product_id;
+      context.init = capture.init;
+    }
+  } catch (const std::runtime_error&) {
+    // not a hid-recorder capture: the descriptor alone decides
+  }
+  if (!id.empty()) std::tie(context.vendor, context.product) = parse_id(id);
+  if (!strings.empty()) context.init = read_strings(strings);
+  return context;
+}
+
+void print_warnings(const std::vector<std::string>& warnings) {
+  for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
+}
+
+struct DescribeOptions {
+  std::string path, id, strings;
+  int interface = -1;
+};
+
+void describe(const DescribeOptions& o) {
+  const hid::DescriptorFile file = hid::read_descriptor_file(
+      o.path, o.interface >= 0 ? std::optional<int>(o.interface) : std::nullopt);
+  print_warnings(file.warnings);
+  const hid::ReportDescriptor descriptor = hid::parse_report_descriptor(file.bytes, o.path);
+  std::cout << o.path << ": " << hid::capture_format_name(file.format);
+  if (file.interface >= 0) std::cout << " (interface " << file.interface << ")";
+  std::cout << ", " << file.bytes.size() << " bytes, " << hid::describe_reports(descriptor);
+  const TabletContext c = tablet_context(o.path, o.id, o.strings, file.bytes);
+  try {
+    const hid::TabletDecoder decoder(file.bytes, c.vendor, c.product, c.init,
+                                     hid::default_tablet_models());
+    std::cout << "pen: " << decoder.describe();
+  } catch (const hid::UnsupportedTablet& e) {
+    std::cout << "pen: " << e.what() << "\n";
   }
 }
 
-void decode(const std::string& descriptor_path, const std::string& reports_path) {
-  const auto descriptor = hid::load_descriptor_bytes(descriptor_path);
-  const auto reports = hid::load_reports(reports_path);
-  // A capture names its device: when the descriptor is the capture's own, a tablet with a
-  // known vendor protocol is decoded by that protocol.
-  std::uint16_t vendor = 0;
-  std::uint16_t product = 0;
-  try {
-    const hid::HidRecording capture = hid::read_hid_recording(reports_path);
-    if (capture.descriptor == descriptor) {
-      vendor = capture.vendor_id;
-      product = capture.product_id;
-    }
-  } catch (const std::runtime_error&) {
-    // plain hex lines: the descriptor alone decides
-  }
-  const hid::TabletDecoder decoder(descriptor, vendor, product);
+struct DecodeOptions {
+  std::string descriptor, reports, id, strings;
+  int interface = -1;
+};
+
+void decode(const DecodeOptions& o) {
+  const std::optional<int> interface =
+      o.interface >= 0 ? std::optional<int>(o.interface) : std::nullopt;
+  const hid::DescriptorFile descriptor = hid::read_descriptor_file(o.descriptor, interface);
+  const hid::ReportFile reports = hid::read_report_file(o.reports, interface);
+  print_warnings(descriptor.warnings);
+  print_warnings(reports.warnings);
+  std::cerr << o.descriptor << ": " << hid::capture_format_name(descriptor.format) << "; "
+            << o.reports << ": " << hid::capture_format_name(reports.format) << ", "
+            << reports.reports.size() << " reports\n";
+  const TabletContext c = tablet_context(o.reports, o.id, o.strings, descriptor.bytes);
+  const hid::TabletDecoder decoder(descriptor.bytes, c.vendor, c.product, c.init,
+                                   hid::default_tablet_models());
+  std::cerr << "pen: " << decoder.describe().substr(0, decoder.describe().find('\n')) << "\n";
   std::printf("time\tx_mm\ty_mm\tpressure\ttilt_x\ttilt_y\ttip\tin_range\tbuttons\n");
   std::size_t rows = 0;
-  for (std::size_t i = 0; i < reports.size(); ++i) {
-    const auto s = decoder.decode(reports[i].bytes, reports[i].time_s,
-                                  reports_path + ": report " + std::to_string(i + 1));
+  for (std::size_t i = 0; i < reports.reports.size(); ++i) {
+    const hid::RecordedReport& r = reports.reports[i];
+    const auto s =
+        decoder.decode(r.bytes, r.time_s, o.reports + ": report " + std::to_string(i + 1));
     if (!s) continue;
     ++rows;
     std::printf("%.6f\t%.4f\t%.4f\t%.5f\t%.2f\t%.2f\t%d\t%d\t%u\n", s->time_s, s->x_mm, s->y_mm,
@@ -112,7 +162,7 @@ void decode(const std::string& descriptor_path, const std::string& reports_path)
                 (s->buttons & paintcore::kPenInRange) ? 1 : 0, s->buttons);
   }
   if (rows == 0) {
-    std::cerr << reports_path << ": none of its " << reports.size()
+    std::cerr << o.reports << ": none of its " << reports.reports.size()
               << " reports is a pen report of this descriptor\n";
   }
 }
@@ -146,6 +196,12 @@ void record(const std::string& out_path, std::string device_path, double seconds
   capture.phys = device_path;
   capture.descriptor = hid::read_report_descriptor(device_path);
   hid::HidDevice device(device_path);
+  // The tablet's initialisation, stored in the capture so that it replays through the same
+  // decoder (hid-uclogic-style handshake, or the model table's output reports).
+  hid::HidDeviceInfo info{device_path, capture.vendor_id, capture.product_id, "", "", -1};
+  std::string init_problem;
+  capture.init = hid::initialise_tablet(info, device, hid::default_tablet_models(), &init_problem);
+  if (!init_problem.empty()) std::cerr << "initialisation: " << init_problem << "\n";
   std::ofstream out(out_path, std::ios::trunc);
   if (!out) throw std::runtime_error(out_path + ": cannot create the file");
   hid::write_hid_recording(out, capture);  // header now; events follow as they come
@@ -174,27 +230,41 @@ const CommandRegistrar kRegistrar{
       CLI::App* group = command_group(root, "hid", "Pen tablets through USB HID");
       group->require_subcommand(1);
 
+      static bool list_handshake = false;
       auto* list_cmd = group->add_subcommand("list", "List pen tablets and their capabilities");
-      list_cmd->callback(list_tablets);
+      list_cmd->add_flag("--handshake", list_handshake,
+                         "ask Huion/Gaomon/XP-Pen/Ugee tablets for their parameters (this "
+                         "switches them to their full-resolution reports)");
+      list_cmd->callback([] { list_tablets(list_handshake); });
 
-      static std::string descriptor_path;
+      const auto tablet_options = [](CLI::App* cmd, std::string& id, std::string& strings,
+                                     int& interface) {
+        cmd->add_option("--id", id, "the tablet's USB VID:PID in hex (usbhid-dump files lack it)");
+        cmd->add_option("--strings", strings,
+                        "its string descriptors: a probe file (S lines) or a capture (S: lines)");
+        cmd->add_option("--interface", interface, "usbhid-dump: the interface to read");
+      };
+      static DescribeOptions describe_options;
       auto* describe_cmd = group->add_subcommand("describe", "Show the fields of each report");
       describe_cmd
-          ->add_option("DESCRIPTOR", descriptor_path,
-                       "report descriptor: raw .bin, hex text, or a hid-recorder capture")
+          ->add_option("DESCRIPTOR", describe_options.path,
+                       "report descriptor: raw .bin, hex text, usbhid-dump or hid-recorder")
           ->required();
-      describe_cmd->callback([] { describe(descriptor_path); });
+      tablet_options(describe_cmd, describe_options.id, describe_options.strings,
+                     describe_options.interface);
+      describe_cmd->callback([] { describe(describe_options); });
 
-      static std::string decode_descriptor;
-      static std::string decode_reports;
+      static DecodeOptions decode_options;
       auto* decode_cmd = group->add_subcommand("decode", "Decode pen reports to TSV on stdout");
-      decode_cmd->add_option("--descriptor", decode_descriptor, "report descriptor file")
+      decode_cmd->add_option("--descriptor", decode_options.descriptor, "report descriptor file")
           ->required();
       decode_cmd
-          ->add_option("--reports", decode_reports,
-                       "reports: a hid-recorder capture (E: lines) or one hex report a line")
+          ->add_option("--reports", decode_options.reports,
+                       "reports: usbhid-dump or hid-recorder capture, or one hex report a line")
           ->required();
-      decode_cmd->callback([] { decode(decode_descriptor, decode_reports); });
+      tablet_options(decode_cmd, decode_options.id, decode_options.strings,
+                     decode_options.interface);
+      decode_cmd->callback([] { decode(decode_options); });
 
       static std::string record_out;
       static std::string record_device;

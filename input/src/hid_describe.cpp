@@ -99,4 +99,33 @@ std::string describe_pen(const PenDecoder& decoder) {
   return out.str();
 }
 
+std::string describe_tablet_list(const std::vector<PenTabletInfo>& tablets) {
+  std::ostringstream out;
+  for (const PenTabletInfo& t : tablets) {
+    char ids[16];
+    std::snprintf(ids, sizeof ids, "%04x:%04x", t.device.vendor_id, t.device.product_id);
+    out << t.device.path << "  " << ids << "  " << t.device.manufacturer
+        << (t.device.manufacturer.empty() ? "" : " ") << t.device.product << "\n";
+    if (!t.unsupported_reason.empty() || !t.summary) {
+      out << "  unsupported: " << t.unsupported_reason << "\n";
+      continue;
+    }
+    const TabletSummary& s = *t.summary;
+    char line[200];
+    std::snprintf(line, sizeof line, "%.2f x %.2f mm%s", s.width_mm, s.height_mm,
+                  s.area_known ? "" : " (assumed)");
+    out << "  vendor: " << (s.vendor.empty() ? "unknown" : s.vendor)
+        << "  model: " << (s.model.empty() ? "unknown" : s.model) << "\n"
+        << "  protocol: " << s.protocol << "  area: " << line << "  pressure: ";
+    if (s.pressure_levels > 0) {
+      out << s.pressure_levels << " levels";
+    } else {
+      out << "none";
+    }
+    out << "  tilt: " << (s.tilt ? "yes" : "no") << "\n";
+    if (!t.readable) out << "  no permission to read " << t.device.path << "\n";
+  }
+  return out.str();
+}
+
 }  // namespace impasto::input::hid

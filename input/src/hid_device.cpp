@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include <linux/hidraw.h>
+#include <linux/usbdevice_fs.h>
 #include <sys/ioctl.h>
 
 #ifdef IMPASTO_HAVE_HIDAPI
@@ -25,7 +26,8 @@ namespace {
 
 // Tablet makers whose vendor-defined collections are worth listing as unsupported pens.
 constexpr std::uint16_t kTabletVendors[] = {0x056A /* Wacom */, 0x256C /* Huion */,
-                                            0x28BD /* XP-Pen */, 0x5543 /* UC-Logic */};
+                                            0x28BD /* XP-Pen */, 0x5543 /* UC-Logic */,
+                                            0x2FEB /* Veikk */};
 
 std::mutex& hidapi_mutex() {
   static std::mutex mutex;
@@ -115,14 +117,82 @@ std::vector<std::uint8_t> read_report_descriptor(const std::string& hidraw_path)
   return {descriptor.value, descriptor.value + size};
 }
 
-std::vector<PenTabletInfo> find_pen_tablets() {
+std::vector<std::uint8_t> read_usb_string_descriptor(const std::string& hidraw_path,
+                                                     std::uint8_t index) {
+  // /sys/class/hidraw/hidrawN/device is the HID device under the USB interface, whose parent
+  // is the USB device with its bus and device numbers.
+  const std::string node = std::filesystem::path(hidraw_path).filename().string();
+  std::error_code error;
+  const std::filesystem::path hid_dir = std::filesystem::canonical(
+      std::filesystem::path("/sys/class/hidraw") / node / "device", error);
+  if (error) throw std::runtime_error(hidraw_path + ": no sysfs entry (" + error.message() + ")");
+  const std::filesystem::path usb_dir = hid_dir.parent_path().parent_path();
+  int bus = 0, dev = 0;
+  std::ifstream(usb_dir / "busnum") >> bus;
+  std::ifstream(usb_dir / "devnum") >> dev;
+  if (bus <= 0 || dev <= 0) throw std::runtime_error(hidraw_path + ": not a USB device");
+  char usbfs[64];
+  std::snprintf(usbfs, sizeof usbfs, "/dev/bus/usb/%03d/%03d", bus, dev);
+  const int fd = ::open(usbfs, O_RDWR | O_CLOEXEC);
+  if (fd < 0) {
+    throw std::runtime_error(std::string(usbfs) + ": cannot open (" + std::strerror(errno) + ")");
+  }
+  std::uint8_t buffer[255] = {};
+  usbdevfs_ctrltransfer transfer{};
+  transfer.bRequestType = 0x80;  // device to host, standard, device
+  transfer.bRequest = 0x06;      // GET_DESCRIPTOR
+  transfer.wValue = static_cast<std::uint16_t>(0x0300 | index);
+  transfer.wIndex = 0x0409;  // US English, as the vendors' drivers ask
+  transfer.wLength = sizeof buffer;
+  transfer.timeout = 1000;
+  transfer.data = buffer;
+  const int n = ::ioctl(fd, USBDEVFS_CONTROL, &transfer);
+  const int saved = errno;
+  ::close(fd);
+  if (n < 2) {
+    throw std::runtime_error(std::string(usbfs) + ": string " + std::to_string(index) +
+                             " not answered (" + std::strerror(n < 0 ? saved : EIO) + ")");
+  }
+  return {buffer, buffer + std::min<int>(n, buffer[0] >= 2 ? buffer[0] : n)};
+}
+
+InitExchange uclogic_handshake(const std::string& hidraw_path, std::string* error) {
+  InitExchange init;
+  std::string first_error;
+  for (std::uint8_t index : {std::uint8_t{0xC8}, std::uint8_t{0x64}, std::uint8_t{0xC9},
+                             std::uint8_t{0x79}, std::uint8_t{0x7A}}) {
+    try {
+      init.strings.push_back({index, read_usb_string_descriptor(hidraw_path, index)});
+    } catch (const std::runtime_error& e) {
+      init.unanswered.push_back(index);
+      if (first_error.empty()) first_error = e.what();
+    }
+  }
+  if (error != nullptr) *error = init.strings.empty() ? first_error : "";
+  return init;
+}
+
+HidSystem this_machine(bool handshake) {
+  HidSystem system;
+  system.enumerate = enumerate_hid_devices;
+  system.read_descriptor = read_report_descriptor;
+  system.readable = [](const std::string& path) { return ::access(path.c_str(), R_OK) == 0; };
+  if (handshake) {
+    system.handshake = [](const HidDeviceInfo& device) { return uclogic_handshake(device.path); };
+  }
+  return system;
+}
+
+std::vector<PenTabletInfo> find_pen_tablets(const HidSystem& system) {
+  const std::vector<TabletModel>& models =
+      system.models != nullptr ? *system.models : default_tablet_models();
   std::vector<PenTabletInfo> tablets;
-  for (const HidDeviceInfo& device : enumerate_hid_devices()) {
+  for (const HidDeviceInfo& device : system.enumerate()) {
     PenTabletInfo info;
     info.device = device;
-    info.readable = ::access(device.path.c_str(), R_OK) == 0;
+    info.readable = system.readable ? system.readable(device.path) : false;
     try {
-      info.descriptor = read_report_descriptor(device.path);
+      info.descriptor = system.read_descriptor(device.path);
     } catch (const std::runtime_error& e) {
       // Only a tablet maker's device is worth reporting without its descriptor.
       if (!is_tablet_vendor(device.vendor_id)) continue;
@@ -130,22 +200,45 @@ std::vector<PenTabletInfo> find_pen_tablets() {
       tablets.push_back(std::move(info));
       continue;
     }
-    const bool known_protocol =
+    const bool known_model =
+        !find_tablet_models(models, device.vendor_id, device.product_id).empty() ||
         find_graphire_tablet(device.vendor_id, device.product_id).has_value();
+    bool pen = false;
+    bool vendor_application = false;
     try {
       const ReportDescriptor d = parse_report_descriptor(info.descriptor, device.path);
-      const bool vendor_pen = is_tablet_vendor(device.vendor_id) && has_vendor_application(d);
-      if (!known_protocol && !declares_pen(d) && !vendor_pen) continue;
-      if (!known_protocol) info.unsupported_reason = unsupported_reason(d);
-    } catch (const InputFormatError& e) {
-      if (!known_protocol) {
-        if (!is_tablet_vendor(device.vendor_id)) continue;
-        info.unsupported_reason = std::string("malformed descriptor: ") + e.what();
+      pen = declares_pen(d) || unsupported_reason(d).empty();
+      vendor_application = has_vendor_application(d);
+    } catch (const InputFormatError&) {
+    }
+    if (!pen && !(is_tablet_vendor(device.vendor_id) && (vendor_application || known_model))) {
+      continue;
+    }
+    if (system.handshake && is_uclogic_vendor(device.vendor_id)) {
+      info.init = system.handshake(device);
+    }
+    try {
+      const TabletDecoder decoder(info.descriptor, device.vendor_id, device.product_id, info.init,
+                                  models);
+      info.summary = decoder.summary();
+    } catch (const UnsupportedTablet& e) {
+      std::string reason = e.what();
+      const std::string prefix = "unsupported tablet: ";
+      if (reason.starts_with(prefix)) reason.erase(0, prefix.size());
+      if (is_uclogic_vendor(device.vendor_id) && info.init.empty()) {
+        reason += "; its UC-Logic handshake was not made (impasto hid list --handshake)";
       }
+      info.unsupported_reason = reason;
+    } catch (const InputFormatError& e) {
+      info.unsupported_reason = std::string("malformed descriptor: ") + e.what();
     }
     tablets.push_back(std::move(info));
   }
   return tablets;
+}
+
+std::vector<PenTabletInfo> find_pen_tablets() {
+  return find_pen_tablets(this_machine());
 }
 
 HidDevice::HidDevice(const std::string& path) : path_(path) {
@@ -186,10 +279,52 @@ std::vector<std::uint8_t> HidDevice::read(int timeout_ms) {
   return report;
 }
 
+void HidDevice::write(const std::vector<std::uint8_t>& report) {
+#ifdef IMPASTO_HAVE_HIDAPI
+  const int n = hid_write(static_cast<hid_device*>(handle_), report.data(), report.size());
+  if (n < 0) {
+    throw std::runtime_error(
+        path_ + ": write failed: " + narrow(hid_error(static_cast<hid_device*>(handle_))));
+  }
+#else
+  (void)report;
+  throw std::runtime_error(path_ + ": this impasto was built without hidapi");
+#endif
+}
+
+InitExchange initialise_tablet(const HidDeviceInfo& device, HidDevice& open_device,
+                               const std::vector<TabletModel>& models, std::string* error) {
+  InitExchange init;
+  std::string problem;
+  const std::vector<TabletModel> rows =
+      find_tablet_models(models, device.vendor_id, device.product_id);
+  if (is_uclogic_vendor(device.vendor_id) &&
+      (rows.empty() || rows.front().protocol == ModelProtocol::kUcLogic)) {
+    init = uclogic_handshake(device.path, &problem);
+  } else if (!rows.empty()) {
+    for (const InitStep& step : rows.front().init) {
+      try {
+        if (step.kind == InitStep::Kind::kSendOutput) {
+          open_device.write(step.report);
+          init.output_reports.push_back(step.report);
+        } else {
+          init.strings.push_back(
+              {step.string_index, read_usb_string_descriptor(device.path, step.string_index)});
+        }
+      } catch (const std::runtime_error& e) {
+        if (problem.empty()) problem = e.what();
+      }
+    }
+  }
+  if (error != nullptr) *error = problem;
+  return init;
+}
+
 TabletReader::TabletReader(PenTabletInfo tablet, SampleQueue& queue,
                            std::chrono::steady_clock::time_point origin)
     : tablet_(std::move(tablet)),
-      decoder_(tablet_.descriptor, tablet_.device.vendor_id, tablet_.device.product_id),
+      decoder_(tablet_.descriptor, tablet_.device.vendor_id, tablet_.device.product_id,
+               tablet_.init, default_tablet_models()),
       queue_(queue),
       origin_(origin),
       thread_([this] { run(); }) {}
@@ -209,13 +344,31 @@ void TabletReader::run() {
   constexpr int kReadTimeoutMs = 50;
   try {
     HidDevice device(tablet_.device.path);
+    // A tablet whose pen needs its vendor's initialisation gets it here; the decoder then
+    // follows the tablet's answer. Not when the descriptor already describes the vendor's
+    // report (a kernel driver such as hid-uclogic has made the handshake and rewrites the
+    // reports: doing it again would read them twice over).
+    TabletDecoder decoder = decoder_;
+    if (const auto& vendor = decoder_.vendor_format();
+        vendor && tablet_.init.empty() && !decoder_.describes_report(vendor->report_id())) {
+      const InitExchange init =
+          initialise_tablet(tablet_.device, device, default_tablet_models(), nullptr);
+      if (!init.empty()) {
+        try {
+          decoder = TabletDecoder(tablet_.descriptor, tablet_.device.vendor_id,
+                                  tablet_.device.product_id, init, default_tablet_models());
+        } catch (const std::exception&) {
+          // keep the model table's decoder
+        }
+      }
+    }
     while (!stop_) {
       const std::vector<std::uint8_t> report = device.read(kReadTimeoutMs);
       if (report.empty()) continue;
       const double time_s =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - origin_).count();
       try {
-        if (auto sample = decoder_.decode(report, time_s)) queue_.push(*sample);
+        if (auto sample = decoder.decode(report, time_s)) queue_.push(*sample);
       } catch (const InputFormatError&) {
         ++bad_reports_;  // a short or unknown report: skip it, keep reading
       }

@@ -124,14 +124,19 @@ std::optional<paintcore::PenSample> TabletDecoder::decode(std::span<const std::u
   if (graphire_) return decode_graphire_report(*graphire_, report, time_s);
   if (vendor_ && !report.empty() && report[0] == vendor_->report_id()) {
     // Without a handshake, the descriptor's own description of the report comes first.
-    bool described = false;
-    if (pen_ && !vendor_first_) {
-      for (const PenReportLayout& l : pen_->layouts()) described |= l.report_id == report[0];
-    }
-    if (!described) return decode_vendor_pen_report(*vendor_, report, time_s);
+    if (vendor_first_ || !describes_report(report[0]))
+      return decode_vendor_pen_report(*vendor_, report, time_s);
   }
   if (pen_) return pen_->decode(report, time_s, source);
   return std::nullopt;
+}
+
+bool TabletDecoder::describes_report(std::uint8_t report_id) const {
+  if (!pen_) return false;
+  for (const PenReportLayout& l : pen_->layouts()) {
+    if (l.report_id == report_id) return true;
+  }
+  return false;
 }
 
 TabletArea TabletDecoder::area() const {

@@ -10,11 +10,12 @@ set -euo pipefail
 
 seconds="${1:-20}"
 repo="$(cd "$(dirname "$0")/../.." && pwd)"
-shared="$(cd "$repo/.." && pwd)/shared/data"
+files="$repo/tests/data/files"  # the real recordings, copied into the repository
 build="${IMPASTO_FUZZ_BUILD:-$repo/build/fuzz}"
 cxx="${CXX_FUZZ:-clang++}"
 flags=(-std=c++20 -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined
-       -fno-sanitize-recover=undefined -I"$repo/input/include" -I"$repo/paintcore/include")
+       -fno-sanitize-recover=undefined -I"$repo/input/include" -I"$repo/paintcore/include"
+       -DIMPASTO_INPUT_SOURCE_DATA_DIR=\"$repo/data\")
 
 mkdir -p "$build/obj"
 echo "building the input library with $cxx"
@@ -33,13 +34,14 @@ done
 for pid in "${pids[@]}"; do wait "$pid"; done
 
 declare -A seeds=(
-  [hid_descriptor]="$repo/tests/fuzz/corpus/hid $shared/hid"
-  [hid_recording]="$repo/tests/fuzz/corpus/hid_recording $shared/hid"
-  [stroke_reader]="$repo/tests/fuzz/corpus/strokes $shared/strokes"
+  [hid_descriptor]="$repo/tests/fuzz/corpus/hid $files/hid"
+  [hid_recording]="$repo/tests/fuzz/corpus/hid_recording $files/hid"
+  [hid_capture]="$repo/tests/fuzz/corpus/hid_capture $files/hid/captures/Huion_H610 $files/hid/captures/Ugee_M708_v2 $repo/data/tablets"
+  [stroke_reader]="$repo/tests/fuzz/corpus/strokes $files/strokes"
 )
 
 status=0
-for target in hid_descriptor hid_recording stroke_reader; do
+for target in hid_descriptor hid_recording hid_capture stroke_reader; do
   binary="$build/fuzz_$target"
   "$cxx" "${flags[@]}" -fsanitize=fuzzer "$repo/tests/fuzz/fuzz_$target.cpp" "${objects[@]}" \
     -o "$binary"

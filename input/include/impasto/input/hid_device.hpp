@@ -39,16 +39,46 @@ std::vector<HidDeviceInfo> enumerate_hid_devices();
 // else with the HIDIOCGRDESC ioctl. Throws std::runtime_error naming the node.
 std::vector<std::uint8_t> read_report_descriptor(const std::string& hidraw_path);
 
+// A raw USB string descriptor (bLength, 3, UTF-16LE) of the USB device a hidraw node belongs
+// to, read through usbfs (/dev/bus/usb/BBB/DDD, which needs write access). Throws
+// std::runtime_error naming the node and why.
+std::vector<std::uint8_t> read_usb_string_descriptor(const std::string& hidraw_path,
+                                                     std::uint8_t index);
+
+// The UC-Logic handshake of a Huion/Gaomon/XP-Pen/Ugee tablet: reads its parameter strings
+// (0xC8, then 0x64 — which switches the tablet to its full-resolution vendor reports) and its
+// model strings (0xC9, 0x79, 0x7A). Indices the device refuses are listed as unanswered;
+// `error` gets why none could be read.
+InitExchange uclogic_handshake(const std::string& hidraw_path, std::string* error = nullptr);
+
 // A device whose descriptor declares a pen (or whose vendor protocol Impasto knows).
 struct PenTabletInfo {
   HidDeviceInfo device;
   std::vector<std::uint8_t> descriptor;
-  std::string unsupported_reason;  // empty when Impasto can read the pen
-  bool readable = false;           // whether this user may open the node (udev uaccess)
+  InitExchange init;                     // what its handshake answered (empty if none was made)
+  std::string unsupported_reason;        // empty when Impasto can read the pen
+  std::optional<TabletSummary> summary;  // vendor, model, protocol, area, levels, tilt
+  bool readable = false;                 // whether this user may open the node (udev uaccess)
 };
 
-// Pen digitizers among the HID devices: Digitizer Pen/Stylus collections, known vendor
-// protocols, or tablet makers' vendor-defined pen collections (listed as unsupported).
+// Where find_pen_tablets looks: this machine (hidapi, sysfs, usbfs), or a fake one in tests.
+struct HidSystem {
+  std::function<std::vector<HidDeviceInfo>()> enumerate;
+  // Throws std::runtime_error when the descriptor cannot be read.
+  std::function<std::vector<std::uint8_t>(const std::string& path)> read_descriptor;
+  std::function<bool(const std::string& path)> readable;
+  // The handshake of a UC-Logic vendor's device; unset: none is made.
+  std::function<InitExchange(const HidDeviceInfo& device)> handshake;
+  const std::vector<TabletModel>* models = nullptr;  // null: default_tablet_models()
+};
+// This machine; with `handshake`, UC-Logic vendors' tablets are asked for their parameters
+// (which also switches them to their vendor reports, as their drivers do).
+HidSystem this_machine(bool handshake = false);
+
+// Pen digitizers among the HID devices: pen reports in any collection (or in Wacom's vendor
+// page), tablets the model table or a handshake describes, and tablet makers' devices with
+// vendor-defined collections (listed as unsupported, with the reason).
+std::vector<PenTabletInfo> find_pen_tablets(const HidSystem& system);
 std::vector<PenTabletInfo> find_pen_tablets();
 
 // An open HID device; closed on destruction.
@@ -62,11 +92,19 @@ class HidDevice {
   // One input report, or an empty vector after `timeout_ms` without one. Throws
   // std::runtime_error when the device is gone.
   std::vector<std::uint8_t> read(int timeout_ms);
+  // Sends an output report (its first byte the report ID). Throws std::runtime_error.
+  void write(const std::vector<std::uint8_t>& report);
 
  private:
   void* handle_ = nullptr;
   std::string path_;
 };
+
+// What a tablet needs before it reports at full resolution, done on the open device: the
+// model table's output reports sent (XP-Pen, Veikk) and strings read, or the UC-Logic
+// handshake for UC-Logic vendors. Returns the exchange, for the decoder and for captures.
+InitExchange initialise_tablet(const HidDeviceInfo& device, HidDevice& open_device,
+                               const std::vector<TabletModel>& models, std::string* error);
 
 // Reads one tablet on its own thread, decoding reports into the queue. Times are seconds
 // since `origin` (steady clock), the same for every tablet of a session.

@@ -52,6 +52,8 @@ class TabletDecoder {
   std::string describe() const;
   TabletSummary summary() const { return summary_; }
   const std::optional<VendorPenFormat>& vendor_format() const { return vendor_; }
+  // Whether the descriptor describes input report `report_id` as a pen report.
+  bool describes_report(std::uint8_t report_id) const;
 
  private:
   std::optional<GraphireTablet> graphire_;
