@@ -124,10 +124,18 @@ StrokeFile parse_bdalab_svc(std::istream& in, const std::string& source_name,
     s.buttons = paintcore::kPenInRange | (pen_down == 1.0 ? paintcore::kPenTip : 0u);
     raw.push_back(r);
   }
-  if (static_cast<std::int64_t>(raw.size()) != declared) {
-    throw InputFormatError(source_name, 1, "count",
-                           "declares " + std::to_string(declared) + " samples but the file has " +
-                               std::to_string(raw.size()));
+  // Public datasets hold files whose count is off by one from their lines (a header counted,
+  // a last line lost): the lines present are read, with a warning. More is an error.
+  const std::int64_t present = static_cast<std::int64_t>(raw.size());
+  std::string count_warning;
+  if (present != declared) {
+    const std::string mismatch = "declares " + std::to_string(declared) +
+                                 " samples but the file has " + std::to_string(present);
+    if (present == 0 || (present != declared + 1 && present != declared - 1)) {
+      throw InputFormatError(source_name, 1, "count", mismatch);
+    }
+    count_warning = source_name + ":1: field 'count': " + mismatch + "; the " +
+                    std::to_string(present) + " present are used";
   }
 
   double full_scale = 0.0;
@@ -146,6 +154,7 @@ StrokeFile parse_bdalab_svc(std::istream& in, const std::string& source_name,
     r.sample.pressure = static_cast<float>(std::clamp(p, 0.0, 1.0));
     file.events.push_back(SampleEvent{r.sample});
   }
+  if (!count_warning.empty()) file.warnings.push_back(count_warning);
   return file;
 }
 

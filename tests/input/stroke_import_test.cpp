@@ -1,9 +1,11 @@
-// The importers against the real recordings in tests/data/files/strokes (copies of the team's reference data).
+// The importers against the real recordings in tests/data/files/strokes (copies of the team's
+// reference data).
 #include <impasto/input/stroke_import.hpp>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <sstream>
 
 namespace impasto::input {
@@ -107,14 +109,36 @@ TEST(BdalabImport, CountMismatchAndBadColumns) {
     }
     return std::string("no error");
   };
-  EXPECT_EQ(error_of("2\n1 2 0 1 0 900 5\n"),
-            "bad.svc:1: field 'count': declares 2 samples but the file has 1");
+  EXPECT_EQ(error_of("3\n1 2 0 1 0 900 5\n"),
+            "bad.svc:1: field 'count': declares 3 samples but the file has 1");
+  EXPECT_EQ(error_of("1\n"), "bad.svc:1: field 'count': declares 1 samples but the file has 0");
   EXPECT_EQ(error_of("1\n1 2 0 1 0 900\n"),
             "bad.svc:2: expected 7 columns (x y time pen_down azimuth altitude pressure), found 6");
   EXPECT_EQ(error_of("1\n1 2 0 2 0 900 5\n"), "bad.svc:2: field 'pen_down': must be 0 or 1");
   EXPECT_EQ(error_of("1\n1 2 0 1 0 inf 5\n"),
             "bad.svc:2: field 'altitude': 'inf' is not a finite number");
   EXPECT_EQ(error_of("x\n"), "bad.svc:1: field 'count': expected an integer, found 'x'");
+}
+
+// Real .svc files in public datasets have a count one off from their lines: they load with a
+// warning and use the lines present.
+TEST(BdalabImport, CountOffByOneLoadsWithAWarning) {
+  std::ifstream real(kStrokes + "bdalab_signal.svc");
+  std::string first, rest, line;
+  std::getline(real, first);
+  while (std::getline(real, line)) rest += line + "\n";
+  const std::int64_t lines = std::stoll(first);
+  for (const std::int64_t declared : {lines - 1, lines + 1}) {
+    std::istringstream in(std::to_string(declared) + "\n" + rest);
+    const StrokeFile file = parse_bdalab_svc(in, "off.svc");
+    EXPECT_EQ(pen_samples(file).size(), static_cast<std::size_t>(lines));
+    ASSERT_EQ(file.warnings.size(), 1u);
+    EXPECT_EQ(file.warnings[0], "off.svc:1: field 'count': declares " + std::to_string(declared) +
+                                    " samples but the file has " + std::to_string(lines) +
+                                    "; the " + std::to_string(lines) + " present are used");
+  }
+  std::istringstream exact(first + "\n" + rest);
+  EXPECT_TRUE(parse_bdalab_svc(exact, "exact.svc").warnings.empty());
 }
 
 TEST(Tilt, LimitsOfAzimuthAndAltitude) {
