@@ -268,6 +268,24 @@ PenDecoder::PenDecoder(ReportDescriptor descriptor, DecoderOptions options)
       l.mm_per_y = y.value_or(1.0 / options_.fallback_lines_per_mm);
     }
   }
+  // A report without length units (the Huion H610's report 9, 0..2048) spans the same
+  // surface as a report of the descriptor that states its area (its report 7, in inches).
+  const auto stated = std::find_if(layouts_.begin(), layouts_.end(),
+                                   [](const PenReportLayout& l) { return l.area_from_descriptor; });
+  if (stated != layouts_.end()) {
+    const double width =
+        static_cast<double>(stated->x.logical_max - stated->x.logical_min) * stated->mm_per_x;
+    const double height =
+        static_cast<double>(stated->y.logical_max - stated->y.logical_min) * stated->mm_per_y;
+    for (PenReportLayout& l : layouts_) {
+      const std::int64_t span_x = l.x.logical_max - l.x.logical_min;
+      const std::int64_t span_y = l.y.logical_max - l.y.logical_min;
+      if (l.area_from_descriptor || l.area_from_model || span_x <= 0 || span_y <= 0) continue;
+      l.mm_per_x = width / static_cast<double>(span_x);
+      l.mm_per_y = height / static_cast<double>(span_y);
+      l.area_from_descriptor = true;
+    }
+  }
   const PenReportLayout& first = layouts_.front();
   area_.from_descriptor = first.area_from_descriptor;
   area_.from_model = first.area_from_model;

@@ -131,6 +131,24 @@ TEST(HuionH610Captures, TheModelTableAloneGivesTheArea) {
   EXPECT_NEAR(s->x_mm, le16(f.reports.back().bytes, 2) / 2048.0 * 254.0, 1e-9);
 }
 
+// Without ids or handshake, report 9 (no length unit) spans the surface the descriptor's own
+// report 7 declares in inches (10000 x 6250 thousandths: 254 x 158.75 mm).
+TEST(HuionH610Captures, TheDescriptorAloneGivesTheArea) {
+  const DescriptorFile d = read_descriptor_file(kH610 + "rd/original0.txt");
+  const PenDecoder pen(parse_report_descriptor(d.bytes));
+  ASSERT_EQ(pen.layouts().size(), 2u);
+  EXPECT_EQ(pen.layouts()[1].report_id, 9);
+  EXPECT_TRUE(pen.layouts()[1].outside_pen_collection);
+  const ReportFile f = read_report_file(kH610 + "dumps/pen_coords.txt");
+  for (const RecordedReport& r : f.reports) {
+    const auto s = pen.decode(r.bytes, r.time_s);
+    ASSERT_TRUE(s.has_value());
+    EXPECT_NEAR(s->x_mm, le16(r.bytes, 2) / 2048.0 * 254.0, 1e-9);
+    EXPECT_NEAR(s->y_mm, le16(r.bytes, 4) / 2048.0 * 158.75, 1e-9);
+    EXPECT_FLOAT_EQ(s->pressure, static_cast<float>(le16(r.bytes, 6) / 2047.0));
+  }
+}
+
 // The Ugee M708 v2's full-resolution pen reports (report 7 of interface 1): decoded by the
 // UC-Logic protocol from its handshake, and by its own descriptor; the two agree.
 TEST(UgeeM708Captures, EveryPenReportDecodesByItsHandshakeAndByItsDescriptor) {
