@@ -93,8 +93,8 @@ void InputFile::rewind() {
   stream_.clear();
 }
 
-std::string read_text_file(const std::filesystem::path& path, const std::string& what,
-                           std::uint64_t max_bytes) {
+std::string read_whole_file(const std::filesystem::path& path, const std::string& what,
+                            std::uint64_t max_bytes) {
   InputFile file(path, what, max_bytes);
   std::string text(static_cast<std::size_t>(file.size()), '\0');
   file.read_exact(text.data(), text.size());

@@ -1,6 +1,7 @@
 #include <png.h>
 
 #include <ImfRgbaFile.h>
+#include <ImfStdIO.h>
 
 #include <algorithm>
 #include <cctype>
@@ -9,6 +10,9 @@
 #include <stdexcept>
 #include <string>
 
+#include "impasto/files/atomic_file.hpp"
+#include "impasto/files/input_file.hpp"
+#include "impasto/files/memory_budget.hpp"
 #include "impasto/render/image.hpp"
 
 namespace impasto::render {
@@ -39,20 +43,43 @@ void write_png(const std::filesystem::path& path, const Image& image) {
   png.width = static_cast<png_uint_32>(image.width);
   png.height = static_cast<png_uint_32>(image.height);
   png.format = PNG_FORMAT_RGB;  // 8-bit sRGB-encoded
-  if (!png_image_write_to_file(&png, path.c_str(), 0, bytes.data(), 0, nullptr)) {
+  // Encoded in memory, then saved atomically (files::AtomicFile).
+  png_alloc_size_t size = 0;
+  std::string encoded;
+  if (png_image_write_to_memory(&png, nullptr, &size, 0, bytes.data(), 0, nullptr)) {
+    encoded.resize(size);
+    if (!png_image_write_to_memory(&png, encoded.data(), &size, 0, bytes.data(), 0, nullptr))
+      size = 0;
+  }
+  if (size == 0) {
     const std::string message = png.message;
     png_image_free(&png);
     throw std::runtime_error(path.string() + ": cannot write PNG: " + message);
   }
+  encoded.resize(size);
+  files::write_file_atomically(path, encoded);
 }
 
 Image read_png(const std::filesystem::path& path) {
+  const std::string file = files::read_whole_file(path, "PNG image", files::kMaxImageFileBytes);
   png_image png{};
   png.version = PNG_IMAGE_VERSION;
-  if (!png_image_begin_read_from_file(&png, path.c_str())) {
+  if (!png_image_begin_read_from_memory(&png, file.data(), file.size())) {
     const std::string message = png.message;
     png_image_free(&png);
     throw std::runtime_error(path.string() + ": cannot read PNG: " + message);
+  }
+  // Checked before decoding: the pixels (at least a bit each) must fit in the file, and the
+  // 8-bit and float copies in the memory budget.
+  const auto pixels = static_cast<std::uint64_t>(png.width) * png.height;
+  const std::string declared = "the header's size (IHDR width x height " +
+                               std::to_string(png.width) + " x " + std::to_string(png.height) + ")";
+  try {
+    files::check_decoded_size(path.string(), declared, pixels / 8, file.size());
+    files::check_allocation(path.string(), declared, 15 * pixels);
+  } catch (const std::exception&) {
+    png_image_free(&png);
+    throw;
   }
   png.format = PNG_FORMAT_RGB;
   std::vector<std::uint8_t> bytes(PNG_IMAGE_SIZE(png));
@@ -77,11 +104,16 @@ void write_exr(const std::filesystem::path& path, const Image& image) {
   for (std::size_t i = 0; i < pixels.size(); ++i) {
     pixels[i] = Imf::Rgba(image.rgb[3 * i], image.rgb[3 * i + 1], image.rgb[3 * i + 2], 1.0f);
   }
+  // Encoded in memory, then saved atomically (files::AtomicFile).
   try {
-    Imf::RgbaOutputFile file(path.c_str(), image.width, image.height, Imf::WRITE_RGB);
-    file.setFrameBuffer(pixels.data(), 1, static_cast<std::size_t>(image.width));
-    file.writePixels(image.height);
-  } catch (const std::exception& e) {
+    Imf::StdOSStream stream;
+    {
+      Imf::RgbaOutputFile file(stream, Imf::Header(image.width, image.height), Imf::WRITE_RGB);
+      file.setFrameBuffer(pixels.data(), 1, static_cast<std::size_t>(image.width));
+      file.writePixels(image.height);
+    }
+    files::write_file_atomically(path, stream.str());
+  } catch (const Iex::BaseExc& e) {
     throw std::runtime_error(path.string() + ": cannot write OpenEXR: " + e.what());
   }
 }

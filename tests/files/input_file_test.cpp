@@ -12,7 +12,7 @@ namespace {
 
 std::string error_of(const std::filesystem::path& path, std::uint64_t limit = kMaxTextFileBytes) {
   try {
-    read_text_file(path, "table", limit);
+    read_whole_file(path, "table", limit);
   } catch (const std::runtime_error& e) {
     return e.what();
   }
@@ -22,7 +22,7 @@ std::string error_of(const std::filesystem::path& path, std::uint64_t limit = kM
 TEST(InputFile, ReadsAFile) {
   test::TempFolder folder;
   std::ofstream(folder / "a.txt") << "line 1\nline 2\n";
-  EXPECT_EQ(read_text_file(folder / "a.txt", "table"), "line 1\nline 2\n");
+  EXPECT_EQ(read_whole_file(folder / "a.txt", "table"), "line 1\nline 2\n");
   InputFile file(folder / "a.txt", "table", 100);
   std::string line;
   std::getline(file.stream(), line);

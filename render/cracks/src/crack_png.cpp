@@ -9,6 +9,9 @@
 #include <vector>
 
 #include "impasto/cracks/craquelure.hpp"
+#include "impasto/files/atomic_file.hpp"
+#include "impasto/files/input_file.hpp"
+#include "impasto/files/memory_budget.hpp"
 
 namespace impasto::cracks {
 
@@ -18,9 +21,10 @@ CrackMap read_crack_png(const std::filesystem::path& path, const CrackImageSetti
       !std::isfinite(s.depth_to_half_width)) {
     throw std::runtime_error(name + ": max_depth_mm and depth_to_half_width must be > 0");
   }
+  const std::string file = files::read_whole_file(path, "PNG crack map", files::kMaxImageFileBytes);
   png_image image{};
   image.version = PNG_IMAGE_VERSION;
-  if (!png_image_begin_read_from_file(&image, name.c_str())) {
+  if (!png_image_begin_read_from_memory(&image, file.data(), file.size())) {
     throw std::runtime_error(name + ": cannot read PNG: " + image.message);
   }
   // Frees libpng's state however this function is left.
@@ -37,6 +41,13 @@ CrackMap read_crack_png(const std::filesystem::path& path, const CrackImageSetti
   image.format = sixteen_bit ? PNG_FORMAT_LINEAR_Y : PNG_FORMAT_GRAY;
   const double full_scale = sixteen_bit ? 65535.0 : 255.0;
   const std::size_t count = static_cast<std::size_t>(image.width) * image.height;
+  // Checked before decoding: the pixels (at least a bit each) must fit in the file, and what
+  // reading takes (16-bit grey, 8-bit grey) in the memory budget.
+  const std::string declared = "the header's size (IHDR width x height " +
+                               std::to_string(image.width) + " x " + std::to_string(image.height) +
+                               ")";
+  files::check_decoded_size(name, declared, count / 8, file.size());
+  files::check_allocation(name, declared, 3 * static_cast<std::uint64_t>(count));
   std::vector<png_uint_16> grey(count);
   std::vector<png_byte> grey8(sixteen_bit ? 0 : count);
   void* buffer = sixteen_bit ? static_cast<void*>(grey.data()) : static_cast<void*>(grey8.data());
@@ -74,11 +85,21 @@ void write_crack_png(const CrackMap& map, const std::filesystem::path& path, dou
   image.width = static_cast<png_uint_32>(map.width());
   image.height = static_cast<png_uint_32>(map.height());
   image.format = PNG_FORMAT_LINEAR_Y;
-  if (!png_image_write_to_file(&image, name.c_str(), 0, grey.data(), 0, nullptr)) {
+  // Encoded in memory, then saved atomically (files::AtomicFile).
+  png_alloc_size_t size = 0;
+  std::string encoded;
+  if (png_image_write_to_memory(&image, nullptr, &size, 0, grey.data(), 0, nullptr)) {
+    encoded.resize(size);
+    if (!png_image_write_to_memory(&image, encoded.data(), &size, 0, grey.data(), 0, nullptr))
+      size = 0;
+  }
+  if (size == 0) {
     const std::string why = image.message;
     png_image_free(&image);
     throw std::runtime_error(name + ": cannot write PNG: " + why);
   }
+  encoded.resize(size);
+  files::write_file_atomically(path, encoded);
 }
 
 }  // namespace impasto::cracks

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -11,18 +10,14 @@
 #include <stdexcept>
 #include <vector>
 
+#include "impasto/files/confined_path.hpp"
+#include "impasto/files/input_file.hpp"
+#include "impasto/files/message_text.hpp"
+
 namespace impasto::flakes {
 
 namespace {
 constexpr double kDegree = std::numbers::pi / 180.0;
-
-std::string read_text(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw std::runtime_error(file.string() + ": cannot open");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 std::string trim(std::string_view s) {
   const auto first = s.find_first_not_of(" \t\r");
@@ -65,7 +60,7 @@ double parse_number(const std::string& text, const std::string& origin, int line
   const char* end = text.data() + text.size();
   const auto [ptr, ec] = std::from_chars(text.data(), end, value);
   if (ec != std::errc() || ptr != end || text.empty()) {
-    fail(origin, line, what + ": '" + text + "' is not a number");
+    fail(origin, line, what + ": " + files::excerpt(text) + " is not a number");
   }
   if (!std::isfinite(value)) fail(origin, line, what + ": must be finite");
   return value;
@@ -89,7 +84,7 @@ class KeyValues {
       if (key == "orientation_point" || key == "film_layer") {
         repeated_[key].push_back({value, line_number});
       } else if (!single_.emplace(key, Field{value, line_number}).second) {
-        fail(origin_, line_number, "'" + key + "' given twice");
+        fail(origin_, line_number, files::excerpt(key) + " given twice");
       }
     }
   }
@@ -100,7 +95,7 @@ class KeyValues {
   void check_known(const std::vector<std::string>& known) const {
     for (const auto& [key, field] : single_) {
       if (std::find(known.begin(), known.end(), key) == known.end()) {
-        fail(origin_, field.line, "unknown field '" + key + "'");
+        fail(origin_, field.line, "unknown field " + files::excerpt(key));
       }
     }
   }
@@ -179,9 +174,10 @@ OrientationDistribution parse_orientation(const KeyValues& kv) {
 FlakeCoating parse_coating(const KeyValues& kv, const std::filesystem::path& folder) {
   const Field& kind = kv.field("coating");
   if (kind.value == "metal") {
+    // The table lies beside the flake file, in its library: no path leads out of it.
     const Field& table = kv.field("nk_table");
-    const std::filesystem::path path = folder / table.value;
-    return load_nk_table(path);
+    return load_nk_table(files::confined_path(
+        folder, table.value, kv.origin() + ":" + std::to_string(table.line) + ": nk_table"));
   }
   if (kind.value != "thin_film")
     fail(kv.origin(), kind.line, "coating must be 'metal' or 'thin_film'");
@@ -241,7 +237,8 @@ FlakePaint parse_flake_paint(const std::string& text, const std::string& origin,
 }
 
 FlakePaint load_flake_paint(const std::filesystem::path& file) {
-  return parse_flake_paint(read_text(file), file.string(), file.parent_path());
+  return parse_flake_paint(files::read_whole_file(file, "flake paint file"), file.string(),
+                           file.parent_path());
 }
 
 FlakeCoating parse_nk_table(const std::string& text, const std::string& origin) {
@@ -288,7 +285,7 @@ FlakeCoating parse_nk_table(const std::string& text, const std::string& origin) 
 }
 
 FlakeCoating load_nk_table(const std::filesystem::path& file) {
-  return parse_nk_table(read_text(file), file.string());
+  return parse_nk_table(files::read_whole_file(file, "n,k table"), file.string());
 }
 
 }  // namespace impasto::flakes

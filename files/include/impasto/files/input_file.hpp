@@ -16,6 +16,7 @@ namespace impasto::files {
 inline constexpr std::uint64_t kMaxTextFileBytes = 64ull << 20;  // tables, CSVs, heads
 inline constexpr std::uint64_t kMaxRecordingBytes = 1ull << 30;  // stroke and HID text
 inline constexpr std::uint64_t kMaxPaintingBytes = 64ull << 30;  // .impasto
+inline constexpr std::uint64_t kMaxImageFileBytes = 1ull << 30;  // PNG crack maps, images
 
 class InputFile {
  public:
@@ -59,8 +60,9 @@ class InputFile {
   std::istream stream_{nullptr};
 };
 
-// The whole of a small file, at most max_bytes, checked as above.
-std::string read_text_file(const std::filesystem::path& path, const std::string& what,
-                           std::uint64_t max_bytes = kMaxTextFileBytes);
+// The whole of a small file (text, or a compressed image to decode), at most max_bytes,
+// checked as above.
+std::string read_whole_file(const std::filesystem::path& path, const std::string& what,
+                            std::uint64_t max_bytes = kMaxTextFileBytes);
 
 }  // namespace impasto::files

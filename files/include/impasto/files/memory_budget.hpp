@@ -16,6 +16,13 @@ std::uint64_t memory_budget_bytes();
 // when bytes exceed the budget.
 void check_allocation(const std::string& where, const std::string& what, std::uint64_t bytes);
 
+// A compressed file (PNG: deflate) declaring `decoded_bytes` of contents in `file_bytes`:
+// deflate expands at most 1032:1, so more is a crafted header, refused naming `what`; then
+// the memory budget. Throws std::runtime_error "<where>: <what> ...".
+inline constexpr std::uint64_t kMaxDeflateRatio = 1032;
+void check_decoded_size(const std::string& where, const std::string& what,
+                        std::uint64_t decoded_bytes, std::uint64_t file_bytes);
+
 // The message for a std::bad_alloc caught while allocating `what` (bytes when known, else 0).
 std::string out_of_memory_message(const std::string& where, const std::string& what,
                                   std::uint64_t bytes = 0);
