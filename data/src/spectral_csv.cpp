@@ -256,7 +256,7 @@ SpectralTable parse_spectral_csv(std::string_view text, const std::string& sourc
 }
 
 SpectralTable read_spectral_csv(const std::filesystem::path& path) {
-  return parse_spectral_csv(files::read_text_file(path, "spectral CSV"), path.string());
+  return parse_spectral_csv(files::read_whole_file(path, "spectral CSV"), path.string());
 }
 
 }  // namespace impasto::data
