@@ -307,14 +307,14 @@ void Stepper::transfer_to_brush(Brush& brush, int slot_count, std::size_t first_
   float* volume = brush.volume_mm().data();
   float* pigment = brush.pigment_mm().data();
   for (std::size_t c = first_cell; c < end_cell; ++c) {
-    if (xfer_[c] == 0.0f) continue;
+    if (brush_cell_[c] < 0) continue;  // (a touching cell that moved nothing changes nothing)
     const std::size_t bc = static_cast<std::size_t>(brush_cell_[c]);
     // (Never below zero: a painting file refuses negative paint. The deposit's bound keeps
-    // it a hair above; this only guards the last float rounding.)
-    volume[bc] = std::max(volume[bc] - xfer_[c], 0.0f);
+    // it a hair above; this only guards the last float rounding. Values, not branches.)
+    volume[bc] = greater(volume[bc] - xfer_[c], 0.0f);
     for (std::size_t k = 0; k < static_cast<std::size_t>(slot_count); ++k) {
       float& amount = pigment[k * brush_cells + bc];
-      amount = std::max(amount - xfer_pigment_[k * cells + c], 0.0f);
+      amount = greater(amount - xfer_pigment_[k * cells + c], 0.0f);
     }
   }
 }
@@ -359,57 +359,81 @@ double Stepper::max_step_seconds(const SimulationParams& params, double cell_mm)
   return params.squeeze_mm_s > 0.0 ? 0.5 * cell_mm / params.squeeze_mm_s : 1e300;
 }
 
-void Stepper::scatter(Canvas& canvas, int slot_count, const BeforeTileChange& before_change) {
+void Stepper::copy_rows_to_tiles(Canvas& canvas, int slot_count, const float* wet,
+                                 const float* pigment, int r0, int r1, int only_tile) const {
+  const Window& w = win_;
+  const std::size_t n = w.padded();
+  const int tx1 = tx0_ + tiles_across_ - 1;
+  for (int y = r0; y < r1; ++y) {
+    const int cy = w.y0 + y;
+    const int ty = cy / kTileSize;
+    for (int tx = tx0_; tx <= tx1; ++tx) {
+      const int index = canvas.tile_index(tx, ty);
+      if (only_tile >= 0 && index != only_tile) continue;
+      Tile* tile = canvas.tile_slot(index).get();
+      if (!tile) continue;  // (made afterwards if paint arrived, see scatter)
+      const int begin = std::max(w.x0, tx * kTileSize);
+      const int end = std::min(w.x0 + w.width, (tx + 1) * kTileSize);
+      const std::size_t local =
+          static_cast<std::size_t>((cy % kTileSize) * kTileSize + begin - tx * kTileSize);
+      const std::size_t src =
+          static_cast<std::size_t>(y + 1) * w.stride() + static_cast<std::size_t>(begin - w.x0 + 1);
+      const std::size_t len = static_cast<std::size_t>(end - begin);
+      std::copy_n(wet + src, len, tile->wet_volume_mm.data() + local);
+      for (int s = 0; s < slot_count; ++s)
+        std::copy_n(pigment + static_cast<std::size_t>(s) * n + src, len, tile->pigment(s) + local);
+    }
+  }
+}
+
+void Stepper::scatter(Canvas& canvas, int slot_count, const BeforeTileChange& before_change,
+                      bool squeezes) {
   const Window& w = win_;
   const std::size_t n = w.padded();
   const int tx1 = tx0_ + tiles_across_ - 1;
   const int ty1 = (w.y0 + w.height - 1) / kTileSize;
-  // Tiles are made (and every tile recorded for undo) before the parallel writes.
+  // Tiles that exist are recorded (for undo) and given every slot before the parallel writes.
+  missing_tiles_.clear();
   for (int ty = ty0_; ty <= ty1; ++ty)
     for (int tx = tx0_; tx <= tx1; ++tx) {
       const int index = canvas.tile_index(tx, ty);
       if (!canvas.tile(index)) {
-        // A tile that was never painted is made only if paint arrived in it.
-        const int bx0 = std::max(w.x0, tx * kTileSize);
-        const int bx1 = std::min(w.x0 + w.width, (tx + 1) * kTileSize);
-        const int by0 = std::max(w.y0, ty * kTileSize);
-        const int by1 = std::min(w.y0 + w.height, (ty + 1) * kTileSize);
-        bool has_paint = false;
-        for (int y = by0; y < by1 && !has_paint; ++y)
-          for (int x = bx0; x < bx1 && !has_paint; ++x) {
-            const std::size_t i =
-                static_cast<std::size_t>(y - w.y0 + 1) * w.stride() + (x - w.x0 + 1);
-            has_paint = new_wet_[i] != 0.0f;
-            for (int s = 0; s < slot_count && !has_paint; ++s)
-              has_paint = new_pigment_[static_cast<std::size_t>(s) * n + i] != 0.0f;
-          }
-        if (!has_paint) continue;
+        missing_tiles_.push_back(index);
+        continue;
       }
       before_change(index);
       canvas.ensure_tile(index, slot_count);
       canvas.mark_dirty(index);
     }
+  // The squeeze writes the step's result into the gathered grids, row by row, and each row
+  // goes to its tiles at once (one pass); without a squeeze the transfer's grids are it.
+  const float* wet = squeezes ? wet_.data() : new_wet_.data();
+  const float* pigment = squeezes ? pigment_.data() : new_pigment_.data();
   parallel_rows(w.height, w.width, [&](int r0, int r1) {
-    for (int y = r0; y < r1; ++y) {
-      const int cy = w.y0 + y;
-      const int ty = cy / kTileSize;
-      for (int tx = tx0_; tx <= tx1; ++tx) {
-        Tile* tile = canvas.tile_slot(canvas.tile_index(tx, ty)).get();
-        if (!tile) continue;
-        const int begin = std::max(w.x0, tx * kTileSize);
-        const int end = std::min(w.x0 + w.width, (tx + 1) * kTileSize);
-        const std::size_t local =
-            static_cast<std::size_t>((cy % kTileSize) * kTileSize + begin - tx * kTileSize);
-        const std::size_t src = static_cast<std::size_t>(y + 1) * w.stride() +
-                                static_cast<std::size_t>(begin - w.x0 + 1);
-        const std::size_t len = static_cast<std::size_t>(end - begin);
-        std::copy_n(new_wet_.data() + src, len, tile->wet_volume_mm.data() + local);
-        for (int s = 0; s < slot_count; ++s)
-          std::copy_n(new_pigment_.data() + static_cast<std::size_t>(s) * n + src, len,
-                      tile->pigment(s) + local);
-      }
-    }
+    if (squeezes) apply_squeeze_rows(slot_count, r0, r1);
+    copy_rows_to_tiles(canvas, slot_count, wet, pigment, r0, r1, -1);
   });
+  // A tile that was never painted is made only if paint arrived in it.
+  for (const int index : missing_tiles_) {
+    const int tx = index % canvas.tiles_x(), ty = index / canvas.tiles_x();
+    const int bx0 = std::max(w.x0, tx * kTileSize);
+    const int bx1 = std::min(w.x0 + w.width, (tx + 1) * kTileSize);
+    const int by0 = std::max(w.y0, ty * kTileSize);
+    const int by1 = std::min(w.y0 + w.height, (ty + 1) * kTileSize);
+    bool has_paint = false;
+    for (int y = by0; y < by1 && !has_paint; ++y)
+      for (int x = bx0; x < bx1 && !has_paint; ++x) {
+        const std::size_t i = static_cast<std::size_t>(y - w.y0 + 1) * w.stride() + (x - w.x0 + 1);
+        has_paint = wet[i] != 0.0f;
+        for (int s = 0; s < slot_count && !has_paint; ++s)
+          has_paint = pigment[static_cast<std::size_t>(s) * n + i] != 0.0f;
+      }
+    if (!has_paint) continue;
+    before_change(index);
+    canvas.ensure_tile(index, slot_count);
+    canvas.mark_dirty(index);
+    copy_rows_to_tiles(canvas, slot_count, wet, pigment, by0 - w.y0, by1 - w.y0, index);
+  }
 }
 
 bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const SimulationParams& params,
@@ -510,23 +534,20 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   }
 
   const int rows = win_.height, cols = win_.width;
-  // 1. Gather the window and find where the brush penetrates the paint surface.
+  // 1. Gather the window, find where the brush penetrates the paint surface, the velocity
+  // and the shares advection will move (each needs only its own row: one pass).
+  advection_.resize(cols, rows);
   parallel_rows(rows, cols, [&](int r0, int r1) {
     gather_rows(in, r0, r1);
     penetrate_rows(in, r0, r1);
+    velocity_rows(in, r0, r1);
+    advection_.prepare_rows(r0, r1, vx_.data(), vy_.data(), wet_.data(), in.min_film_mm);
   });
   int contacts = 0;
   for (const int count : row_contacts_) contacts += count;
   if (contacts == 0) return false;  // nothing touches: nothing changes
 
-  // 2. Velocity, and the shares advection will move.
-  advection_.resize(cols, rows);
-  parallel_rows(rows, cols, [&](int r0, int r1) {
-    velocity_rows(in, r0, r1);
-    advection_.prepare_rows(r0, r1, vx_.data(), vy_.data(), wet_.data(), in.min_film_mm);
-  });
-
-  // 3. Advect volume and every active pigment with the same shares, then the transfer.
+  // 2. Advect volume and every active pigment with the same shares, then the transfer.
   const std::size_t cells = static_cast<std::size_t>(cols) * rows;
   if (in.sharing_binds) share_brush_cells(cells, in.inv_deposit_share);
   from_.assign({wet_.data()});
@@ -540,7 +561,7 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
     advection_.apply_rows(from_.data(), to_.data(), static_cast<int>(from_.size()), r0, r1);
     if (transfers) transfer_rows(in, r0, r1);
   });
-  // 4. The brush gives what the canvas took, and the squeeze's faces. Canvas rows that share
+  // 3. The brush gives what the canvas took, and the squeeze's faces. Canvas rows that share
   // a brush cell lie less than a chunk apart, so chunks of one parity never write the same
   // brush cell: each set runs in parallel, and every brush cell's sum has one fixed order.
   const bool squeezes = in.gradient_scale > 0.0f;
@@ -554,18 +575,13 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
       if (squeezes) squeeze_rows(in, r0, r1);
     });
   }
-  // 5. The squeeze applied, into the scratch grids; they become the step's result.
-  if (squeezes) {
-    parallel_rows(rows, cols, [&](int r0, int r1) { apply_squeeze_rows(slot_count, r0, r1); });
-    std::swap(wet_, new_wet_);
-    std::swap(pigment_, new_pigment_);
-  }
   // Paint in the bristles flows toward the tips that gave theirs away: over every
   // kBrushFlowBatchMm travelled at once (the relaxation composes over distance).
   brush_flow_pending_mm_ += distance_mm;
   if (brush_flow_pending_mm_ >= kBrushFlowBatchMm) finish_stroke(brush, slot_count, params);
 
-  scatter(canvas, slot_count, before_change);
+  // 4. The squeeze applied, and the result written back to the tiles.
+  scatter(canvas, slot_count, before_change, squeezes);
   last_window_cells_ = cells;
   return true;
 }

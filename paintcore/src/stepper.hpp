@@ -1,8 +1,9 @@
 #pragma once
 // One IMPaSTo simulation step on the brush's window of canvas cells (Fig. 5):
-// gather the window from the tiles, penetration, velocity, advection, transfer, scatter.
-// Stages that need only their own row run fused in one row-parallel pass, so a step has
-// three parallel passes plus the scatter.
+// gather the window from the tiles, penetration, velocity, advection, transfer, squeeze,
+// scatter. Stages that need only their own rows run fused in one row-parallel pass, so a
+// step has four passes: gather to advection's shares; advection and transfer; the brush's
+// side and the squeeze's faces (in fixed row chunks); the squeeze and the scatter.
 #include <cstdint>
 #include <functional>
 #include <unordered_map>
@@ -83,7 +84,10 @@ class Stepper {
   void transfer_to_brush(Brush& brush, int slot_count, std::size_t first_cell,
                          std::size_t end_cell);
   void even_out_brush(Brush& brush, int slot_count, double share);
-  void scatter(Canvas& canvas, int slot_count, const BeforeTileChange& before_change);
+  void copy_rows_to_tiles(Canvas& canvas, int slot_count, const float* wet, const float* pigment,
+                          int r0, int r1, int only_tile) const;
+  void scatter(Canvas& canvas, int slot_count, const BeforeTileChange& before_change,
+               bool squeezes);
 
   Window win_;
   double brush_flow_pending_mm_ = 0.0;  // distance travelled since the bristles last evened out
@@ -111,6 +115,7 @@ class Stepper {
   std::vector<const float*> bases_;
   int tx0_ = 0, ty0_ = 0, tiles_across_ = 0;
   std::unordered_map<int, std::vector<float>> base_cache_;
+  std::vector<int> missing_tiles_;  // the window's tiles not made yet (see scatter)
 };
 
 }  // namespace impasto::paintcore
