@@ -7,6 +7,7 @@
 #include <iterator>
 #include <sstream>
 
+#include "recording_input.hpp"
 #include "text_fields.hpp"
 
 namespace impasto::input::hid {
@@ -167,9 +168,8 @@ HidRecording parse_hid_recording(std::istream& in, const std::string& source) {
 }
 
 HidRecording read_hid_recording(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputFormatError(path.string(), 0, "", "cannot open the file");
-  return parse_hid_recording(in, path.string());
+  const auto in = detail::open_recording(path, "HID recording");
+  return parse_hid_recording(in->stream(), path.string());
 }
 
 std::string recorder_event_line(const RecordedReport& report) {

@@ -5,6 +5,7 @@
 #include <ostream>
 #include <sstream>
 
+#include "recording_input.hpp"
 #include "stroke_record.hpp"
 #include "text_fields.hpp"
 
@@ -103,9 +104,8 @@ StrokeFile parse_strokes(std::istream& in, const std::string& source_name) {
 }
 
 StrokeFile read_stroke_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputFormatError(path.string(), 0, "", "cannot open the file");
-  return parse_strokes(in, path.string());
+  const auto in = detail::open_recording(path, "stroke file");
+  return parse_strokes(in->stream(), path.string());
 }
 
 std::string format_event(const StrokeEvent& event) {

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <numbers>
 
+#include "recording_input.hpp"
 #include "text_fields.hpp"
 
 namespace impasto::input {
@@ -159,10 +160,9 @@ StrokeFile parse_bdalab_svc(std::istream& in, const std::string& source_name,
 }
 
 StrokeFileKind detect_stroke_file_kind(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputFormatError(path.string(), 0, "", "cannot open the file");
+  const auto in = detail::open_recording(path, "stroke file");
   std::string first;
-  std::getline(in, first);
+  std::getline(in->stream(), first);
   if (first.rfind("impasto-strokes", 0) == 0) return StrokeFileKind::kNative;
   const std::string ext = path.extension().string();
   if (ext == ".dat") return StrokeFileKind::kMypaintDat;
@@ -185,10 +185,10 @@ StrokeFileKind detect_stroke_file_kind(const std::filesystem::path& path) {
 StrokeFile load_strokes_any(const std::filesystem::path& path, const ImportOptions& options) {
   const StrokeFileKind kind = detect_stroke_file_kind(path);
   if (kind == StrokeFileKind::kNative) return read_stroke_file(path);
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputFormatError(path.string(), 0, "", "cannot open the file");
-  if (kind == StrokeFileKind::kMypaintDat) return parse_mypaint_dat(in, path.string(), options);
-  return parse_bdalab_svc(in, path.string(), options);
+  const auto in = detail::open_recording(path, "stroke file");
+  if (kind == StrokeFileKind::kMypaintDat)
+    return parse_mypaint_dat(in->stream(), path.string(), options);
+  return parse_bdalab_svc(in->stream(), path.string(), options);
 }
 
 }  // namespace impasto::input

@@ -132,7 +132,9 @@ TEST(StrokeErrors, MissingFileIsNamed) {
     read_stroke_file("/nonexistent/dir/x.strokes");
     FAIL() << "no error";
   } catch (const InputFormatError& e) {
-    EXPECT_EQ(std::string(e.what()), "/nonexistent/dir/x.strokes: cannot open the file");
+    EXPECT_EQ(
+        std::string(e.what()),
+        "/nonexistent/dir/x.strokes: cannot open the stroke file (No such file or directory)");
   }
 }
 
