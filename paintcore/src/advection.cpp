@@ -14,12 +14,13 @@ namespace impasto::paintcore {
 namespace {
 
 // The shares one row of cells sends. Branch-free so that it vectorises.
-IMPASTO_SIMD_CLONES void prepare_row(int width, const float* __restrict vx, const float* __restrict vy,
-                 const float* __restrict volume, float min_film_mm, float* __restrict stay,
-                 float* __restrict east, float* __restrict west, float* __restrict south,
-                 float* __restrict north, float* __restrict south_east,
-                 float* __restrict south_west, float* __restrict north_east,
-                 float* __restrict north_west) {
+IMPASTO_SIMD_CLONES void prepare_row(int width, const float* __restrict vx,
+                                     const float* __restrict vy, const float* __restrict volume,
+                                     float min_film_mm, float* __restrict stay,
+                                     float* __restrict east, float* __restrict west,
+                                     float* __restrict south, float* __restrict north,
+                                     float* __restrict south_east, float* __restrict south_west,
+                                     float* __restrict north_east, float* __restrict north_west) {
   for (int x = 0; x < width; ++x) {
     const float ax = std::abs(vx[x]);
     const float ay = std::abs(vy[x]);
@@ -47,14 +48,58 @@ IMPASTO_SIMD_CLONES void prepare_row(int width, const float* __restrict vx, cons
   }
 }
 
+// The shares of a row whose velocities all point into one quadrant: across x (toward
+// sign_x), across y and diagonally; the same expressions as prepare_row's.
+IMPASTO_SIMD_CLONES void prepare_quadrant_row(int width, const float* __restrict vx,
+                                              const float* __restrict vy,
+                                              const float* __restrict volume, float min_film_mm,
+                                              float* __restrict stay, float* __restrict across_x,
+                                              float* __restrict across_y,
+                                              float* __restrict diagonal) {
+  for (int x = 0; x < width; ++x) {
+    const float ax = std::abs(vx[x]);
+    const float ay = std::abs(vy[x]);
+    const float leaving_share = ax + ay - ax * ay;
+    const float leaving = volume[x] * leaving_share;
+    const float room = volume[x] - min_film_mm;
+    const bool moves = leaving > 0.0f;
+    const float ratio = room / (moves ? leaving : 1.0f);
+    const float scale = moves ? std::min(std::max(ratio, 0.0f), 1.0f) : 0.0f;
+    const float px = ax * scale;
+    stay[x] = 1.0f - scale * leaving_share;
+    across_x[x] = px * (1.0f - ay);
+    across_y[x] = scale * ay * (1.0f - ax);
+    diagonal[x] = px * ay;
+  }
+}
+
+// One row of the gather for a quadrant: what stays, then what the neighbours behind the
+// motion send (in prepare_row's order of terms, less those that are 0).
+IMPASTO_SIMD_CLONES void gather_quadrant_row(int width, std::ptrdiff_t from_x,
+                                             std::ptrdiff_t from_y, const float* __restrict c,
+                                             float* __restrict o, const float* __restrict stay,
+                                             const float* __restrict across_x,
+                                             const float* __restrict across_y,
+                                             const float* __restrict diagonal) {
+  for (int x = 0; x < width; ++x) {
+    float sum = stay[x] * c[x];
+    sum += across_x[x + from_x] * c[x + from_x];
+    sum += across_y[x + from_y] * c[x + from_y];
+    sum += diagonal[x + from_x + from_y] * c[x + from_x + from_y];
+    o[x] = sum;
+  }
+}
+
 // One row of the gather: each cell sums the shares its neighbours send it, in a fixed order
 // of terms, so that the sum is the same on any thread.
-IMPASTO_SIMD_CLONES void gather_row(int width, std::ptrdiff_t s, const float* __restrict c, float* __restrict o,
-                const float* __restrict from_self, const float* __restrict from_w,
-                const float* __restrict from_e, const float* __restrict from_n,
-                const float* __restrict from_s, const float* __restrict from_nw,
-                const float* __restrict from_ne, const float* __restrict from_sw,
-                const float* __restrict from_se) {
+IMPASTO_SIMD_CLONES void gather_row(int width, std::ptrdiff_t s, const float* __restrict c,
+                                    float* __restrict o, const float* __restrict from_self,
+                                    const float* __restrict from_w, const float* __restrict from_e,
+                                    const float* __restrict from_n, const float* __restrict from_s,
+                                    const float* __restrict from_nw,
+                                    const float* __restrict from_ne,
+                                    const float* __restrict from_sw,
+                                    const float* __restrict from_se) {
   for (int x = 0; x < width; ++x) {
     float sum = from_self[x] * c[x];
     sum += from_w[x] * c[x - 1];
@@ -93,12 +138,26 @@ void Advection::resize(int width, int height) {
 
 void Advection::prepare_rows(int y0, int y1, const float* vx, const float* vy, const float* volume,
                              float min_film_mm) {
+  quadrant_x_ = quadrant_y_ = 0;
   const int stride = width_ + 2;
   for (int y = y0; y < y1; ++y) {
     const std::size_t i = static_cast<std::size_t>(y + 1) * stride + 1;
     prepare_row(width_, vx + i, vy + i, volume + i, min_film_mm, stay_.data() + i, east_.data() + i,
                 west_.data() + i, south_.data() + i, north_.data() + i, south_east_.data() + i,
                 south_west_.data() + i, north_east_.data() + i, north_west_.data() + i);
+  }
+}
+
+void Advection::prepare_quadrant_rows(int y0, int y1, int sign_x, int sign_y, const float* vx,
+                                      const float* vy, const float* volume, float min_film_mm) {
+  quadrant_x_ = sign_x < 0 ? -1 : 1;
+  quadrant_y_ = sign_y < 0 ? -1 : 1;
+  // The three shares live in the east, south and south-east grids whatever the quadrant.
+  const int stride = width_ + 2;
+  for (int y = y0; y < y1; ++y) {
+    const std::size_t i = static_cast<std::size_t>(y + 1) * stride + 1;
+    prepare_quadrant_row(width_, vx + i, vy + i, volume + i, min_film_mm, stay_.data() + i,
+                         east_.data() + i, south_.data() + i, south_east_.data() + i);
   }
 }
 
@@ -121,6 +180,17 @@ void Advection::apply_rows(const float* const* q, float* const* out, int count, 
                            int y1) const {
   const int width = width_;
   const std::ptrdiff_t s = width + 2;
+  if (quadrant_x_ != 0) {
+    // The neighbours behind the motion send: the one a column back, a row back, and both.
+    const std::ptrdiff_t from_x = -quadrant_x_, from_y = -quadrant_y_ * s;
+    for (int y = y0; y < y1; ++y) {
+      const std::ptrdiff_t row = (y + 1) * s + 1;
+      for (int k = 0; k < count; ++k)
+        gather_quadrant_row(width, from_x, from_y, q[k] + row, out[k] + row, stay_.data() + row,
+                            east_.data() + row, south_.data() + row, south_east_.data() + row);
+    }
+    return;
+  }
   for (int y = y0; y < y1; ++y) {
     const std::ptrdiff_t row = (y + 1) * s + 1;
     // Shares arriving from each neighbour: the neighbour to the west sends east, etc.

@@ -158,7 +158,6 @@ IMPASTO_SIMD_CLONES void transfer_row(int width, const FilmSplit& split,
   const float tip_film_mm = split.tip_film_mm, relax = split.relax;
   const float deposit_share = split.deposit_share, ground_fill = split.ground_fill;
   const float footing_mm = split.footing_mm;
-  const bool capped = split.capped;
   // Branch-free, as the direction varies from cell to cell.
   for (int x = 0; x < width; ++x) {
     const bool touches = cell[x] >= 0;
@@ -175,8 +174,7 @@ IMPASTO_SIMD_CLONES void transfer_row(int width, const FilmSplit& split,
     // deposit to deposit_share * a_b <= on_brush / k, so together they never take more than
     // it holds; dividing the height by k instead printed the sharing pattern into the paint.
     // (A hair below the bound: float rounding must never let the brush cell go negative.)
-    const float cap = capped ? share_cap[x] : tip_film_mm;
-    const float a_b = kBelowBound * lesser(lesser(on_brush[x], tip_film_mm), cap);
+    const float a_b = kBelowBound * lesser(lesser(on_brush[x], tip_film_mm), share_cap[x]);
     // The film split (transfer.hpp); exactly 0 where nothing touches.
     const float amount = brush_transfer_amount(a_c, a_b, relax, deposit_share,
                                                ground_fill * (footing_mm - ground[x]));

@@ -46,11 +46,12 @@ struct FilmSplit {
   float deposit_share = 0;  // the canvas's share of the joint film
   float ground_fill = 0;    // how much of a valley below the footing the paint fills
   float footing_mm = 0;     // the ground and dry paint around the brush's centre
-  bool capped = false;      // whether share_cap binds (brush cells shared, see Stepper::step)
 };
 
 // The paint each touching cell exchanges with its brush cell (xfer, > 0 onto the canvas) and
-// that as a share of its source's paint (ratio); new_wet gains it.
+// that as a share of its source's paint (ratio); new_wet gains it. share_cap bounds the
+// brush paint a cell may count on where several share its brush cell (on_brush itself where
+// sharing cannot bind: see Stepper::step).
 void transfer_row(int width, const FilmSplit& split, const std::int32_t* __restrict cell,
                   const float* __restrict on_brush, const float* __restrict share_cap,
                   const float* __restrict pen, const float* __restrict ground,

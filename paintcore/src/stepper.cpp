@@ -196,15 +196,15 @@ void Stepper::transfer_rows(const StepInputs& in, int r0, int r1) {
   const Window& w = win_;
   const std::size_t n = w.padded();
   const std::size_t cells = static_cast<std::size_t>(w.width) * w.height;
-  const FilmSplit split{in.tip_film_mm, in.relax,      in.deposit_share,
-                        in.ground_fill, in.footing_mm, in.sharing_binds};
+  const FilmSplit split{in.tip_film_mm, in.relax, in.deposit_share, in.ground_fill, in.footing_mm};
   for (int y = r0; y < r1; ++y) {
     const std::size_t row = static_cast<std::size_t>(y + 1) * w.stride() + 1;
     const std::size_t first = static_cast<std::size_t>(y) * w.width;
     transfer_row(w.width, split, brush_cell_.data() + first, brush_paint_at_.data() + first,
-                 brush_share_cap_.data() + first, pen_.data() + row, ground_.data() + row,
-                 wet_.data() + row, new_wet_.data() + row, xfer_.data() + first,
-                 xfer_ratio_.data() + first);
+                 // (Where the cap cannot bind the brush paint stands in: no extra stream.)
+                 (in.sharing_binds ? brush_share_cap_.data() : brush_paint_at_.data()) + first,
+                 pen_.data() + row, ground_.data() + row, wet_.data() + row, new_wet_.data() + row,
+                 xfer_.data() + first, xfer_ratio_.data() + first);
     for (int s = 0; s < in.slot_count; ++s) {
       const std::size_t k = static_cast<std::size_t>(s);
       transfer_pigment_row(w.width, xfer_.data() + first, xfer_ratio_.data() + first,
@@ -541,7 +541,10 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
     gather_rows(in, r0, r1);
     penetrate_rows(in, r0, r1);
     velocity_rows(in, r0, r1);
-    advection_.prepare_rows(r0, r1, vx_.data(), vy_.data(), wet_.data(), in.min_film_mm);
+    // (The drag moves every cell's paint the brush's way, or not at all: one quadrant.)
+    advection_.prepare_quadrant_rows(r0, r1, in.brush_vx < 0.0f ? -1 : 1,
+                                     in.brush_vy < 0.0f ? -1 : 1, vx_.data(), vy_.data(),
+                                     wet_.data(), in.min_film_mm);
   });
   int contacts = 0;
   for (const int count : row_contacts_) contacts += count;

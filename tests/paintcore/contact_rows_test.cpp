@@ -110,7 +110,7 @@ TEST(ContactRows, TransferStaysWithinTheFilmSplitsBounds) {
     new_wet[i] = wet[i];
   }
   const std::vector<float> before = new_wet;
-  const FilmSplit split{0.6f, 0.7f, 0.25f, 1.0f, 0.05f, true};
+  const FilmSplit split{0.6f, 0.7f, 0.25f, 1.0f, 0.05f};
   transfer_row(width, split, cell.data(), on_brush.data(), cap.data(), pen.data(), ground.data(),
                wet.data(), new_wet.data(), xfer.data(), ratio.data());
   for (int x = 0; x < width; ++x) {

@@ -32,6 +32,12 @@ class Advection {
   void resize(int width, int height);
   void prepare_rows(int y0, int y1, const float* vx, const float* vy, const float* volume,
                     float min_film_mm);
+  // The same for a field whose every velocity points into one quadrant: vx has the sign of
+  // sign_x or is 0, and vy of sign_y (a brush's drag, say). Only the three shares toward that
+  // quadrant can be non-zero, so only they are computed and gathered: the same results,
+  // bit for bit, at half the work. apply_rows then uses them until the next prepare.
+  void prepare_quadrant_rows(int y0, int y1, int sign_x, int sign_y, const float* vx,
+                             const float* vy, const float* volume, float min_film_mm);
   void apply_rows(const float* const* q, float* const* out, int count, int y0, int y1) const;
 
   int width() const { return width_; }
@@ -43,6 +49,7 @@ class Advection {
  private:
   int width_ = 0;
   int height_ = 0;
+  int quadrant_x_ = 0, quadrant_y_ = 0;  // the quadrant prepared, or 0, 0: all eight shares
   // Shares sent by each cell (padded grids): to itself and to its 8 neighbours.
   std::vector<float> stay_, east_, west_, south_, north_, south_east_, south_west_, north_east_,
       north_west_;
