@@ -5,6 +5,7 @@
 #include <impasto/cracks/craquelure.hpp>
 #include <impasto/cracks/gouffe.hpp>
 #include <impasto/cracks/painting_cracks.hpp>
+#include <impasto/files/atomic_file.hpp>
 
 #include <algorithm>
 #include <array>
@@ -180,12 +181,11 @@ struct TableArgs {
 void run_table(const TableArgs& args) {
   const CavityTable table = CavityTable::measure(CavityTableGrid{}, parse_cavity_light(args.light),
                                                  args.paths, args.seed);
-  std::ofstream out(args.out);
-  if (!out) throw std::runtime_error(args.out + ": cannot write the cavity table");
+  std::ostringstream out;
   out << "# impasto cracks table --light " << args.light << " --paths " << args.paths << " --seed "
       << args.seed << "\n";
   table.write_csv(out);
-  if (!out) throw std::runtime_error(args.out + ": write failed");
+  files::write_file_atomically(args.out, out.str());
 }
 
 const CommandRegistrar registrar("cracks", [](CLI::App& root) {

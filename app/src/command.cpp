@@ -6,6 +6,7 @@
 #include <map>
 
 #include "command_line.hpp"
+#include "impasto/files/memory_budget.hpp"
 
 namespace impasto::app {
 namespace {
@@ -49,6 +50,13 @@ int run_command_line(int argc, char** argv) {
     }
   } catch (const CLI::ParseError& e) {
     return root.exit(e);
+  } catch (const std::bad_alloc&) {
+    // Loaders and renderers name what they allocate; this is what escaped them.
+    std::cerr << "impasto: out of memory (an allocation was refused; files are checked against "
+                 "a budget of "
+              << files::describe_bytes(files::memory_budget_bytes())
+              << ", set by IMPASTO_MEMORY_BUDGET_MB)\n";
+    return 1;
   } catch (const std::exception& e) {
     std::cerr << "impasto: " << e.what() << "\n";
     return 1;

@@ -5,6 +5,7 @@
 #include <ostream>
 #include <sstream>
 
+#include "impasto/files/atomic_file.hpp"
 #include "recording_input.hpp"
 #include "stroke_record.hpp"
 #include "text_fields.hpp"
@@ -131,11 +132,7 @@ void format_strokes(std::ostream& out, const StrokeFile& file) {
 void write_stroke_file(const std::filesystem::path& path, const StrokeFile& file) {
   std::ostringstream text;
   format_strokes(text, file);
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) throw std::runtime_error(path.string() + ": cannot create the file");
-  out << text.str();
-  out.flush();
-  if (!out) throw std::runtime_error(path.string() + ": write failed");
+  files::write_file_atomically(path, text.str());
 }
 
 StrokeRecorder::StrokeRecorder(const std::filesystem::path& path) : file_(path) {

@@ -13,6 +13,7 @@
 #include "hasher.hpp"
 #include "impasto/files/atomic_file.hpp"
 #include "impasto/files/input_file.hpp"
+#include "impasto/files/memory_budget.hpp"
 #include "painting_impl.hpp"
 
 namespace impasto::paintcore {
@@ -567,11 +568,23 @@ std::unique_ptr<Painting::Impl> PaintingFile::load(const std::filesystem::path& 
 void Painting::save(const std::filesystem::path& file) const {
   if (impl_->in_stroke)
     throw std::runtime_error(file.string() + ": cannot save during a stroke (call end_stroke)");
-  PaintingFile::save(*impl_, file);
+  try {
+    PaintingFile::save(*impl_, file);
+  } catch (const std::bad_alloc&) {
+    throw std::runtime_error(
+        files::out_of_memory_message(file.string(), "the save's 1 MB write buffer"));
+  }
 }
 
 Painting Painting::load(const std::filesystem::path& file, int threads) {
-  return Painting(PaintingFile::load(file, threads));
+  // Declared sizes are checked against the file before anything is allocated; what is left
+  // (the canvas's tile table, the tiles a file really holds) can still exceed the machine.
+  try {
+    return Painting(PaintingFile::load(file, threads));
+  } catch (const std::bad_alloc&) {
+    throw std::runtime_error(
+        files::out_of_memory_message(file.string(), "the painting's canvas and tiles"));
+  }
 }
 
 }  // namespace impasto::paintcore

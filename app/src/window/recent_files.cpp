@@ -5,6 +5,8 @@
 #include <fstream>
 #include <string>
 
+#include "impasto/files/atomic_file.hpp"
+
 namespace impasto::app::window {
 namespace {
 
@@ -44,8 +46,13 @@ void remember_recent_file(const std::filesystem::path& file) {
   files.insert(files.begin(), absolute);
   if (files.size() > kMaxRecent) files.resize(kMaxRecent);
   std::filesystem::create_directories(list.parent_path(), error);
-  std::ofstream out(list);
-  for (const auto& f : files) out << f.string() << "\n";
+  std::string text;
+  for (const auto& f : files) text += f.string() + "\n";
+  try {
+    impasto::files::write_file_atomically(list, text);
+  } catch (const std::runtime_error&) {
+    // The list is a convenience: a read-only or full home keeps the old one.
+  }
 }
 
 }  // namespace impasto::app::window

@@ -11,6 +11,7 @@
 
 #include "impasto/cracks/monte_carlo.hpp"
 #include "impasto/data/data_dir.hpp"
+#include "impasto/files/input_file.hpp"
 
 namespace impasto::cracks {
 namespace {
@@ -111,8 +112,8 @@ void CavityTable::write_csv(std::ostream& out) const {
 }
 
 CavityTable CavityTable::read_csv(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path.string() + ": cannot open the cavity table");
+  files::InputFile file(path, "cavity table", files::kMaxTextFileBytes);
+  std::istream& in = file.stream();
   CavityTable table;
   std::string line;
   int line_no = 0;
