@@ -98,8 +98,10 @@ std::optional<VendorPenFormat> TabletModel::vendor_format() const {
   VendorPenFormat f;
   switch (protocol) {
     case ModelProtocol::kHid:
-    case ModelProtocol::kWacomVendorPage:
       return std::nullopt;
+    case ModelProtocol::kWacomVendorPage:
+      f.protocol = VendorProtocol::kWacomIntuosV2;  // for a descriptor that lacks the pen
+      break;
     case ModelProtocol::kUcLogic: {
       f.protocol = VendorProtocol::kUcLogicV1;
       for (const InitStep& s : init) {

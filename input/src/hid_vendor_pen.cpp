@@ -46,6 +46,8 @@ const char* vendor_protocol_name(VendorProtocol protocol) {
       return "XP-Pen";
     case VendorProtocol::kVeikkV1:
       return "Veikk v1";
+    case VendorProtocol::kWacomIntuosV2:
+      return "Wacom Intuos V2";
   }
   return "unknown";
 }
@@ -104,6 +106,8 @@ std::uint8_t VendorPenFormat::report_id() const {
       return 0x02;
     case VendorProtocol::kVeikkV1:
       return 0x09;
+    case VendorProtocol::kWacomIntuosV2:
+      return 0x10;
   }
   return 0;
 }
@@ -179,6 +183,19 @@ std::optional<paintcore::PenSample> decode_vendor_pen_report(const VendorPenForm
       // Its barrel buttons are bits 1 and 2, its tip is pressure: bit 0 is not sent.
       flags = static_cast<std::uint8_t>(flags & 0x06);
       break;
+    case VendorProtocol::kWacomIntuosV2:
+      // 10 flags (tip 0x01, barrels 0x02 0x04, eraser 0x10, in range 0x20), x and y 24-bit,
+      // pressure 16-bit, tilt x and y signed bytes.
+      if (r.size() < 12) return std::nullopt;
+      in_range = (flags & 0x21) != 0;  // a tip down is in range
+      x = le24(r, 2);
+      y = le24(r, 5);
+      pressure = le16(r, 8);
+      if (format.tilt) {
+        tilt_x = signed_byte(r[10]);
+        tilt_y = signed_byte(r[11]);
+      }
+      break;
   }
   paintcore::PenSample s;
   s.time_s = time_s;
@@ -198,6 +215,9 @@ std::optional<paintcore::PenSample> decode_vendor_pen_report(const VendorPenForm
   if (flags & 0x02) buttons |= paintcore::kPenBarrel1;
   if (flags & 0x04) buttons |= paintcore::kPenBarrel2;
   if (format.protocol == VendorProtocol::kXpPen && (flags & 0x08)) buttons |= paintcore::kPenEraser;
+  if (format.protocol == VendorProtocol::kWacomIntuosV2 && (flags & 0x10)) {
+    buttons |= paintcore::kPenEraser;
+  }
   s.buttons = buttons;
   return s;
 }

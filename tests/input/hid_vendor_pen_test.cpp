@@ -298,6 +298,38 @@ TEST(WacomVendorPage, IntuosSGen3DecodesThroughTheMappedUsages) {
   EXPECT_EQ(s->buttons, paintcore::kPenTip | paintcore::kPenBarrel1 | paintcore::kPenInRange);
 }
 
+// Wacom's Intuos V2 reports, read by fixed offsets (OpenTabletDriver's layout) for a tablet
+// whose descriptor does not describe its pen, agree with what the Intuos S's own descriptor
+// says of the same bytes.
+TEST(WacomIntuosV2, AgreesWithTheIntuosSDescriptor) {
+  const DescriptorFile d =
+      read_descriptor_file(kFiles + "wacom_intuos_s_3rd_gen__056A_0374__000A.rdesc.bin");
+  const TabletDecoder by_descriptor(d.bytes, 0x056A, 0x0374, InitExchange{}, models());
+  const TabletDecoder by_offsets(Bytes{}, 0x056A, 0x0374, InitExchange{}, models());
+  ASSERT_TRUE(by_offsets.vendor_format().has_value());
+  EXPECT_EQ(by_offsets.vendor_format()->protocol, VendorProtocol::kWacomIntuosV2);
+  std::uint32_t state = 12345;
+  const auto next = [&] { return state = state * 1103515245u + 12345u; };
+  for (int i = 0; i < 200; ++i) {
+    Bytes r(27, 0);
+    r[0] = 16;
+    r[1] = static_cast<std::uint8_t>((next() >> 8) & 0x27);  // tip, barrels, in range
+    const std::uint32_t x = (next() >> 8) % 15201, y = (next() >> 8) % 9501;
+    const std::uint32_t p = (next() >> 8) % 4096;
+    r[2] = x & 0xFF, r[3] = (x >> 8) & 0xFF, r[4] = x >> 16;
+    r[5] = y & 0xFF, r[6] = (y >> 8) & 0xFF, r[7] = y >> 16;
+    r[8] = p & 0xFF, r[9] = p >> 8;
+    const auto a = by_descriptor.decode(r, 0.0);
+    const auto b = by_offsets.decode(r, 0.0);
+    ASSERT_TRUE(a.has_value() && b.has_value());
+    EXPECT_NEAR(a->x_mm, b->x_mm, 1e-9);
+    EXPECT_NEAR(a->y_mm, b->y_mm, 1e-9);
+    if (!(r[1] & 0x20) && !(r[1] & 0x01)) continue;  // out of range: nothing else is kept
+    EXPECT_FLOAT_EQ(a->pressure, b->pressure);
+    EXPECT_EQ(a->buttons, b->buttons) << int{r[1]};
+  }
+}
+
 TEST(WacomVendorPage, EquivalentUsages) {
   EXPECT_EQ(wacom_equivalent_usage(0xFF0D0130), usage::kX);
   EXPECT_EQ(wacom_equivalent_usage(0xFF0D0030), usage::kTipPressure);
