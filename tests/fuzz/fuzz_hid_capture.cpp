@@ -50,7 +50,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   for (const hid::InitExchange& answer : {init}) {
     const auto params = hid::uclogic_params(answer);
     for (hid::VendorProtocol p : {hid::VendorProtocol::kUcLogicV1, hid::VendorProtocol::kUcLogicV2,
-                                  hid::VendorProtocol::kXpPen, hid::VendorProtocol::kVeikkV1}) {
+                                  hid::VendorProtocol::kXpPen, hid::VendorProtocol::kVeikkV1,
+                                  hid::VendorProtocol::kWacomIntuosV2}) {
       hid::VendorPenFormat f = params ? hid::uclogic_format(*params) : hid::VendorPenFormat{};
       f.protocol = p;
       if (!params) f.max_x = 1000, f.max_y = 1000, f.max_pressure = 1023;
