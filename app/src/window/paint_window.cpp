@@ -190,6 +190,7 @@ class PaintWindow {
   unsigned preview_texture_ = 0;
   int preview_w_ = 0, preview_h_ = 0;
   double last_input_s_ = 0.0, last_autosave_s_ = 0.0;
+  std::string recording_failure_;  // the first failure of any recording in this window's life
 };
 
 PaintWindow::PaintWindow(const PaintOptions& options) : options_(options) {
@@ -775,16 +776,17 @@ void PaintWindow::run() {
       std::cout << "wrote " << options_.screenshot->string() << "\n";
     }
     maybe_autosave();
+    if (recording_failure_.empty()) recording_failure_ = worker_->stats().recording_error;
     if (options_.exit_after && screenshot_done && worker_->idle()) break;
   }
   report_latency();
   // Closed as the user chose: nothing to recover. A crash never gets here.
   worker_->wait_idle();
-  const std::string recording_error = worker_->stats().recording_error;
+  if (recording_failure_.empty()) recording_failure_ = worker_->stats().recording_error;
   worker_.reset();  // syncs and closes the recording
   end_session();
   // A session that could not be recorded fails the command, so scripts notice.
-  if (!recording_error.empty()) throw std::runtime_error(recording_error);
+  if (!recording_failure_.empty()) throw std::runtime_error(recording_failure_);
 }
 
 // The session's input latency, for measuring it (docs/window.md).
