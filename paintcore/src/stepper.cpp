@@ -27,6 +27,10 @@ void zero_border(float* grid, int width, int height) {
   }
 }
 
+IMPASTO_SIMD_CLONES void clamp_at_zero(float* __restrict amount, std::size_t count) {
+  for (std::size_t i = 0; i < count; ++i) amount[i] = greater(amount[i], 0.0f);
+}
+
 }  // namespace
 
 void Stepper::resize(int slot_count, std::size_t brush_cells) {
@@ -301,22 +305,30 @@ void Stepper::share_brush_cells(std::size_t cells, float inv_deposit_share) {
 
 void Stepper::transfer_to_brush(Brush& brush, int slot_count, std::size_t first_cell,
                                 std::size_t end_cell) {
-  // In canvas order: exactly what each canvas cell gained, its brush cell lost.
+  // In canvas order: exactly what each canvas cell gained, its brush cell lost. (No clamp
+  // here: clamp_brush follows, once per brush cell.)
   const std::size_t cells = static_cast<std::size_t>(win_.width) * win_.height;
   const std::size_t brush_cells = brush.cell_count();
   float* volume = brush.volume_mm().data();
   float* pigment = brush.pigment_mm().data();
+  const std::int32_t* brush_cell = brush_cell_.data();
+  const float* xfer = xfer_.data();
+  const float* xfer_pigment = xfer_pigment_.data();
   for (std::size_t c = first_cell; c < end_cell; ++c) {
-    if (brush_cell_[c] < 0) continue;  // (a touching cell that moved nothing changes nothing)
-    const std::size_t bc = static_cast<std::size_t>(brush_cell_[c]);
-    // (Never below zero: a painting file refuses negative paint. The deposit's bound keeps
-    // it a hair above; this only guards the last float rounding. Values, not branches.)
-    volume[bc] = greater(volume[bc] - xfer_[c], 0.0f);
-    for (std::size_t k = 0; k < static_cast<std::size_t>(slot_count); ++k) {
-      float& amount = pigment[k * brush_cells + bc];
-      amount = greater(amount - xfer_pigment_[k * cells + c], 0.0f);
-    }
+    if (brush_cell[c] < 0) continue;  // (a touching cell that moved nothing changes nothing)
+    const auto bc = static_cast<std::size_t>(brush_cell[c]);
+    volume[bc] -= xfer[c];
+    for (std::size_t k = 0; k < static_cast<std::size_t>(slot_count); ++k)
+      pigment[k * brush_cells + bc] -= xfer_pigment[k * cells + c];
   }
+}
+
+void Stepper::clamp_brush(Brush& brush, int slot_count) {
+  // Never below zero: a painting file refuses negative paint. The deposit's bound keeps each
+  // brush cell a hair above; this only guards the last float rounding.
+  clamp_at_zero(brush.volume_mm().data(), brush.cell_count());
+  clamp_at_zero(brush.pigment_mm().data(),
+                brush.cell_count() * static_cast<std::size_t>(slot_count));
 }
 
 void Stepper::even_out_brush(Brush& brush, int slot_count, double share) {
@@ -577,6 +589,7 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
                           static_cast<std::size_t>(r1) * cols);
       if (squeezes) squeeze_rows(in, r0, r1);
     });
+    if (transfers) clamp_brush(brush, slot_count);
   }
   // Paint in the bristles flows toward the tips that gave theirs away: over every
   // kBrushFlowBatchMm travelled at once (the relaxation composes over distance).
