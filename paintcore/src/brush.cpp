@@ -66,6 +66,13 @@ Brush::Brush(BrushHead head, BrushSettings settings, double cell_mm, int slot_co
       padded_footprint_mm_[p] = footprint_mm_[k];
       padded_coverage_[p] = covers_[k] ? 1.0f : 0.0f;
     }
+  padded_footprint_mm_t_.resize(padded * padded);
+  padded_coverage_t_.resize(padded * padded);
+  for (std::size_t j = 0; j < padded; ++j)
+    for (std::size_t i = 0; i < padded; ++i) {
+      padded_footprint_mm_t_[i * padded + j] = padded_footprint_mm_[j * padded + i];
+      padded_coverage_t_[i * padded + j] = padded_coverage_[j * padded + i];
+    }
   volume_mm_.assign(cell_count(), 0.0f);
   ensure_slots(slot_count);
 }

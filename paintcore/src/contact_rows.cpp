@@ -106,15 +106,15 @@ IMPASTO_SIMD_CLONES int penetrate_aligned_row(int width, const HeadRow& head, bo
   // nearest line (the padding's lines cover nothing).
   const int s0 = static_cast<int>(s), s_near = static_cast<int>(s + 0.5f);
   const float fs = s - static_cast<float>(s0);
-  // Grid index of (t = k, s = line): rows are u, columns v.
-  const std::ptrdiff_t t_stride = along_v ? padded : 1, s_stride = along_v ? 1 : padded;
+  // Line s of the grids as the row walks them: a row of the grids, or of their transposes.
+  const float* coverage = along_v ? head.coverage_transposed : head.coverage;
+  const float* footprint = along_v ? head.footprint_transposed : head.footprint;
+  const float* coverage_below = coverage + static_cast<std::ptrdiff_t>(s0) * padded;
+  const float* footprint_below = footprint + static_cast<std::ptrdiff_t>(s0) * padded;
   float coverage_line[kMaxBrushCells + 2], footprint_line[kMaxBrushCells + 2];
-  float nearest_line[kMaxBrushCells + 2];
   for (int k = 0; k < padded; ++k) {
-    const std::ptrdiff_t i = k * t_stride + s0 * s_stride;
-    coverage_line[k] = (1.0f - fs) * head.coverage[i] + fs * head.coverage[i + s_stride];
-    footprint_line[k] = (1.0f - fs) * head.footprint[i] + fs * head.footprint[i + s_stride];
-    nearest_line[k] = head.coverage[k * t_stride + s_near * s_stride];
+    coverage_line[k] = (1.0f - fs) * coverage_below[k] + fs * coverage_below[k + padded];
+    footprint_line[k] = (1.0f - fs) * footprint_below[k] + fs * footprint_below[k + padded];
   }
   // The brush cell (unpadded) at padded line position k is first_cell + k * cell_step.
   const std::int32_t cell_step = along_v ? n : 1;
@@ -122,7 +122,7 @@ IMPASTO_SIMD_CLONES int penetrate_aligned_row(int width, const HeadRow& head, bo
   const float* brush_paint = head.paint;
   const float* blended_coverage = coverage_line;
   const float* blended_footprint = footprint_line;
-  const float* nearest_coverage = nearest_line;
+  const float* nearest_coverage = coverage + static_cast<std::ptrdiff_t>(s_near) * padded;
   int contacts = 0;
   for (int x = 0; x < width; ++x) {
     const float t_raw = t0 + static_cast<float>(x) * step_t;

@@ -17,6 +17,9 @@ struct HeadRow {
   float step_u = 0, step_v = 0;  // and their change per canvas cell
   float tip_mm = 0;              // height of the brush tip
   bool lift_off = false;         // the brush leaves the paint: every covered cell touches
+  // The two grids column-major, for the aligned kernel's quarter turn.
+  const float* coverage_transposed = nullptr;
+  const float* footprint_transposed = nullptr;
 };
 
 // Writes, per canvas cell of the row: how deep the head presses (pen), the brush cell it

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <tbb/parallel_for.h>
+
 #include "contact_rows.hpp"
 #include "impasto/paintcore/transfer.hpp"
 #include "parallel_rows.hpp"
@@ -135,6 +137,8 @@ void Stepper::penetrate_rows(const StepInputs& in, int r0, int r1) {
   head.step_v = static_cast<float>(in.placement.to_brush[2]);
   head.tip_mm = in.tip_mm;
   head.lift_off = in.lift_off;
+  head.coverage_transposed = in.brush->padded_coverage_transposed().data();
+  head.footprint_transposed = in.brush->padded_footprint_mm_transposed().data();
   // A head square to the canvas rows, to a thousandth of a cell across the window (a head
   // settled on the travel's heading), takes the aligned kernel, at the row's middle: the
   // bilinear weights change by less than that.
@@ -355,9 +359,11 @@ void Stepper::even_out_brush(Brush& brush, int slot_count, double share) {
       }
     amount[fullest] = static_cast<float>(amount[fullest] + (total - after));
   };
-  even_out(brush.volume_mm().data());
-  for (int s = 0; s < slot_count; ++s)
-    even_out(brush.pigment_mm().data() + static_cast<std::size_t>(s) * cells);
+  // Volume and each pigment are independent: one task each.
+  tbb::parallel_for(0, slot_count + 1, [&](int k) {
+    even_out(k == 0 ? brush.volume_mm().data()
+                    : brush.pigment_mm().data() + static_cast<std::size_t>(k - 1) * cells);
+  });
 }
 
 void Stepper::finish_stroke(Brush& brush, int slot_count, const SimulationParams& params) {

@@ -13,7 +13,7 @@ namespace {
 
 struct TestHead {
   int n = 12;
-  std::vector<float> coverage, footprint, paint;
+  std::vector<float> coverage, footprint, paint, coverage_t, footprint_t;
   explicit TestHead(unsigned seed) {
     std::mt19937 random(seed);
     std::uniform_real_distribution<float> unit(0.0f, 1.0f);
@@ -28,10 +28,21 @@ struct TestHead {
         footprint[p] = 0.3f * unit(random);
       }
     for (float& h : paint) h = unit(random) < 0.2f ? 0.0f : 0.5f * unit(random);
+    coverage_t.resize(coverage.size());
+    footprint_t.resize(coverage.size());
+    for (int j = 0; j < padded; ++j)
+      for (int i = 0; i < padded; ++i) {
+        coverage_t[static_cast<std::size_t>(i * padded + j)] =
+            coverage[static_cast<std::size_t>(j * padded + i)];
+        footprint_t[static_cast<std::size_t>(i * padded + j)] =
+            footprint[static_cast<std::size_t>(j * padded + i)];
+      }
   }
   HeadRow row(float u0, float v0, float step_u, float step_v) const {
     HeadRow h{coverage.data(), footprint.data(), paint.data(), n};
     h.u0 = u0, h.v0 = v0, h.step_u = step_u, h.step_v = step_v, h.tip_mm = 0.1f;
+    h.coverage_transposed = coverage_t.data();
+    h.footprint_transposed = footprint_t.data();
     return h;
   }
 };

@@ -41,6 +41,12 @@ class Brush {
   // height and 0 there), (N + 2)^2 row-major: interpolation between cells needs no checks.
   const std::vector<float>& padded_footprint_mm() const { return padded_footprint_mm_; }
   const std::vector<float>& padded_coverage() const { return padded_coverage_; }
+  // The same grids transposed (column-major): a canvas row crossing a head turned a quarter
+  // walks them contiguously.
+  const std::vector<float>& padded_footprint_mm_transposed() const {
+    return padded_footprint_mm_t_;
+  }
+  const std::vector<float>& padded_coverage_transposed() const { return padded_coverage_t_; }
   std::size_t covered_cells() const { return covered_; }
   // Penetration depth (mm) below the paint surface at pressure 1; softer heads sink deeper.
   double max_depth_mm() const;
@@ -68,6 +74,7 @@ class Brush {
   std::vector<std::uint8_t> covers_;
   float rim_mm_ = 0.0f;
   std::vector<float> padded_footprint_mm_, padded_coverage_;
+  std::vector<float> padded_footprint_mm_t_, padded_coverage_t_;
   std::vector<float> volume_mm_;
   std::vector<float> pigment_mm_;
   PaintBody body_ = kDefaultPaintBody;
