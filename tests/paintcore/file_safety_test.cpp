@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <csignal>
@@ -68,6 +70,32 @@ TEST_F(FileSafetyTest, AFullDiskDuringASaveKeepsTheOldPainting) {
   }
   std::signal(SIGXFSZ, old_handler);
   EXPECT_EQ(load_error(file), "no error");
+}
+
+// kill -9 at several points of a save loop: the file on disk is always one whole painting
+// (the old or the new), and the dead process's temp file is removed by the next save.
+TEST_F(FileSafetyTest, AKilledSaveLeavesAWholePaintingAndItsTempIsRemovedNextTime) {
+  const auto file = dir_ / "a.impasto";
+  const Painting old_painting = test::empty_painting();
+  const Painting new_painting = test::painted_tile();
+  old_painting.save(file);
+  const auto old_bytes = test::file_bytes(file);
+  const auto new_bytes = test::saved_bytes(new_painting);
+  for (int delay_us : {0, 300, 1000, 3000, 7000}) {
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+      for (;;) new_painting.save(file);  // until killed
+    }
+    ::usleep(static_cast<useconds_t>(delay_us));
+    ::kill(child, SIGKILL);
+    int status = 0;
+    ::waitpid(child, &status, 0);  // reaped: its pid no longer runs
+    const auto bytes = test::file_bytes(file);
+    EXPECT_TRUE(bytes == old_bytes || bytes == new_bytes) << "killed after " << delay_us << " us";
+    old_painting.save(file);
+    EXPECT_EQ(names(), std::vector<std::string>{"a.impasto"}) << "killed after " << delay_us;
+  }
 }
 
 TEST_F(FileSafetyTest, SavesThroughASymlinkAndKeepsTheMode) {
