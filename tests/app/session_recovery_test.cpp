@@ -131,6 +131,23 @@ TEST(SessionNames, SessionsStartedInTheSameSecondGetTheirOwnFiles) {
   EXPECT_EQ(recordings, 2);
 }
 
+TEST(SessionRegistry, OnlySessionsWithWorkInThemAreWorthRecovering) {
+  TempDir dir("impasto_registry_work");
+  SessionEntry entry;
+  entry.strokes = dir.path() / "s.strokes";
+  entry.autosave = dir.path() / "s.autosave.impasto";
+  {
+    input::StrokeRecorder recorder(entry.strokes);
+    recorder.record(input::CanvasEvent{64, 64, 150.0});
+    recorder.record(input::OriginEvent{});
+  }
+  EXPECT_FALSE(has_work_to_recover(entry)) << "a header alone";
+  { std::ofstream(entry.strokes, std::ios::app) << "wipe\n"; }
+  EXPECT_TRUE(has_work_to_recover(entry));
+  fs::remove(entry.strokes);
+  EXPECT_TRUE(has_work_to_recover(entry)) << "an unreadable recording is the user's to judge";
+}
+
 TEST(SessionRegistry, AnEntryIsOfferedOnlyOnceItsSessionIsGone) {
   TempDir dir("impasto_registry");
   const fs::path strokes = dir.path() / "s.strokes";
@@ -156,12 +173,12 @@ TEST(SessionRegistry, AnEntryIsOfferedOnlyOnceItsSessionIsGone) {
 }
 
 // A short session: a loaded brush and a few strokes on a small canvas.
-input::SampleEvent pen(double t, double x, double y, bool down) {
+input::SampleEvent pen(double t, double x, double y, bool down, float pressure = 0.8f) {
   paintcore::PenSample s;
   s.time_s = t;
   s.x_mm = x;
   s.y_mm = y;
-  s.pressure = down ? 0.8f : 0.0f;
+  s.pressure = down ? pressure : 0.0f;
   s.buttons = paintcore::kPenInRange | (down ? paintcore::kPenTip : 0u);
   return {s};
 }
@@ -175,12 +192,12 @@ std::vector<input::StrokeEvent> stroke(double y) {
 
 // Plays events onto `painting` as the window does and records them, with marks for saves.
 struct LiveRun {
-  paintcore::Painting painting{paintcore::CanvasSpec{80, 60, 254.0, 1}, 1};
+  paintcore::Painting painting;
   ReplayOptions options;
   SessionPlayer player{painting, options, false};
   input::StrokeFile recording;
 
-  LiveRun() {
+  explicit LiveRun(paintcore::CanvasSpec canvas = {80, 60, 254.0, 1}) : painting(canvas, 1) {
     options.threads = 1;
     const auto& spec = painting.canvas().spec();
     recording.events.push_back(input::CanvasEvent{spec.width_cells, spec.height_cells, spec.dpi});
@@ -246,6 +263,37 @@ TEST(Rebuild, AnUndoReachingBackPastASaveUsesAnEarlierBase) {
   const RebuiltSession rebuilt = rebuild_session(live.recording, options);
   EXPECT_EQ(rebuilt.painting.state_hash(), live.painting.state_hash());
   EXPECT_NE(rebuilt.base.find("start.impasto"), std::string::npos) << rebuilt.base;
+}
+
+// A save mark is only as good as the round trip: the file must load with the hash the mark
+// took from the live painting, whatever the session did (several pigments, wipes, paint left
+// on the brush, a brush change).
+// DISABLED: fails since 79c5b63 (painting file: "pigment beyond a cell's paint scaled back"):
+// the loader's repair_pigment zeroes the pigment of brush cells whose volume is below
+// FLT_MIN, which the simulation itself leaves after these strokes (brush pigment totals
+// differ in the last digits), so such a save's mark is passed over by rebuild_session.
+// Enable once save -> load keeps every state the simulation makes.
+TEST(Rebuild, DISABLED_ASavedPaintingLoadsWithTheHashItsMarkNames) {
+  TempDir dir("impasto_rebuild_hash");
+  LiveRun live(paintcore::CanvasSpec{240, 160, 254.0, 1});
+  live.play({input::BrushEvent{"round", 4.0, 0.5, {}}});
+  const char* pigments[] = {"Ultramarine Blue", "Pyrrole Red", "Titanium White"};
+  double t = 0.0;
+  for (int k = 0; k < 3; ++k) {
+    std::vector<input::StrokeEvent> events = {input::WipeEvent{},
+                                              input::LoadEvent{30.0, {{pigments[k], 1.0}}, {}}};
+    for (int i = 0; i <= 40; ++i, t += 0.01)
+      events.push_back(pen(t, 2 + 0.45 * i, 4 + 4 * k, i < 40, 0.7f));
+    live.play(events);
+  }
+  live.save(dir.path() / "p.impasto");
+  const paintcore::Painting loaded = paintcore::Painting::load(dir.path() / "p.impasto", 1);
+  EXPECT_EQ(loaded.canvas_totals().volume, live.painting.canvas_totals().volume);
+  EXPECT_EQ(loaded.canvas_totals().pigment, live.painting.canvas_totals().pigment);
+  EXPECT_EQ(loaded.brush_totals().pigment, live.painting.brush_totals().pigment);
+  EXPECT_EQ(loaded.loaded_totals().pigment, live.painting.loaded_totals().pigment);
+  EXPECT_EQ(loaded.wiped_totals().pigment, live.painting.wiped_totals().pigment);
+  EXPECT_EQ(loaded.state_hash(), live.painting.state_hash());
 }
 
 // Run as another user when root, for whom no folder is read-only.

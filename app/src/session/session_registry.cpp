@@ -4,6 +4,8 @@
 #include <sys/file.h>
 #include <unistd.h>
 
+#include <impasto/input/stroke_file.hpp>
+
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
@@ -158,6 +160,23 @@ std::vector<SessionEntry> unfinished_sessions(const std::filesystem::path& folde
   std::vector<SessionEntry> sessions;
   for (auto& [when, entry] : found) sessions.push_back(std::move(entry));
   return sessions;
+}
+
+bool has_work_to_recover(const SessionEntry& session) {
+  std::error_code error;
+  if (std::filesystem::exists(session.autosave, error)) return true;
+  try {
+    for (const auto& event : input::read_stroke_file(session.strokes).events) {
+      const bool header = std::holds_alternative<input::CanvasEvent>(event) ||
+                          std::holds_alternative<input::BrushEvent>(event) ||
+                          std::holds_alternative<input::OriginEvent>(event) ||
+                          std::holds_alternative<input::SavedEvent>(event);
+      if (!header) return true;
+    }
+    return false;
+  } catch (const std::exception&) {
+    return true;
+  }
 }
 
 void discard_session(const SessionEntry& session) {

@@ -47,6 +47,10 @@ class LiveSession {
 std::vector<SessionEntry> unfinished_sessions(const std::filesystem::path& folder,
                                               std::vector<std::string>* problems = nullptr);
 
+// Whether an unfinished session holds anything to recover: an autosave, or a recording with
+// more than its header (canvas, brush, where it began). An unreadable recording counts.
+bool has_work_to_recover(const SessionEntry& session);
+
 // Forgets an unfinished session: removes its entry and autosave (its recording stays).
 void discard_session(const SessionEntry& session);
 

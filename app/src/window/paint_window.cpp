@@ -17,8 +17,10 @@
 #include <impasto/render_gl/shaded_view_cache.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdlib>
 #include <ctime>
 #include <iostream>
@@ -49,6 +51,14 @@ namespace impasto::app::window {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// Set by SIGTERM, SIGINT and SIGHUP (a logout, Ctrl+C): the window closes at the next frame,
+// keeping unsaved work recoverable instead of asking.
+std::atomic<bool> g_terminate{false};
+
+extern "C" void request_termination(int) {
+  g_terminate.store(true);
+}
 
 double ms_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
@@ -386,7 +396,14 @@ void PaintWindow::start_session() {
   // Sessions that did not end cleanly are offered for recovery (not in scripted replays).
   if (!options_.replay) {
     try {
-      recoverable_ = unfinished_sessions(recovery_folder());
+      for (auto& entry : unfinished_sessions(recovery_folder())) {
+        // A session killed before anything was painted has nothing to offer.
+        if (has_work_to_recover(entry)) {
+          recoverable_.push_back(std::move(entry));
+        } else {
+          discard_session(entry);
+        }
+      }
     } catch (const std::exception&) {
       // no recovery folder: begin_session has said so
     }
@@ -751,7 +768,13 @@ void PaintWindow::draw_frame(bool take_screenshot) {
 void PaintWindow::run() {
   int frames_since_idle = 0;
   bool screenshot_done = !options_.screenshot;
+  for (int signal : {SIGTERM, SIGINT, SIGHUP}) std::signal(signal, request_termination);
+  bool terminated = false;
   while (!state_.quit) {
+    if (g_terminate.load()) {
+      terminated = true;
+      break;
+    }
     server_times_->scan();  // the waiting events' own times, before GLFW delivers them
     glfwPollEvents();
     if (glfwWindowShouldClose(window_)) {
@@ -782,9 +805,16 @@ void PaintWindow::run() {
   report_latency();
   // Closed as the user chose: nothing to recover. A crash never gets here.
   worker_->wait_idle();
+  const bool unsaved = worker_->stats().events_since_save > 0;
+  // Told to go with unsaved work: autosave it, and leave the session recoverable.
+  if (terminated && unsaved && live_session_) {
+    worker_->finish_stroke();
+    worker_->autosave(live_session_->entry().autosave);
+    worker_->wait_idle();
+  }
   if (recording_failure_.empty()) recording_failure_ = worker_->stats().recording_error;
   worker_.reset();  // syncs and closes the recording
-  end_session();
+  if (!(terminated && unsaved)) end_session();
   // A session that could not be recorded fails the command, so scripts notice.
   if (!recording_failure_.empty()) throw std::runtime_error(recording_failure_);
 }
