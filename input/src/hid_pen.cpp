@@ -109,6 +109,14 @@ std::vector<PenReportLayout> find_pen_layouts(const ReportDescriptor& d, Search 
                                               UsageMap map) {
   std::vector<PenReportLayout> layouts;
   const bool anywhere = search == Search::kAnyCollection;
+  // The input fields of each report ID, so that each report visits only its own.
+  std::vector<std::vector<std::size_t>> fields_of(256);
+  for (std::size_t i = 0; i < d.fields.size(); ++i) {
+    const ReportField& field = d.fields[i];
+    if (field.type == ReportType::kInput && !field.is_constant() && field.is_variable()) {
+      fields_of[field.report_id].push_back(i);
+    }
+  }
   for (const ReportInfo& report : d.reports) {
     if (report.type != ReportType::kInput) continue;
     PenReportLayout layout;
@@ -116,10 +124,8 @@ std::vector<PenReportLayout> find_pen_layouts(const ReportDescriptor& d, Search 
     layout.bytes = report.bytes(d.has_report_ids);
     layout.outside_pen_collection = anywhere;
     PenAxis buttons[3];
-    for (std::size_t i = 0; i < d.fields.size(); ++i) {
+    for (const std::size_t i : fields_of[report.report_id]) {
       const ReportField& field = d.fields[i];
-      if (field.type != ReportType::kInput || field.report_id != report.report_id) continue;
-      if (field.is_constant() || !field.is_variable()) continue;
       if (anywhere ? (in_touch_collection(d, field) || field.is_relative())
                    : !in_pen_collection(d, field, map)) {
         continue;
