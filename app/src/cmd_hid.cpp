@@ -1,5 +1,6 @@
 // impasto hid ...: pen tablets through USB HID. List the tablets on this machine, describe a
 // report descriptor, decode recorded reports to a table, record a live tablet.
+#include <impasto/files/input_file.hpp>
 #include <impasto/input/hid_capture.hpp>
 #include <impasto/input/hid_describe.hpp>
 #include <impasto/input/hid_device.hpp>
@@ -72,9 +73,7 @@ std::pair<std::uint16_t, std::uint16_t> parse_id(const std::string& text) {
 }
 
 hid::InitExchange read_strings(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error(path + ": cannot open");
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string text = files::read_whole_file(path, "HID capture", files::kMaxRecordingBytes);
   if (hid::detect_capture_format(text, false) == hid::CaptureFormat::kHidRecorder) {
     std::istringstream capture(text);
     return hid::parse_hid_recording(capture, path).init;

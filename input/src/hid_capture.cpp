@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 
+#include "recording_input.hpp"
 #include "text_fields.hpp"
 
 namespace impasto::input::hid {
@@ -123,9 +124,8 @@ bool is_text(std::string_view text) {
 }
 
 std::string read_all(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputFormatError(path.string(), 0, "", "cannot open the file");
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  const auto in = detail::open_recording(path, "HID capture");
+  return {std::istreambuf_iterator<char>(in->stream()), std::istreambuf_iterator<char>()};
 }
 
 std::string interface_list(const std::set<int>& interfaces) {

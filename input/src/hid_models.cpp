@@ -6,6 +6,7 @@
 #include <fstream>
 #include <mutex>
 
+#include "recording_input.hpp"
 #include "text_fields.hpp"
 
 namespace impasto::input::hid {
@@ -177,9 +178,8 @@ std::vector<TabletModel> parse_tablet_models(std::istream& in, const std::string
 }
 
 std::vector<TabletModel> load_tablet_models(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw InputFormatError(path.string(), 0, "", "cannot open the tablet model table");
-  return parse_tablet_models(in, path.string());
+  const auto in = detail::open_recording(path, "tablet model table");
+  return parse_tablet_models(in->stream(), path.string());
 }
 
 std::filesystem::path default_tablet_models_path() {
