@@ -141,13 +141,6 @@ IMPASTO_SIMD_CLONES int penetrate_aligned_row(int width, const HeadRow& head, bo
   return contacts;
 }
 
-IMPASTO_SIMD_CLONES void gather_brush_row(int width, const std::int32_t* __restrict cell,
-                                          const float* __restrict from, float* __restrict at) {
-  // (Cell 0 stands in for none, masked: amounts are finite.)
-  for (int x = 0; x < width; ++x)
-    at[x] = from[cell[x] < 0 ? 0 : cell[x]] * static_cast<float>(cell[x] >= 0);
-}
-
 IMPASTO_SIMD_CLONES void transfer_row(int width, const FilmSplit& split,
                                       const std::int32_t* __restrict cell,
                                       const float* __restrict on_brush,
@@ -187,13 +180,17 @@ IMPASTO_SIMD_CLONES void transfer_row(int width, const FilmSplit& split,
   }
 }
 
-IMPASTO_SIMD_CLONES void transfer_pigment_row(int width, const float* __restrict xfer,
+IMPASTO_SIMD_CLONES void transfer_pigment_row(int width, const std::int32_t* __restrict cell,
+                                              const float* __restrict xfer,
                                               const float* __restrict ratio,
-                                              const float* __restrict on_brush,
+                                              const float* __restrict brush_pigment,
                                               float* __restrict canvas_amount,
                                               float* __restrict moved) {
   for (int x = 0; x < width; ++x) {
-    const float source = xfer[x] > 0.0f ? on_brush[x] : canvas_amount[x];
+    // (Read for every cell, cell 0 standing in for none, and used only where paint went
+    // onto the canvas: the loop stays free of branches.)
+    const float on_brush = brush_pigment[cell[x] < 0 ? 0 : cell[x]];
+    const float source = xfer[x] > 0.0f ? on_brush : canvas_amount[x];
     moved[x] = source * ratio[x];  // signed like the paint; 0 where nothing moves
     canvas_amount[x] += moved[x];
   }

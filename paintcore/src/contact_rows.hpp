@@ -39,10 +39,6 @@ int penetrate_aligned_row(int width, const HeadRow& head, bool along_v,
                           float* __restrict pen, std::int32_t* __restrict cell,
                           float* __restrict weight, float* __restrict on_brush);
 
-// at[x] = from[cell[x]], or 0 where cell[x] < 0.
-void gather_brush_row(int width, const std::int32_t* __restrict cell, const float* __restrict from,
-                      float* __restrict at);
-
 struct FilmSplit {
   float tip_film_mm = 0;    // most paint a brush cell's tips present to the canvas
   float relax = 0;          // how far this step goes toward the split (transfer.hpp)
@@ -61,10 +57,12 @@ void transfer_row(int width, const FilmSplit& split, const std::int32_t* __restr
                   const float* __restrict wet, float* __restrict new_wet, float* __restrict xfer,
                   float* __restrict ratio);
 
-// One pigment's share of the exchange: from the brush where paint went onto the canvas, from
-// the canvas where it came off; canvas_amount gains it and moved records it.
-void transfer_pigment_row(int width, const float* __restrict xfer, const float* __restrict ratio,
-                          const float* __restrict on_brush, float* __restrict canvas_amount,
+// One pigment's share of the exchange: from the brush cell (brush_pigment is that pigment's
+// grid on the brush) where paint went onto the canvas, from the canvas where it came off;
+// canvas_amount gains it and moved records it.
+void transfer_pigment_row(int width, const std::int32_t* __restrict cell,
+                          const float* __restrict xfer, const float* __restrict ratio,
+                          const float* __restrict brush_pigment, float* __restrict canvas_amount,
                           float* __restrict moved);
 
 }  // namespace impasto::paintcore

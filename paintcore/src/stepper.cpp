@@ -46,7 +46,6 @@ void Stepper::resize(int slot_count, std::size_t brush_cells) {
   if (new_pigment_.size() < n * slots) new_pigment_.resize(n * slots);
   if (brush_cell_.size() < cells) brush_cell_.resize(cells);
   if (brush_paint_at_.size() < cells) brush_paint_at_.resize(cells);
-  if (brush_pigment_at_.size() < cells * slots) brush_pigment_at_.resize(cells * slots);
   if (brush_share_cap_.size() < cells) brush_share_cap_.resize(cells);
   if (xfer_.size() < cells) xfer_.resize(cells);
   if (contact_weight_.size() < cells) contact_weight_.resize(cells);
@@ -128,8 +127,6 @@ IMPASTO_SIMD_CLONES void Stepper::gather_rows(const StepInputs& in, int r0, int 
 
 void Stepper::penetrate_rows(const StepInputs& in, int r0, int r1) {
   const Window& w = win_;
-  const std::size_t cells = static_cast<std::size_t>(w.width) * w.height;
-  const std::size_t brush_cells = in.brush->cell_count();
   HeadRow head{in.brush->padded_coverage().data(), in.brush->padded_footprint_mm().data(),
                in.brush->volume_mm().data(), in.brush->cells_across()};
   // Brush coordinates are affine in x: from the row's first cell centre, in steps.
@@ -163,14 +160,6 @@ void Stepper::penetrate_rows(const StepInputs& in, int r0, int r1) {
         along_u || along_v ? penetrate_aligned_row(w.width, head, along_v, ground, wet, pen, cell,
                                                    weight, on_brush)
                            : penetrate_row(w.width, head, ground, wet, pen, cell, weight, on_brush);
-    // The brush's pigments at each touching cell, read now: the transfer then needs no
-    // gathers, and rows may update the brush while others still read these copies.
-    for (int s = 0; s < in.slot_count; ++s) {
-      const std::size_t k = static_cast<std::size_t>(s);
-      gather_brush_row(w.width, brush_cell_.data() + first,
-                       in.brush->pigment_mm().data() + k * brush_cells,
-                       brush_pigment_at_.data() + k * cells + first);
-    }
   }
 }
 
@@ -205,6 +194,8 @@ void Stepper::transfer_rows(const StepInputs& in, int r0, int r1) {
   const std::size_t n = w.padded();
   const std::size_t cells = static_cast<std::size_t>(w.width) * w.height;
   const FilmSplit split{in.tip_film_mm, in.relax, in.deposit_share, in.ground_fill, in.footing_mm};
+  const float* brush_pigment = in.brush->pigment_mm().data();
+  const std::size_t brush_cells = in.brush->cell_count();
   for (int y = r0; y < r1; ++y) {
     const std::size_t row = static_cast<std::size_t>(y + 1) * w.stride() + 1;
     const std::size_t first = static_cast<std::size_t>(y) * w.width;
@@ -215,8 +206,9 @@ void Stepper::transfer_rows(const StepInputs& in, int r0, int r1) {
                  xfer_.data() + first, xfer_ratio_.data() + first);
     for (int s = 0; s < in.slot_count; ++s) {
       const std::size_t k = static_cast<std::size_t>(s);
-      transfer_pigment_row(w.width, xfer_.data() + first, xfer_ratio_.data() + first,
-                           brush_pigment_at_.data() + k * cells + first,
+      // (The brush changes only in the next pass: its pigments are read here directly.)
+      transfer_pigment_row(w.width, brush_cell_.data() + first, xfer_.data() + first,
+                           xfer_ratio_.data() + first, brush_pigment + k * brush_cells,
                            new_pigment_.data() + k * n + row,
                            xfer_pigment_.data() + k * cells + first);
     }

@@ -99,7 +99,6 @@ class Stepper {
   // Unpadded per-cell data of the transfer.
   std::vector<std::int32_t> brush_cell_;       // brush cell touching each window cell, or -1
   std::vector<float> brush_paint_at_;          // its paint height (0 where none touches)
-  std::vector<float> brush_pigment_at_;        // and its pigments, slot-major
   std::vector<float> brush_share_cap_;         // on_brush / (deposit_share * sharers), if binding
   std::vector<float> xfer_;                    // paint height moved brush -> canvas (signed)
   std::vector<float> contact_weight_;          // how fully the head moves each cell's paint, 0..1
