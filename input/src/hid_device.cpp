@@ -159,15 +159,22 @@ std::vector<std::uint8_t> read_usb_string_descriptor(const std::string& hidraw_p
 InitExchange uclogic_handshake(const std::string& hidraw_path, std::string* error) {
   InitExchange init;
   std::string first_error;
-  for (std::uint8_t index : {std::uint8_t{0xC8}, std::uint8_t{0x64}, std::uint8_t{0xC9},
-                             std::uint8_t{0x79}, std::uint8_t{0x7A}}) {
+  const auto read = [&](std::uint8_t index) -> const std::vector<std::uint8_t>* {
     try {
       init.strings.push_back({index, read_usb_string_descriptor(hidraw_path, index)});
+      return &init.strings.back().bytes;
     } catch (const std::runtime_error& e) {
       init.unanswered.push_back(index);
       if (first_error.empty()) first_error = e.what();
+      return nullptr;
     }
-  }
+  };
+  // As hid-uclogic does: the firmware name, then v2 parameters (0xC8); only a tablet without
+  // them is asked for v1 (0x64), which would switch it to the v1 reports.
+  read(0xC9);
+  const auto* v2 = read(kUcLogicParamsV2);
+  if (v2 == nullptr || !parse_uclogic_params_v2(*v2)) read(kUcLogicParamsV1);
+  read(0x79);  // the model's name on older tablets
   if (error != nullptr) *error = init.strings.empty() ? first_error : "";
   return init;
 }

@@ -45,10 +45,10 @@ std::vector<std::uint8_t> read_report_descriptor(const std::string& hidraw_path)
 std::vector<std::uint8_t> read_usb_string_descriptor(const std::string& hidraw_path,
                                                      std::uint8_t index);
 
-// The UC-Logic handshake of a Huion/Gaomon/XP-Pen/Ugee tablet: reads its parameter strings
-// (0xC8, then 0x64 — which switches the tablet to its full-resolution vendor reports) and its
-// model strings (0xC9, 0x79, 0x7A). Indices the device refuses are listed as unanswered;
-// `error` gets why none could be read.
+// The UC-Logic handshake of a Huion/Gaomon/XP-Pen/Ugee tablet: reads its firmware name
+// (0xC9), its v2 parameters (0xC8) or, without them, its v1 parameters (0x64) — reading them
+// switches the tablet to its full-resolution vendor reports — and its model name (0x79).
+// Indices the device refuses are listed as unanswered; `error` gets why none could be read.
 InitExchange uclogic_handshake(const std::string& hidraw_path, std::string* error = nullptr);
 
 // A device whose descriptor declares a pen (or whose vendor protocol Impasto knows).
