@@ -119,10 +119,15 @@ IMPASTO_SIMD_CLONES int penetrate_aligned_row(int width, const HeadRow& head, bo
   // The brush cell (unpadded) at padded line position k is first_cell + k * cell_step.
   const std::int32_t cell_step = along_v ? n : 1;
   const std::int32_t first_cell = along_v ? (s_near - 1) - n : (s_near - 1) * n - 1;
-  const float* brush_paint = head.paint;
+  // The nearest line's paint where the head covers it, else -1 (paint is never negative):
+  // one read a cell tells both.
+  const float* nearest_coverage = coverage + static_cast<std::ptrdiff_t>(s_near) * padded;
+  float nearest_paint[kMaxBrushCells + 2];
+  for (int k = 0; k < padded; ++k)
+    nearest_paint[k] = nearest_coverage[k] > 0.0f ? head.paint[first_cell + k * cell_step] : -1.0f;
   const float* blended_coverage = coverage_line;
   const float* blended_footprint = footprint_line;
-  const float* nearest_coverage = coverage + static_cast<std::ptrdiff_t>(s_near) * padded;
+  const float* paint_at = nearest_paint;
   int contacts = 0;
   for (int x = 0; x < width; ++x) {
     const float t_raw = t0 + static_cast<float>(x) * step_t;
@@ -133,9 +138,10 @@ IMPASTO_SIMD_CLONES int penetrate_aligned_row(int width, const HeadRow& head, bo
     const float coverage = (1.0f - ft) * blended_coverage[k0] + ft * blended_coverage[k0 + 1];
     const float underside = (1.0f - ft) * blended_footprint[k0] + ft * blended_footprint[k0 + 1];
     const int k_near = static_cast<int>(t + 0.5f);
-    const bool covered = inside & (nearest_coverage[k_near] > 0.0f);
+    const float paint = paint_at[k_near];
+    const bool covered = inside & (paint >= 0.0f);
     const std::int32_t b = covered ? first_cell + k_near * cell_step : 0;
-    contacts += write_contact(x, coverage, underside, covered, b, brush_paint[b],
+    contacts += write_contact(x, coverage, underside, covered, b, covered ? paint : 0.0f,
                               ground[x] + wet[x], tip_mm, lift_off, pen, cell, weight, on_brush);
   }
   return contacts;
