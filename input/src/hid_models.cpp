@@ -6,6 +6,7 @@
 #include <fstream>
 #include <mutex>
 
+#include "impasto/files/message_text.hpp"
 #include "recording_input.hpp"
 #include "text_fields.hpp"
 
@@ -22,7 +23,7 @@ std::uint32_t parse_hex(std::string_view text, const detail::LineContext& where,
     if (c >= '0' && c <= '9') d = c - '0';
     if (c >= 'a' && c <= 'f') d = c - 'a' + 10;
     if (c >= 'A' && c <= 'F') d = c - 'A' + 10;
-    if (d < 0) where.fail(field, "expected a hex number, found '" + std::string(text) + "'");
+    if (d < 0) where.fail(field, "expected a hex number, found " + files::excerpt(text));
     value = value * 16 + static_cast<std::uint32_t>(d);
   }
   if (value > max) where.fail(field, "out of range");
@@ -42,7 +43,7 @@ ModelProtocol parse_protocol(std::string_view text, const detail::LineContext& w
   if (text == "xp-pen") return ModelProtocol::kXpPen;
   if (text == "veikk-v1") return ModelProtocol::kVeikkV1;
   if (text == "wacom-ff0d") return ModelProtocol::kWacomVendorPage;
-  where.fail("protocol", "unknown protocol '" + std::string(text) + "'");
+  where.fail("protocol", "unknown protocol " + files::excerpt(text));
 }
 
 std::vector<InitStep> parse_init(std::string_view text, const detail::LineContext& where) {
@@ -63,7 +64,7 @@ std::vector<InitStep> parse_init(std::string_view text, const detail::LineContex
             static_cast<std::uint8_t>(parse_hex(step.substr(i, 2), where, "init", 0xFF)));
       }
     } else {
-      where.fail("init", "expected string:IDX or output:HEX, found '" + std::string(step) + "'");
+      where.fail("init", "expected string:IDX or output:HEX, found " + files::excerpt(step));
     }
     steps.push_back(std::move(s));
     start = end + 1;

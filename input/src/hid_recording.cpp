@@ -7,6 +7,7 @@
 #include <iterator>
 #include <sstream>
 
+#include "impasto/files/message_text.hpp"
 #include "recording_input.hpp"
 #include "text_fields.hpp"
 
@@ -67,8 +68,8 @@ std::vector<std::uint8_t> parse_hex_bytes(const std::string& text, const std::st
       std::size_t stop = start;
       while (stop < text.size() && text[stop] != ' ' && text[stop] != ',') ++stop;
       where.fail("byte " + std::to_string(bytes.size() + 1),
-                 "expected two hex digits, found '" +
-                     text.substr(i, std::min<std::size_t>(stop - i, 20)) + "'");
+                 "expected two hex digits, found " +
+                     files::excerpt(std::string_view(text).substr(i, stop - i), 20));
     }
     bytes.push_back(
         static_cast<std::uint8_t>(hex_digit(text[start]) * 16 + hex_digit(text[start + 1])));
@@ -123,7 +124,8 @@ HidRecording parse_hid_recording(std::istream& in, const std::string& source) {
           std::uint32_t value = 0;
           for (char c : word) {
             const int d = hex_digit(c);
-            if (d < 0 || value > (max >> 4)) where.fail("I", "bad hex number '" + word + "'");
+            if (d < 0 || value > (max >> 4))
+              where.fail("I", "bad hex number " + files::excerpt(word));
             value = value * 16 + static_cast<std::uint32_t>(d);
           }
           return value;
@@ -143,7 +145,8 @@ HidRecording parse_hid_recording(std::istream& in, const std::string& source) {
         std::uint32_t index = 0;
         for (char c : index_text) {
           const int d = hex_digit(c);
-          if (d < 0 || index > 0xF) where.fail("S", "bad string index '" + index_text + "'");
+          if (d < 0 || index > 0xF)
+            where.fail("S", "bad string index " + files::excerpt(index_text));
           index = index * 16 + static_cast<std::uint32_t>(d);
         }
         if (index_text.empty()) where.fail("S", "expected 'S: index count bytes'");

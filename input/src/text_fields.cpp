@@ -1,5 +1,7 @@
 #include "text_fields.hpp"
 
+#include <impasto/files/message_text.hpp>
+
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -13,16 +15,10 @@ bool is_blank(char c) {
   return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
 }
 
-// Field text shown in messages, shortened so a binary file cannot flood the terminal.
+// Field text shown in messages, shortened and escaped so a binary file cannot flood the
+// terminal (files::excerpt; a field is short, so 40 characters).
 std::string shown(std::string_view text) {
-  constexpr std::size_t kMaxShown = 40;
-  std::string out;
-  for (char c : text.substr(0, kMaxShown)) {
-    const auto u = static_cast<unsigned char>(c);
-    out += (u >= 0x20 && u < 0x7f) ? c : '?';
-  }
-  if (text.size() > kMaxShown) out += "...";
-  return "'" + out + "'";
+  return files::excerpt(text, 40);
 }
 
 template <typename Number>
