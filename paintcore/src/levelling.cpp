@@ -83,27 +83,37 @@ LevellingReport settle_wet_paint(Canvas& canvas, const std::vector<int>& tiles, 
     // computed alone from the state: tiles in parallel, the same bits on any thread count.
     std::vector<std::uint8_t> tile_flows(tiles.size(), 0);
     tbb::parallel_for(std::size_t{0}, tiles.size(), [&](std::size_t k) {
-      for_tile_cells(k, [&](std::size_t i, int x, int y) {
-        east[i] = south[i] = 0.0f;
-        Tile* a;
-        int ca;
-        locate(x, y, a, ca);
-        if (!a) return;  // beyond the canvas's edge: a wall
+      Tile* a = canvas.tile_slot(tiles[k]).get();
+      const int x0 = (tiles[k] % canvas.tiles_x() - tx0) * kTileSize;
+      const int y0 = (tiles[k] / canvas.tiles_x() - ty0) * kTileSize;
+      float* tile_east = east.data() + k * kTileCells;
+      float* tile_south = south.data() + k * kTileCells;
+      for (int c = 0; c < kTileCells; ++c) {
+        tile_east[c] = tile_south[c] = 0.0f;
+        const int cx = c % kTileSize, cy = c / kTileSize;
+        const int x = x0 + cx, y = y0 + cy;
+        if (x >= canvas_w || y >= canvas_h) continue;  // beyond the canvas's edge: a wall
+        const float h_a = a->wet_volume_mm[static_cast<std::size_t>(c)];
         for (int d = 0; d < 2; ++d) {
+          // The neighbour east or south: in this tile but at its edge, else located.
           Tile* b;
           int cb;
-          locate(x + (d == 0), y + (d == 1), b, cb);
+          if (d == 0 ? cx + 1 < kTileSize : cy + 1 < kTileSize) {
+            b = (d == 0 ? x + 1 < canvas_w : y + 1 < canvas_h) ? a : nullptr;
+            cb = c + (d == 0 ? 1 : kTileSize);
+          } else {
+            locate(x + (d == 0), y + (d == 1), b, cb);
+          }
           if (!b) continue;
-          const double drop = surface(*a, ca) - surface(*b, cb);
-          const double flow =
-              drop > 0 ? levelling_flow_mm(a->wet_volume_mm[static_cast<std::size_t>(ca)], drop,
-                                           cell_mm, seconds, info)
-                       : -levelling_flow_mm(b->wet_volume_mm[static_cast<std::size_t>(cb)], -drop,
-                                            cell_mm, seconds, info);
-          (d == 0 ? east : south)[i] = static_cast<float>(flow);
+          const float h_b = b->wet_volume_mm[static_cast<std::size_t>(cb)];
+          if (h_a == 0.0f && h_b == 0.0f) continue;  // no wet paint on either side
+          const double drop = surface(*a, c) - surface(*b, cb);
+          const double flow = drop > 0 ? levelling_flow_mm(h_a, drop, cell_mm, seconds, info)
+                                       : -levelling_flow_mm(h_b, -drop, cell_mm, seconds, info);
+          (d == 0 ? tile_east : tile_south)[c] = static_cast<float>(flow);
           if (flow != 0.0) tile_flows[k] = 1;
         }
-      });
+      }
     });
     if (std::none_of(tile_flows.begin(), tile_flows.end(), [](std::uint8_t f) { return f != 0; }))
       break;
