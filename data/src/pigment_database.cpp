@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "impasto/data/data_dir.hpp"
+#include "impasto/data/pigment_library.hpp"
 #include "impasto/data/pigments.hpp"
 #include "impasto/files/message_text.hpp"
 
@@ -46,9 +47,14 @@ PigmentDatabase PigmentDatabase::load(const std::filesystem::path& dir) {
   return db;
 }
 
-const PigmentDatabase& PigmentDatabase::defaults() {
-  static const PigmentDatabase db = load(data_dir() / "pigments");
+PigmentDatabase PigmentDatabase::from_pigments(std::vector<Pigment> pigments) {
+  PigmentDatabase db;
+  db.pigments_ = std::move(pigments);
   return db;
+}
+
+const PigmentDatabase& PigmentDatabase::defaults() {
+  return active_pigment_library().database();
 }
 
 const Pigment* PigmentDatabase::find(std::string_view name) const {
@@ -65,7 +71,7 @@ const Pigment& PigmentDatabase::get(std::string_view name) const {
   if (const Pigment* p = find(name)) return *p;
   std::string known;
   for (const auto& p : pigments_) known += (known.empty() ? "" : ", ") + p.name;
-  throw std::runtime_error("unknown pigment '" + std::string(name) + "' (known: " + known + ")");
+  throw std::runtime_error("unknown pigment " + files::excerpt(name) + " (known: " + known + ")");
 }
 
 }  // namespace impasto::data

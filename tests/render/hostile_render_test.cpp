@@ -55,6 +55,21 @@ TEST(HostileRender, EveryHostilePaintingRendersFiniteOrFailsByField) {
   }
 }
 
+// A pigment name from a crafted painting reaches the message cut and escaped.
+TEST(HostileRender, AnUnknownPigmentNameIsQuotedCutAndEscaped) {
+  paintcore::Painting painting(paintcore::CanvasSpec{64, 64, 100.0, 0}, 1);
+  painting.slot_for("\x1b[2J" + std::string(3000, 'x'));
+  try {
+    render::render_painting(painting, render::RenderSettings{});
+    FAIL() << "an unknown pigment rendered";
+  } catch (const std::runtime_error& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.find('\x1b'), std::string::npos);
+    EXPECT_NE(message.find("unknown pigment '\\x1b[2Jxxx"), std::string::npos) << message;
+    EXPECT_NE(message.find("(3004 bytes)"), std::string::npos) << message;
+  }
+}
+
 TEST(HostileRender, EveryPaintingOfTheFuzzCorpusRendersFinite) {
   const std::filesystem::path corpus =
       std::filesystem::path(IMPASTO_SOURCE_DIR) / "tests/fuzz/corpus/paintings";
