@@ -1,9 +1,14 @@
-// impasto pigments: list and show the pigment database; fit K and S from measurements.
+// impasto pigments: the layered pigment library (list, show, check) and the K/S fit.
+#include <impasto/data/colorimetry.hpp>
 #include <impasto/data/data_dir.hpp>
 #include <impasto/data/ks_fit.hpp>
 #include <impasto/data/kubelka_munk.hpp>
+#include <impasto/data/lights.hpp>
+#include <impasto/data/pigment_library.hpp>
+#include <impasto/data/pigment_user_layer.hpp>
 #include <impasto/data/pigments.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -18,26 +23,24 @@ namespace {
 
 using namespace impasto::data;
 
-// The shipped database, or the folder given with --pigments.
-PigmentDatabase open_database(const std::string& folder) {
-  return PigmentDatabase::load(folder.empty() ? data_dir() / "pigments"
-                                              : std::filesystem::path(folder));
-}
-
-void run_list(const std::string& folder) {
-  const PigmentDatabase db = open_database(folder);
-  for (const Pigment& p : db.all()) {
+void run_list() {
+  const PigmentLibrary& library = active_pigment_library();
+  const auto& all = library.database().all();
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const Pigment& p = all[i];
     const auto binder = p.metadata.find("binder");
-    std::printf("%-32s %4.0f-%4.0f nm  %s\n", p.name.c_str(), p.K.wavelengths_nm.front(),
-                p.K.wavelengths_nm.back(),
+    std::printf("%-32s %4.0f-%4.0f nm  %-10s %s\n", p.name.c_str(), p.K.wavelengths_nm.front(),
+                p.K.wavelengths_nm.back(), library.origins()[i].layer.c_str(),
                 binder == p.metadata.end() ? "" : binder->second.c_str());
   }
 }
 
-void run_show(const std::string& folder, const std::string& name) {
-  const PigmentDatabase db = open_database(folder);
-  const Pigment& p = db.get(name);
+void run_show(const std::string& name) {
+  const PigmentLibrary& library = active_pigment_library();
+  const Pigment& p = library.database().get(name);
   std::printf("name: %s\n", p.name.c_str());
+  const LibraryPigment* origin = library.origin(p.name);
+  std::printf("layer: %s (%s)\n", origin->layer.c_str(), origin->file.string().c_str());
   for (const auto& [key, value] : p.metadata) {
     if (key != "name") std::printf("%s: %s\n", key.c_str(), value.c_str());
   }
@@ -51,21 +54,75 @@ void run_show(const std::string& folder, const std::string& name) {
   }
 }
 
+// Every problem of a folder at once; fails the command when there is any.
+void run_check(const std::string& folder) {
+  if (!std::filesystem::is_directory(folder)) throw std::runtime_error(folder + ": not a folder");
+  const PigmentFolderScan scan = scan_pigment_folder(folder);
+  for (const auto& loaded : scan.pigments)
+    std::printf("ok      %s (%s)\n", loaded.file.filename().string().c_str(),
+                loaded.pigment.name.c_str());
+  for (const auto& problem : scan.problems) std::printf("error   %s\n", problem.c_str());
+  std::printf("%zu pigments load, %zu files have errors\n", scan.pigments.size(),
+              scan.problems.size());
+  if (!scan.problems.empty())
+    throw std::runtime_error(folder + ": " + std::to_string(scan.problems.size()) +
+                             " files have errors");
+}
+
 struct FitArgs {
   std::string measurements;
   std::string out;
   std::string reference;
+  bool force = false;
 };
+
+// Metadata a fit keeps from the pigment it replaces (the file in --out, else the library's).
+std::map<std::string, std::string> kept_metadata(const std::filesystem::path& file,
+                                                 const std::string& name) {
+  std::map<std::string, std::string> metadata;
+  try {
+    if (std::filesystem::exists(file)) {
+      metadata = read_pigment_file(file).metadata;
+    } else if (const Pigment* p = active_pigment_library().database().find(name)) {
+      metadata = p->metadata;
+    }
+  } catch (const std::exception&) {
+  }
+  for (const char* derived : {"quantity", "name", "units", "interface", "fitted_from", "modified"})
+    metadata.erase(derived);
+  return metadata;
+}
+
+// CIEDE2000 between the measured and fitted reflectance of a sample under D65.
+double sample_delta_e(const Spectrum& measured, const Spectrum& fitted, const Spectrum& d65) {
+  const Xyz white = white_point(d65);
+  return ciede2000(xyz_to_lab(reflectance_to_xyz(measured, d65), white),
+                   xyz_to_lab(reflectance_to_xyz(fitted, d65), white));
+}
 
 void run_fit(const FitArgs& args) {
   KsFitProblem problem = read_ks_measurements(args.measurements);
   if (!args.reference.empty()) problem.reference_pigment = args.reference;
   const KsFitResult fit = fit_kubelka_munk(problem);
+  const std::filesystem::path out =
+      args.out.empty() ? active_pigment_library().user_folder() : std::filesystem::path(args.out);
+  if (out.empty()) throw std::runtime_error("no user pigment folder (HOME unset): give --out");
 
-  std::filesystem::create_directories(args.out);
+  // Nothing is written unless everything may be.
+  for (const Pigment& pigment : fit.pigments) {
+    const auto path = out / pigment_file_name(pigment.name);
+    if (std::filesystem::exists(path) && !args.force)
+      throw std::runtime_error(path.string() +
+                               " exists (use --force to replace it; its "
+                               "metadata is kept)");
+  }
+  const std::string from = std::filesystem::path(args.measurements).filename().string();
   for (Pigment pigment : fit.pigments) {
-    pigment.metadata["source"] = "fitted by impasto pigments fit from " +
-                                 std::filesystem::path(args.measurements).filename().string();
+    const auto path = out / pigment_file_name(pigment.name);
+    pigment.metadata = kept_metadata(path, pigment.name);
+    if (!pigment.metadata.count("source"))
+      pigment.metadata["source"] = "fitted by impasto pigments fit";
+    pigment.metadata["fitted_from"] = from + " (" + utc_timestamp() + ")";
     pigment.metadata["units"] = "K and S relative to the S of " + problem.reference_pigment;
     if (problem.saunderson) {
       char text[96];
@@ -73,37 +130,53 @@ void run_fit(const FitArgs& args) {
                     problem.saunderson->k1, problem.saunderson->k2);
       pigment.metadata["interface"] = text;
     }
-    const auto path = std::filesystem::path(args.out) / pigment_file_name(pigment.name);
-    write_pigment_file(path, pigment);
-    std::printf("wrote %s\n", path.string().c_str());
+    std::printf("wrote %s\n",
+                save_pigment_to_folder(out, std::move(pigment), args.force).string().c_str());
   }
-  std::printf("%-32s %14s %14s %14s\n", "sample", "rms K/S eq.", "rms R", "max |dR|");
-  for (const KsSampleResidual& r : fit.residuals) {
-    std::printf("%-32s %14.6g %14.6g %14.6g\n", r.name.c_str(), r.rms_equation, r.rms_reflectance,
-                r.max_reflectance);
+  const Spectrum d65 = light_from_spec("D65");
+  std::vector<const Pigment*> fitted;
+  for (const Pigment& p : fit.pigments) fitted.push_back(&p);
+  std::printf("%-32s %10s %12s %12s %12s\n", "sample", "dE00 D65", "rms K/S eq.", "rms R",
+              "max |dR|");
+  for (std::size_t i = 0; i < fit.residuals.size(); ++i) {
+    const KsSampleResidual& r = fit.residuals[i];
+    const KsSample& sample = problem.samples[i];
+    const double de =
+        sample_delta_e(sample.reflectance,
+                       mixture_reflectance(fitted, sample.concentrations, problem.saunderson), d65);
+    std::printf("%-32s %10.3f %12.6g %12.6g %12.6g\n", r.name.c_str(), de, r.rms_equation,
+                r.rms_reflectance, r.max_reflectance);
   }
 }
 
 const CommandRegistrar registrar("pigments", [](CLI::App& root) {
-  CLI::App* group = command_group(root, "pigments", "The pigment database and the K/S fit");
-  auto folder = std::make_shared<std::string>();
-  group->add_option("--pigments", *folder, "Pigment folder (default: the shipped database)");
+  CLI::App* group = command_group(
+      root, "pigments", "The pigment library (bundled, user, --pigments) and the K/S fit");
 
-  group->add_subcommand("list", "List the pigments")->callback([folder] { run_list(*folder); });
+  group->add_subcommand("list", "List the pigments and the layer each comes from")->callback([] {
+    run_list();
+  });
 
   auto name = std::make_shared<std::string>();
   CLI::App* show = group->add_subcommand("show", "Show one pigment's metadata and K, S");
   show->add_option("name", *name, "Pigment name (case-insensitive)")->required();
-  show->callback([folder, name] { run_show(*folder, *name); });
+  show->callback([name] { run_show(*name); });
+
+  auto folder = std::make_shared<std::string>();
+  CLI::App* check =
+      group->add_subcommand("check", "Validate a pigment folder: every error at once");
+  check->add_option("folder", *folder, "Folder of pigment CSVs")->required();
+  check->callback([folder] { run_check(*folder); });
 
   auto fit = std::make_shared<FitArgs>();
   CLI::App* f = group->add_subcommand(
       "fit", "Fit K and S from measured reflectances of masstones and mixtures");
   f->add_option("measurements", fit->measurements, "Measurements CSV (docs/pigments.md)")
       ->required();
-  f->add_option("--out", fit->out, "Folder for the fitted pigment files")->required();
+  f->add_option("--out", fit->out, "Folder for the fitted pigment files (default: the user layer)");
   f->add_option("--reference", fit->reference,
                 "Pigment whose S is fixed to 1 (overrides '# reference:')");
+  f->add_flag("--force", fit->force, "Replace existing files (their metadata is kept)");
   f->callback([fit] { run_fit(*fit); });
 });
 

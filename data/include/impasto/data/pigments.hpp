@@ -33,7 +33,10 @@ class PigmentDatabase {
  public:
   // Every *.csv in dir, sorted by file name. Throws on a bad file or a repeated name.
   static PigmentDatabase load(const std::filesystem::path& dir);
-  // data_dir()/pigments, loaded once (thread-safe).
+  // These pigments (names must be unique).
+  static PigmentDatabase from_pigments(std::vector<Pigment> pigments);
+  // The active layered library's pigments (pigment_library.hpp): data_dir()/pigments, the
+  // user's folder and --pigments folders; loaded once (thread-safe).
   static const PigmentDatabase& defaults();
 
   // Exact name first, then case-insensitive. Throws with the list of names.

@@ -1,0 +1,28 @@
+#include "pigment_folder_option.hpp"
+
+#include <impasto/data/pigment_library.hpp>
+
+#include <filesystem>
+#include <string>
+
+namespace impasto::app {
+namespace {
+
+void add_to(CLI::App& app) {
+  if (app.get_option_no_throw("--pigments") == nullptr) {
+    app.add_option_function<std::string>(
+           "--pigments", [](const std::string& folder) { data::add_pigment_folder(folder); },
+           "Pigment folder layered over the bundled and user pigments (docs/pigments.md)")
+        ->check(CLI::ExistingDirectory)
+        ->trigger_on_parse();  // each time it is given, before any command runs
+  }
+  for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) add_to(*sub);
+}
+
+}  // namespace
+
+void add_pigment_folder_options(CLI::App& root) {
+  add_to(root);
+}
+
+}  // namespace impasto::app

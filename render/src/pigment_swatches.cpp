@@ -1,0 +1,83 @@
+#include "impasto/render/pigment_swatches.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "impasto/data/kubelka_munk.hpp"
+#include "impasto/render/chromatic_adaptation.hpp"
+#include "impasto/render/display.hpp"
+
+namespace impasto::render {
+namespace {
+
+double srgb_encode(double linear) {
+  linear = std::clamp(linear, 0.0, 1.0);
+  return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1 / 2.4) - 0.055;
+}
+
+}  // namespace
+
+data::Spectrum tint_reflectance(const data::Pigment& pigment, const data::Pigment& white,
+                                double white_parts) {
+  data::Spectrum out{"R", pigment.K.wavelengths_nm, {}};
+  const double share = 1.0 / (1.0 + white_parts);
+  for (double nm : out.wavelengths_nm) {
+    const double k = share * pigment.K.at(nm) + (1 - share) * white.K.at(nm);
+    const double s = share * pigment.S.at(nm) + (1 - share) * white.S.at(nm);
+    out.values.push_back(s > 0 ? data::reflectance_from_ks(k / s) : 0.0);
+  }
+  return out;
+}
+
+data::Spectrum glaze_reflectance(const data::Pigment& pigment, double thickness, double ground) {
+  data::Spectrum out{"R", pigment.K.wavelengths_nm, {}};
+  for (double nm : out.wavelengths_nm) {
+    const double k = pigment.K.at(nm), s = pigment.S.at(nm);
+    double r;
+    if (s * thickness < 1e-9) {
+      r = ground * std::exp(-2 * k * thickness);  // a clear layer: absorption both ways
+    } else {
+      // Kubelka (1954): a = (S + K)/S, b = sqrt(a² − 1).
+      const double a = (s + k) / s, b = std::sqrt(a * a - 1);
+      const double coth = 1 / std::tanh(std::max(b * s * thickness, 1e-12));
+      r = (1 - ground * (a - b * coth)) / (a - ground + b * coth);
+    }
+    out.values.push_back(std::clamp(r, 0.0, 1.0));
+  }
+  return out;
+}
+
+SwatchColour describe_colour(std::string label, data::Spectrum reflectance,
+                             const data::Spectrum& light) {
+  SwatchColour c{std::move(label), std::move(reflectance), {}, {}, {}};
+  c.xyz = data::reflectance_to_xyz(c.reflectance, light);
+  const data::Xyz white = data::white_point(light);
+  c.lab = data::xyz_to_lab(c.xyz, white);
+  const Matrix3 adapt =
+      bradford_matrix({white.X / 100, white.Y / 100, white.Z / 100}, kD65WhiteXyz);
+  const Xyz d65 = apply(adapt, {c.xyz.X / 100, c.xyz.Y / 100, c.xyz.Z / 100});
+  const auto m = xyz_to_linear_srgb();
+  for (int i = 0; i < 3; ++i) {
+    c.srgb[static_cast<std::size_t>(i)] =
+        srgb_encode(m[3 * i] * d65[0] + m[3 * i + 1] * d65[1] + m[3 * i + 2] * d65[2]);
+  }
+  return c;
+}
+
+std::vector<SwatchColour> standard_swatches(const data::Pigment& pigment,
+                                            const data::Pigment& white,
+                                            const data::Spectrum& light) {
+  std::vector<SwatchColour> out;
+  out.push_back(describe_colour("masstone", tint_reflectance(pigment, white, 0), light));
+  for (int parts : {1, 4, 9}) {
+    out.push_back(describe_colour("tint 1:" + std::to_string(parts),
+                                  tint_reflectance(pigment, white, parts), light));
+  }
+  out.push_back(
+      describe_colour("glaze over white", glaze_reflectance(pigment, kGlazeThickness, 0.9), light));
+  out.push_back(describe_colour("glaze over black",
+                                glaze_reflectance(pigment, kGlazeThickness, 0.04), light));
+  return out;
+}
+
+}  // namespace impasto::render
