@@ -30,9 +30,10 @@ void check_decoded_size(const std::string& where, const std::string& what,
                         std::uint64_t decoded_bytes, std::uint64_t file_bytes) {
   // 1 KiB of slack for headers and tables that are not deflated.
   if (decoded_bytes > kMaxDeflateRatio * file_bytes + 1024)
-    throw std::runtime_error(where + ": " + what + " declares " + describe_bytes(decoded_bytes) +
-                             " of pixels, more than a file of " + describe_bytes(file_bytes) +
-                             " can hold (a damaged or crafted header)");
+    throw std::runtime_error(where + ": " + what + " declares at least " +
+                             describe_bytes(decoded_bytes) + " of data, more than a file of " +
+                             describe_bytes(file_bytes) + " can hold (deflate expands at most " +
+                             std::to_string(kMaxDeflateRatio) + ":1; a damaged or crafted header)");
   check_allocation(where, what, decoded_bytes);
 }
 
