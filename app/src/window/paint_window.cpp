@@ -348,12 +348,15 @@ void PaintWindow::handle_recovery(const RecoveryChoice& choice) {
         }
         end_session();
         SessionRecording recording = begin_session(entry.painting, std::nullopt);
-        // The new session starts from the recovered painting, kept as its first autosave.
+        // The new session starts from the recovered painting, kept as its first autosave and
+        // read back from it, so that its `from` record names exactly what the file holds.
+        paintcore::Painting recovered = std::move(preview_->painting);
         if (live_session_) {
-          preview_->painting.save(live_session_->entry().autosave);
+          recovered.save(live_session_->entry().autosave);
+          recovered = paintcore::Painting::load(live_session_->entry().autosave);
           recording.opened_from = live_session_->entry().autosave;
         }
-        worker_->replace_painting(std::move(preview_->painting), std::move(recording), true);
+        worker_->replace_painting(std::move(recovered), std::move(recording), true);
         open_board_for(entry.painting);
         if (entry.painting) state_.file = entry.painting;
         notice_ = "Recovered (from " + preview_->base + "): save it to keep it." +
@@ -738,14 +741,12 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   PanelContext context{state_, *worker_, painting, *palette_, files, board_panel_};
   draw_panels(context);
   draw_session_banners(worker_->stats(), notice_);
-  const RecoveryChoice recovery = draw_recovery_offer(recoverable_, previewing_);
-  if (previewing_ && preview_texture_) {
-    ImGui::Begin("Recover unsaved work");
-    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(preview_texture_)),
-                 ImVec2(static_cast<float>(preview_w_), static_cast<float>(preview_h_)));
-    ImGui::TextDisabled("rebuilt from %s", preview_->base.c_str());
-    ImGui::End();
+  std::optional<RecoveryPreview> preview;
+  if (previewing_ && preview_) {
+    preview =
+        RecoveryPreview{*previewing_, preview_texture_, preview_w_, preview_h_, preview_->base};
   }
+  const RecoveryChoice recovery = draw_recovery_offer(recoverable_, preview);
   ImGui::Render();
 
   glBindFramebuffer(GL_FRAMEBUFFER, 0);

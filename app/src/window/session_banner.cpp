@@ -2,6 +2,8 @@
 
 #include <imgui.h>
 
+#include <cstdint>
+
 namespace impasto::app::window {
 namespace {
 
@@ -39,14 +41,15 @@ void draw_session_banners(const SimStats& stats, const std::string& notice) {
 }
 
 RecoveryChoice draw_recovery_offer(const std::vector<SessionEntry>& sessions,
-                                   std::optional<std::size_t> previewing) {
+                                   const std::optional<RecoveryPreview>& preview) {
   RecoveryChoice choice;
+  constexpr const char* kTitle = "Recover unsaved work";
   if (sessions.empty()) return choice;
+  if (!ImGui::IsPopupOpen(kTitle)) ImGui::OpenPopup(kTitle);
   const ImGuiIO& io = ImGui::GetIO();
   ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f),
-                          ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-  ImGui::Begin("Recover unsaved work", nullptr,
-               ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_AlwaysAutoResize);
+                          ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+  if (!ImGui::BeginPopupModal(kTitle, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return choice;
   ImGui::TextUnformatted("Impasto did not end cleanly last time. These sessions can be rebuilt");
   ImGui::TextUnformatted("from their autosave and recording:");
   for (std::size_t i = 0; i < sessions.size(); ++i) {
@@ -55,7 +58,7 @@ RecoveryChoice draw_recovery_offer(const std::vector<SessionEntry>& sessions,
     ImGui::Separator();
     ImGui::TextUnformatted(s.painting ? s.painting->string().c_str() : "an untitled painting");
     ImGui::TextDisabled("%s", s.id.c_str());
-    if (previewing == i) {
+    if (preview && preview->index == i) {
       ImGui::TextColored(ImVec4(0.9f, 0.8f, 0.3f, 1.0f), "previewed below");
     } else if (ImGui::Button("Preview")) {
       choice = {RecoveryChoice::kPreview, i};
@@ -70,7 +73,18 @@ RecoveryChoice draw_recovery_offer(const std::vector<SessionEntry>& sessions,
   if (ImGui::Button("Later")) choice = {RecoveryChoice::kLater, 0};
   ImGui::SameLine();
   ImGui::TextDisabled("(impasto recover --list shows them too)");
-  ImGui::End();
+  if (preview && preview->texture) {
+    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::intptr_t>(preview->texture)),
+                 ImVec2(static_cast<float>(preview->width), static_cast<float>(preview->height)));
+    ImGui::TextDisabled("rebuilt from %s", preview->caption.c_str());
+  }
+  // The last choice that empties the list closes the offer.
+  const bool last =
+      choice.kind == RecoveryChoice::kLater ||
+      ((choice.kind == RecoveryChoice::kRecover || choice.kind == RecoveryChoice::kDiscard) &&
+       sessions.size() == 1);
+  if (last) ImGui::CloseCurrentPopup();
+  ImGui::EndPopup();
   return choice;
 }
 

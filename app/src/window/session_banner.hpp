@@ -20,8 +20,16 @@ struct RecoveryChoice {
   std::size_t index = 0;
 };
 
-// The offer to recover `sessions`; `previewing` is the one shown on the canvas, if any.
+// A rebuilt session's false-colour view, shown in the offer.
+struct RecoveryPreview {
+  std::size_t index = 0;  // of the session
+  unsigned texture = 0;   // OpenGL texture name
+  int width = 0, height = 0;
+  std::string caption;
+};
+
+// The offer to recover `sessions`, modal (the canvas takes no input while it is open).
 RecoveryChoice draw_recovery_offer(const std::vector<SessionEntry>& sessions,
-                                   std::optional<std::size_t> previewing);
+                                   const std::optional<RecoveryPreview>& preview);
 
 }  // namespace impasto::app::window
