@@ -1,7 +1,9 @@
 #include "contact_rows.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
+#include <utility>
 
 #include "impasto/paintcore/brush.hpp"
 
@@ -40,7 +42,7 @@ constexpr float kBelowBound = 1.0f - 1e-5f;
 
 }  // namespace
 
-IMPASTO_SIMD_CLONES int penetrate_row(int width, const HeadRow& head,
+IMPASTO_SIMD_CLONES int penetrate_row(int begin, int end, const HeadRow& head,
                                       const float* __restrict ground, const float* __restrict wet,
                                       float* __restrict pen, std::int32_t* __restrict cell,
                                       float* __restrict weight, float* __restrict on_brush) {
@@ -53,7 +55,7 @@ IMPASTO_SIMD_CLONES int penetrate_row(int width, const HeadRow& head,
   const float tip_mm = head.tip_mm;
   const bool lift_off = head.lift_off;
   int contacts = 0;
-  for (int x = 0; x < width; ++x) {
+  for (int x = begin; x < end; ++x) {
     // The head between brush cell centres: coverage and underside interpolated bilinearly,
     // so that a sharp edge (a flat, a knife) moves smoothly across the canvas cells rather
     // than jumping a cell at a time (which printed a step pattern). On the padded grid the
@@ -80,6 +82,35 @@ IMPASTO_SIMD_CLONES int penetrate_row(int width, const HeadRow& head,
                               ground[x] + wet[x], tip_mm, lift_off, pen, cell, weight, on_brush);
   }
   return contacts;
+}
+
+void clear_contact(int begin, int end, float* pen, std::int32_t* cell, float* weight,
+                   float* on_brush) {
+  if (end <= begin) return;
+  std::fill(pen + begin, pen + end, 0.0f);
+  std::fill(cell + begin, cell + end, -1);
+  std::fill(weight + begin, weight + end, 0.0f);
+  std::fill(on_brush + begin, on_brush + end, 0.0f);
+}
+
+void head_span(int width, const HeadRow& head, int& begin, int& end) {
+  // Each coordinate a + x d stays in [0, limit) on an interval of x; the head is where both do.
+  double lo = 0.0, hi = width;
+  const double limit = head.cells + 1.0;
+  for (const auto& [a, d] : {std::pair<double, double>{head.u0, head.step_u},
+                             std::pair<double, double>{head.v0, head.step_v}}) {
+    if (d == 0.0) {
+      if (!(a >= 0.0 && a < limit)) hi = lo;  // the row misses the head
+      continue;
+    }
+    const double x_at_0 = -a / d, x_at_limit = (limit - a) / d;
+    lo = std::max(lo, std::min(x_at_0, x_at_limit));
+    hi = std::min(hi, std::max(x_at_0, x_at_limit));
+  }
+  // A cell to spare on each side: the kernel's own test decides at the edges.
+  begin = static_cast<int>(std::clamp(std::floor(lo) - 1.0, 0.0, static_cast<double>(width)));
+  end = static_cast<int>(std::clamp(std::ceil(hi) + 1.0, 0.0, static_cast<double>(width)));
+  if (hi <= lo) begin = end = 0;
 }
 
 IMPASTO_SIMD_CLONES int penetrate_aligned_row(int width, const HeadRow& head, bool along_v,

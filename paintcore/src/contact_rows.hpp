@@ -22,12 +22,22 @@ struct HeadRow {
   const float* footprint_transposed = nullptr;
 };
 
-// Writes, per canvas cell of the row: how deep the head presses (pen), the brush cell it
-// touches or -1 (cell), how fully it moves the paint (weight) and the paint on that brush
-// cell (on_brush, 0 where none touches). Returns how many cells touch.
-int penetrate_row(int width, const HeadRow& head, const float* __restrict ground,
+// Writes, per canvas cell x in [begin, end) of the row: how deep the head presses (pen), the
+// brush cell it touches or -1 (cell), how fully it moves the paint (weight) and the paint on
+// that brush cell (on_brush, 0 where none touches). The arrays start at the row's first
+// cell. Returns how many cells touch.
+int penetrate_row(int begin, int end, const HeadRow& head, const float* __restrict ground,
                   const float* __restrict wet, float* __restrict pen, std::int32_t* __restrict cell,
                   float* __restrict weight, float* __restrict on_brush);
+
+// The cells [begin, end) of a row that the head does not reach: no contact.
+void clear_contact(int begin, int end, float* pen, std::int32_t* cell, float* weight,
+                   float* on_brush);
+
+// The canvas cells of a row, [begin, end) within [0, width), outside which the head's grid
+// cannot reach (with a cell to spare): where u0 + x step_u and v0 + x step_v both lie in
+// [0, limit).
+void head_span(int width, const HeadRow& head, int& begin, int& end);
 
 // The same for a head square to the canvas rows (step_v == 0, or step_u == 0 with along_v:
 // turned a quarter): the row then crosses the head along one grid axis at a fixed position on

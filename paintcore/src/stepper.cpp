@@ -156,10 +156,19 @@ void Stepper::penetrate_rows(const StepInputs& in, int r0, int r1) {
     std::int32_t* cell = brush_cell_.data() + first;
     float* weight = contact_weight_.data() + first;
     float* on_brush = brush_paint_at_.data() + first;
-    row_contacts_[static_cast<std::size_t>(y)] =
-        along_u || along_v ? penetrate_aligned_row(w.width, head, along_v, ground, wet, pen, cell,
-                                                   weight, on_brush)
-                           : penetrate_row(w.width, head, ground, wet, pen, cell, weight, on_brush);
+    if (along_u || along_v) {
+      row_contacts_[static_cast<std::size_t>(y)] =
+          penetrate_aligned_row(w.width, head, along_v, ground, wet, pen, cell, weight, on_brush);
+    } else {
+      // A turned head's grid crosses only part of the row (its window is the grid's bounding
+      // box): the kernel visits that part, the rest has no contact.
+      int begin, end;
+      head_span(w.width, head, begin, end);
+      clear_contact(0, begin, pen, cell, weight, on_brush);
+      clear_contact(end, w.width, pen, cell, weight, on_brush);
+      row_contacts_[static_cast<std::size_t>(y)] =
+          penetrate_row(begin, end, head, ground, wet, pen, cell, weight, on_brush);
+    }
   }
 }
 

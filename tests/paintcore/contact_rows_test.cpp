@@ -82,7 +82,7 @@ TEST(ContactRows, AlignedKernelAgreesWithTheBilinearOne) {
       const float t0 = -2.1f, step = 0.8f;
       const HeadRow h = along_v ? head.row(s, t0, 0.0f, step) : head.row(t0, s, step, 0.0f);
       const RowResult general =
-          run(width, ground, wet, [&](int w, auto... a) { return penetrate_row(w, h, a...); });
+          run(width, ground, wet, [&](int w, auto... a) { return penetrate_row(0, w, h, a...); });
       const RowResult aligned = run(width, ground, wet, [&](int w, auto... a) {
         return penetrate_aligned_row(w, h, along_v, a...);
       });
@@ -99,6 +99,39 @@ TEST(ContactRows, AlignedKernelAgreesWithTheBilinearOne) {
     }
   EXPECT_GT(rows, 80);
   EXPECT_GT(touching, 300);  // the rows really cross the head
+}
+
+// A turned head crosses part of each row: the kernel run over head_span only, the rest
+// cleared, gives the whole row's result exactly.
+TEST(ContactRows, TheHeadsSpanHoldsEveryContact) {
+  const TestHead head(11);
+  const int width = 40;
+  std::vector<float> ground(width, 0.02f), wet(width, 0.05f);
+  int rows = 0, partial = 0;
+  for (float angle = 0.1f; angle < 6.2f; angle += 0.37f)
+    for (float row = -12.0f; row < 30.0f; row += 1.0f) {
+      // The row y = row in canvas cells, the head centred at (20, 9), splayed by 1.2.
+      const float c = std::cos(angle) / 1.2f, s = std::sin(angle) / 1.2f;
+      const float half = 0.5f * static_cast<float>(head.n) + 0.5f;  // padded centre
+      const float dx0 = -20.0f, dy = row - 9.0f;
+      const HeadRow h = head.row(c * dx0 + s * dy + half, -s * dx0 + c * dy + half, c, -s);
+      const RowResult whole =
+          run(width, ground, wet, [&](int w, auto... a) { return penetrate_row(0, w, h, a...); });
+      int begin, end;
+      head_span(width, h, begin, end);
+      RowResult part = whole;
+      clear_contact(0, width, part.pen.data(), part.cell.data(), part.weight.data(),
+                    part.on_brush.data());
+      part.contacts = penetrate_row(begin, end, h, ground.data(), wet.data(), part.pen.data(),
+                                    part.cell.data(), part.weight.data(), part.on_brush.data());
+      ++rows;
+      partial += (end - begin < width) ? 1 : 0;
+      ASSERT_EQ(whole.contacts, part.contacts) << angle << " " << row;
+      EXPECT_EQ(whole.cell, part.cell);
+      EXPECT_EQ(whole.pen, part.pen);
+      EXPECT_EQ(whole.weight, part.weight);
+    }
+  EXPECT_GT(partial, rows / 4);  // the span really cuts rows short
 }
 
 // The film split never takes more than deposit_share of what the tips present, nor more than
