@@ -24,7 +24,8 @@ void composite_dry_stack(const SpectralPalette& palette,
     std::size_t count = 0;
     for (std::size_t k = 0; k < dry->slots.size() && count < shares.size(); ++k) {
       const float amount = dry->pigment_mm[k * kTileCells + c];
-      if (amount > 0.0f) shares[count++] = {dry->slots[k], pigment_concentration(amount, inverse_volume)};
+      if (amount > 0.0f)
+        shares[count++] = {dry->slots[k], pigment_concentration(amount, inverse_volume)};
     }
     composite_paint_layer(palette, std::span(shares.data(), count), volume * optical_per_mm,
                           reflectance);

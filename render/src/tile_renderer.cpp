@@ -49,7 +49,9 @@ int gather_shares(int slot_count, float volume_mm, const AmountOf& amount_of,
   const float inverse_volume = 1.0f / volume_mm;
   for (int k = 0; k < slot_count; ++k) {
     const auto [slot, amount] = amount_of(k);
-    if (amount > 0.0f) shares[static_cast<std::size_t>(count++)] = {slot, pigment_concentration(amount, inverse_volume)};
+    if (amount > 0.0f)
+      shares[static_cast<std::size_t>(count++)] = {slot,
+                                                   pigment_concentration(amount, inverse_volume)};
   }
   return count;
 }
