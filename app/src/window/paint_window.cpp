@@ -417,8 +417,17 @@ void PaintWindow::start_session() {
         strokes->events.begin(), strokes->events.end(),
         [](const input::StrokeEvent& e) { return std::holds_alternative<input::LoadEvent>(e); });
     worker_->set_auto_load(!has_load);
+    for (const auto& warning : strokes->warnings) {
+      std::cerr << "impasto: warning: " << warning << "\n";
+      notice_ += (notice_.empty() ? "" : " ") + warning;
+    }
     for (auto& event : strokes->events) {
-      if (!std::holds_alternative<input::CanvasEvent>(event)) worker_->submit(std::move(event));
+      // The canvas is made above; where the replayed session began and was saved belongs to
+      // that session, not to this one's recording.
+      const bool header = std::holds_alternative<input::CanvasEvent>(event) ||
+                          std::holds_alternative<input::OriginEvent>(event) ||
+                          std::holds_alternative<input::SavedEvent>(event);
+      if (!header) worker_->submit(std::move(event));
     }
     worker_->finish_stroke();
     worker_->set_auto_load(false);
