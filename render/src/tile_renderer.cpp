@@ -1,7 +1,5 @@
 #include "impasto/render/tile_renderer.hpp"
 
-#include "impasto/render/render_painting.hpp"
-
 #include <Imath/half.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -19,6 +17,7 @@
 #include "impasto/render/flake_shading.hpp"
 #include "impasto/render/paint_layer.hpp"
 #include "impasto/render/relief_shading.hpp"
+#include "impasto/render/render_painting.hpp"
 #include "impasto/render/shading.hpp"
 
 namespace impasto::render {
