@@ -178,28 +178,29 @@ void Advection::apply(const float* const* q, float* const* out, int count) const
 
 void Advection::apply_rows(const float* const* q, float* const* out, int count, int y0,
                            int y1) const {
-  const int width = width_;
-  const std::ptrdiff_t s = width + 2;
+  for (int y = y0; y < y1; ++y) apply_span(q, out, count, y, 0, width_);
+}
+
+void Advection::apply_span(const float* const* q, float* const* out, int count, int y, int x0,
+                           int x1) const {
+  if (x1 <= x0) return;
+  const int width = x1 - x0;
+  const std::ptrdiff_t s = width_ + 2;
+  const std::ptrdiff_t row = (y + 1) * s + 1 + x0;
   if (quadrant_x_ != 0) {
     // The neighbours behind the motion send: the one a column back, a row back, and both.
     const std::ptrdiff_t from_x = -quadrant_x_, from_y = -quadrant_y_ * s;
-    for (int y = y0; y < y1; ++y) {
-      const std::ptrdiff_t row = (y + 1) * s + 1;
-      for (int k = 0; k < count; ++k)
-        gather_quadrant_row(width, from_x, from_y, q[k] + row, out[k] + row, stay_.data() + row,
-                            east_.data() + row, south_.data() + row, south_east_.data() + row);
-    }
+    for (int k = 0; k < count; ++k)
+      gather_quadrant_row(width, from_x, from_y, q[k] + row, out[k] + row, stay_.data() + row,
+                          east_.data() + row, south_.data() + row, south_east_.data() + row);
     return;
   }
-  for (int y = y0; y < y1; ++y) {
-    const std::ptrdiff_t row = (y + 1) * s + 1;
-    // Shares arriving from each neighbour: the neighbour to the west sends east, etc.
-    for (int k = 0; k < count; ++k)
-      gather_row(width, s, q[k] + row, out[k] + row, stay_.data() + row, east_.data() + row - 1,
-                 west_.data() + row + 1, south_.data() + row - s, north_.data() + row + s,
-                 south_east_.data() + row - s - 1, south_west_.data() + row - s + 1,
-                 north_east_.data() + row + s - 1, north_west_.data() + row + s + 1);
-  }
+  // Shares arriving from each neighbour: the neighbour to the west sends east, etc.
+  for (int k = 0; k < count; ++k)
+    gather_row(width, s, q[k] + row, out[k] + row, stay_.data() + row, east_.data() + row - 1,
+               west_.data() + row + 1, south_.data() + row - s, north_.data() + row + s,
+               south_east_.data() + row - s - 1, south_west_.data() + row - s + 1,
+               north_east_.data() + row + s - 1, north_west_.data() + row + s + 1);
 }
 
 }  // namespace impasto::paintcore

@@ -57,6 +57,8 @@ void Stepper::resize(int slot_count, std::size_t brush_cells) {
   if (xfer_pigment_.size() < cells * slots) xfer_pigment_.resize(cells * slots);
   if (brush_share_.size() < brush_cells) brush_share_.resize(brush_cells);
   row_contacts_.assign(static_cast<std::size_t>(w.height), 0);
+  for (auto* span : {&contact_lo_, &contact_hi_, &span_lo_, &span_hi_})
+    span->assign(static_cast<std::size_t>(w.height), 0);
   for (auto* grid : {&ground_, &wet_, &pen_, &vx_, &vy_, &new_wet_})
     zero_border(grid->data(), w.width, w.height);
   for (std::size_t s = 0; s < slots; ++s) {
@@ -169,6 +171,17 @@ void Stepper::penetrate_rows(const StepInputs& in, int r0, int r1) {
       row_contacts_[static_cast<std::size_t>(y)] =
           penetrate_row(begin, end, head, ground, wet, pen, cell, weight, on_brush);
     }
+    // The row's touching cells lie in [first, last + 1).
+    int first_touch = w.width, last_touch = -1;
+    if (row_contacts_[static_cast<std::size_t>(y)] > 0) {
+      for (int x = 0; x < w.width; ++x)
+        if (cell[x] >= 0) {
+          first_touch = std::min(first_touch, x);
+          last_touch = x;
+        }
+    }
+    contact_lo_[static_cast<std::size_t>(y)] = first_touch;
+    contact_hi_[static_cast<std::size_t>(y)] = last_touch + 1;
   }
 }
 
@@ -206,9 +219,13 @@ void Stepper::transfer_rows(const StepInputs& in, int r0, int r1) {
   const float* brush_pigment = in.brush->pigment_mm().data();
   const std::size_t brush_cells = in.brush->cell_count();
   for (int y = r0; y < r1; ++y) {
-    const std::size_t row = static_cast<std::size_t>(y + 1) * w.stride() + 1;
-    const std::size_t first = static_cast<std::size_t>(y) * w.width;
-    transfer_row(w.width, split, brush_cell_.data() + first, brush_paint_at_.data() + first,
+    // Only the row's active span: elsewhere nothing touches (see step).
+    const int lo = span_lo_[static_cast<std::size_t>(y)],
+              hi = span_hi_[static_cast<std::size_t>(y)];
+    if (hi <= lo) continue;
+    const std::size_t row = static_cast<std::size_t>(y + 1) * w.stride() + 1 + lo;
+    const std::size_t first = static_cast<std::size_t>(y) * w.width + lo;
+    transfer_row(hi - lo, split, brush_cell_.data() + first, brush_paint_at_.data() + first,
                  // (Where the cap cannot bind the brush paint stands in: no extra stream.)
                  (in.sharing_binds ? brush_share_cap_.data() : brush_paint_at_.data()) + first,
                  pen_.data() + row, ground_.data() + row, wet_.data() + row, new_wet_.data() + row,
@@ -216,7 +233,7 @@ void Stepper::transfer_rows(const StepInputs& in, int r0, int r1) {
     for (int s = 0; s < in.slot_count; ++s) {
       const std::size_t k = static_cast<std::size_t>(s);
       // (The brush changes only in the next pass: its pigments are read here directly.)
-      transfer_pigment_row(w.width, brush_cell_.data() + first, xfer_.data() + first,
+      transfer_pigment_row(hi - lo, brush_cell_.data() + first, xfer_.data() + first,
                            xfer_ratio_.data() + first, brush_pigment + k * brush_cells,
                            new_pigment_.data() + k * n + row,
                            xfer_pigment_.data() + k * cells + first);
@@ -275,12 +292,15 @@ IMPASTO_SIMD_CLONES void Stepper::apply_squeeze_rows(int slot_count, int r0, int
         k == 0 ? new_wet_.data() : new_pigment_.data() + static_cast<std::size_t>(k - 1) * n;
     float* out = k == 0 ? wet_.data() : pigment_.data() + static_cast<std::size_t>(k - 1) * n;
     for (int y = r0; y < r1; ++y) {
+      // Only the row's active span: elsewhere every face is 0 and out already equals q.
+      const int lo = span_lo_[static_cast<std::size_t>(y)];
+      const int hi = span_hi_[static_cast<std::size_t>(y)];
       const std::ptrdiff_t row = (y + 1) * s + 1;
       const float* __restrict e = face_east_.data() + row;    // e[-1]: the west face
       const float* __restrict so = face_south_.data() + row;  // so[-s]: the north face
       const float* __restrict c = q + row;
       float* __restrict o = out + row;
-      for (int x = 0; x < w.width; ++x) {
+      for (int x = lo; x < hi; ++x) {
         const float ee = e[x], ew = e[x - 1], es = so[x], en = so[x - s];
         float value = c[x];
         value += -(std::max(ee, 0.0f) * c[x]) - std::min(ee, 0.0f) * c[x + 1];
@@ -391,8 +411,13 @@ void Stepper::copy_rows_to_tiles(Canvas& canvas, int slot_count, const float* we
       if (only_tile >= 0 && index != only_tile) continue;
       Tile* tile = canvas.tile_slot(index).get();
       if (!tile) continue;  // (made afterwards if paint arrived, see scatter)
-      const int begin = std::max(w.x0, tx * kTileSize);
-      const int end = std::min(w.x0 + w.width, (tx + 1) * kTileSize);
+      // A whole new tile's rows, or else only the row's active span (the rest is unchanged).
+      const bool whole = only_tile >= 0;
+      const int span_lo = whole ? 0 : span_lo_[static_cast<std::size_t>(y)];
+      const int span_hi = whole ? w.width : span_hi_[static_cast<std::size_t>(y)];
+      const int begin = std::max(w.x0 + span_lo, tx * kTileSize);
+      const int end = std::min(w.x0 + span_hi, (tx + 1) * kTileSize);
+      if (end <= begin) continue;
       const std::size_t local =
           static_cast<std::size_t>((cy % kTileSize) * kTileSize + begin - tx * kTileSize);
       const std::size_t src =
@@ -579,8 +604,34 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
     to_.push_back(new_pigment_.data() + static_cast<std::size_t>(s) * win_.padded());
   }
   const bool transfers = in.relax > 0.0f;  // a brush neither moving nor pressing moves nothing
+  // Paint changes only within a cell of a touching cell (the drag, the transfer and the
+  // squeeze all reach one cell): each row's active span. Beyond it every pass would give back
+  // its input bit for bit, so the passes skip it and the scatter leaves it alone.
+  for (int y = 0; y < rows; ++y) {
+    int lo = cols, hi = 0;
+    for (int near = std::max(y - 1, 0); near <= std::min(y + 1, rows - 1); ++near) {
+      const auto k = static_cast<std::size_t>(near);
+      if (contact_hi_[k] <= contact_lo_[k]) continue;
+      lo = std::min(lo, contact_lo_[k] - 1);
+      hi = std::max(hi, contact_hi_[k] + 1);
+    }
+    span_lo_[static_cast<std::size_t>(y)] = std::clamp(lo, 0, cols);
+    span_hi_[static_cast<std::size_t>(y)] = std::clamp(hi, 0, cols);
+    if (span_hi_[static_cast<std::size_t>(y)] <= span_lo_[static_cast<std::size_t>(y)])
+      span_lo_[static_cast<std::size_t>(y)] = span_hi_[static_cast<std::size_t>(y)] = 0;
+  }
   parallel_rows(rows, cols, [&](int r0, int r1) {
-    advection_.apply_rows(from_.data(), to_.data(), static_cast<int>(from_.size()), r0, r1);
+    for (int y = r0; y < r1; ++y) {
+      const int lo = span_lo_[static_cast<std::size_t>(y)];
+      const int hi = span_hi_[static_cast<std::size_t>(y)];
+      // Outside the span the step's grids hold the input (the squeeze reads neighbours).
+      const std::size_t row = static_cast<std::size_t>(y + 1) * win_.stride() + 1;
+      for (std::size_t k = 0; k < from_.size(); ++k) {
+        std::copy_n(from_[k] + row, lo, to_[k] + row);
+        std::copy_n(from_[k] + row + hi, cols - hi, to_[k] + row + hi);
+      }
+      advection_.apply_span(from_.data(), to_.data(), static_cast<int>(from_.size()), y, lo, hi);
+    }
     if (transfers) transfer_rows(in, r0, r1);
   });
   // 3. The brush gives what the canvas took, and the squeeze's faces. Canvas rows that share

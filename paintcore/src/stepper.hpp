@@ -107,8 +107,10 @@ class Stepper {
   std::vector<float> xfer_pigment_;            // pigment moved brush -> canvas, slot-major
   std::vector<std::int32_t> brush_share_;      // canvas cells touching each brush cell
   std::vector<int> row_contacts_;
-  std::vector<const float*> from_;  // the quantities advection moves
-  std::vector<float*> to_;          // and where they go
+  std::vector<int> contact_lo_, contact_hi_;  // each row's touching cells, [lo, hi)
+  std::vector<int> span_lo_, span_hi_;        // and where paint can change (see step)
+  std::vector<const float*> from_;            // the quantities advection moves
+  std::vector<float*> to_;                    // and where they go
   Advection advection_;
   // Weave heights of the window's tiles; tiles never painted are cached here, so hovering
   // costs no tile memory.

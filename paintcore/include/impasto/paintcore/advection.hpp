@@ -39,6 +39,8 @@ class Advection {
   void prepare_quadrant_rows(int y0, int y1, int sign_x, int sign_y, const float* vx,
                              const float* vy, const float* volume, float min_film_mm);
   void apply_rows(const float* const* q, float* const* out, int count, int y0, int y1) const;
+  // apply_rows on row y's cells [x0, x1) only.
+  void apply_span(const float* const* q, float* const* out, int count, int y, int x0, int x1) const;
 
   int width() const { return width_; }
   int height() const { return height_; }
