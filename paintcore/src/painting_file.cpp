@@ -29,7 +29,11 @@ constexpr std::size_t kHeaderBytes = sizeof(kMagic) + 4 + 8;
 constexpr std::uint32_t kMaxStringBytes = 4096;
 // No cell holds a metre of paint: larger amounts (FLT_MAX in a crafted file) are refused.
 constexpr float kMaxAmountMm = 1000.0f;
-// Pigment in less paint than this (a denormal) is dropped on load: 1 / volume would overflow.
+// Pigment beyond kMaxPigmentRatio times a cell's paint plus kPigmentSlackMm cannot come from
+// painting (real cells hold pigment = paint, to rounding); pigment in less paint than
+// kMinPaintedVolumeMm (a denormal, where 1 / volume overflows) is dropped with it.
+constexpr double kMaxPigmentRatio = 4.0;
+constexpr double kPigmentSlackMm = 1e-6;
 constexpr float kMinPaintedVolumeMm = std::numeric_limits<float>::min();
 // The smallest stored wet tile (index and two planes) and dry tile (index, volume, count).
 constexpr std::uint64_t kMinWetTileBytes = 4 + 2 * kTileCells * sizeof(float);
@@ -167,20 +171,17 @@ class Reader {
   std::string file_;
 };
 
-// A cell's pigment is part of its paint: a crafted or damaged file whose amounts exceed the
-// cell's volume (or put pigment where there is no paint) would make concentrations above 1,
-// up to Inf. Such cells are scaled back to their volume; rounding (1e-6) is left alone.
+// A cell's pigment is part of its paint: a crafted or damaged file with far more pigment than
+// paint (900 mm of pigment in 1e-37 mm) would reach the renderer as concentrations of 1e39.
+// Such cells are scaled back to their paint (to none in a denormal volume). What rounding
+// leaves in nearly empty cells (0.5 % over in 2.6e-6 mm) is kept exactly, so that a save
+// loads back to the same state; the renderer bounds concentrations itself.
 void repair_pigment(const float* volume, float* pigment, int slots, std::size_t cells) {
   for (std::size_t c = 0; c < cells; ++c) {
     double sum = 0.0;
     for (int s = 0; s < slots; ++s) sum += pigment[static_cast<std::size_t>(s) * cells + c];
-    if (sum <= 0.0) continue;
-    double scale = 1.0;
-    if (!(volume[c] >= kMinPaintedVolumeMm))
-      scale = 0.0;
-    else if (sum > volume[c] * (1.0 + 1e-3))
-      scale = volume[c] / sum;
-    if (scale == 1.0) continue;
+    if (!(sum > kMaxPigmentRatio * volume[c] + kPigmentSlackMm)) continue;
+    const double scale = volume[c] >= kMinPaintedVolumeMm ? volume[c] / sum : 0.0;
     for (int s = 0; s < slots; ++s)
       pigment[static_cast<std::size_t>(s) * cells + c] =
           static_cast<float>(pigment[static_cast<std::size_t>(s) * cells + c] * scale);
