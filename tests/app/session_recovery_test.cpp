@@ -267,14 +267,9 @@ TEST(Rebuild, AnUndoReachingBackPastASaveUsesAnEarlierBase) {
 
 // A save mark is only as good as the round trip: the file must load with the hash the mark
 // took from the live painting, whatever the session did (several pigments, wipes, paint left
-// on the brush, a brush change).
-// DISABLED: fails since 79c5b63 (painting file: "pigment beyond a cell's paint scaled back"):
-// after these strokes the simulation leaves a brush cell holding 2.5928e-06 mm of paint and
-// 2.60703e-06 mm of pigment (0.55 % over, 1.4e-8 mm: float rounding), which the loader's
-// repair_pigment (relative slack 1e-3, no absolute slack) scales back, so the file loads
-// with another state hash and rebuild_session passes over this save's mark.
-// Enable once save -> load keeps every state the simulation makes.
-TEST(Rebuild, DISABLED_ASavedPaintingLoadsWithTheHashItsMarkNames) {
+// on the brush, a brush change). These strokes leave a brush cell holding 2.5928e-06 mm of
+// paint and 2.60703e-06 mm of pigment (float rounding), which the loader keeps exactly.
+TEST(Rebuild, ASavedPaintingLoadsWithTheHashItsMarkNames) {
   TempDir dir("impasto_rebuild_hash");
   LiveRun live(paintcore::CanvasSpec{240, 160, 254.0, 1});
   live.play({input::BrushEvent{"round", 4.0, 0.5, {}}});
