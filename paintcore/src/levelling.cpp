@@ -79,11 +79,35 @@ LevellingReport settle_wet_paint(Canvas& canvas, const std::vector<int>& tiles, 
            t.dry_height_mm[static_cast<std::size_t>(c)] +
            t.wet_volume_mm[static_cast<std::size_t>(c)];
   };
+  // A tile's faces depend on its cells and its east and south neighbours' edges, which only
+  // flows in the 3 x 3 tiles around it change: where none flowed last iteration its faces
+  // are what they were, all 0, and it is not visited again.
+  std::vector<int> listed_at(tile_at.size(), -1);
+  for (std::size_t k = 0; k < tiles.size(); ++k) {
+    const int tx = tiles[k] % canvas.tiles_x() - tx0, ty = tiles[k] / canvas.tiles_x() - ty0;
+    listed_at[static_cast<std::size_t>(ty) * tiles_across + static_cast<std::size_t>(tx)] =
+        static_cast<int>(k);
+  }
+  const int boxes_down = ty1 - ty0 + 1, boxes_across = tx1 - tx0 + 1;
+  std::vector<std::uint8_t> tile_flows(tiles.size(), 1), active(tiles.size(), 1);
   for (int it = 0; it < iterations; ++it) {
+    if (it > 0)
+      for (std::size_t k = 0; k < tiles.size(); ++k) {
+        const int tx = tiles[k] % canvas.tiles_x() - tx0, ty = tiles[k] / canvas.tiles_x() - ty0;
+        std::uint8_t near = 0;
+        for (int ny = std::max(ty - 1, 0); ny <= std::min(ty + 1, boxes_down - 1); ++ny)
+          for (int nx = std::max(tx - 1, 0); nx <= std::min(tx + 1, boxes_across - 1); ++nx) {
+            const int j = listed_at[static_cast<std::size_t>(ny) * tiles_across +
+                                    static_cast<std::size_t>(nx)];
+            if (j >= 0) near |= tile_flows[static_cast<std::size_t>(j)];
+          }
+        active[k] = near;
+      }
     // 1. Fluxes from the current state (signed: > 0 flows east / south). Each face is
     // computed alone from the state: tiles in parallel, the same bits on any thread count.
-    std::vector<std::uint8_t> tile_flows(tiles.size(), 0);
+    std::fill(tile_flows.begin(), tile_flows.end(), 0);
     tbb::parallel_for(std::size_t{0}, tiles.size(), [&](std::size_t k) {
+      if (!active[k]) return;
       Tile* a = canvas.tile_slot(tiles[k]).get();
       const int x0 = (tiles[k] % canvas.tiles_x() - tx0) * kTileSize;
       const int y0 = (tiles[k] / canvas.tiles_x() - ty0) * kTileSize;
@@ -124,7 +148,8 @@ LevellingReport settle_wet_paint(Canvas& canvas, const std::vector<int>& tiles, 
       break;
     report.iterations = it + 1;
     // 2. Move paint and pigments face by face: what one cell loses, the other gains.
-    for (std::size_t k = 0; k < tiles.size(); ++k)
+    for (std::size_t k = 0; k < tiles.size(); ++k) {
+      if (!tile_flows[k]) continue;  // (all its faces are 0)
       for_tile_cells(k, [&](std::size_t i, int x, int y) {
         for (int d = 0; d < 2; ++d) {
           const float flow = (d == 0 ? east : south)[i];
@@ -150,6 +175,7 @@ LevellingReport settle_wet_paint(Canvas& canvas, const std::vector<int>& tiles, 
           report.moved_mm3 += amount * canvas.spec().cell_area_mm2();
         }
       });
+    }
   }
   if (report.iterations > 0)
     for (const int index : tiles) canvas.mark_dirty(index);
