@@ -39,7 +39,7 @@ int run_command_line(int argc, char** argv) {
   root.require_subcommand(0, 1);
   root.set_version_flag("--version", "impasto 0.1.0");
   add_registered_commands(root);
-  add_pigment_folder_options(root);
+  setup_pigment_library(root);
   // Plain `impasto` opens the painting window where there is a display to show it on.
   const bool has_display = std::getenv("DISPLAY") || std::getenv("WAYLAND_DISPLAY");
   const bool has_window =

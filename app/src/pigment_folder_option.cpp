@@ -1,6 +1,7 @@
 #include "pigment_folder_option.hpp"
 
 #include <impasto/data/pigment_library.hpp>
+#include <impasto/render/pigment_records.hpp>
 
 #include <filesystem>
 #include <string>
@@ -21,8 +22,9 @@ void add_to(CLI::App& app) {
 
 }  // namespace
 
-void add_pigment_folder_options(CLI::App& root) {
+void setup_pigment_library(CLI::App& root) {
   add_to(root);
+  render::install_pigment_records();
 }
 
 }  // namespace impasto::app

@@ -57,7 +57,33 @@ int Painting::slot_for(const std::string& pigment) {
     throw std::runtime_error("pigment '" + pigment + "': a painting holds at most " +
                              std::to_string(kMaxPigmentSlots) + " pigments");
   slots.push_back(pigment);
+  if (const auto& source = pigment_record_source()) {
+    for (auto& [name, record] : source(pigment)) impl_->pigment_records.try_emplace(name, record);
+  }
   return static_cast<int>(slots.size()) - 1;
+}
+
+const std::map<std::string, std::string>& Painting::pigment_records() const {
+  return impl_->pigment_records;
+}
+
+void Painting::set_pigment_record(const std::string& name, std::string record) {
+  impl_->pigment_records[name] = std::move(record);
+}
+
+namespace {
+Painting::PigmentRecordSource& record_source() {
+  static Painting::PigmentRecordSource source;
+  return source;
+}
+}  // namespace
+
+void Painting::set_pigment_record_source(PigmentRecordSource source) {
+  record_source() = std::move(source);
+}
+
+const Painting::PigmentRecordSource& Painting::pigment_record_source() {
+  return record_source();
 }
 
 void Painting::set_params(const SimulationParams& params) {

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstring>
 #include <limits>
+#include <map>
 #include <stdexcept>
 
 #include "hasher.hpp"
@@ -22,11 +23,16 @@ namespace {
 constexpr char kMagic[8] = {'I', 'M', 'P', 'A', 'S', 'T', 'O', '\0'};
 // Version 2 added the cracks section; version 3 the physical transfer parameters (replacing
 // IMPaSTo's per-step ones, which older files' readers skip), the paint body on the brush and
-// the head's bristles. Versions 1 and 2 still load, with today's default parameters.
-constexpr std::uint32_t kVersion = 3;
+// the head's bristles; version 4 the pigments' records (their spectra, so the painting renders
+// the same without the library). Versions 1 and 2 still load, with today's default parameters;
+// files before version 4 render with the library's pigments.
+constexpr std::uint32_t kVersion = 4;
 constexpr std::uint32_t kOldestVersion = 1;
 constexpr std::size_t kHeaderBytes = sizeof(kMagic) + 4 + 8;
 constexpr std::uint32_t kMaxStringBytes = 4096;
+// A pigment record is a spectral CSV with its flake data: kilobytes; 16 MB is far beyond any.
+constexpr std::uint32_t kMaxRecordBytes = 16u << 20;
+constexpr std::uint32_t kMaxPigmentRecords = 4 * kMaxPigmentSlots;
 // No cell holds a metre of paint: larger amounts (FLT_MAX in a crafted file) are refused.
 constexpr float kMaxAmountMm = 1000.0f;
 // Pigment beyond kMaxPigmentRatio times a cell's paint plus kPigmentSlackMm cannot come from
@@ -129,9 +135,9 @@ class Reader {
         fail(field, "value " + std::to_string(i) + why);
       }
   }
-  std::string get_string(const std::string& field) {
+  std::string get_string(const std::string& field, std::uint32_t max_bytes = kMaxStringBytes) {
     const auto size = get<std::uint32_t>(field + " length");
-    if (size > kMaxStringBytes) fail(field, "length " + std::to_string(size) + " is absurd");
+    if (size > max_bytes) fail(field, "length " + std::to_string(size) + " is absurd");
     need(size, field);
     std::string s(size, '\0');
     read(s.data(), size);
@@ -280,14 +286,28 @@ CrackLayer read_cracks(Reader& r, const Canvas& canvas, const std::string& file)
 }  // namespace
 
 struct PaintingFile {
+  using Records = std::map<std::string, std::string>;
   template <typename W>
-  static void write_payload(const Painting::Impl& p, W& w);
+  static void write_payload(const Painting::Impl& p, const Records& records, W& w);
+  // The painting's records, and the record source's for slots that have none.
+  static Records records_to_save(const Painting::Impl& p);
   static void save(const Painting::Impl& p, const std::filesystem::path& file);
   static std::unique_ptr<Painting::Impl> load(const std::filesystem::path& file, int threads);
 };
 
+PaintingFile::Records PaintingFile::records_to_save(const Painting::Impl& p) {
+  Records records = p.pigment_records;
+  if (const auto& source = Painting::pigment_record_source()) {
+    for (const std::string& slot : p.slots) {
+      if (records.count(slot)) continue;
+      for (auto& [name, record] : source(slot)) records.try_emplace(name, record);
+    }
+  }
+  return records;
+}
+
 template <typename W>
-void PaintingFile::write_payload(const Painting::Impl& p, W& w) {
+void PaintingFile::write_payload(const Painting::Impl& p, const Records& records, W& w) {
   const CanvasSpec& spec = p.canvas.spec();
   w.put(static_cast<std::int32_t>(spec.width_cells));
   w.put(static_cast<std::int32_t>(spec.height_cells));
@@ -362,12 +382,18 @@ void PaintingFile::write_payload(const Painting::Impl& p, W& w) {
          {head.bristles.spacing_mm, head.bristles.depth_mm, head.bristles.jitter, head.splay})
       w.put(v);
   }
+  w.put(static_cast<std::uint32_t>(records.size()));
+  for (const auto& [name, record] : records) {
+    w.put_string(name);
+    w.put_string(record);
+  }
 }
 
 void PaintingFile::save(const Painting::Impl& p, const std::filesystem::path& file) {
+  const Records records = records_to_save(p);
   CountingSink counter;
   Writer<CountingSink> count(counter);
-  write_payload(p, count);
+  write_payload(p, records, count);
   files::AtomicFile out(file);
   Writer<files::AtomicFile> header(out);
   for (char c : kMagic) header.put(c);
@@ -375,7 +401,7 @@ void PaintingFile::save(const Painting::Impl& p, const std::filesystem::path& fi
   header.put(counter.bytes());
   HashingFileSink sink(out);
   Writer<HashingFileSink> payload(sink);
-  write_payload(p, payload);
+  write_payload(p, records, payload);
   if (sink.bytes() != counter.bytes())
     throw std::logic_error("painting save: the payload changed size between passes");
   header.put(sink.digest());
@@ -559,6 +585,17 @@ std::unique_ptr<Painting::Impl> PaintingFile::load(const std::filesystem::path& 
     rebuilt.pigment_mm() = p->brush.pigment_mm();
     rebuilt.set_body(static_cast<PaintBody>(body));
     p->brush = std::move(rebuilt);
+  }
+  if (version >= 4) {
+    const auto records = r.get_count("pigments.count", kMaxPigmentRecords, 8);
+    for (std::uint32_t k = 0; k < records; ++k) {
+      const std::string field = "pigments[" + std::to_string(k) + "]";
+      std::string pigment = r.get_string(field + ".name");
+      if (pigment.empty()) r.fail(field + ".name", "empty pigment name");
+      std::string record = r.get_string(field + ".record", kMaxRecordBytes);
+      if (!p->pigment_records.emplace(std::move(pigment), std::move(record)).second)
+        r.fail(field + ".name", "a pigment's record appears twice");
+    }
   }
   if (!r.at_end()) r.fail("end", "unexpected bytes after the last field");
   for (int index = 0; index < tile_count; ++index)

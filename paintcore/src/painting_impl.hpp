@@ -24,6 +24,7 @@ struct Painting::Impl {
   int threads;
   tbb::task_arena arena;
   std::vector<std::string> slots;
+  std::map<std::string, std::string> pigment_records;  // name -> record (painting.hpp)
   SimulationParams params;
   Brush brush;
   Ledger ledger;

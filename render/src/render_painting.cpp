@@ -16,7 +16,7 @@ void check_render_memory(const paintcore::Canvas& canvas, const std::string& whe
 }
 
 Image render_painting(const paintcore::Painting& painting, const RenderSettings& settings) {
-  TileRenderer renderer(settings, painting.pigment_slots());
+  TileRenderer renderer(settings, SpectralPalette(settings, painting));
   renderer.render_all(painting.canvas());
   return renderer.image();
 }

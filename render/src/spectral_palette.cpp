@@ -7,6 +7,7 @@
 #include "impasto/data/lights.hpp"
 #include "impasto/render/kubelka_munk.hpp"
 #include "impasto/render/node_optimisation.hpp"
+#include "impasto/render/pigment_records.hpp"
 
 namespace impasto::render {
 namespace {
@@ -26,14 +27,30 @@ data::Spectrum hiding_reflectance(const data::Pigment& pigment) {
 }
 
 SpectralPalette::SpectralPalette(const RenderSettings& settings,
-                                 std::span<const std::string> pigment_names) {
+                                 std::span<const std::string> pigment_names)
+    : SpectralPalette(settings, pigment_names, nullptr) {}
+
+SpectralPalette::SpectralPalette(const RenderSettings& settings,
+                                 std::span<const std::string> pigment_names,
+                                 CarriedPigments carried) {
   const auto& database = data::PigmentDatabase::defaults();
+  const auto find = [&](const std::string& name) -> const data::Pigment& {
+    if (carried) {
+      if (const auto it = carried->find(name); it != carried->end()) return it->second;
+    }
+    return database.get(name);
+  };
   std::vector<data::Pigment> pigments;
-  for (const auto& name : pigment_names) pigments.push_back(database.get(name));
+  for (const auto& name : pigment_names) pigments.push_back(find(name));
   const data::Spectrum ground =
-      settings.ground ? *settings.ground : hiding_reflectance(database.get(kGroundPigment));
+      settings.ground ? *settings.ground : hiding_reflectance(find(kGroundPigment));
   build(settings, data::light_from_spec(settings.light), pigments, ground);
+  carried_ = std::move(carried);
 }
+
+SpectralPalette::SpectralPalette(const RenderSettings& settings,
+                                 const paintcore::Painting& painting)
+    : SpectralPalette(settings, painting.pigment_slots(), carried_pigments(painting)) {}
 
 SpectralPalette::SpectralPalette(const RenderSettings& settings, const data::Spectrum& light,
                                  std::vector<data::Pigment> pigments,

@@ -90,7 +90,7 @@ TileRenderer::TileRenderer(TileRenderer&&) noexcept = default;
 TileRenderer& TileRenderer::operator=(TileRenderer&&) noexcept = default;
 
 void TileRenderer::set_settings(const RenderSettings& settings) {
-  set_settings(settings, SpectralPalette(settings, palette_.pigment_names()));
+  set_settings(settings, SpectralPalette(settings, palette_.pigment_names(), palette_.carried()));
 }
 
 void TileRenderer::set_settings(const RenderSettings& settings, SpectralPalette palette) {

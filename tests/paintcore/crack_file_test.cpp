@@ -15,11 +15,13 @@ namespace impasto::paintcore {
 namespace {
 
 constexpr std::size_t kHeaderBytes = 8 + 4 + 8;  // magic, version, payload size
-constexpr std::uint32_t kVersion = 3;            // what save() writes
-// Version 3's payload: the canvas spec (24 bytes), the f64 parameters (7 in older versions), and
-// after the cracks section the brush's body and bristles (u8 + 4 f64).
+constexpr std::uint32_t kVersion = 4;            // what save() writes
+// Version 4's payload: the canvas spec (24 bytes), the f64 parameters (7 in older versions),
+// after the cracks section the brush's body and bristles (u8 + 4 f64) (since version 3), then
+// the pigments' records (since version 4; without a record source: a u32 zero).
 constexpr std::size_t kParamsOffset = 4 + 4 + 8 + 8;
 constexpr std::size_t kBrushExtrasBytes = 1 + 4 * 8;
+constexpr std::size_t kNoRecordsBytes = 4;
 // Bytes of a cracks section holding one tile with one crack cell.
 constexpr std::size_t kOneCrackSection = 4 + (4 + 4) + (2 + 4 + 4 + 1 + 1);
 
@@ -61,8 +63,9 @@ class CrackFileTest : public ::testing::Test {
     }
     return "no error";
   }
-  // A version-2 payload from a version-3 one of a painting with a brush: IMPaSTo's seven
-  // parameters (any valid values, the adhesion film kept) and no brush extras at the end.
+  // A version-2 payload from a version-4 one of a painting with a brush and no pigment records:
+  // IMPaSTo's seven parameters (any valid values, the adhesion film kept) and no brush extras
+  // or records at the end.
   static std::vector<unsigned char> as_version_two(std::vector<unsigned char> payload) {
     const auto fields = simulation_param_fields();
     const auto film = std::find_if(fields.begin(), fields.end(), [](const NamedParam& f) {
@@ -76,7 +79,7 @@ class CrackFileTest : public ::testing::Test {
     payload.erase(payload.begin() + kParamsOffset,
                   payload.begin() + kParamsOffset + static_cast<std::ptrdiff_t>(8 * fields.size()));
     payload.insert(payload.begin() + kParamsOffset, old.begin(), old.end());
-    payload.resize(payload.size() - kBrushExtrasBytes);
+    payload.resize(payload.size() - kBrushExtrasBytes - kNoRecordsBytes);
     return payload;
   }
   static std::vector<unsigned char> read(const std::filesystem::path& file) {
@@ -196,6 +199,37 @@ TEST_F(CrackFileTest, VersionOneFilesStillLoad) {
   EXPECT_NE(load_error(v1).find("unexpected bytes"), std::string::npos) << load_error(v1);
 }
 
+TEST_F(CrackFileTest, PigmentRecordsRoundTripAndVersionThreeFilesLoadWithoutThem) {
+  Painting p = sample();
+  p.set_pigment_record("red", "# quantity: kubelka_munk\n# name: red\n");
+  p.set_pigment_record("blue", std::string(100000, 'b'));  // longer than a name may be
+  const auto file = dir_ / "records.impasto";
+  p.save(file);
+  const Painting loaded = Painting::load(file, 1);
+  EXPECT_EQ(loaded.pigment_records(), p.pigment_records());
+  EXPECT_EQ(loaded.state_hash(), p.state_hash());
+  // Version 3: the same payload without the records section.
+  const Painting bare = sample();
+  bare.save(file);
+  std::vector<unsigned char> payload = payload_of(read(file));
+  payload.resize(payload.size() - kNoRecordsBytes);
+  write(file, 3, payload);
+  const Painting old = Painting::load(file, 1);
+  EXPECT_TRUE(old.pigment_records().empty());
+  EXPECT_EQ(old.state_hash(), bare.state_hash());
+}
+
+TEST_F(CrackFileTest, NewSlotsTakeTheirRecordsFromTheRecordSource) {
+  Painting::set_pigment_record_source([](const std::string& name) {
+    return std::map<std::string, std::string>{{name, "record of " + name}, {"white", "w"}};
+  });
+  Painting p(CanvasSpec{64, 64, 254.0, 4}, 1);
+  p.slot_for("green");
+  Painting::set_pigment_record_source({});
+  EXPECT_EQ(p.pigment_records(),
+            (std::map<std::string, std::string>{{"green", "record of green"}, {"white", "w"}}));
+}
+
 TEST_F(CrackFileTest, CracksOnALayerThatAnUndoRemovedStillSaveAndLoad) {
   Painting p = sample();
   CrackLayer cracks;
@@ -216,7 +250,7 @@ TEST_F(CrackFileTest, BadCrackRecordsInAFileNameTheFileAndField) {
   const auto good = dir_ / "good.impasto";
   p.save(good);
   const std::vector<unsigned char> payload = payload_of(read(good));
-  const std::size_t section = payload.size() - kOneCrackSection;
+  const std::size_t section = payload.size() - kOneCrackSection - kNoRecordsBytes;
   const auto bad = dir_ / "bad.impasto";
   const auto corrupt = [&](std::size_t offset, const void* value, std::size_t bytes) {
     std::vector<unsigned char> edited = payload;

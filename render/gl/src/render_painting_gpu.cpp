@@ -66,7 +66,7 @@ render::Image render_painting_close_up_gpu(const paintcore::Painting& painting,
   options.crack_close_up_min_pixels = 1.0f;  // shown at any zoom, as the CPU's --zoom does
   options.smooth_zoom = false;               // cells magnified, as the CPU's close-up shows them
   CanvasRenderer renderer(canvas.width_cells(), canvas.height_cells(), linear,
-                          render::SpectralPalette(linear, painting.pigment_slots()), options);
+                          render::SpectralPalette(linear, painting), options);
   renderer.upload_all(canvas);
   const CanvasView view{region.x + 0.5 * region.w, region.y + 0.5 * region.h,
                         static_cast<double>(pixels_per_cell), 0.0};
@@ -110,8 +110,8 @@ void render_painting_gpu_to_file(const paintcore::Painting& painting,
   render::RenderSettings file_settings = settings;
   if (type == render::ImageFileType::exr)
     file_settings.display = render::DisplayEncoding::linear_srgb;
-  const render::Image image =
-      render_painting_gpu(painting.canvas(), painting.pigment_slots(), file_settings, backend);
+  const render::Image image = render_painting_gpu(
+      painting.canvas(), file_settings, render::SpectralPalette(file_settings, painting), backend);
   if (type == render::ImageFileType::png) {
     render::write_png(path, image);
   } else {

@@ -3,6 +3,8 @@
 // load/wipe ledger and the undo history, driven by pen samples. The public face of paintcore.
 #include <cstdint>
 #include <filesystem>
+#include <functional>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -44,6 +46,19 @@ class Painting {
   int slot_for(const std::string& pigment);  // finds or allocates; throws beyond 16 slots
   const std::vector<std::string>& pigment_slots() const;
   int slot_count() const { return static_cast<int>(pigment_slots().size()); }
+
+  // The pigments' own data, carried so the painting renders the same without the library or
+  // after it changes (docs/painting-format.md, version 4): name -> record (a pigment file's
+  // text with its flake data, render/pigment_records.hpp; paintcore keeps the bytes). A slot
+  // takes its records from the record source when it is allocated; save() adds any missing.
+  const std::map<std::string, std::string>& pigment_records() const;
+  void set_pigment_record(const std::string& name, std::string record);
+  // Records to carry for a pigment: itself and what it renders with (the ground's white).
+  using PigmentRecordSource =
+      std::function<std::map<std::string, std::string>(const std::string& pigment)>;
+  // Process-wide, set once before painting (render::install_pigment_records); none: no records.
+  static void set_pigment_record_source(PigmentRecordSource source);
+  static const PigmentRecordSource& pigment_record_source();
 
   void set_params(const SimulationParams& params);  // validated
   const SimulationParams& params() const;

@@ -4,12 +4,15 @@
 // display-referred XYZ. Rebuilt when the light, the node count or the pigments change.
 #include <array>
 #include <filesystem>
+#include <map>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
 
 #include "impasto/data/pigments.hpp"
 #include "impasto/data/spectrum.hpp"
+#include "impasto/paintcore/painting.hpp"
 #include "impasto/render/render_settings.hpp"
 #include "impasto/render/spectral_sampling.hpp"
 
@@ -21,6 +24,13 @@ class SpectralPalette {
   // ground from settings.ground (or titanium white's R∞). Throws std::runtime_error naming
   // an unknown light or pigment.
   SpectralPalette(const RenderSettings& settings, std::span<const std::string> pigment_names);
+  // Pigments a painting carries (render/pigment_records.hpp) by name; the rest, and the
+  // ground's white when it is not among them, from the default database.
+  using CarriedPigments = std::shared_ptr<const std::map<std::string, data::Pigment>>;
+  SpectralPalette(const RenderSettings& settings, std::span<const std::string> pigment_names,
+                  CarriedPigments carried);
+  // The painting's slots with the pigments it carries (bit-identical without the library).
+  SpectralPalette(const RenderSettings& settings, const paintcore::Painting& painting);
   // The same from explicit data (tests, benchmarks, files).
   SpectralPalette(const RenderSettings& settings, const data::Spectrum& light,
                   std::vector<data::Pigment> pigments, const data::Spectrum& ground);
@@ -28,6 +38,7 @@ class SpectralPalette {
   int nodes() const { return sampling_.size(); }
   int pigment_count() const { return static_cast<int>(pigment_names_.size()); }
   const std::vector<std::string>& pigment_names() const { return pigment_names_; }
+  const CarriedPigments& carried() const { return carried_; }
   const SpectralSampling& sampling() const { return sampling_; }
 
   // K and S of a pigment at every node (nodes() values each).
@@ -55,10 +66,11 @@ class SpectralPalette {
 
   SpectralSampling sampling_;
   std::vector<std::string> pigment_names_;
+  CarriedPigments carried_;
   std::vector<float> absorption_, scattering_;  // pigment-major, nodes() per pigment
   std::vector<float> ground_;
   std::vector<std::filesystem::path> flake_files_;  // one per pigment
-  std::vector<float> to_xyz_;  // 3 rows of nodes()
+  std::vector<float> to_xyz_;                       // 3 rows of nodes()
   std::array<float, 3> white_xyz_{};
 };
 

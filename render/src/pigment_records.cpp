@@ -1,0 +1,185 @@
+#include "impasto/render/pigment_records.hpp"
+
+#include <unistd.h>
+
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <stdexcept>
+
+#include "impasto/data/pigment_text.hpp"
+#include "impasto/files/atomic_file.hpp"
+#include "impasto/files/input_file.hpp"
+#include "impasto/files/message_text.hpp"
+
+namespace impasto::render {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr std::string_view kFileMark = "#impasto-record-file ";
+constexpr const char* kGroundPigment = "Titanium White";  // as spectral_palette.cpp
+
+std::uint64_t fnv1a(std::string_view bytes) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (unsigned char c : bytes) h = (h ^ c) * 1099511628211ull;
+  return h;
+}
+
+// "key = value" of a flake paint file, or empty.
+std::string flake_field(const std::string& text, const std::string& key) {
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string line = text.substr(start, end - start);
+    start = end + 1;
+    const auto eq = line.find('=');
+    if (line.empty() || line[0] == '#' || eq == std::string::npos) continue;
+    auto trim = [](std::string s) {
+      s.erase(0, s.find_first_not_of(" \t\r"));
+      s.erase(s.find_last_not_of(" \t\r") + 1);
+      return s;
+    };
+    if (trim(line.substr(0, eq)) == key) return trim(line.substr(eq + 1));
+  }
+  return {};
+}
+
+// A file name a record may use: no folder part, nothing hidden.
+bool plain_file_name(const std::string& name) {
+  return !name.empty() && name[0] != '.' && name.find('/') == std::string::npos &&
+         name.size() < 256;
+}
+
+fs::path cache_root() {
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && xdg[0] == '/')
+    return fs::path(xdg) / "impasto" / "carried-flakes";
+  if (const char* home = std::getenv("HOME"); home && *home)
+    return fs::path(home) / ".cache" / "impasto" / "carried-flakes";
+  return fs::temp_directory_path() / ("impasto-carried-flakes-" + std::to_string(getuid()));
+}
+
+}  // namespace
+
+std::string pigment_record(const data::Pigment& pigment) {
+  data::Pigment copy = pigment;
+  if (pigment.flakes.empty()) {
+    copy.metadata.erase("flakes");
+    return data::format_pigment_text(copy);
+  }
+  const std::string flake_name = pigment.flakes.filename().string();
+  copy.metadata["flakes"] = flake_name;
+  std::string record = data::format_pigment_text(copy);
+  const std::string flake_text = files::read_whole_file(pigment.flakes, "flake paint");
+  record += std::string(kFileMark) + flake_name + "\n" + flake_text;
+  if (!record.empty() && record.back() != '\n') record += '\n';
+  if (const std::string table = flake_field(flake_text, "nk_table"); !table.empty()) {
+    if (!plain_file_name(table))
+      throw std::runtime_error(pigment.flakes.string() + ": field 'nk_table': " +
+                               files::excerpt(table) + " is not a file beside it");
+    record += std::string(kFileMark) + table + "\n" +
+              files::read_whole_file(pigment.flakes.parent_path() / table, "n,k table");
+  }
+  return record;
+}
+
+data::Pigment pigment_from_record(const std::string& record, const std::string& where) {
+  // Split into the pigment text and the named files after it.
+  std::vector<std::pair<std::string, std::string>> files;
+  std::string text;
+  std::size_t start = 0;
+  std::string* into = &text;
+  while (start < record.size()) {
+    std::size_t end = record.find('\n', start);
+    end = end == std::string::npos ? record.size() : end + 1;
+    const std::string_view line(record.data() + start, end - start);
+    start = end;
+    if (line.substr(0, kFileMark.size()) == kFileMark) {
+      std::string name(line.substr(kFileMark.size()));
+      while (!name.empty() && (name.back() == '\n' || name.back() == '\r')) name.pop_back();
+      if (!plain_file_name(name))
+        throw std::runtime_error(where + ": a carried file is named " + files::excerpt(name));
+      files.emplace_back(name, std::string());
+      into = &files.back().second;
+      continue;
+    }
+    into->append(line);
+  }
+  data::Pigment pigment = data::parse_pigment_text(text, where);
+  const auto flakes = pigment.metadata.find("flakes");
+  if (flakes == pigment.metadata.end()) return pigment;
+  bool found = false;
+  for (const auto& file : files) found = found || file.first == flakes->second;
+  if (!found)
+    throw std::runtime_error(where + ": pigment " + files::excerpt(pigment.name) +
+                             " names flake file " + files::excerpt(flakes->second) +
+                             " but does not carry it");
+  char hash[17];
+  std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(fnv1a(record)));
+  const fs::path folder = cache_root() / hash;
+  fs::create_directories(folder);
+  for (const auto& [name, contents] : files) {
+    const fs::path path = folder / name;
+    std::error_code error;
+    if (fs::is_regular_file(path, error) && fs::file_size(path, error) == contents.size() &&
+        files::read_whole_file(path, "carried flake file") == contents)
+      continue;
+    files::write_file_atomically(path, contents);
+  }
+  pigment.flakes = folder / flakes->second;
+  return pigment;
+}
+
+std::shared_ptr<const std::map<std::string, data::Pigment>> carried_pigments(
+    const paintcore::Painting& painting) {
+  auto carried = std::make_shared<std::map<std::string, data::Pigment>>();
+  for (const auto& [name, record] : painting.pigment_records()) {
+    // Keyed by the slot's spelling (the record holds the library's: "pyrrole red" may
+    // carry "Pyrrole Red").
+    carried->emplace(name,
+                     pigment_from_record(record, "the painting's pigment " + files::excerpt(name)));
+  }
+  return carried;
+}
+
+void install_pigment_records() {
+  paintcore::Painting::set_pigment_record_source([](const std::string& name) {
+    std::map<std::string, std::string> records;
+    const auto& db = data::PigmentDatabase::defaults();
+    if (const data::Pigment* pigment = db.find(name)) {
+      records.emplace(name, pigment_record(*pigment));  // under the slot's own spelling
+      if (name != kGroundPigment)
+        if (const data::Pigment* white = db.find(kGroundPigment))
+          records.emplace(kGroundPigment, pigment_record(*white));
+    }
+    return records;
+  });
+}
+
+std::vector<PigmentDrift> pigments_differing_from_library(const paintcore::Painting& painting) {
+  std::vector<PigmentDrift> drift;
+  const auto& db = data::PigmentDatabase::defaults();
+  for (const auto& [name, record] : painting.pigment_records()) {
+    const data::Pigment* pigment = db.find(name);
+    if (pigment == nullptr) {
+      drift.push_back({name, true});
+      continue;
+    }
+    std::string library;
+    try {
+      library = pigment_record(*pigment);
+    } catch (const std::exception&) {
+    }
+    if (library != record) drift.push_back({name, false});
+  }
+  return drift;
+}
+
+void use_library_pigments(paintcore::Painting& painting, const std::vector<std::string>& names) {
+  const auto& db = data::PigmentDatabase::defaults();
+  for (const auto& name : names) painting.set_pigment_record(name, pigment_record(db.get(name)));
+}
+
+}  // namespace impasto::render

@@ -1,0 +1,147 @@
+// Paintings carry their pigments (render/pigment_records.hpp): a painting made with a user
+// pigment renders bit-identically after that pigment leaves the library and after its K is
+// edited, says which pigments differ from the library, and can take the library's back.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "impasto/data/data_dir.hpp"
+#include "impasto/data/pigment_library.hpp"
+#include "impasto/paintcore/painting.hpp"
+#include "impasto/render/pigment_records.hpp"
+#include "impasto/render/render_painting.hpp"
+
+namespace impasto::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+class CarriedPigments : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("impasto_carried_pigments_" + std::to_string(getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(user());
+    if (const char* old = std::getenv("XDG_DATA_HOME")) saved_ = old;
+    setenv("XDG_DATA_HOME", (dir_ / "xdg").c_str(), 1);
+    setenv("XDG_CACHE_HOME", (dir_ / "cache").c_str(), 1);  // carried flake files go there
+    write_my_red(1.0);
+    data::reload_active_pigment_library();
+    render::install_pigment_records();
+  }
+  void TearDown() override {
+    paintcore::Painting::set_pigment_record_source({});
+    if (saved_.empty()) {
+      unsetenv("XDG_DATA_HOME");
+    } else {
+      setenv("XDG_DATA_HOME", saved_.c_str(), 1);
+    }
+    data::reload_active_pigment_library();
+    fs::remove_all(dir_);
+  }
+  fs::path user() const { return dir_ / "xdg" / "impasto" / "pigments"; }
+  // Pyrrole Red's file as "My Red", its K scaled.
+  void write_my_red(double k_scale) {
+    std::ifstream in(data::data_dir() / "pigments" / "pyrrole_red.csv");
+    std::ostringstream out;
+    bool header_seen = false;
+    for (std::string line; std::getline(in, line);) {
+      if (line.rfind("# name:", 0) == 0) line = "# name: My Red";
+      if (header_seen) {
+        const auto c1 = line.find(','), c2 = line.find(',', c1 + 1);
+        std::ostringstream row;
+        row.precision(17);
+        row << line.substr(0, c1) << ',' << std::stod(line.substr(c1 + 1, c2 - c1 - 1)) * k_scale
+            << line.substr(c2);
+        line = row.str();
+      }
+      if (line.rfind("wavelength_nm", 0) == 0) header_seen = true;
+      out << line << '\n';
+    }
+    std::ofstream(user() / "my_red.csv") << out.str();
+  }
+
+  fs::path dir_;
+  std::string saved_;
+};
+
+paintcore::Painting painted_with(const std::string& pigment) {
+  paintcore::Painting p({64, 48, 254.0, 3}, 1);
+  p.set_brush(paintcore::BrushSettings{"flat", 3.0, 0.5});
+  p.load_brush({{pigment, 1.0}, {"Titanium White", 0.2}}, 6.0);
+  p.begin_stroke();
+  for (int i = 0; i <= 20; ++i) {
+    paintcore::PenSample s;
+    s.time_s = 0.01 * i;
+    s.x_mm = 0.6 + 0.2 * i;
+    s.y_mm = 2.4;
+    s.pressure = 0.8f;
+    s.buttons = paintcore::kPenTip;
+    p.stroke_to(s);
+  }
+  p.end_stroke();
+  return p;
+}
+
+TEST_F(CarriedPigments, ARenderIsBitIdenticalAfterThePigmentIsRemovedOrEdited) {
+  const fs::path file = dir_ / "my_red.impasto";
+  painted_with("My Red").save(file);
+  render::RenderSettings settings;
+  const render::Image before =
+      render::render_painting(paintcore::Painting::load(file, 1), settings);
+
+  fs::remove(user() / "my_red.csv");
+  data::reload_active_pigment_library();
+  ASSERT_EQ(data::PigmentDatabase::defaults().find("My Red"), nullptr);
+  const paintcore::Painting orphan = paintcore::Painting::load(file, 1);
+  EXPECT_EQ(render::render_painting(orphan, settings).rgb, before.rgb) << "removed";
+  const auto missing = render::pigments_differing_from_library(orphan);
+  ASSERT_EQ(missing.size(), 1u);
+  EXPECT_TRUE(missing[0].missing_from_library);
+
+  write_my_red(1.5);
+  data::reload_active_pigment_library();
+  paintcore::Painting edited = paintcore::Painting::load(file, 1);
+  EXPECT_EQ(render::render_painting(edited, settings).rgb, before.rgb) << "K edited";
+  const auto drift = render::pigments_differing_from_library(edited);
+  ASSERT_EQ(drift.size(), 1u);
+  EXPECT_EQ(drift[0].name, "My Red");
+  EXPECT_FALSE(drift[0].missing_from_library);
+
+  // Taking the library's version re-renders with the new K: darker and different.
+  render::use_library_pigments(edited, {"My Red"});
+  EXPECT_TRUE(render::pigments_differing_from_library(edited).empty());
+  EXPECT_NE(render::render_painting(edited, settings).rgb, before.rgb);
+}
+
+TEST_F(CarriedPigments, AFlakePigmentCarriesItsFlakeFiles) {
+  const paintcore::Painting p = painted_with("Aluminium Metallic");
+  ASSERT_EQ(p.pigment_records().count("Aluminium Metallic"), 1u);
+  const auto carried = render::carried_pigments(p);
+  const data::Pigment& aluminium = carried->at("Aluminium Metallic");
+  ASSERT_FALSE(aluminium.flakes.empty());
+  EXPECT_TRUE(fs::is_regular_file(aluminium.flakes));
+  EXPECT_TRUE(fs::is_regular_file(aluminium.flakes.parent_path() / "aluminium_rakic1998_ld.csv"));
+  EXPECT_EQ(aluminium.K.values,
+            data::PigmentDatabase::defaults().get("Aluminium Metallic").K.values);
+}
+
+TEST_F(CarriedPigments, OlderPaintingsWithoutRecordsRenderWithTheLibrary) {
+  paintcore::Painting::set_pigment_record_source({});  // as before version 4
+  const fs::path file = dir_ / "old.impasto";
+  painted_with("My Red").save(file);
+  const paintcore::Painting loaded = paintcore::Painting::load(file, 1);
+  EXPECT_TRUE(loaded.pigment_records().empty());
+  EXPECT_NO_THROW(render::render_painting(loaded, render::RenderSettings{}));
+  fs::remove(user() / "my_red.csv");
+  data::reload_active_pigment_library();
+  EXPECT_THROW(render::render_painting(loaded, render::RenderSettings{}), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace impasto::app

@@ -1,0 +1,152 @@
+// `impasto pigments`: import/export round trips, the user layer's edits, check and fit's
+// refusal to overwrite, plot files.
+#include <gtest/gtest.h>
+#include <unistd.h>
+#include <CLI/CLI.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "command.hpp"
+#include "impasto/data/data_dir.hpp"
+#include "impasto/data/pigment_library.hpp"
+#include "impasto/data/spectral_csv.hpp"
+
+namespace impasto::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+class PigmentsCommand : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("impasto_pigments_command_" + std::to_string(getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    if (const char* old = std::getenv("XDG_DATA_HOME")) saved_ = old;
+    setenv("XDG_DATA_HOME", (dir_ / "xdg").c_str(), 1);
+    data::reload_active_pigment_library();
+  }
+  void TearDown() override {
+    if (saved_.empty()) {
+      unsetenv("XDG_DATA_HOME");
+    } else {
+      setenv("XDG_DATA_HOME", saved_.c_str(), 1);
+    }
+    data::reload_active_pigment_library();
+    fs::remove_all(dir_);
+  }
+  // Runs `impasto ARGS` through the registered commands (the library read again first, as a
+  // new process would).
+  static void run(const std::string& args) {
+    data::reload_active_pigment_library();
+    CLI::App root{"impasto"};
+    add_registered_commands(root);
+    root.parse(args, false);
+    data::reload_active_pigment_library();  // what the command changed
+  }
+  fs::path user() const { return dir_ / "xdg" / "impasto" / "pigments"; }
+
+  fs::path dir_;
+  std::string saved_;
+};
+
+TEST_F(PigmentsCommand, ImportThenExportLeavesNumbersAndMetadataUnchanged) {
+  const fs::path bundled = data::data_dir() / "pigments" / "quinacridone_magenta.csv";
+  std::string text = read_text(bundled);
+  text.replace(text.find("# name: Quinacridone Magenta"), 28, "# name: My Magenta");
+  std::ofstream(dir_ / "mine.csv") << text;
+  run("pigments import " + (dir_ / "mine.csv").string());
+  ASSERT_TRUE(fs::is_regular_file(user() / "my_magenta.csv"));
+  const data::LibraryPigment* origin = data::active_pigment_library().origin("My Magenta");
+  ASSERT_NE(origin, nullptr);
+  EXPECT_EQ(origin->layer, "user");
+  run("pigments export \"My Magenta\" --out " + (dir_ / "back.csv").string());
+
+  const data::SpectralTable in = data::read_spectral_csv(dir_ / "mine.csv");
+  const data::SpectralTable out = data::read_spectral_csv(dir_ / "back.csv");
+  EXPECT_EQ(in.metadata, out.metadata);
+  EXPECT_EQ(in.wavelengths_nm, out.wavelengths_nm);
+  ASSERT_EQ(in.columns.size(), out.columns.size());
+  for (std::size_t i = 0; i < in.columns.size(); ++i)
+    EXPECT_EQ(in.columns[i].values, out.columns[i].values) << in.columns[i].name;
+  // And a second round trip is byte for byte the first.
+  run("pigments import --force " + (dir_ / "back.csv").string());
+  run("pigments export \"My Magenta\" --out " + (dir_ / "again.csv").string());
+  EXPECT_EQ(read_text(dir_ / "back.csv"), read_text(dir_ / "again.csv"));
+  EXPECT_THROW(run("pigments import " + (dir_ / "back.csv").string()), std::runtime_error)
+      << "an existing user pigment is not replaced without --force";
+}
+
+TEST_F(PigmentsCommand, AddRenameRemoveTouchOnlyTheUserLayer) {
+  run("pigments add \"Warm Red\" --copy-of \"pyrrole red\" --set binder=oil");
+  const data::Pigment& added = data::active_pigment_library().database().get("Warm Red");
+  EXPECT_EQ(added.metadata.at("binder"), "oil");
+  EXPECT_NE(added.metadata.at("modified").find("copied from Pyrrole Red"), std::string::npos);
+  run("pigments rename \"warm red\" \"Hot Red\"");
+  EXPECT_FALSE(fs::exists(user() / "warm_red.csv"));
+  EXPECT_TRUE(fs::exists(user() / "hot_red.csv"));
+  run("pigments remove \"Hot Red\"");
+  EXPECT_FALSE(fs::exists(user() / "hot_red.csv"));
+  EXPECT_THROW(run("pigments remove \"Titanium White\""), std::runtime_error) << "bundled";
+  EXPECT_NE(data::active_pigment_library().database().find("Titanium White"), nullptr);
+}
+
+TEST_F(PigmentsCommand, CheckReportsEveryBadFile) {
+  const fs::path folder = dir_ / "check";
+  fs::create_directories(folder);
+  fs::copy_file(data::data_dir() / "pigments" / "red_oxide.csv", folder / "a.csv");
+  fs::copy_file(data::data_dir() / "pigments" / "red_oxide.csv", folder / "b.csv");
+  std::ofstream(folder / "c.csv")
+      << "# quantity: kubelka_munk\n# name: C\nwavelength_nm,K,S\n400,1,x\n";
+  try {
+    run("pigments check " + folder.string());
+    FAIL() << "a folder with errors passed";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("2 files have errors"), std::string::npos) << e.what();
+  }
+  fs::remove(folder / "b.csv");
+  fs::remove(folder / "c.csv");
+  EXPECT_NO_THROW(run("pigments check " + folder.string()));
+}
+
+TEST_F(PigmentsCommand, FitRefusesToOverwriteAndKeepsMetadata) {
+  const std::string fit =
+      "pigments fit " +
+      (data::data_dir() / "measurements" / "golden_synthetic_mixtures.csv").string() + " --out " +
+      (dir_ / "fit").string();
+  run(fit);
+  const fs::path white = dir_ / "fit" / "titanium_white.csv";
+  const std::string first = read_text(white);
+  EXPECT_NE(first.find("# fitted_from: golden_synthetic_mixtures.csv"), std::string::npos);
+  EXPECT_NE(first.find("# licence: CC BY-NC-SA"), std::string::npos) << "kept from the library";
+  EXPECT_THROW(run(fit), std::runtime_error);
+  EXPECT_EQ(read_text(white), first);
+  std::string edited = first;
+  edited.replace(edited.find("# binder: acrylic"), 17, "# binder: oils");
+  std::ofstream(white) << edited;
+  run(fit + " --force");
+  EXPECT_NE(read_text(white).find("# binder: oils"), std::string::npos);
+}
+
+TEST_F(PigmentsCommand, PlotWritesSvgAndPng) {
+  run("pigments plot \"Cobalt Blue\" --out " + (dir_ / "p.svg").string());
+  run("pigments plot \"Cobalt Blue\" --out " + (dir_ / "p.png").string());
+  EXPECT_NE(read_text(dir_ / "p.svg").find("Cobalt Blue"), std::string::npos);
+  EXPECT_GT(fs::file_size(dir_ / "p.png"), 1000u);
+  EXPECT_THROW(run("pigments plot \"Cobalt Blue\" --out " + (dir_ / "p.gif").string()),
+               std::runtime_error);
+}
+
+}  // namespace
+}  // namespace impasto::app
