@@ -18,13 +18,6 @@ endfunction()
 function(impasto_module name)
   cmake_parse_arguments(ARG "" "" "DEPS;PRIVATE_DEPS" ${ARGN})
   file(GLOB_RECURSE sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/src/*.cpp)
-  if(NOT sources)  # a module whose sources are not written yet: headers only
-    add_library(impasto_${name} INTERFACE)
-    add_library(impasto::${name} ALIAS impasto_${name})
-    target_include_directories(impasto_${name} INTERFACE ${CMAKE_CURRENT_SOURCE_DIR}/include)
-    target_link_libraries(impasto_${name} INTERFACE ${ARG_DEPS})
-    return()
-  endif()
   add_library(impasto_${name} STATIC ${sources})
   add_library(impasto::${name} ALIAS impasto_${name})
   target_include_directories(impasto_${name} PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}/include
@@ -60,6 +53,6 @@ function(impasto_test name)
     target_precompile_headers(impasto_gtest_pch PRIVATE <gtest/gtest.h>)
   endif()
   target_precompile_headers(${name} REUSE_FROM impasto_gtest_pch)
-  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60
-                       PROPERTIES ENVIRONMENT "IMPASTO_DATA_DIR=${PROJECT_SOURCE_DIR}/data")
+  # No $IMPASTO_DATA_DIR: the tests find data/ as any build-tree program does (files::data_dir).
+  gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60)
 endfunction()

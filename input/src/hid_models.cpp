@@ -6,6 +6,7 @@
 #include <fstream>
 #include <mutex>
 
+#include "impasto/files/data_dir.hpp"
 #include "impasto/files/message_text.hpp"
 #include "recording_input.hpp"
 #include "text_fields.hpp"
@@ -184,10 +185,7 @@ std::vector<TabletModel> load_tablet_models(const std::filesystem::path& path) {
 }
 
 std::filesystem::path default_tablet_models_path() {
-  if (const char* env = std::getenv("IMPASTO_DATA_DIR"); env && *env) {
-    return std::filesystem::path(env) / "tablets" / "models.tsv";
-  }
-  return std::filesystem::path(IMPASTO_INPUT_SOURCE_DATA_DIR) / "tablets" / "models.tsv";
+  return files::data_dir() / "tablets" / "models.tsv";
 }
 
 const std::vector<TabletModel>& default_tablet_models(std::string* error) {

@@ -4,10 +4,12 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
-#include <fstream>
 #include <numbers>
 #include <sstream>
 #include <stdexcept>
+
+#include "impasto/files/data_dir.hpp"
+#include "impasto/files/input_file.hpp"
 
 namespace impasto::paintcore {
 
@@ -144,16 +146,13 @@ BrushHead parse_brush_head(std::istream& in, const std::string& source) {
 }
 
 BrushHead load_brush_head(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) throw std::runtime_error(file.string() + ": cannot open brush head file");
+  // Through the bounded reader: folders and devices refused by name, the size capped (a head
+  // is a few lines; 1 MB is generous).
+  std::istringstream in(files::read_whole_file(file, "brush head file", std::uint64_t{1} << 20));
   return parse_brush_head(in, file.string());
 }
 
-std::filesystem::path default_brushes_dir() {
-  if (const char* env = std::getenv("IMPASTO_DATA_DIR"); env && *env)
-    return std::filesystem::path(env) / "brushes";
-  return std::filesystem::path(IMPASTO_PAINTCORE_SOURCE_DATA_DIR) / "brushes";
-}
+std::filesystem::path default_brushes_dir() { return files::data_dir() / "brushes"; }
 
 BrushHead load_named_brush_head(const std::string& name, const std::filesystem::path& dir) {
   const bool valid = !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {

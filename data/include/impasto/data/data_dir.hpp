@@ -1,11 +1,10 @@
 #pragma once
-#include <filesystem>
+// The data folder is found in one place for every module: impasto::files::data_dir()
+// ($IMPASTO_DATA_DIR, then <exe>/../share/impasto, then the source tree's data/).
+#include "impasto/files/data_dir.hpp"
 
 namespace impasto::data {
 
-// The folder holding Impasto's data files (spectra, pigments, brushes, strokes).
-// Looked up in order: $IMPASTO_DATA_DIR, the source tree's data/ (a build that was not
-// installed), the installed share/impasto. Throws std::runtime_error when none exists.
-std::filesystem::path data_dir();
+using files::data_dir;
 
 }  // namespace impasto::data
