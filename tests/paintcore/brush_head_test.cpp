@@ -83,6 +83,21 @@ TEST(BrushHead, MissingFileAndBadNamesAreClearErrors) {
   EXPECT_THROW(load_named_brush_head("../secret", kBrushes), std::runtime_error);
 }
 
+// Head files are read through the bounded reader: a device or a folder is refused by name
+// at once (reading /dev/zero would never end).
+TEST(BrushHead, DevicesAndFoldersAreRefusedByName) {
+  for (const char* path : {"/dev/zero", "/tmp"}) {
+    try {
+      load_brush_head(path);
+      FAIL() << "expected an error for " << path;
+    } catch (const std::runtime_error& e) {
+      const std::string message = e.what();
+      EXPECT_NE(message.find(path), std::string::npos) << message;
+      EXPECT_NE(message.find("not a file"), std::string::npos) << message;
+    }
+  }
+}
+
 TEST(Brush, RasterisesTheHeadAtTheCellSize) {
   BrushSettings settings;
   settings.size_mm = 4.0;
