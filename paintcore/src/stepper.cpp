@@ -328,10 +328,9 @@ void Stepper::share_brush_cells(std::size_t cells, float inv_deposit_share) {
   }
 }
 
-void Stepper::transfer_to_brush(Brush& brush, int slot_count, std::size_t first_cell,
-                                std::size_t end_cell) {
-  // In canvas order: exactly what each canvas cell gained, its brush cell lost. (No clamp
-  // here: clamp_brush follows, once per brush cell.)
+void Stepper::transfer_to_brush(Brush& brush, int slot_count, int r0, int r1) {
+  // In canvas order: exactly what each canvas cell gained, its brush cell lost. Only the
+  // rows' touching cells; no clamp here (clamp_brush follows, once per brush cell).
   const std::size_t cells = static_cast<std::size_t>(win_.width) * win_.height;
   const std::size_t brush_cells = brush.cell_count();
   float* volume = brush.volume_mm().data();
@@ -339,12 +338,17 @@ void Stepper::transfer_to_brush(Brush& brush, int slot_count, std::size_t first_
   const std::int32_t* brush_cell = brush_cell_.data();
   const float* xfer = xfer_.data();
   const float* xfer_pigment = xfer_pigment_.data();
-  for (std::size_t c = first_cell; c < end_cell; ++c) {
-    if (brush_cell[c] < 0) continue;  // (a touching cell that moved nothing changes nothing)
-    const auto bc = static_cast<std::size_t>(brush_cell[c]);
-    volume[bc] -= xfer[c];
-    for (std::size_t k = 0; k < static_cast<std::size_t>(slot_count); ++k)
-      pigment[k * brush_cells + bc] -= xfer_pigment[k * cells + c];
+  for (int y = r0; y < r1; ++y) {
+    const std::size_t first = static_cast<std::size_t>(y) * win_.width;
+    const auto lo = static_cast<std::size_t>(contact_lo_[static_cast<std::size_t>(y)]);
+    const auto hi = static_cast<std::size_t>(contact_hi_[static_cast<std::size_t>(y)]);
+    for (std::size_t c = first + lo; c < first + hi; ++c) {
+      if (brush_cell[c] < 0) continue;  // a gap between touching cells
+      const auto bc = static_cast<std::size_t>(brush_cell[c]);
+      volume[bc] -= xfer[c];
+      for (std::size_t k = 0; k < static_cast<std::size_t>(slot_count); ++k)
+        pigment[k * brush_cells + bc] -= xfer_pigment[k * cells + c];
+    }
   }
 }
 
@@ -642,9 +646,7 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
     const auto& m = in.placement.to_canvas;
     const int chunk = static_cast<int>(std::floor(std::abs(m[2]) + std::abs(m[3]))) + 2;
     parallel_row_chunks(rows, chunk, cols, [&](int r0, int r1) {
-      if (transfers)
-        transfer_to_brush(brush, slot_count, static_cast<std::size_t>(r0) * cols,
-                          static_cast<std::size_t>(r1) * cols);
+      if (transfers) transfer_to_brush(brush, slot_count, r0, r1);
       if (squeezes) squeeze_rows(in, r0, r1);
     });
     if (transfers) clamp_brush(brush, slot_count);

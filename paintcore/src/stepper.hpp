@@ -81,8 +81,7 @@ class Stepper {
   void squeeze_rows(const StepInputs& in, int r0, int r1);
   void apply_squeeze_rows(int slot_count, int r0, int r1);
   void share_brush_cells(std::size_t cells, float inv_deposit_share);
-  void transfer_to_brush(Brush& brush, int slot_count, std::size_t first_cell,
-                         std::size_t end_cell);
+  void transfer_to_brush(Brush& brush, int slot_count, int r0, int r1);
   void clamp_brush(Brush& brush, int slot_count);
   void even_out_brush(Brush& brush, int slot_count, double share);
   void copy_rows_to_tiles(Canvas& canvas, int slot_count, const float* wet, const float* pigment,

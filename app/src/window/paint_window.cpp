@@ -36,6 +36,8 @@
 #include "window/palette_board_panel.hpp"
 #include "window/panels.hpp"
 #include "window/pen_feed.hpp"
+#include "window/pigment_drift_note.hpp"
+#include "window/pigment_editor.hpp"
 #include "window/pointer_events.hpp"
 #include "window/pointer_gestures.hpp"
 #include "window/pointer_latency.hpp"
@@ -171,6 +173,8 @@ class PaintWindow {
   InputLatency latency_;                 // pen sample's own time -> the swap that shows it
   std::uint64_t applied_at_upload_ = 0;  // simulation jobs applied before this frame's upload
   PaletteBoardPanel board_panel_;
+  PigmentEditor pigment_editor_;
+  PigmentDriftNote pigment_drift_;
   SwatchChips swatch_chips_;
 
   // Tablets, read on their own threads, polled once a frame.
@@ -525,7 +529,7 @@ void PaintWindow::sync_gpu() {
     const bool slots_changed = painting.pigment_slots() != rendered_slots_;
     if (resized || slots_changed || state_.settings_changed || !palette_) {
       palette_ =
-          std::make_unique<render::SpectralPalette>(state_.settings, painting.pigment_slots());
+          std::make_unique<render::SpectralPalette>(state_.settings, painting);  // its pigments
       rendered_slots_ = painting.pigment_slots();
       if (resized || !renderer_) {
         renderer_ = std::make_unique<render_gl::CanvasRenderer>(
@@ -750,6 +754,8 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   PanelContext context{state_, *worker_, painting, *palette_, files, board_panel_};
   draw_panels(context);
   draw_session_banners(worker_->stats(), notice_);
+  pigment_editor_.draw(state_, *palette_);
+  pigment_drift_.draw(state_, *worker_);
   std::optional<RecoveryPreview> preview;
   if (previewing_ && preview_) {
     preview =

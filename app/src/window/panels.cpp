@@ -1,4 +1,5 @@
 #include "window/panels.hpp"
+#include "window/plot.hpp"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -241,30 +242,28 @@ void brush_panel(PanelContext& c) {
 // The light's spectrum over the rendering range with the quadrature nodes marked.
 void spectrum_plot(const WindowState& s, const render::SpectralPalette& palette) {
   static std::string plotted_light;
-  static std::vector<float> values;
+  static PlotSeries light{"light", {}, {}, IM_COL32(240, 240, 240, 255)};
   const auto& range = s.settings.range;
   if (plotted_light != s.settings.light) {
     plotted_light = s.settings.light;
-    values.clear();
+    light.x.clear();
+    light.y.clear();
     try {
-      const data::Spectrum light = data::light_from_spec(s.settings.light);
+      const data::Spectrum spd = data::light_from_spec(s.settings.light);
       for (double nm = range.first_nm; nm <= range.last_nm; nm += 5.0) {
-        values.push_back(static_cast<float>(light.at(nm)));
+        light.x.push_back(nm);
+        light.y.push_back(spd.at(nm));
       }
     } catch (const std::exception&) {
     }
   }
-  const float top = values.empty() ? 1.0f : *std::max_element(values.begin(), values.end());
-  ImGui::PlotLines("##spectrum", values.data(), static_cast<int>(values.size()), 0,
-                   "light spectrum, nodes", 0.0f, top * 1.05f, ImVec2(kPanelWidth - 20, 90));
-  const ImVec2 lo = ImGui::GetItemRectMin();
-  const ImVec2 hi = ImGui::GetItemRectMax();
-  ImDrawList* draw = ImGui::GetWindowDrawList();
-  for (float nm : palette.sampling().wavelengths_nm) {
-    const float t = static_cast<float>((nm - range.first_nm) / (range.last_nm - range.first_nm));
-    const float x = lo.x + t * (hi.x - lo.x);
-    draw->AddLine(ImVec2(x, lo.y), ImVec2(x, hi.y), IM_COL32(255, 200, 60, 200), 1.5f);
-  }
+  PlotOptions options;
+  options.id = "##spectrum";
+  options.title = "light spectrum, nodes";
+  options.size = ImVec2(kPanelWidth - 20, 110);
+  options.markers_x.assign(palette.sampling().wavelengths_nm.begin(),
+                           palette.sampling().wavelengths_nm.end());
+  draw_plot(options, std::span(&light, 1));
 }
 
 // A disc: the centre is the light straight above, the rim the horizon; drag to move it.

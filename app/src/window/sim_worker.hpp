@@ -73,6 +73,13 @@ class SimWorker {
     std::lock_guard lock(painting_mutex_);
     return f(static_cast<const paintcore::Painting&>(painting_));
   }
+  // The same for a change outside the session's events: the pigments a painting carries
+  // (window/pigment_drift_note.cpp), which the simulation never reads.
+  template <typename F>
+  decltype(auto) edit_painting(F&& f) {
+    std::lock_guard lock(painting_mutex_);
+    return f(painting_);
+  }
   // Waits for the queue to drain, then replaces the painting (new, open, recovered) and the
   // recording; `unsaved`: the painting differs from its file (a recovered one).
   void replace_painting(paintcore::Painting painting, SessionRecording recording,
