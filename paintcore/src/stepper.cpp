@@ -174,11 +174,10 @@ void Stepper::penetrate_rows(const StepInputs& in, int r0, int r1) {
     // The row's touching cells lie in [first, last + 1).
     int first_touch = w.width, last_touch = -1;
     if (row_contacts_[static_cast<std::size_t>(y)] > 0) {
-      for (int x = 0; x < w.width; ++x)
-        if (cell[x] >= 0) {
-          first_touch = std::min(first_touch, x);
-          last_touch = x;
-        }
+      first_touch = 0;
+      while (cell[first_touch] < 0) ++first_touch;
+      last_touch = w.width - 1;
+      while (cell[last_touch] < 0) --last_touch;
     }
     contact_lo_[static_cast<std::size_t>(y)] = first_touch;
     contact_hi_[static_cast<std::size_t>(y)] = last_touch + 1;
