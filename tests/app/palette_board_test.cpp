@@ -83,6 +83,27 @@ TEST(PaletteBoard, MixingPicksUpBothPigmentsAndConservesPaint) {
   EXPECT_NEAR(kept, p.loaded_totals().volume, 1e-5 * p.loaded_totals().volume);
 }
 
+// The window sets the board's brush from its panel every frame, between the samples of a
+// scrub: that must not end the stroke (each frame's stroke would lift off and give back
+// what it took: "board brush holds 0.0 mm³" after three passes with a real pointer).
+TEST(PaletteBoard, MixingWithTheBrushSetEveryFramePicksUpTheSame) {
+  PaletteBoard reference = board_with_two_blobs();
+  mix_strokes(reference);
+  PaletteBoard board = board_with_two_blobs();
+  double t = 0.0;
+  for (int pass = 0; pass < 3; ++pass) {
+    for (int i = 0; i <= 40; ++i) {
+      board.set_brush({"round", 6.0, 0.5});  // a frame
+      const double x = pass % 2 == 0 ? 15.0 + 0.5 * i : 35.0 - 0.5 * i;
+      board.apply(input::SampleEvent{pen(t += 0.01, x, 20.0, true)});
+    }
+    board.set_brush({"round", 6.0, 0.5});
+    board.apply(input::SampleEvent{pen(t += 0.01, 20.0, 20.0, false)});
+  }
+  ASSERT_TRUE(board.pick_up().has_value());
+  EXPECT_EQ(board.painting().state_hash(), reference.painting().state_hash());
+}
+
 TEST(PaletteBoard, PickUpLoadsTheCanvasBrushThroughTheRecordedSession) {
   PaletteBoard board = board_with_two_blobs();
   mix_strokes(board);

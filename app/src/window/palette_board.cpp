@@ -64,7 +64,9 @@ double PaletteBoard::height_mm() const {
 }
 
 void PaletteBoard::set_brush(const paintcore::BrushSettings& settings) {
-  player_->finish();
+  // (No finish() while unchanged: the window calls this every frame, and ending the stroke
+  // there cut each scrub into one-frame strokes that lifted off what they had picked up.
+  // A changed brush is an event, and apply() ends the stroke before it.)
   const auto& brush = painting_->brush();
   if (!brush.empty() && brush.settings().head == settings.head &&
       brush.settings().size_mm == settings.size_mm &&
