@@ -46,7 +46,7 @@ void add_plot(Figure& f, double left, double top, double w, double h, const std:
   if (!(x1 > x0)) x1 = x0 + 1;
   if (!(y1 > y0)) y1 = y0 + 1;
   y1 += (y1 - y0) * 0.05;
-  const double pl = left + 48, pr = left + w - 8, pt = top + 24, pb = top + h - 34;
+  const double pl = left + 48, pr = left + w - 26, pt = top + 24, pb = top + h - 34;
   auto px = [&](double x) { return pl + (x - x0) / (x1 - x0) * (pr - pl); };
   auto py = [&](double y) { return pb - (y - y0) / (y1 - y0) * (pb - pt); };
   f.texts.push_back({(pl + pr) / 2, top + 14, title, kInk, true});

@@ -73,10 +73,10 @@ std::vector<SwatchColour> standard_swatches(const data::Pigment& pigment,
     out.push_back(describe_colour("tint 1:" + std::to_string(parts),
                                   tint_reflectance(pigment, white, parts), light));
   }
-  out.push_back(
-      describe_colour("glaze over white", glaze_reflectance(pigment, kGlazeThickness, 0.9), light));
-  out.push_back(describe_colour("glaze over black",
-                                glaze_reflectance(pigment, kGlazeThickness, 0.04), light));
+  out.push_back(describe_colour(
+      "glaze over white", glaze_reflectance(pigment, kGlazeThickness, kGlazeWhiteGround), light));
+  out.push_back(describe_colour(
+      "glaze over black", glaze_reflectance(pigment, kGlazeThickness, kGlazeBlackGround), light));
   return out;
 }
 

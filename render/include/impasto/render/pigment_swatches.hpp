@@ -21,9 +21,11 @@ struct SwatchColour {
   std::array<double, 3> srgb;  // encoded, clamped to [0, 1]
 };
 
-// Glazes: a layer whose thickness X makes K·X and S·X in the database's units (S of the
-// reference white = 1), here thin enough to show the ground through most pigments.
-inline constexpr double kGlazeThickness = 0.1;
+// Glazes: a layer of thickness X in the database's units (K·X and S·X; S of the reference
+// white = 1), thin enough to show the ground through most pigments. The grounds: white
+// R = 0.9 and black R = 0.04 at every wavelength.
+inline constexpr double kGlazeThickness = 0.5;
+inline constexpr double kGlazeWhiteGround = 0.9, kGlazeBlackGround = 0.04;
 
 // R∞ of `parts` of the pigment with `white_parts` of white (0: the masstone), on the
 // pigment's grid.
