@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Builds Impasto and runs every test twice: a Release build with warnings as errors, then a
-# build under AddressSanitizer + UndefinedBehaviorSanitizer; then a short libFuzzer run of the
-# file and HID parsers (IMPASTO_FUZZ_SECONDS per target, default 10; 0 skips it).
+# Builds Impasto and runs every test twice: a Release build with warnings as errors (and its
+# Debian package, unpacked and run: packaging/smoke-test.sh), then a build under
+# AddressSanitizer + UndefinedBehaviorSanitizer; then a short libFuzzer run of the file and
+# HID parsers (IMPASTO_FUZZ_SECONDS per target, default 10; 0 skips it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash packaging/deps.sh
@@ -11,6 +12,9 @@ export CTEST_OUTPUT_ON_FAILURE=1
 cmake -S . -B build/release -G Ninja -DCMAKE_BUILD_TYPE=Release -DIMPASTO_WERROR=ON
 cmake --build build/release -j "$jobs"
 ctest --test-dir build/release -j "$jobs" --timeout 600 | tee build/release/ctest.log
+# The Debian package from the same build, unpacked and run with no source tree to lean on.
+bash packaging/deb.sh build/release
+bash packaging/smoke-test.sh build/release/package/impasto_*.deb
 
 # -O1 -g1 replace Debug's own -g (in CMAKE_CXX_FLAGS they came first, and -g overrode -g1).
 cmake -S . -B build/sanitize -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g1" \

@@ -6,6 +6,7 @@
 #include <map>
 
 #include "command_line.hpp"
+#include "impasto_version.hpp"
 #include "pigment_folder_option.hpp"
 #include "impasto/files/memory_budget.hpp"
 
@@ -37,7 +38,7 @@ void add_registered_commands(CLI::App& root) {
 int run_command_line(int argc, char** argv) {
   CLI::App root{"Impasto: interactive 2.5D painting with thick, spectrally rendered paint"};
   root.require_subcommand(0, 1);
-  root.set_version_flag("--version", "impasto 0.1.0");
+  root.set_version_flag("--version", "impasto " IMPASTO_VERSION);
   add_registered_commands(root);
   setup_pigment_library(root);
   // Plain `impasto` opens the painting window where there is a display to show it on.

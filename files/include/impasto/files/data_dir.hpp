@@ -10,15 +10,18 @@ namespace impasto::files {
 struct DataDirCandidates {
   std::string environment;                // $IMPASTO_DATA_DIR: when set, it must be a folder
   std::filesystem::path executable;       // the running program: <exe>/../share/impasto
-  std::filesystem::path source_data_dir;  // the source tree's data/ (a build not installed)
+  std::filesystem::path source_data_dir;  // the source tree's data/, for a program that
+  std::filesystem::path build_dir;        // lies in this build folder (an installed copy
+                                          // never reads the source tree, which may be gone
+                                          // or of another version)
 };
 
 // The first candidate that is a folder holding data. Throws std::runtime_error when
 // $IMPASTO_DATA_DIR names no folder, or when no candidate exists (the message lists them).
 std::filesystem::path find_data_dir(const DataDirCandidates& candidates);
 
-// find_data_dir with $IMPASTO_DATA_DIR, this process's executable and the source tree this
-// build came from. The answer is looked up again at each call (the variable may change).
+// find_data_dir with $IMPASTO_DATA_DIR, this process's executable and the source and build
+// trees of this build. The answer is looked up again at each call (the variable may change).
 std::filesystem::path data_dir();
 
 // <folder holding the executable>/../share/impasto: the installed layout, wherever the

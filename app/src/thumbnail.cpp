@@ -1,0 +1,51 @@
+#include "thumbnail.hpp"
+
+#include <impasto/paintcore/painting.hpp>
+#include <impasto/render/render_painting.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace impasto::app {
+
+render::Image shrink_to_fit(const render::Image& image, int max_side) {
+  if (max_side < 1) throw std::runtime_error("thumbnail size must be at least 1 pixel");
+  const int longer = std::max(image.width, image.height);
+  if (longer <= max_side) return image;
+  const double scale = static_cast<double>(max_side) / longer;
+  render::Image out;
+  out.width = std::max(1, static_cast<int>(std::lround(image.width * scale)));
+  out.height = std::max(1, static_cast<int>(std::lround(image.height * scale)));
+  out.rgb.assign(3 * static_cast<std::size_t>(out.width) * static_cast<std::size_t>(out.height),
+                 0.0f);
+  for (int y = 0; y < out.height; ++y) {
+    // The input rows [y0, y1) and columns [x0, x1) this pixel covers (at least one each).
+    const int y0 = y * image.height / out.height;
+    const int y1 = std::max(y0 + 1, (y + 1) * image.height / out.height);
+    for (int x = 0; x < out.width; ++x) {
+      const int x0 = x * image.width / out.width;
+      const int x1 = std::max(x0 + 1, (x + 1) * image.width / out.width);
+      double sum[3] = {0.0, 0.0, 0.0};
+      for (int v = y0; v < y1; ++v) {
+        for (int u = x0; u < x1; ++u) {
+          for (int c = 0; c < 3; ++c) sum[c] += image.pixel(u, v)[c];
+        }
+      }
+      const double count = static_cast<double>((y1 - y0) * (x1 - x0));
+      for (int c = 0; c < 3; ++c) out.pixel(x, y)[c] = static_cast<float>(sum[c] / count);
+    }
+  }
+  return out;
+}
+
+void write_thumbnail(const std::filesystem::path& painting_path, const std::filesystem::path& png,
+                     int size) {
+  if (size < 1) throw std::runtime_error("thumbnail size must be at least 1 pixel");
+  const paintcore::Painting painting = paintcore::Painting::load(painting_path, 0);
+  render::check_render_memory(painting.canvas(), painting_path.string());
+  render::write_png(png, shrink_to_fit(render::render_painting(painting, {}), size));
+}
+
+}  // namespace impasto::app
