@@ -15,6 +15,7 @@
 #include "impasto/paintcore/painting.hpp"
 #include "impasto/render/pigment_records.hpp"
 #include "impasto/render/render_painting.hpp"
+#include "session/replay.hpp"
 
 namespace impasto::app {
 namespace {
@@ -117,6 +118,22 @@ TEST_F(CarriedPigments, ARenderIsBitIdenticalAfterThePigmentIsRemovedOrEdited) {
   render::use_library_pigments(edited, {"My Red"});
   EXPECT_TRUE(render::pigments_differing_from_library(edited).empty());
   EXPECT_NE(render::render_painting(edited, settings).rgb, before.rgb);
+}
+
+TEST_F(CarriedPigments, ASessionReplaysOntoAPaintingThatCarriesAPigmentTheLibraryLacks) {
+  const fs::path file = dir_ / "carrier.impasto";
+  painted_with("My Red").save(file);
+  fs::remove(user() / "my_red.csv");
+  data::reload_active_pigment_library();
+  paintcore::Painting painting = paintcore::Painting::load(file, 1);
+  const ReplayOptions options;
+  SessionPlayer player(painting, options, false);
+  input::LoadEvent load;
+  load.volume_mm3 = 5.0;
+  load.mix = {{"My Red", 1.0}};
+  EXPECT_NO_THROW(player.apply(load));
+  load.mix = {{"Not A Pigment", 1.0}};
+  EXPECT_THROW(player.apply(load), std::runtime_error);
 }
 
 TEST_F(CarriedPigments, AFlakePigmentCarriesItsFlakeFiles) {

@@ -111,7 +111,9 @@ void SessionPlayer::apply(const input::StrokeEvent& event) {
           [&](const input::LoadEvent& e) {
             std::vector<paintcore::PigmentMixPart> mix;
             for (const auto& part : e.mix) {
-              data::PigmentDatabase::defaults().get(part.pigment);  // throws for unknown names
+              // Known to the painting (it carries the pigment) or to the library; else throws.
+              if (!painting_.pigment_records().count(part.pigment))
+                data::PigmentDatabase::defaults().get(part.pigment);
               mix.push_back({part.pigment, part.parts});
             }
             painting_.load_brush(mix, e.volume_mm3, load_body(e));
