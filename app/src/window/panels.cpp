@@ -159,8 +159,11 @@ void palette_panel(PanelContext& c) {
     }
     ImGui::EndCombo();
   }
+  // (Two lines either way: a line more once pigments are chosen moved every control below,
+  // and a pointer aimed at them landed on the row above.)
   if (!any) {
-    ImGui::TextDisabled("on canvas | masstone");
+    ImGui::TextDisabled("on canvas");
+    ImGui::TextDisabled("| masstone");
   } else {
     ImGui::Text("on canvas %.2f mm%s", s.swatch_thickness_mm, s.swatch_busy ? " ..." : "");
     ImGui::TextUnformatted("| masstone");
