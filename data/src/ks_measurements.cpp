@@ -7,17 +7,14 @@
 #include "impasto/data/ks_fit.hpp"
 #include "impasto/data/spectral_csv.hpp"
 #include "impasto/files/message_text.hpp"
+#include "impasto/util/text.hpp"
 
 namespace impasto::data {
 namespace {
 
 constexpr std::string_view kMixPrefix = "mix ";
 
-std::string_view trim(std::string_view s) {
-  const auto first = s.find_first_not_of(" \t");
-  if (first == std::string_view::npos) return {};
-  return s.substr(first, s.find_last_not_of(" \t") - first + 1);
-}
+using util::trim;
 
 std::optional<double> parse_double(std::string_view text) {
   text = trim(text);

@@ -5,15 +5,11 @@
 #include <string>
 #include <string_view>
 
+#include "impasto/util/text.hpp"
+
 namespace impasto::data::detail {
 
-// s without leading and trailing blanks (spaces, tabs, carriage returns).
-inline std::string_view trim(std::string_view s) {
-  const auto first = s.find_first_not_of(" \t\r");
-  if (first == std::string_view::npos) return {};
-  const auto last = s.find_last_not_of(" \t\r");
-  return s.substr(first, last - first + 1);
-}
+using util::trim;
 
 // The shortest decimal text that reads back as the same double.
 inline std::string format_number(double value) {

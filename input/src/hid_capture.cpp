@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 
+#include "impasto/util/text.hpp"
 #include "recording_input.hpp"
 #include "text_fields.hpp"
 
@@ -23,11 +24,7 @@ int hex_digit(char c) {
   return -1;
 }
 
-std::string_view trim(std::string_view text) {
-  const std::size_t first = text.find_first_not_of(" \t\r");
-  if (first == std::string_view::npos) return {};
-  return text.substr(first, text.find_last_not_of(" \t\r") - first + 1);
-}
+using util::trim;
 
 std::vector<std::string_view> lines_of(std::string_view text) {
   std::vector<std::string_view> lines;

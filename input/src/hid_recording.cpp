@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "impasto/files/message_text.hpp"
+#include "impasto/util/text.hpp"
 #include "recording_input.hpp"
 #include "text_fields.hpp"
 
@@ -23,9 +24,7 @@ int hex_digit(char c) {
 }
 
 std::string trim(const std::string& text) {
-  const std::size_t first = text.find_first_not_of(" \t\r");
-  if (first == std::string::npos) return "";
-  return text.substr(first, text.find_last_not_of(" \t\r") - first + 1);
+  return std::string(util::trim(text));
 }
 
 // The byte count and bytes after a tag: "R: 3 05 0d 09" or "E: 0.5 3 02 00 01".

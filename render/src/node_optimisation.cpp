@@ -12,6 +12,8 @@
 #include <mutex>
 #include <string>
 
+#include "impasto/util/fnv1a.hpp"
+
 namespace impasto::render {
 namespace {
 
@@ -148,12 +150,7 @@ namespace {
 // FNV-1a over everything a palette sampling depends on.
 class ContentHash {
  public:
-  void add_bytes(const void* data, std::size_t size) {
-    const auto* bytes = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < size; ++i) {
-      value_ = (value_ ^ bytes[i]) * 1099511628211ull;
-    }
-  }
+  void add_bytes(const void* data, std::size_t size) { hash_.add(data, size); }
   void add(double x) { add_bytes(&x, sizeof x); }
   void add(const std::string& text) {
     add(static_cast<double>(text.size()));
@@ -164,10 +161,10 @@ class ContentHash {
     for (double x : spectrum.wavelengths_nm) add(x);
     for (double x : spectrum.values) add(x);
   }
-  std::uint64_t value() const { return value_; }
+  std::uint64_t value() const { return hash_.value(); }
 
  private:
-  std::uint64_t value_ = 1469598103934665603ull;
+  util::Fnv1a hash_;
 };
 
 }  // namespace

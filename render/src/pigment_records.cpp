@@ -12,6 +12,7 @@
 #include "impasto/files/atomic_file.hpp"
 #include "impasto/files/input_file.hpp"
 #include "impasto/files/message_text.hpp"
+#include "impasto/util/fnv1a.hpp"
 
 namespace impasto::render {
 namespace {
@@ -20,12 +21,6 @@ namespace fs = std::filesystem;
 
 constexpr std::string_view kFileMark = "#impasto-record-file ";
 constexpr const char* kGroundPigment = "Titanium White";  // as spectral_palette.cpp
-
-std::uint64_t fnv1a(std::string_view bytes) {
-  std::uint64_t h = 1469598103934665603ull;
-  for (unsigned char c : bytes) h = (h ^ c) * 1099511628211ull;
-  return h;
-}
 
 // "key = value" of a flake paint file, or empty.
 std::string flake_field(const std::string& text, const std::string& key) {
@@ -117,7 +112,7 @@ data::Pigment pigment_from_record(const std::string& record, const std::string& 
                              " names flake file " + files::excerpt(flakes->second) +
                              " but does not carry it");
   char hash[17];
-  std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(fnv1a(record)));
+  std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(util::fnv1a(record)));
   const fs::path folder = cache_root() / hash;
   fs::create_directories(folder);
   for (const auto& [name, contents] : files) {

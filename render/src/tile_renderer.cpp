@@ -19,6 +19,7 @@
 #include "impasto/render/relief_shading.hpp"
 #include "impasto/render/render_painting.hpp"
 #include "impasto/render/shading.hpp"
+#include "impasto/util/fnv1a.hpp"
 
 namespace impasto::render {
 
@@ -30,15 +31,7 @@ namespace {
 constexpr double kDegreesToRadians = std::numbers::pi / 180.0;
 
 // FNV-1a over the bytes that decide a tile's dry stack: a changed stack changes the hash.
-struct Fnv1a {
-  std::uint64_t state = 1469598103934665603ull;
-  void add(const void* data, std::size_t bytes) {
-    const auto* p = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < bytes; ++i) {
-      state = (state ^ p[i]) * 1099511628211ull;
-    }
-  }
-};
+using util::Fnv1a;
 
 // The pigments of one cell of a layer: slot index and concentration (amount / volume).
 template <typename AmountOf>
@@ -301,7 +294,7 @@ void TileRenderer::bake_dry_stack(const paintcore::Canvas& canvas, int tile_inde
     hash.add(dry->slots.data(), dry->slots.size());
     hash.add(dry->pigment_mm.data(), dry->pigment_mm.size() * sizeof(float));
   }
-  const std::uint64_t signature = layers.empty() ? 0 : hash.state;
+  const std::uint64_t signature = layers.empty() ? 0 : hash.value();
   if (cache.baked && signature == cache.dry_signature) return;
   cache.dry_signature = signature;
   cache.baked = true;

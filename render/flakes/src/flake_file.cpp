@@ -13,17 +13,16 @@
 #include "impasto/files/confined_path.hpp"
 #include "impasto/files/input_file.hpp"
 #include "impasto/files/message_text.hpp"
+#include "impasto/util/text.hpp"
 
 namespace impasto::flakes {
 
 namespace {
 constexpr double kDegree = std::numbers::pi / 180.0;
 
+// Blanks dropped, as a string of its own (the fields outlive the line they came from).
 std::string trim(std::string_view s) {
-  const auto first = s.find_first_not_of(" \t\r");
-  if (first == std::string_view::npos) return {};
-  const auto last = s.find_last_not_of(" \t\r");
-  return std::string(s.substr(first, last - first + 1));
+  return std::string(util::trim(s));
 }
 
 std::vector<std::string> split(std::string_view s, char separator) {

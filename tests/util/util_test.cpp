@@ -1,0 +1,44 @@
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <string>
+
+#include "impasto/util/fnv1a.hpp"
+#include "impasto/util/statistics.hpp"
+#include "impasto/util/text.hpp"
+
+namespace impasto::util {
+namespace {
+
+TEST(Trim, DropsBlanksAtBothEndsOnly) {
+  EXPECT_EQ(trim("  a b\t\r"), "a b");
+  EXPECT_EQ(trim("a"), "a");
+  EXPECT_EQ(trim(" \t\r "), "");
+  EXPECT_EQ(trim(""), "");
+  EXPECT_EQ(trim("\na\n"), "\na\n");  // a newline is not a blank: lines are split first
+}
+
+TEST(Fnv1a, MatchesThePublishedTestVectors) {
+  // From the FNV reference (isthe.com/chongo/tech/comp/fnv): "" and "a", 64-bit FNV-1a.
+  EXPECT_EQ(fnv1a(""), 0xcbf29ce484222325ull);
+  EXPECT_EQ(fnv1a("a"), 0xaf63dc4c8601ec8cull);
+  EXPECT_EQ(fnv1a("foobar"), 0x85944171f73967e8ull);
+}
+
+TEST(Fnv1a, PiecesHashAsTheWhole) {
+  const std::string text = "impasto";
+  Fnv1a pieces;
+  pieces.add(text.data(), 3);
+  pieces.add(text.data() + 3, text.size() - 3);
+  EXPECT_EQ(pieces.value(), fnv1a(text));
+}
+
+TEST(Median, OddAndEvenCounts) {
+  EXPECT_DOUBLE_EQ(median({5.0, 1.0, 3.0}), 3.0);
+  EXPECT_DOUBLE_EQ(median({4.0, 1.0, 3.0, 2.0}), 2.5);
+  EXPECT_DOUBLE_EQ(median({7.0}), 7.0);
+  EXPECT_THROW(median({}), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace impasto::util
