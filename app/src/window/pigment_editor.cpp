@@ -117,6 +117,7 @@ void PigmentEditor::change(const std::string& what, F&& apply) {
 
 void PigmentEditor::undo() {
   if (undo_.empty()) return;
+  library_ = &data::active_pigment_library();
   const UndoStep step = std::move(undo_.back());
   undo_.pop_back();
   const fs::path folder = library_->user_folder();
@@ -284,15 +285,17 @@ void PigmentEditor::import_tab() {
     ImGui::TextColored(ok ? ImVec4(0.5f, 1, 0.5f, 1) : ImVec4(1, 0.4f, 0.4f, 1), "%s",
                        import_check_.c_str());
   }
-  if (ImGui::Button("Import to my library")) {
-    const fs::path file = import_path_;
-    std::string imported;
-    change("imported " + file.filename().string(), [&](const fs::path& folder) {
-      imported = data::read_pigment_file(file).name;
-      data::import_pigment_file(folder, file, false);
-    });
-    if (!imported.empty() && !message_is_error_) selected_ = imported;
-  }
+  if (ImGui::Button("Import to my library")) import_file(import_path_);
+}
+
+void PigmentEditor::import_file(const fs::path& file) {
+  library_ = &data::active_pigment_library();
+  std::string imported;
+  change("imported " + file.filename().string(), [&](const fs::path& folder) {
+    imported = data::read_pigment_file(file).name;
+    data::import_pigment_file(folder, file, false);
+  });
+  if (!imported.empty() && !message_is_error_) selected_ = imported;
 }
 
 void PigmentEditor::compare_tab(const data::Pigment& pigment, const std::vector<double>& nodes) {
@@ -424,20 +427,23 @@ void PigmentEditor::draw(WindowState& state, const render::SpectralPalette& pale
   }
   std::vector<double> nodes(palette.sampling().wavelengths_nm.begin(),
                             palette.sampling().wavelengths_nm.end());
+  const auto tab_flags = [&](Tab tab) {
+    return pending_tab_ == tab ? ImGuiTabItemFlags_SetSelected : ImGuiTabItemFlags_None;
+  };
   if (ImGui::BeginTabBar("##tabs")) {
-    if (ImGui::BeginTabItem("Curves")) {
+    if (ImGui::BeginTabItem("Curves", nullptr, tab_flags(Tab::curves))) {
       curves_tab(library_->database().get(selected_), nodes);
       ImGui::EndTabItem();
     }
-    if (ImGui::BeginTabItem("Metadata")) {
+    if (ImGui::BeginTabItem("Metadata", nullptr, tab_flags(Tab::metadata))) {
       metadata_tab(library_->database().get(selected_), in_user_layer);
       ImGui::EndTabItem();
     }
-    if (ImGui::BeginTabItem("Import")) {
+    if (ImGui::BeginTabItem("Import", nullptr, tab_flags(Tab::import))) {
       import_tab();
       ImGui::EndTabItem();
     }
-    if (ImGui::BeginTabItem("Fit")) {
+    if (ImGui::BeginTabItem("Fit", nullptr, tab_flags(Tab::fit))) {
       fit_.draw([&](const std::vector<data::Pigment>& pigments, bool overwrite) {
         change("saved " + std::to_string(pigments.size()) + " fitted pigments",
                [&](const fs::path& folder) {
@@ -454,11 +460,12 @@ void PigmentEditor::draw(WindowState& state, const render::SpectralPalette& pale
       });
       ImGui::EndTabItem();
     }
-    if (ImGui::BeginTabItem("Compare")) {
+    if (ImGui::BeginTabItem("Compare", nullptr, tab_flags(Tab::compare))) {
       compare_tab(library_->database().get(selected_), nodes);
       ImGui::EndTabItem();
     }
     ImGui::EndTabBar();
+    pending_tab_.reset();
   }
   ImGui::EndGroup();
   ImGui::End();

@@ -28,6 +28,15 @@ class PigmentEditor {
   void draw(WindowState& state, const render::SpectralPalette& palette);
   bool is_open() const { return open_; }
   void open(const std::string& pigment);
+  // For scripts and tests: show a tab at the next draw, compare with a pigment, the fit tab.
+  enum class Tab { curves, metadata, import, fit, compare };
+  void show(Tab tab) { pending_tab_ = tab; }
+  void compare_with(const std::string& pigment) { compare_with_ = pigment; }
+  PigmentFitPanel& fit_panel() { return fit_; }
+  const std::string& message() const { return message_; }
+  // Import into the user layer, as the Import tab's button does; undo the last change.
+  void import_file(const std::filesystem::path& file);
+  void undo();
 
  private:
   // The user layer's pigment files as they were before a change.
@@ -44,10 +53,10 @@ class PigmentEditor {
   // failure becomes the message and the snapshot is dropped.
   template <typename F>
   void change(const std::string& what, F&& change);
-  void undo();
   const std::vector<render::SwatchColour>& swatches_of(const data::Pigment& pigment);
 
   bool open_ = false;
+  std::optional<Tab> pending_tab_;
   WindowState* state_ = nullptr;
   const data::PigmentLibrary* library_ = nullptr;  // the one the caches below were made for
   std::string light_;                              // and this light

@@ -5,6 +5,8 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -50,6 +52,12 @@ void PigmentFitPanel::fit(const std::string& path) {
     problem_.reset();
     result_.reset();
   }
+}
+
+double PigmentFitPanel::max_delta_e() const {
+  double worst = samples_.empty() ? std::nan("") : 0.0;
+  for (const Sample& s : samples_) worst = std::max(worst, s.delta_e);
+  return worst;
 }
 
 void PigmentFitPanel::draw(

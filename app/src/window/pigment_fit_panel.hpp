@@ -17,6 +17,8 @@ class PigmentFitPanel {
   void draw(const std::function<void(const std::vector<data::Pigment>&, bool)>& save);
   // For scripts and tests: fit this measurement file now.
   void fit(const std::string& path);
+  // The largest ΔE00 over the samples of the last fit (NaN before one).
+  double max_delta_e() const;
 
  private:
   struct Sample {
