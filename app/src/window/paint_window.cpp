@@ -26,6 +26,7 @@
 #include <iostream>
 #include <memory>
 #include <stdexcept>
+#include <thread>
 
 #include "session/preview.hpp"
 #include "session/rebuild.hpp"
@@ -48,6 +49,8 @@
 #include "window/sim_worker.hpp"
 #include "window/swatch_chips.hpp"
 #include "window/tablet_input.hpp"
+#include "window/ui_damage.hpp"
+#include "window/window_present.hpp"
 
 namespace impasto::app::window {
 namespace {
@@ -69,6 +72,9 @@ double ms_since(Clock::time_point start) {
 // An autosave waits for this long without pen input (or for options.autosave_seconds of
 // painting), and never comes sooner than this after the last one.
 constexpr double kAutosaveQuiet_s = 3.0;
+
+// The shortest time between frames while nothing changes (see run()).
+constexpr auto kIdleFrame = std::chrono::milliseconds(8);
 
 // The painting a recovered session ends with, from its recording (rebuild.hpp).
 RebuiltSession rebuild_entry(const SessionEntry& entry) {
@@ -135,6 +141,8 @@ class PaintWindow {
   void run_pending_action();
   void update_swatch();
   void draw_frame(bool take_screenshot);
+  void present_frame(const std::vector<render_gl::PixelRect>& canvas_changed, int fb_w, int fb_h,
+                     double fb_scale, bool take_screenshot);
   void pen_sample(const PointerEvent& at, bool tip_down);
   void pan_view(double from_x, double from_y, double to_x, double to_y);
   void rotate_view(double from_x, double from_y, double to_x, double to_y);
@@ -162,7 +170,12 @@ class PaintWindow {
   WindowState state_;
   std::unique_ptr<SimWorker> worker_;
   std::unique_ptr<render_gl::CanvasRenderer> renderer_;
-  render_gl::ShadedViewCache view_cache_;  // frames re-shade only what changed in view
+  render_gl::ShadedViewCache view_cache_;       // frames re-shade only what changed in view
+  std::unique_ptr<WindowPresenter> presenter_;  // frames present only what changed
+  UiDamage ui_damage_;
+  bool present_whole_ = true;  // the window's pixels may be lost: the next frame shows them all
+  int presented_w_ = 0, presented_h_ = 0;
+  bool frame_changed_ = true;  // the last frame re-shaded some of the canvas
   std::unique_ptr<render::SpectralPalette> palette_;
   std::vector<std::string> rendered_slots_;
   int canvas_w_ = 0, canvas_h_ = 0;
@@ -263,6 +276,11 @@ void PaintWindow::create_window() {
   double cursor_x = 0, cursor_y = 0;
   glfwGetCursorPos(window_, &cursor_x, &cursor_y);
   pointer_events_.set_position(cursor_x, cursor_y);
+  // Exposed again after being covered: the window's pixels are drawn whole.
+  glfwSetWindowRefreshCallback(window_, [](GLFWwindow* window) {
+    static_cast<PaintWindow*>(glfwGetWindowUserPointer(window))->present_whole_ = true;
+  });
+  presenter_ = std::make_unique<WindowPresenter>(window_);
   ImGui_ImplGlfw_InitForOpenGL(window_, true);
   ImGui_ImplOpenGL3_Init("#version 330 core");
   session_start_s_ = glfwGetTime();
@@ -730,8 +748,46 @@ void PaintWindow::run_pending_action() {
   state_.hidden_dry_layers.clear();
 }
 
+// Puts the frame on screen: the cached canvas with ImGui's panels over it. Where the back
+// buffer keeps the last frame (WindowPresenter::partial), only what changed is drawn again
+// and presented — the canvas's re-shaded regions and the panels' changed parts — each
+// rectangle as the cached canvas with every panel over it, so a pixel drawn is drawn whole.
+void PaintWindow::present_frame(const std::vector<render_gl::PixelRect>& canvas_changed, int fb_w,
+                                int fb_h, double fb_scale, bool take_screenshot) {
+  ImDrawData& ui = *ImGui::GetDrawData();
+  const std::vector<UiRect> ui_changed = ui_damage_.update(ui);
+  const bool whole = !presenter_->partial() || present_whole_ || take_screenshot ||
+                     fb_w != presented_w_ || fb_h != presented_h_;
+  present_whole_ = false;
+  presented_w_ = fb_w;
+  presented_h_ = fb_h;
+  glViewport(0, 0, fb_w, fb_h);
+  if (whole) {
+    view_cache_.copy_to(0, {0, 0, fb_w, fb_h});
+    ImGui_ImplOpenGL3_RenderDrawData(&ui);
+    if (take_screenshot) save_window_screenshot(*options_.screenshot, fb_w, fb_h);
+    presenter_->present_all();
+    return;
+  }
+  std::vector<render_gl::PixelRect> rects = canvas_changed;
+  for (const UiRect& r : ui_changed) rects.push_back(to_gl_pixels(r, fb_scale, fb_w, fb_h));
+  rects = merge_rects(std::move(rects));
+  for (const render_gl::PixelRect& r : rects) {
+    view_cache_.copy_to(0, r);
+    const ClipDrawData clipped(ui, to_ui_rect(r, fb_scale, fb_h));
+    ImGui_ImplOpenGL3_RenderDrawData(&ui);
+  }
+  presenter_->present_parts(rects);
+}
+
+// How long a frame waits for the simulation to apply the pen samples it has just submitted:
+// shown by this frame instead of the next, they reach the screen a frame sooner, and the
+// simulation has its own core meanwhile.
+constexpr auto kSimWait = std::chrono::milliseconds(15);
+
 void PaintWindow::draw_frame(bool take_screenshot) {
   const auto start = Clock::now();
+  if (worker_->stats().submitted != applied_at_upload_) worker_->wait_idle_for(kSimWait);
   update_swatch();
   sync_gpu();
   int fb_w = 0, fb_h = 0;
@@ -764,17 +820,16 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   const RecoveryChoice recovery = draw_recovery_offer(recoverable_, preview);
   ImGui::Render();
 
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  glViewport(0, 0, fb_w, fb_h);
   renderer_->set_view_options(state_.view_options);
   // The view is in window coordinates; scale it to framebuffer pixels (HiDPI).
   render_gl::CanvasView fb_view = state_.view;
-  fb_view.pixels_per_cell *= win_w > 0 ? static_cast<double>(fb_w) / win_w : 1.0;
+  const double fb_scale = win_w > 0 ? static_cast<double>(fb_w) / win_w : 1.0;
+  fb_view.pixels_per_cell *= fb_scale;
   renderer_->set_shading(state_.settings);
-  state_.pixels_shaded = view_cache_.draw(*renderer_, fb_view, fb_w, fb_h, 0).pixels_shaded;
-  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-  if (take_screenshot) save_window_screenshot(*options_.screenshot, fb_w, fb_h);
-  glfwSwapBuffers(window_);
+  const render_gl::CachedDrawStats canvas = view_cache_.update(*renderer_, fb_view, fb_w, fb_h);
+  state_.pixels_shaded = canvas.pixels_shaded;
+  frame_changed_ = !canvas.changed.empty();
+  present_frame(canvas.changed, fb_w, fb_h, fb_scale, take_screenshot);
   latency_.shown(applied_at_upload_, glfwGetTime() - session_start_s_);
   state_.input_latency_ms = latency_.recent_median_ms().value_or(-1.0);
   state_.frame_ms = ms_since(start);
@@ -809,7 +864,11 @@ void PaintWindow::run() {
     // panels, then captures the whole window.
     frames_since_idle = worker_->idle() ? frames_since_idle + 1 : 0;
     const bool capture = !screenshot_done && frames_since_idle >= 3;
+    const auto frame_start = Clock::now();
     draw_frame(capture);
+    // Nothing new on the canvas and nothing to simulate: frames at most every kIdleFrame, so
+    // the simulation and the rest of the machine get the cores (an event still waits less).
+    if (!frame_changed_ && worker_->idle()) std::this_thread::sleep_until(frame_start + kIdleFrame);
     if (capture) {
       screenshot_done = true;
       std::cout << "wrote " << options_.screenshot->string() << "\n";

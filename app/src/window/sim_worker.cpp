@@ -129,6 +129,11 @@ void SimWorker::wait_idle() {
   queue_changed_.wait(lock, [&] { return queue_.empty() && !busy_; });
 }
 
+bool SimWorker::wait_idle_for(std::chrono::microseconds limit) {
+  std::unique_lock lock(queue_mutex_);
+  return queue_changed_.wait_for(lock, limit, [&] { return queue_.empty() && !busy_; });
+}
+
 bool SimWorker::idle() const {
   std::lock_guard lock(queue_mutex_);
   return queue_.empty() && !busy_;

@@ -8,6 +8,7 @@
 #include <impasto/paintcore/painting.hpp>
 
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <deque>
 #include <filesystem>
@@ -58,6 +59,8 @@ class SimWorker {
   void submit(input::StrokeEvent event);
   // Blocks until every submitted event has been applied.
   void wait_idle();
+  // Waits as wait_idle() does, for at most `limit`; returns whether the worker is idle.
+  bool wait_idle_for(std::chrono::microseconds limit);
   bool idle() const;
 
   // Strokes without a load record get a brush auto-loaded per stroke (as `impasto replay`

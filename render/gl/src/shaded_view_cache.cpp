@@ -92,6 +92,24 @@ std::vector<PixelRect> ShadedViewCache::shift_image(int dx, int dy) {
 
 CachedDrawStats ShadedViewCache::draw(CanvasRenderer& renderer, const CanvasView& view,
                                       int viewport_w, int viewport_h, GLuint target) {
+  CachedDrawStats stats = update(renderer, view, viewport_w, viewport_h);
+  copy_to(target, {0, 0, viewport_w, viewport_h});
+  glViewport(0, 0, viewport_w, viewport_h);
+  check_gl_error("cached canvas view");
+  return stats;
+}
+
+void ShadedViewCache::copy_to(GLuint target, const PixelRect& rect) const {
+  if (!image_ || rect.empty()) return;
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, image_->id());
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target);
+  glBlitFramebuffer(rect.x0, rect.y0, rect.x1, rect.y1, rect.x0, rect.y0, rect.x1, rect.y1,
+                    GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  glBindFramebuffer(GL_FRAMEBUFFER, target);
+}
+
+CachedDrawStats ShadedViewCache::update(CanvasRenderer& renderer, const CanvasView& view,
+                                        int viewport_w, int viewport_h) {
   CachedDrawStats stats;
   if (!image_ || image_->width() != viewport_w || image_->height() != viewport_h) {
     image_ = std::make_unique<Framebuffer>(viewport_w, viewport_h, TexelFormat::kRGBA8);
@@ -167,13 +185,11 @@ CachedDrawStats ShadedViewCache::draw(CanvasRenderer& renderer, const CanvasView
     glDisable(GL_SCISSOR_TEST);
     stats.regions = static_cast<int>(regions.size());
   }
-  // The cached image to the target: a copy, no shading.
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, image_->id());
-  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, target);
-  glBlitFramebuffer(0, 0, viewport_w, viewport_h, 0, 0, viewport_w, viewport_h, GL_COLOR_BUFFER_BIT,
-                    GL_NEAREST);
-  glBindFramebuffer(GL_FRAMEBUFFER, target);
-  glViewport(0, 0, viewport_w, viewport_h);
+  if (stats.shifted) {
+    stats.changed.assign(1, {0, 0, viewport_w, viewport_h});
+  } else {
+    stats.changed = std::move(regions);
+  }
   check_gl_error("cached canvas view");
   return stats;
 }

@@ -18,19 +18,22 @@
 
 namespace impasto::render_gl {
 
+// A screen rectangle in GL window pixels (origin bottom-left), [x0, x1) × [y0, y1).
+struct PixelRect {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  long long area() const { return static_cast<long long>(x1 - x0) * (y1 - y0); }
+  bool empty() const { return x1 <= x0 || y1 <= y0; }
+};
+
 // What one draw did.
 struct CachedDrawStats {
   long long pixels_shaded = 0;  // pixels the K-M pass ran for
   int regions = 0;              // scissored passes (0: nothing changed in view)
   bool full = false;            // the whole viewport was re-shaded
   bool shifted = false;         // the cached image was moved (a pan by whole pixels)
-};
-
-// A screen rectangle in GL window pixels (origin bottom-left), [x0, x1) × [y0, y1).
-struct PixelRect {
-  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-  long long area() const { return static_cast<long long>(x1 - x0) * (y1 - y0); }
-  bool empty() const { return x1 <= x0 || y1 <= y0; }
+  // The viewport pixels whose cached image changed: the shaded regions, or the whole
+  // viewport after a shift. A window that keeps its last frame re-presents only these.
+  std::vector<PixelRect> changed;
 };
 
 // The pixels of a viewport that show any of tile `tile_index`'s cells or the rim around
@@ -52,6 +55,11 @@ class ShadedViewCache {
   // view options re-shades everything.
   CachedDrawStats draw(CanvasRenderer& renderer, const CanvasView& view, int viewport_w,
                        int viewport_h, GLuint target);
+  // draw() in two steps: bring the cached image up to date, then copy any part of it (in
+  // the viewport's GL pixels) into the framebuffer `target`.
+  CachedDrawStats update(CanvasRenderer& renderer, const CanvasView& view, int viewport_w,
+                         int viewport_h);
+  void copy_to(GLuint target, const PixelRect& rect) const;
 
  private:
   // Everything a pixel's colour depends on beside the canvas data and the view's centre.
