@@ -11,6 +11,9 @@
 namespace impasto::render {
 namespace {
 
+// A painting's crack shape codes are the cracks library's shapes, in order.
+static_assert(cracks::kAllShapes.size() == paintcore::kCrackShapeCount);
+
 cracks::CrackCell crack_cell(const paintcore::CrackRecord& r) {
   // The record's shape code was checked when it entered the painting (validate_cracks).
   return {r.depth_mm, r.half_width_mm, static_cast<cracks::CavityShape>(r.shape), r.exposed_layer};
@@ -75,7 +78,7 @@ CrackTileShading::CrackTileShading(const paintcore::Canvas& canvas, int tile_ind
                                    const RenderSettings& settings, const float* ground, int nodes)
     : tile_(settings.cracks ? canvas.cracks().tile(tile_index) : nullptr),
       cell_mm_(canvas.cell_mm()),
-      correction_(settings.cracks && settings.crack_model == CrackModel::corrected
+      correction_(settings.cracks && settings.crack_model == CrackModel::Corrected
                       ? cracks::cavity_correction(crack_scene_light(settings))
                       : nullptr),
       ground_(ground),

@@ -15,14 +15,14 @@ build="${IMPASTO_FUZZ_BUILD:-$repo/build/fuzz}"
 cxx="${CXX_FUZZ:-clang++}"
 flags=(-std=c++20 -O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined
        -fno-sanitize-recover=undefined -I"$repo/input/include" -I"$repo/paintcore/include"
-       -I"$repo/files/include"
-       -DIMPASTO_INPUT_SOURCE_DATA_DIR=\"$repo/data\")
+       -I"$repo/files/include" -I"$repo/util/include"
+       -DIMPASTO_SOURCE_DATA_DIR=\"$repo/data\" -DIMPASTO_BUILD_DIR=\"$build\")
 
 mkdir -p "$build/obj"
-echo "building the input library (and the files module it reads through) with $cxx"
+echo "building the input library (and the files and util modules it uses) with $cxx"
 objects=()
 pids=()
-for source in "$repo"/input/src/*.cpp "$repo"/files/src/*.cpp; do  # one compiler per core at a time
+for source in "$repo"/input/src/*.cpp "$repo"/files/src/*.cpp "$repo"/util/src/*.cpp; do  # one compiler per core at a time
   object="$build/obj/$(basename "${source%.cpp}").o"
   "$cxx" "${flags[@]}" -fsanitize=fuzzer-no-link -I"$repo/input/src" -c "$source" -o "$object" &
   pids+=($!)

@@ -14,8 +14,8 @@ uniform sampler2D crack_table;            // rho_table - rho_Gouffe for the ligh
 uniform int crack_table_rows;             // L/R rows per shape
 uniform int crack_table_rho0s;            // rho0 nodes (0 .. 1)
 uniform float crack_table_stride;         // packing of the cells' fourth channel
-uniform float crack_table_last_F[6];      // F and G of each shape at the deepest row
-uniform float crack_table_last_G[6];
+uniform float crack_table_last_F[CRACK_SHAPES];  // F and G of each shape at the deepest row
+uniform float crack_table_last_G[CRACK_SHAPES];  // (CRACK_SHAPES #defined by cracks_glsl())
 
 // The cell's crack optics (coverage 0 where it has none).
 vec4 crack_at(ivec2 cell) {

@@ -1,8 +1,9 @@
 // Sparkles of flake paint: a port of the CPU reference in render/flakes (counter_rng.hpp,
 // sparkle_count.cpp, sparkle_math.hpp, fresnel.hpp, sparkles.cpp) and of the renderer hook
-// render/src/flake_shading.cpp, line by line, in float. Needs MAX_NODES.
+// render/src/flake_shading.cpp, line by line, in float. Needs MAX_NODES; MAX_FLAKES (flake
+// pigments one canvas can hold on the GPU), FLAKE_ORIENTATION_SAMPLES and FLAKE_ANGLE_SAMPLES
+// (the table sizes) are #defined from the C++ by flakes_glsl() (shader_library.cpp).
 
-const int MAX_FLAKES = 3;             // flake pigments one canvas can hold on the GPU
 uniform int flake_count;              // flake pigments on the canvas; 0: no sparkles at all
 uniform sampler2D flake_layer;        // per cell: top layer thickness (mm), 3 concentrations
 uniform sampler2D flake_tables;       // R32F, FLAKE_ROWS rows per flake pigment (see below)
@@ -21,8 +22,9 @@ uniform int flake_nodes;                   // wavelength nodes
 uniform vec3 flake_node_to_xyz[MAX_NODES];  // display-referred XYZ per unit node radiance
 uniform float flake_cell_mm;
 
-// Rows of flake_tables per pigment: P at sin(beta/2) = i*max/1023, <s> and <t_p> at cos theta = i/128,
-// then r_p at cos alpha = i/128 for each node.
+// Rows of flake_tables per pigment: P at sin(beta/2) = i*max/(FLAKE_ORIENTATION_SAMPLES - 1), <s> and
+// <t_p> at cos theta = i/(FLAKE_ANGLE_SAMPLES - 1),
+// then r_p at cos alpha = i/(FLAKE_ANGLE_SAMPLES - 1) for each node.
 const int FLAKE_ROWS = 3 + MAX_NODES;
 const float FLAKE_MAX_HALF_SIN = 0.70710678118654752;
 const float FLAKE_PI = 3.14159265358979324;
@@ -43,7 +45,7 @@ float flake_table(int pigment, int row, int samples, float x, float x_max) {
 float flake_orientation_density(int pigment, float cos_beta) {
   float half_sin = sqrt(max(0.0, 0.5 * (1.0 - cos_beta)));
   if (half_sin > FLAKE_MAX_HALF_SIN) return 0.0;
-  return flake_table(pigment, 0, 1024, half_sin, FLAKE_MAX_HALF_SIN);
+  return flake_table(pigment, 0, FLAKE_ORIENTATION_SAMPLES, half_sin, FLAKE_MAX_HALF_SIN);
 }
 
 // --- counter-based random numbers (pcg4d) ---
@@ -175,7 +177,7 @@ float flake_direct_fraction(float t_per_depth, float depth) {
 float flake_optical_thickness(int f, float concentration, float cos_in) {
   vec4 p = flake_paint[f];
   float tau = concentration * p.x *
-                  (flake_table(f, 1, 129, cos_in, 1.0) - flake_table(f, 2, 129, cos_in, 1.0)) +
+                  (flake_table(f, 1, FLAKE_ANGLE_SAMPLES, cos_in, 1.0) - flake_table(f, 2, FLAKE_ANGLE_SAMPLES, cos_in, 1.0)) +
               p.w + 16.0 * FLAKE_PI / 3.0 * concentration * flake_paint2[f].x;
   return tau / cos_in;
 }
@@ -259,7 +261,7 @@ int flake_cell(int f, ivec2 cell, vec3 n, float height, float concentration, flo
   float per_area = energy / (FLAKE_PI * delta_in * delta_in * eta * eta * cos_view_in * surface_area);
   float scale = per_area * weight * flake_light_strength;
   for (int node = 0; node < flake_nodes; ++node) {
-    radiance[node] += scale * flake_table(f, 3 + node, 129, cos_alpha, 1.0);
+    radiance[node] += scale * flake_table(f, 3 + node, FLAKE_ANGLE_SAMPLES, cos_alpha, 1.0);
   }
   return count;
 }

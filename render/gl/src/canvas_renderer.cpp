@@ -86,8 +86,8 @@ void CanvasRenderer::build_program() {
   source += shaders::km_lib;
   source += shading_glsl();
   source += relief_glsl();
-  source += shaders::flakes_lib;
-  source += shaders::cracks_lib;
+  source += flakes_glsl();
+  source += cracks_glsl();
   source += shaders::crack_close_up_lib;
   source += shaders::crack_close_up_canvas_lib;
   source += display_->glsl();

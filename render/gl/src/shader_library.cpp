@@ -4,8 +4,12 @@
 #include <string>
 
 #include "embedded_shaders.hpp"
+#include "impasto/flakes/flake_tables.hpp"
+#include "impasto/paintcore/crack_layer.hpp"
+#include "impasto/render/crack_shading.hpp"
 #include "impasto/render/relief_shading.hpp"
 #include "impasto/render/shading.hpp"
+#include "impasto/render_gl/flake_textures.hpp"
 
 namespace impasto::render_gl {
 namespace {
@@ -19,6 +23,12 @@ std::string glsl_float(float value) {
   return s;
 }
 
+// Sizes the shaders share with the C++ (they are #defined from it below); the GPU holds no
+// more flake pigments than a painting has slots, and each crack shape has its deepest row.
+static_assert(FlakeTextures::kMaxFlakePigments <= paintcore::kMaxPigmentSlots);
+static_assert(std::tuple_size_v<decltype(render::CrackTableData::last_F)> ==
+              paintcore::kCrackShapeCount);
+
 }  // namespace
 
 const char* km_glsl() {
@@ -29,6 +39,22 @@ const char* shading_glsl() {
   static const std::string source = "#define SHADE_OCCLUSION_DIRECT_SHARE " +
                                     glsl_float(render::shade::kOcclusionDirectShare) + "\n" +
                                     shaders::shading_lib;
+  return source.c_str();
+}
+
+const char* flakes_glsl() {
+  static const std::string source =
+      "#define MAX_FLAKES " + std::to_string(FlakeTextures::kMaxFlakePigments) +
+      "\n#define FLAKE_ORIENTATION_SAMPLES " +
+      std::to_string(flakes::FlakeTables::kOrientationSamples) + "\n#define FLAKE_ANGLE_SAMPLES " +
+      std::to_string(flakes::FlakeTables::kAngleSamples) + "\n" + shaders::flakes_lib;
+  return source.c_str();
+}
+
+const char* cracks_glsl() {
+  static const std::string source = "#define CRACK_SHAPES " +
+                                    std::to_string(paintcore::kCrackShapeCount) + "\n" +
+                                    shaders::cracks_lib;
   return source.c_str();
 }
 

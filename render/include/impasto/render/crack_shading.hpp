@@ -31,7 +31,7 @@ struct CrackTableData {
   int ratio_count = 0;
   int rho0_count = 0;
   std::vector<float> differences;  // [shape][L/R][rho0]
-  std::array<float, 6> last_F{}, last_G{};
+  std::array<float, paintcore::kCrackShapeCount> last_F{}, last_G{};
   double sun_zenith_deg = 0.0, sky_share = 0.0;  // the light it was blended for
 };
 CrackTableData crack_table_data(const RenderSettings& settings);

@@ -19,7 +19,7 @@ namespace impasto::render_gl {
 
 class FlakeTextures {
  public:
-  static constexpr int kMaxFlakePigments = 3;  // MAX_FLAKES in flakes_lib.glsl
+  static constexpr int kMaxFlakePigments = 3;  // MAX_FLAKES in flakes_lib.glsl (flakes_glsl)
   // The texture units the flake samplers use (above the canvas pass's own).
   static constexpr int kLayerUnit = 14, kTablesUnit = 15;
 

@@ -12,5 +12,10 @@ const char* shading_glsl();
 // relief_shadow, relief_ambient_occlusion, relief_visibility and their uniforms (after
 // shading_glsl), with the constants of render/relief_shading.hpp as #defines.
 const char* relief_glsl();
+// The flake sparkles (flakes_lib.glsl) with MAX_FLAKES and the flake table sizes as #defines
+// from FlakeTextures and flakes::FlakeTables (needs MAX_NODES).
+const char* flakes_glsl();
+// The crack shading (cracks_lib.glsl) with CRACK_SHAPES from paintcore::kCrackShapeCount.
+const char* cracks_glsl();
 
 }  // namespace impasto::render_gl
