@@ -36,7 +36,7 @@ struct RenderArgs {
   double thickness_scale_mm = RenderSettings{}.thickness_scale_mm;
   bool saunderson = false;
   int threads = 0;
-  std::string light_type = "directional";  // flake sparkles: directional, point, spot, diffuse
+  std::string light_type{util::name_of(kLightTypeNames, RenderSettings{}.light_type)};
   double light_size_deg = RenderSettings{}.light_size_deg;
   double light_distance_mm = RenderSettings{}.light_distance_mm;
   bool no_flakes = false;
@@ -44,7 +44,7 @@ struct RenderArgs {
   bool no_cracks = false;
   bool no_shadows = false;
   bool no_occlusion = false;
-  std::string crack_model = "corrected";
+  std::string crack_model{util::name_of(cracks::kCavityModelNames, RenderSettings{}.crack_model)};
   double ambient = RenderSettings{}.ambient;
   bool gpu = false;    // through the GLSL shaders, headless
   int zoom = 0;        // > 0: the close-up of --region at this many pixels per cell
@@ -168,7 +168,7 @@ const CommandRegistrar registrar("render", [](CLI::App& root) {
   cmd->add_flag("--saunderson", args->saunderson, "Apply the Saunderson surface correction");
   cmd->add_option("--light-type", args->light_type,
                   "directional (sun), point, spot, or diffuse (overcast: no sparkles)")
-      ->check(CLI::IsMember({"directional", "point", "spot", "diffuse"}))
+      ->check(CLI::IsMember(util::names_of(kLightTypeNames)))
       ->capture_default_str();
   cmd->add_option("--light-size", args->light_size_deg,
                   "Apparent diameter of the light in degrees (the sun: 0.53)")
@@ -184,7 +184,7 @@ const CommandRegistrar registrar("render", [](CLI::App& root) {
   cmd->add_flag("--no-occlusion", args->no_occlusion, "No ambient occlusion in furrows");
   cmd->add_option("--crack-model", args->crack_model,
                   "Cavity reflectance: corrected (measured tables) or gouffe (closed form)")
-      ->check(CLI::IsMember({"corrected", "gouffe"}))
+      ->check(CLI::IsMember(util::names_of(cracks::kCavityModelNames)))
       ->capture_default_str();
   cmd->add_option(
          "--ambient", args->ambient,

@@ -29,7 +29,8 @@ struct ReplayArgs {
   bool no_auto_load = false;
   std::string out, preview, png, light = "D65";
   int wavelengths = 8;
-  std::string light_type = "directional";
+  std::string light_type{
+      util::name_of(render::kLightTypeNames, render::RenderSettings{}.light_type)};
   double light_size_deg = render::RenderSettings{}.light_size_deg;
   bool stats = false;
 };
@@ -123,7 +124,7 @@ const CommandRegistrar registrar("replay", [](CLI::App& root) {
       ->check(CLI::Range(0, 16));
   cmd->add_option("--light-type", args->light_type,
                   "Light for --png: directional (sun), point, spot or diffuse (no sparkles)")
-      ->check(CLI::IsMember({"directional", "point", "spot", "diffuse"}));
+      ->check(CLI::IsMember(util::names_of(render::kLightTypeNames)));
   cmd->add_option("--light-size", args->light_size_deg,
                   "Apparent diameter of the light for --png, degrees (the sun: 0.53)")
       ->check(CLI::Range(1e-3, 90.0));

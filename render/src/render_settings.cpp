@@ -61,19 +61,11 @@ ReflectanceStorage parse_reflectance_storage(std::string_view text) {
 }
 
 LightType parse_light_type(std::string_view text) {
-  if (text == "directional") return LightType::directional;
-  if (text == "point") return LightType::point;
-  if (text == "spot") return LightType::spot;
-  if (text == "diffuse") return LightType::diffuse;
-  throw std::runtime_error("unknown light type '" + std::string(text) +
-                           "' (expected directional, point, spot or diffuse)");
+  return util::parse_name(kLightTypeNames, text, "light type");
 }
 
 CrackModel parse_crack_model(std::string_view text) {
-  if (text == "gouffe") return CrackModel::gouffe;
-  if (text == "corrected") return CrackModel::corrected;
-  throw std::runtime_error("unknown crack model '" + std::string(text) +
-                           "' (expected gouffe or corrected)");
+  return util::parse_name(cracks::kCavityModelNames, text, "crack model");
 }
 
 }  // namespace impasto::render

@@ -3,6 +3,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "impasto/util/enum_names.hpp"
 #include "impasto/util/fnv1a.hpp"
 #include "impasto/util/statistics.hpp"
 #include "impasto/util/text.hpp"
@@ -38,6 +39,26 @@ TEST(Median, OddAndEvenCounts) {
   EXPECT_DOUBLE_EQ(median({4.0, 1.0, 3.0, 2.0}), 2.5);
   EXPECT_DOUBLE_EQ(median({7.0}), 7.0);
   EXPECT_THROW(median({}), std::invalid_argument);
+}
+
+enum class Fruit { apple, pear, plum };
+constexpr EnumNames<Fruit, 3> kFruitNames{
+    {{Fruit::apple, "apple"}, {Fruit::pear, "pear"}, {Fruit::plum, "plum"}}};
+
+TEST(EnumNames, ParsesNamesAndListsThemInOrder) {
+  EXPECT_EQ(parse_name(kFruitNames, "pear", "fruit"), Fruit::pear);
+  EXPECT_EQ(name_of(kFruitNames, Fruit::plum), "plum");
+  EXPECT_EQ(names_of(kFruitNames), (std::vector<std::string>{"apple", "pear", "plum"}));
+  EXPECT_EQ(names_text(kFruitNames), "apple, pear or plum");
+}
+
+TEST(EnumNames, AnUnknownNameIsAnErrorListingTheChoices) {
+  try {
+    parse_name(kFruitNames, "fig", "fruit");
+    FAIL() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "unknown fruit 'fig' (expected apple, pear or plum)");
+  }
 }
 
 }  // namespace

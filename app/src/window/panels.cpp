@@ -344,10 +344,10 @@ void cracks_panel(PanelContext& c) {
   WindowState& s = c.state;
   if (!ImGui::CollapsingHeader("Cracks")) return;
   ImGui::Checkbox("show cracks", &s.settings.cracks);
-  int model = s.settings.crack_model == render::CrackModel::corrected ? 0 : 1;
+  int model = s.settings.crack_model == render::CrackModel::Corrected ? 0 : 1;
   if (ImGui::Combo("far view", &model, "measured (corrected)\0Gouffe closed form\0")) {
     s.settings.crack_model =
-        model == 0 ? render::CrackModel::corrected : render::CrackModel::gouffe;
+        model == 0 ? render::CrackModel::Corrected : render::CrackModel::Gouffe;
   }
   bool close_up = s.view_options.crack_close_up_min_pixels > 0.0f;
   if (ImGui::Checkbox("close-up when zoomed in", &close_up)) {

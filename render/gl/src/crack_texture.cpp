@@ -87,12 +87,14 @@ void CrackTexture::bind(const ShaderProgram& program, const render::SpectralPale
   glUniform1fv(program.uniform("crack_ground"), palette.nodes(), palette.ground());
   table_.bind(kTableUnit);
   glUniform1i(program.uniform("crack_corrected"),
-              settings.crack_model == render::CrackModel::corrected ? 1 : 0);
+              settings.crack_model == render::CrackModel::Corrected ? 1 : 0);
   glUniform1i(program.uniform("crack_table_rows"), table.ratio_count);
   glUniform1i(program.uniform("crack_table_rho0s"), table.rho0_count);
   glUniform1f(program.uniform("crack_table_stride"), kTableStride);
-  glUniform1fv(program.uniform("crack_table_last_F"), 6, table.last_F.data());
-  glUniform1fv(program.uniform("crack_table_last_G"), 6, table.last_G.data());
+  glUniform1fv(program.uniform("crack_table_last_F"), paintcore::kCrackShapeCount,
+               table.last_F.data());
+  glUniform1fv(program.uniform("crack_table_last_G"), paintcore::kCrackShapeCount,
+               table.last_G.data());
 }
 
 void CrackTexture::bind_close_up(const ShaderProgram& program,

@@ -3,6 +3,7 @@
 #include <optional>
 #include <string>
 
+#include "impasto/cracks/cavity_model.hpp"
 #include "impasto/data/spectrum.hpp"
 #include "impasto/render/chromatic_adaptation.hpp"
 #include "impasto/render/display.hpp"
@@ -20,12 +21,17 @@ enum class ReflectanceStorage {
 // The kind of the main light. Only a light with a direction makes flake sparkles; diffuse
 // (overcast) light lights every flake a little and none brightly.
 enum class LightType { directional, point, spot, diffuse };
+// Its spellings (--light-type), the default first.
+inline constexpr util::EnumNames<LightType, 4> kLightTypeNames{
+    {{LightType::directional, "directional"},
+     {LightType::point, "point"},
+     {LightType::spot, "spot"},
+     {LightType::diffuse, "diffuse"}}};
 
-// How the far view finds a crack's apparent reflectance (docs/cracks.md).
-enum class CrackModel {
-  gouffe,     // Gouffé's closed form: fast, too bright in deep narrow cavities (up to 0.27)
-  corrected,  // the closed form corrected by the measured tables (axial and sky light)
-};
+// How the far view finds a crack's apparent reflectance (docs/cracks.md): the cracks
+// library's choice, Gouffé's closed form or the closed form corrected by the measured tables
+// (axial and sky light). Spelled as cracks::kCavityModelNames.
+using CrackModel = cracks::CavityModel;
 
 struct RenderSettings {
   // --- light and colour ---
@@ -77,7 +83,7 @@ struct RenderSettings {
 
   // --- cracks (docs/cracks.md) ---
   bool cracks = true;  // off: cracked cells show their surface as if uncracked
-  CrackModel crack_model = CrackModel::corrected;
+  CrackModel crack_model = CrackModel::Corrected;
 
   // --- storage and threads ---
   ReflectanceStorage storage = ReflectanceStorage::float32;
@@ -88,7 +94,7 @@ struct RenderSettings {
 void validate(const RenderSettings& settings);
 
 ReflectanceStorage parse_reflectance_storage(std::string_view text);  // "float" or "half"
-LightType parse_light_type(std::string_view text);    // "directional", "point", "spot", "diffuse"
-CrackModel parse_crack_model(std::string_view text);  // "gouffe", "corrected"
+LightType parse_light_type(std::string_view text);                    // kLightTypeNames
+CrackModel parse_crack_model(std::string_view text);                  // cracks::kCavityModelNames
 
 }  // namespace impasto::render

@@ -24,15 +24,10 @@
 #include <vector>
 
 #include "impasto/cracks/cavity.hpp"
+#include "impasto/cracks/cavity_model.hpp"
 #include "impasto/cracks/gouffe.hpp"
 
 namespace impasto::cracks {
-
-// Which formula gives a cavity's apparent reflectance.
-enum class CavityModel : std::uint8_t {
-  Gouffe,     // the closed form alone
-  Corrected,  // the measured table (the default: closer to the reference everywhere)
-};
 
 // The light a table was measured under: a beam zenith_deg from the cavity's axis (tilted
 // across a groove; 0 is Gouffé's and Kirchhoff's setting), or a uniform sky over the opening
