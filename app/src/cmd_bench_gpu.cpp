@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "command.hpp"
+#include "impasto/util/statistics.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).
 namespace impasto::app::bench_gpu_cmd {
@@ -26,10 +27,7 @@ double ms_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  return values.empty() ? 0.0 : values[values.size() / 2];
-}
+using util::median;
 
 struct BenchGpuArgs {
   int size = 4096;  // canvas cells per side for the frame time

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "command.hpp"
+#include "impasto/util/statistics.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).
 namespace impasto::app::bench_sim_cmd {
@@ -24,11 +25,7 @@ struct BenchSimArgs {
   std::vector<int> brushes{26, 88, 128};
 };
 
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  const std::size_t mid = values.size() / 2;
-  return values.size() % 2 ? values[mid] : 0.5 * (values[mid - 1] + values[mid]);
-}
+using util::median;
 
 void run(const BenchSimArgs& args) {
   if (args.runs < 1) throw std::runtime_error("bench sim: --runs must be >= 1");
