@@ -9,6 +9,7 @@
 #include "impasto/files/atomic_file.hpp"
 #include "impasto/files/input_file.hpp"
 #include "impasto/files/message_text.hpp"
+#include "impasto/util/text.hpp"
 
 namespace impasto::data {
 namespace {
@@ -27,18 +28,7 @@ bool same_ignoring_case(std::string_view a, std::string_view b) {
 
 // The value of "key = value" in a flake paint file, or empty.
 std::string flake_field(const std::string& text, const std::string& key) {
-  std::istringstream lines(text);
-  for (std::string line; std::getline(lines, line);) {
-    const auto eq = line.find('=');
-    if (line.empty() || line[0] == '#' || eq == std::string::npos) continue;
-    auto trim = [](std::string s) {
-      s.erase(0, s.find_first_not_of(" \t\r"));
-      s.erase(s.find_last_not_of(" \t\r") + 1);
-      return s;
-    };
-    if (trim(line.substr(0, eq)) == key) return trim(line.substr(eq + 1));
-  }
-  return {};
+  return util::key_value_field(text, key);
 }
 
 // Copies a pigment's flake file (and its n,k table, named relative to it) into folder.

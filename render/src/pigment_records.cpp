@@ -13,6 +13,7 @@
 #include "impasto/files/input_file.hpp"
 #include "impasto/files/message_text.hpp"
 #include "impasto/util/fnv1a.hpp"
+#include "impasto/util/text.hpp"
 
 namespace impasto::render {
 namespace {
@@ -24,22 +25,7 @@ constexpr const char* kGroundPigment = "Titanium White";  // as spectral_palette
 
 // "key = value" of a flake paint file, or empty.
 std::string flake_field(const std::string& text, const std::string& key) {
-  std::size_t start = 0;
-  while (start < text.size()) {
-    std::size_t end = text.find('\n', start);
-    if (end == std::string::npos) end = text.size();
-    const std::string line = text.substr(start, end - start);
-    start = end + 1;
-    const auto eq = line.find('=');
-    if (line.empty() || line[0] == '#' || eq == std::string::npos) continue;
-    auto trim = [](std::string s) {
-      s.erase(0, s.find_first_not_of(" \t\r"));
-      s.erase(s.find_last_not_of(" \t\r") + 1);
-      return s;
-    };
-    if (trim(line.substr(0, eq)) == key) return trim(line.substr(eq + 1));
-  }
-  return {};
+  return util::key_value_field(text, key);
 }
 
 // A file name a record may use: no folder part, nothing hidden.

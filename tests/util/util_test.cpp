@@ -19,6 +19,15 @@ TEST(Trim, DropsBlanksAtBothEndsOnly) {
   EXPECT_EQ(trim("\na\n"), "\na\n");  // a newline is not a blank: lines are split first
 }
 
+TEST(KeyValueField, FindsTheFirstLineWithTheKey) {
+  const std::string text = "# nk_table = no\n\nname = Gold \n nk_table =  gold.csv\r\nnk_table = b";
+  EXPECT_EQ(key_value_field(text, "nk_table"), "gold.csv");
+  EXPECT_EQ(key_value_field(text, "name"), "Gold");
+  EXPECT_EQ(key_value_field(text, "missing"), "");
+  EXPECT_EQ(key_value_field("key = last line without a newline", "key"),
+            "last line without a newline");
+}
+
 TEST(Fnv1a, MatchesThePublishedTestVectors) {
   // From the FNV reference (isthe.com/chongo/tech/comp/fnv): "" and "a", 64-bit FNV-1a.
   EXPECT_EQ(fnv1a(""), 0xcbf29ce484222325ull);
