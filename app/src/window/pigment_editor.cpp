@@ -153,10 +153,12 @@ void PigmentEditor::list_panel() {
     ImGui::ColorButton("##chip", chip, ImGuiColorEditFlags_NoTooltip,
                        ImVec2(ImGui::GetFrameHeight(), ImGui::GetFrameHeight()));
     ImGui::SameLine();
+    // The name is clipped before the layer's column.
+    const float layer_x = ImGui::GetWindowContentRegionMax().x - 62;
     if (ImGui::Selectable(p.name.c_str(), p.name == selected_, 0,
-                          ImVec2(0, ImGui::GetFrameHeight())))
+                          ImVec2(layer_x - ImGui::GetCursorPosX() - 4, ImGui::GetFrameHeight())))
       selected_ = p.name;
-    ImGui::SameLine(ImGui::GetContentRegionAvail().x + ImGui::GetCursorPosX() - 60);
+    ImGui::SameLine(layer_x);
     ImGui::TextDisabled("%s", layer.c_str());
     ImGui::PopID();
   }
@@ -300,6 +302,7 @@ void PigmentEditor::import_file(const fs::path& file) {
 
 void PigmentEditor::compare_tab(const data::Pigment& pigment, const std::vector<double>& nodes) {
   const auto& all = library_->database().all();
+  ImGui::SetNextItemWidth(300);
   if (ImGui::BeginCombo("compare with", compare_with_.c_str())) {
     for (const auto& p : all)
       if (ImGui::Selectable(p.name.c_str(), p.name == compare_with_)) compare_with_ = p.name;
