@@ -115,5 +115,32 @@ TEST_F(ImGuiFrames, AChangedLineIsTheDamage) {
   EXPECT_LE(r.y1 - r.y0, line + 2.0f);  // the one line, not the panel
 }
 
+// An image whose texels changed is drawn the same: the panel says so, and its box is the
+// damage (the palette board re-renders into its texture as it is scrubbed).
+TEST_F(ImGuiFrames, AChangedTextureDamagesTheImageThatDrawsIt) {
+  const auto board = static_cast<std::uintptr_t>(7);
+  const auto frame_with_image = [&] {
+    ImGui::NewFrame();
+    ImGui::SetNextWindowPos({0, 0});
+    ImGui::SetNextWindowSize({300, 200});
+    ImGui::Begin("panel");
+    ImGui::Text("a fixed line");
+    ImGui::Image(reinterpret_cast<ImTextureID>(board), {100, 50});
+    ImGui::End();
+    ImGui::Render();
+    return ImGui::GetDrawData();
+  };
+  UiDamage damage;
+  damage.update(*frame_with_image());
+  damage.update(*frame_with_image());
+  EXPECT_TRUE(damage.update(*frame_with_image()).empty());
+  damage.texture_changed(board);
+  const std::vector<UiRect> changed = damage.update(*frame_with_image());
+  ASSERT_EQ(changed.size(), 1u);
+  EXPECT_NEAR(changed[0].x1 - changed[0].x0, 100.0f, 2.0f);  // the image, a pixel wider
+  EXPECT_NEAR(changed[0].y1 - changed[0].y0, 50.0f, 2.0f);
+  EXPECT_TRUE(damage.update(*frame_with_image()).empty());  // told once, damaged once
+}
+
 }  // namespace
 }  // namespace impasto::app::window

@@ -755,6 +755,9 @@ void PaintWindow::run_pending_action() {
 void PaintWindow::present_frame(const std::vector<render_gl::PixelRect>& canvas_changed, int fb_w,
                                 int fb_h, double fb_scale, bool take_screenshot) {
   ImDrawData& ui = *ImGui::GetDrawData();
+  for (const std::uintptr_t texture : state_.ui_textures_changed)
+    ui_damage_.texture_changed(texture);
+  state_.ui_textures_changed.clear();
   const std::vector<UiRect> ui_changed = ui_damage_.update(ui);
   const bool whole = !presenter_->partial() || present_whole_ || take_screenshot ||
                      fb_w != presented_w_ || fb_h != presented_h_;

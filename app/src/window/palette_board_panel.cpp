@@ -24,7 +24,8 @@ void PaletteBoardPanel::replace(PaletteBoard board) {
 }
 
 // The board through the CPU reference renderer, only its dirty tiles, into an RGBA8 texture.
-void PaletteBoardPanel::refresh_image(const render::RenderSettings& settings) {
+// Returns whether the texture changed.
+bool PaletteBoardPanel::refresh_image(const render::RenderSettings& settings) {
   const paintcore::Painting& painting = board_.painting();
   const paintcore::Canvas& canvas = painting.canvas();
   const std::vector<int> dirty = canvas.take_dirty_tiles();
@@ -40,7 +41,7 @@ void PaletteBoardPanel::refresh_image(const render::RenderSettings& settings) {
     rendered_wavelengths_ = settings.wavelengths;
     full_render_ = true;
   }
-  if (!full_render_ && dirty.empty()) return;
+  if (!full_render_ && dirty.empty()) return false;
   if (full_render_) {
     renderer_->render_all(canvas);
   } else {
@@ -60,12 +61,15 @@ void PaletteBoardPanel::refresh_image(const render::RenderSettings& settings) {
     rgba_[4 * i + 3] = 255;
   }
   texture_.upload(0, 0, image.width, image.height, 0, rgba_.data(), image.width);
+  return true;
 }
 
 void PaletteBoardPanel::draw(WindowState& s, SimWorker& worker) {
   if (!ImGui::CollapsingHeader("Palette board", ImGuiTreeNodeFlags_DefaultOpen)) return;
   board_.set_brush(s.brush);
-  refresh_image(s.settings);
+  // (ImGui draws the board the same whatever its texels: the window is told they changed.)
+  if (refresh_image(s.settings))
+    s.ui_textures_changed.push_back(static_cast<std::uintptr_t>(texture_.id()));
   const float scale = kBoardWidthPx / static_cast<float>(texture_.width());
   const ImVec2 size(kBoardWidthPx, scale * static_cast<float>(texture_.height()));
   const ImVec2 origin = ImGui::GetCursorScreenPos();

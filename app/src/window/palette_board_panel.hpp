@@ -29,7 +29,7 @@ class PaletteBoardPanel {
   void draw(WindowState& state, SimWorker& worker);
 
  private:
-  void refresh_image(const render::RenderSettings& settings);
+  bool refresh_image(const render::RenderSettings& settings);
 
   enum class Tool { kLayOut, kMix };
   PaletteBoard board_;

@@ -122,6 +122,7 @@ std::vector<UiRect> UiDamage::update(const ImDrawData& data) {
     for (const List& list : lists) all = merge(all, box_of(list.triangles));
     for (const List& list : last_) all = merge(all, box_of(list.triangles));
     last_ = std::move(lists);
+    changed_textures_.clear();  // (all is damaged anyway)
     if (!all.empty()) damage.push_back(all);
     return damage;
   }
@@ -139,8 +140,14 @@ std::vector<UiRect> UiDamage::update(const ImDrawData& data) {
       matched[static_cast<std::size_t>(old - last_.begin())] = true;
       box = changed_box(old->triangles, list.triangles);
     }
+    // Triangles drawing a texture whose texels changed.
+    for (const UiTriangle& t : list.triangles)
+      if (std::find(changed_textures_.begin(), changed_textures_.end(), t.texture) !=
+          changed_textures_.end())
+        box = merge(box, t.box());
     if (!box.empty()) damage.push_back(box);
   }
+  changed_textures_.clear();
   for (std::size_t i = 0; i < last_.size(); ++i) {
     const UiRect box = matched[i] ? UiRect{} : box_of(last_[i].triangles);
     if (!box.empty()) damage.push_back(box);

@@ -65,6 +65,9 @@ class UiDamage {
   // The rectangles (one per changed draw list) whose pixels differ from the last frame's
   // drawing; remembers this frame's.
   std::vector<UiRect> update(const ImDrawData& data);
+  // A texture whose texels changed this frame (a panel re-uploaded it): the triangles that
+  // draw it are damaged in the next update(), though they are drawn the same.
+  void texture_changed(std::uintptr_t texture) { changed_textures_.push_back(texture); }
 
  private:
   struct List {
@@ -72,6 +75,7 @@ class UiDamage {
     std::vector<UiTriangle> triangles;
   };
   std::vector<List> last_;
+  std::vector<std::uintptr_t> changed_textures_;
 };
 
 }  // namespace impasto::app::window

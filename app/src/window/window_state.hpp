@@ -92,6 +92,9 @@ struct WindowState {
   double input_latency_ms = -1.0;  // median, pen event to the swap showing it (< 0: none yet)
   std::array<double, 2> cursor_cell{-1, -1};
   bool quit = false;
+  // Textures a panel re-uploaded this frame: ImGui draws them the same, but their pixels
+  // changed and must be presented (UiDamage::texture_changed).
+  std::vector<std::uintptr_t> ui_textures_changed;
 };
 
 // The session events the panels send for the brush and the load, built in one place so the
