@@ -1,6 +1,7 @@
 #pragma once
 // Axis ticks at round numbers (1, 2, 5 × 10^n), shared by the figures the command line writes
 // (pigment_figure.*) and the window's plots (window/plot.*).
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -19,8 +20,13 @@ inline std::vector<double> nice_ticks(double lo, double hi, int wanted = 5) {
     step = m * power;
     if (step >= raw) break;
   }
-  for (double t = std::ceil(lo / step) * step; t <= hi + step * 1e-9; t += step)
+  // Counted, not summed: a step below the values' resolution cannot loop forever.
+  const double first = std::ceil(lo / step);
+  for (int i = 0; i < 100; ++i) {
+    const double t = (first + i) * step;
+    if (t > hi + step * 1e-9) break;
     ticks.push_back(std::abs(t) < step * 1e-9 ? 0.0 : t);
+  }
   return ticks;
 }
 

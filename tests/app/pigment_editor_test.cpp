@@ -13,6 +13,7 @@
 
 #include "impasto/data/data_dir.hpp"
 #include "impasto/data/pigment_library.hpp"
+#include "plot_ticks.hpp"
 #include "window/pigment_editor.hpp"
 #include "window/plot.hpp"
 
@@ -102,6 +103,13 @@ TEST_F(PigmentEditorTest, AnImportGoesToTheUserLayerAndUndoTakesItBack) {
   EXPECT_FALSE(fs::exists(user() / "my_blue.csv"));
   EXPECT_EQ(data::active_pigment_library().database().find("My Blue"), nullptr);
   frame(editor);
+}
+
+TEST(PlotTicks, AreRoundNumbersAndFewEvenForATinyRange) {
+  EXPECT_EQ(nice_ticks(360, 750, 5), (std::vector<double>{400, 500, 600, 700}));
+  EXPECT_EQ(nice_ticks(0, 1, 4), (std::vector<double>{0, 0.5, 1}));
+  EXPECT_LE(nice_ticks(1000.0, std::nextafter(1000.0, 2000.0), 5).size(), 100u);
+  EXPECT_TRUE(nice_ticks(1, 1).empty());
 }
 
 TEST_F(PigmentEditorTest, APlotReadsItsSeriesBetweenPoints) {
