@@ -4,6 +4,7 @@
 #include <string>
 
 #include "impasto/cracks/cavity_model.hpp"
+#include "impasto/data/kubelka_munk.hpp"
 #include "impasto/data/spectrum.hpp"
 #include "impasto/render/chromatic_adaptation.hpp"
 #include "impasto/render/display.hpp"
@@ -53,8 +54,8 @@ struct RenderSettings {
   // Saunderson surface correction of the top reflectance (off: the data are interface-
   // corrected K-M values, and the specular term already shows the surface).
   bool saunderson = false;
-  double saunderson_k1 = 0.03;
-  double saunderson_k2 = 0.65;
+  double saunderson_k1 = data::Saunderson{}.k1;  // the paint-air interface's defaults, as
+  double saunderson_k2 = data::Saunderson{}.k2;  // the K/S fit takes them
 
   // --- shading ---
   double light_azimuth_deg = 225.0;   // from +x (right) toward +y (down the rows): upper left
