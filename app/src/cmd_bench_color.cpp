@@ -8,6 +8,7 @@
 #include <impasto/data/pigments.hpp>
 #include <impasto/render/color_accuracy.hpp>
 #include <impasto/render/node_optimisation.hpp>
+#include <impasto/render/render_settings.hpp>
 #include <impasto/render/spectral_palette.hpp>
 
 #include <chrono>
@@ -30,7 +31,7 @@ struct BenchColorArgs {
   bool json = false;
   std::vector<int> nodes{3, 4, 6, 8, 12, 16};
   std::vector<std::string> lights{"D65", "A", "F11"};
-  std::string weights = "interpolatory";
+  std::string weights{util::name_of(kNodeWeightsNames, RenderSettings{}.node_weights)};
   int timing_cells = 20000;
   bool half = true;
 };
@@ -151,9 +152,9 @@ const CommandRegistrar registrar("bench color", [](CLI::App& root) {
       ->check(CLI::Range(1, 16));
   cmd->add_option("--lights", args->lights, "Lights (D65, A, F11, blackbody:K, FILE.csv)");
   cmd->add_option("--weights", args->weights,
-                  "Nodes and XYZ weights: optimised, fitted, interpolatory or impasto")
+                  "Nodes and XYZ weights (optimised and fitted: trained on the palette)")
       ->capture_default_str()
-      ->check(CLI::IsMember({"interpolatory", "impasto", "fitted", "optimised"}));
+      ->check(CLI::IsMember(util::names_of(kNodeWeightsNames)));
   cmd->add_option("--cells", args->timing_cells, "Cells per timing run (0: no timing)")
       ->check(CLI::Range(0, 10000000));
   cmd->add_flag("!--no-half", args->half, "Skip the half-storage rows");

@@ -31,7 +31,7 @@ struct RenderArgs {
   std::string light_dir = "225,60";
   std::string display = "srgb";
   std::string adaptation = "bradford";
-  std::string weights = "interpolatory";
+  std::string weights{util::name_of(kNodeWeightsNames, RenderSettings{}.node_weights)};
   std::string storage = "float";
   double thickness_scale_mm = RenderSettings{}.thickness_scale_mm;
   bool saunderson = false;
@@ -158,7 +158,9 @@ const CommandRegistrar registrar("render", [](CLI::App& root) {
       ->capture_default_str();
   cmd->add_option("--adaptation", args->adaptation, "bradford (light white -> D65) or none")
       ->capture_default_str();
-  cmd->add_option("--weights", args->weights, "Per-node XYZ weights: interpolatory or impasto")
+  cmd->add_option("--weights", args->weights,
+                  "Nodes and XYZ weights (optimised and fitted: trained on the palette)")
+      ->check(CLI::IsMember(util::names_of(kNodeWeightsNames)))
       ->capture_default_str();
   cmd->add_option("--storage", args->storage, "Baked reflectance storage: float or half")
       ->capture_default_str();

@@ -38,12 +38,7 @@ double lagrange_basis(const std::vector<double>& nodes, std::size_t i, double t)
 }  // namespace
 
 NodeWeights parse_node_weights(std::string_view text) {
-  if (text == "impasto") return NodeWeights::impasto;
-  if (text == "interpolatory") return NodeWeights::interpolatory;
-  if (text == "fitted") return NodeWeights::fitted;
-  if (text == "optimised") return NodeWeights::optimised;
-  throw std::runtime_error("unknown node weights '" + std::string(text) +
-                           "' (expected impasto, interpolatory, fitted or optimised)");
+  return util::parse_name(kNodeWeightsNames, text, "node weights");
 }
 
 SpectralSampling make_spectral_sampling(const data::Spectrum& light,

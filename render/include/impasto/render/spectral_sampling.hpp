@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "impasto/data/spectrum.hpp"
+#include "impasto/util/enum_names.hpp"
 
 namespace impasto::render {
 
@@ -40,8 +41,14 @@ enum class NodeWeights {
   optimised,
 };
 
-// Parses "impasto", "interpolatory", "fitted" or "optimised"; throws std::runtime_error
-// naming the accepted values.
+// Their spellings (--weights).
+inline constexpr util::EnumNames<NodeWeights, 4> kNodeWeightsNames{
+    {{NodeWeights::impasto, "impasto"},
+     {NodeWeights::interpolatory, "interpolatory"},
+     {NodeWeights::fitted, "fitted"},
+     {NodeWeights::optimised, "optimised"}}};
+
+// One of kNodeWeightsNames; throws std::runtime_error naming the accepted values.
 NodeWeights parse_node_weights(std::string_view text);
 
 // X, Y, Z = Σ_i to_xyz[i] · R(wavelengths_nm[i]) for a reflectance spectrum R.
