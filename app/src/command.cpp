@@ -6,9 +6,9 @@
 #include <map>
 
 #include "command_line.hpp"
+#include "impasto/files/memory_budget.hpp"
 #include "impasto_version.hpp"
 #include "pigment_folder_option.hpp"
-#include "impasto/files/memory_budget.hpp"
 
 namespace impasto::app {
 namespace {

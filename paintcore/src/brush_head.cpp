@@ -152,7 +152,9 @@ BrushHead load_brush_head(const std::filesystem::path& file) {
   return parse_brush_head(in, file.string());
 }
 
-std::filesystem::path default_brushes_dir() { return files::data_dir() / "brushes"; }
+std::filesystem::path default_brushes_dir() {
+  return files::data_dir() / "brushes";
+}
 
 BrushHead load_named_brush_head(const std::string& name, const std::filesystem::path& dir) {
   const bool valid = !name.empty() && std::all_of(name.begin(), name.end(), [](char c) {
