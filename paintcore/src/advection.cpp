@@ -13,6 +13,22 @@ namespace impasto::paintcore {
 
 namespace {
 
+// What leaves a cell moving by (ax, ay) = |v| holding `volume`: the share of its column the
+// translation moves off the cell (the overlap areas, Fig. 4 in 2D), and the scale that keeps
+// at least the minimum film behind (adhesion). Branch-free (callers' loops vectorise).
+struct Leaving {
+  float share;  // of the column, before scaling
+  float scale;  // 0..1
+};
+inline Leaving leaving(float ax, float ay, float volume, float min_film_mm) {
+  const float share = ax + ay - ax * ay;
+  const float amount = volume * share;
+  const float room = volume - min_film_mm;
+  const bool moves = amount > 0.0f;
+  const float ratio = room / (moves ? amount : 1.0f);  // never divides by zero
+  return {share, moves ? std::min(std::max(ratio, 0.0f), 1.0f) : 0.0f};
+}
+
 // The shares one row of cells sends. Branch-free so that it vectorises.
 IMPASTO_SIMD_CLONES void prepare_row(int width, const float* __restrict vx,
                                      const float* __restrict vy, const float* __restrict volume,
@@ -24,14 +40,7 @@ IMPASTO_SIMD_CLONES void prepare_row(int width, const float* __restrict vx,
   for (int x = 0; x < width; ++x) {
     const float ax = std::abs(vx[x]);
     const float ay = std::abs(vy[x]);
-    // The translated column overlaps the neighbours by these areas (Fig. 4, in 2D).
-    const float leaving_share = ax + ay - ax * ay;
-    const float leaving = volume[x] * leaving_share;
-    // Scale the shares that leave so that at least the minimum film stays (adhesion).
-    const float room = volume[x] - min_film_mm;
-    const bool moves = leaving > 0.0f;
-    const float ratio = room / (moves ? leaving : 1.0f);  // never divides by zero
-    const float scale = moves ? std::min(std::max(ratio, 0.0f), 1.0f) : 0.0f;
+    const auto [leaving_share, scale] = leaving(ax, ay, volume[x], min_film_mm);
     const float px = std::max(vx[x], 0.0f) * scale;
     const float mx = std::max(-vx[x], 0.0f) * scale;
     const float py = std::max(vy[x], 0.0f);
@@ -59,12 +68,7 @@ IMPASTO_SIMD_CLONES void prepare_quadrant_row(int width, const float* __restrict
   for (int x = 0; x < width; ++x) {
     const float ax = std::abs(vx[x]);
     const float ay = std::abs(vy[x]);
-    const float leaving_share = ax + ay - ax * ay;
-    const float leaving = volume[x] * leaving_share;
-    const float room = volume[x] - min_film_mm;
-    const bool moves = leaving > 0.0f;
-    const float ratio = room / (moves ? leaving : 1.0f);
-    const float scale = moves ? std::min(std::max(ratio, 0.0f), 1.0f) : 0.0f;
+    const auto [leaving_share, scale] = leaving(ax, ay, volume[x], min_film_mm);
     const float px = ax * scale;
     stay[x] = 1.0f - scale * leaving_share;
     across_x[x] = px * (1.0f - ay);
