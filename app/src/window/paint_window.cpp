@@ -17,6 +17,7 @@
 #include <impasto/render_gl/shaded_view_cache.hpp>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -75,6 +76,9 @@ constexpr double kAutosaveQuiet_s = 3.0;
 
 // The shortest time between frames while nothing changes (see run()).
 constexpr auto kIdleFrame = std::chrono::milliseconds(8);
+
+// How long the view and the light stay still before a coarse view is refined.
+constexpr double kRefineAfter_s = 0.3;
 
 // The painting a recovered session ends with, from its recording (rebuild.hpp).
 RebuiltSession rebuild_entry(const SessionEntry& entry) {
@@ -175,7 +179,9 @@ class PaintWindow {
   UiDamage ui_damage_;
   bool present_whole_ = true;  // the window's pixels may be lost: the next frame shows them all
   int presented_w_ = 0, presented_h_ = 0;
-  bool frame_changed_ = true;  // the last frame re-shaded some of the canvas
+  bool frame_changed_ = true;            // the last frame re-shaded some of the canvas
+  std::array<double, 6> last_motion_{};  // the view and the light at the last frame
+  double last_motion_s_ = -1e9;          // when they last changed
   std::unique_ptr<render::SpectralPalette> palette_;
   std::vector<std::string> rendered_slots_;
   int canvas_w_ = 0, canvas_h_ = 0;
@@ -829,7 +835,22 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   const double fb_scale = win_w > 0 ? static_cast<double>(fb_w) / win_w : 1.0;
   fb_view.pixels_per_cell *= fb_scale;
   renderer_->set_shading(state_.settings);
-  const render_gl::CachedDrawStats canvas = view_cache_.update(*renderer_, fb_view, fb_w, fb_h);
+  // While the view or the light moves, frames that re-shade everything do it coarsely; the
+  // view is refined once the motion has stopped for kRefineAfter_s.
+  const double now_s = glfwGetTime();
+  const std::array<double, 6> motion = {fb_view.center_x_cells,
+                                        fb_view.center_y_cells,
+                                        fb_view.pixels_per_cell,
+                                        fb_view.rotation_rad,
+                                        state_.settings.light_azimuth_deg,
+                                        state_.settings.light_elevation_deg};
+  if (motion != last_motion_) last_motion_s_ = now_s;
+  last_motion_ = motion;
+  const auto detail = !take_screenshot && now_s - last_motion_s_ < kRefineAfter_s
+                          ? render_gl::ShadedViewCache::Detail::kCoarse
+                          : render_gl::ShadedViewCache::Detail::kFull;
+  const render_gl::CachedDrawStats canvas =
+      view_cache_.update(*renderer_, fb_view, fb_w, fb_h, detail);
   state_.pixels_shaded = canvas.pixels_shaded;
   frame_changed_ = !canvas.changed.empty();
   present_frame(canvas.changed, fb_w, fb_h, fb_scale, take_screenshot);

@@ -108,8 +108,25 @@ void ShadedViewCache::copy_to(GLuint target, const PixelRect& rect) const {
   glBindFramebuffer(GL_FRAMEBUFFER, target);
 }
 
-CachedDrawStats ShadedViewCache::update(CanvasRenderer& renderer, const CanvasView& view,
+long long ShadedViewCache::shade_coarse(CanvasRenderer& renderer, const CanvasView& view,
                                         int viewport_w, int viewport_h) {
+  const int w = std::max(1, (viewport_w + kCoarseFactor - 1) / kCoarseFactor);
+  const int h = std::max(1, (viewport_h + kCoarseFactor - 1) / kCoarseFactor);
+  if (!coarse_image_ || coarse_image_->width() != w || coarse_image_->height() != h) {
+    coarse_image_ = std::make_unique<Framebuffer>(w, h, TexelFormat::kRGBA8);
+  }
+  CanvasView small = view;
+  small.pixels_per_cell *= static_cast<double>(w) / viewport_w;
+  coarse_image_->bind();
+  renderer.draw(small, w, h);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, coarse_image_->id());
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, image_->id());
+  glBlitFramebuffer(0, 0, w, h, 0, 0, viewport_w, viewport_h, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+  return static_cast<long long>(w) * h;
+}
+
+CachedDrawStats ShadedViewCache::update(CanvasRenderer& renderer, const CanvasView& view,
+                                        int viewport_w, int viewport_h, Detail detail) {
   CachedDrawStats stats;
   if (!image_ || image_->width() != viewport_w || image_->height() != viewport_h) {
     image_ = std::make_unique<Framebuffer>(viewport_w, viewport_h, TexelFormat::kRGBA8);
@@ -138,6 +155,18 @@ CachedDrawStats ShadedViewCache::update(CanvasRenderer& renderer, const CanvasVi
     }
   }
   view_ = view;
+
+  if (coarse_ && detail == Detail::kFull) all_invalid_ = true;  // refine
+  if (all_invalid_ && detail == Detail::kCoarse) {
+    stats.pixels_shaded = shade_coarse(renderer, view, viewport_w, viewport_h);
+    stats.full = stats.coarse = coarse_ = true;
+    stats.changed.assign(1, {0, 0, viewport_w, viewport_h});
+    all_invalid_ = false;
+    dirty_tiles_.clear();
+    check_gl_error("coarse canvas view");
+    return stats;
+  }
+  if (all_invalid_) coarse_ = false;
 
   // The regions to re-shade: the whole viewport, or the uncovered strips and the changed
   // tiles in view.

@@ -31,6 +31,7 @@ struct CachedDrawStats {
   int regions = 0;              // scissored passes (0: nothing changed in view)
   bool full = false;            // the whole viewport was re-shaded
   bool shifted = false;         // the cached image was moved (a pan by whole pixels)
+  bool coarse = false;          // the whole viewport was shaded coarsely (Detail::kCoarse)
   // The viewport pixels whose cached image changed: the shaded regions, or the whole
   // viewport after a shift. A window that keeps its last frame re-presents only these.
   std::vector<PixelRect> changed;
@@ -44,6 +45,13 @@ PixelRect tile_screen_rect(int tile_index, int tiles_x, const CanvasView& view, 
 
 class ShadedViewCache {
  public:
+  // How update() re-shades the whole viewport when it must (a zoom, rotation, light): kFull
+  // at every pixel, or kCoarse at a quarter of the resolution each way (a sixteenth of the
+  // pixels) magnified, for the first frames of a motion. The next kFull update() after a
+  // coarse one re-shades the viewport at every pixel.
+  enum class Detail { kFull, kCoarse };
+  static constexpr int kCoarseFactor = 4;
+
   // The tiles changed on the GPU (after CanvasRenderer::upload_tiles with the same list).
   void invalidate_tiles(std::span<const int> tiles);
   // Everything changed (a full upload, new settings, a new renderer).
@@ -58,7 +66,7 @@ class ShadedViewCache {
   // draw() in two steps: bring the cached image up to date, then copy any part of it (in
   // the viewport's GL pixels) into the framebuffer `target`.
   CachedDrawStats update(CanvasRenderer& renderer, const CanvasView& view, int viewport_w,
-                         int viewport_h);
+                         int viewport_h, Detail detail = Detail::kFull);
   void copy_to(GLuint target, const PixelRect& rect) const;
 
  private:
@@ -66,9 +74,14 @@ class ShadedViewCache {
   std::array<double, 27> look_of(const CanvasRenderer& renderer, const CanvasView& view) const;
   // Moves the cached image by (dx, dy) GL pixels; returns the strips left to shade.
   std::vector<PixelRect> shift_image(int dx, int dy);
+  // Shades the whole viewport at 1/kCoarseFactor resolution into image_.
+  long long shade_coarse(CanvasRenderer& renderer, const CanvasView& view, int viewport_w,
+                         int viewport_h);
 
   std::unique_ptr<Framebuffer> image_;
   std::unique_ptr<Framebuffer> spare_;  // the target of a shift, then swapped with image_
+  std::unique_ptr<Framebuffer> coarse_image_;
+  bool coarse_ = false;  // image_ holds a coarse shading, to refine
   const CanvasRenderer* renderer_ = nullptr;
   std::array<double, 27> look_{};
   CanvasView view_;
