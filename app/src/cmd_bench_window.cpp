@@ -61,10 +61,6 @@ std::string run_output(const std::string& command) {
   return out;
 }
 
-void run_checked(const std::string& command) {
-  if (std::system(command.c_str()) != 0) throw std::runtime_error("failed: " + command);
-}
-
 // `impasto paint` (this executable) with its stdout in `out`.
 pid_t start_window(const std::vector<std::string>& args, const std::filesystem::path& out) {
   posix_spawn_file_actions_t actions;
@@ -101,8 +97,8 @@ Latency measure(const BenchWindowArgs& args, int width, int height,
   std::optional<Latency> result;
   std::string failure;
   try {
-    const std::string id =
-        run_output("timeout 30 xdotool search --sync --onlyvisible --name '^Impasto$' | head -1");
+    const std::string id = run_output("timeout 30 xdotool search --sync --onlyvisible --pid " +
+                                      std::to_string(pid) + " --name '^Impasto$' | head -1");
     if (id.empty()) throw std::runtime_error("the window did not appear within 30 s");
     const std::string window = id.substr(0, id.find('\n'));
     std::this_thread::sleep_for(std::chrono::seconds(3));  // the replay applied, panels laid out
@@ -119,7 +115,10 @@ Latency measure(const BenchWindowArgs& args, int width, int height,
             << std::lround(cy + args.radius_px * std::sin(a));
       }
       cmd << " mouseup 1 > /dev/null";
-      run_checked(cmd.str());
+      if (std::system(cmd.str().c_str()) != 0) {
+        throw std::runtime_error("xdotool could not move the mouse in window " + window +
+                                 " (did it close?)");
+      }
       std::this_thread::sleep_for(std::chrono::milliseconds(500));
     }
   } catch (const std::exception& e) {
