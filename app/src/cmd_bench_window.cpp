@@ -19,7 +19,6 @@
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <regex>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -130,14 +129,18 @@ Latency measure(const BenchWindowArgs& args, int width, int height,
   if (!failure.empty()) throw std::runtime_error(failure);
   std::ifstream text(out);
   const std::string printed((std::istreambuf_iterator<char>(text)), {});
-  std::smatch m;
-  static const std::regex line(
-      R"(median ([0-9.e+-]+) ms, 95th percentile ([0-9.e+-]+) ms over ([0-9]+) samples)");
-  if (!std::regex_search(printed, m, line)) {
+  // "... median M ms, 95th percentile P ms over N samples; ..." (no std::regex: GCC 12's
+  // regex trips -Wmaybe-uninitialized in the sanitizer build).
+  double median = 0, p95 = 0;
+  int samples = 0;
+  const std::size_t at = printed.find("median ");
+  if (at == std::string::npos ||
+      std::sscanf(printed.c_str() + at, "median %lf ms, 95th percentile %lf ms over %d samples",
+                  &median, &p95, &samples) != 3) {
     throw std::runtime_error("impasto paint printed no input latency (exit status " +
                              std::to_string(status) + "): " + printed);
   }
-  return {width, height, std::stod(m[1]), std::stod(m[2]), std::stoi(m[3])};
+  return {width, height, median, p95, samples};
 }
 
 void run(const BenchWindowArgs& args) {
