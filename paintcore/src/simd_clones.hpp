@@ -14,7 +14,11 @@ namespace impasto::paintcore {
 
 // std::min and std::max return references, and a loop that picks between two addresses
 // cannot be vectorised; these return values (the same results).
-inline float lesser(float a, float b) { return b < a ? b : a; }
-inline float greater(float a, float b) { return a < b ? b : a; }
+inline float lesser(float a, float b) {
+  return b < a ? b : a;
+}
+inline float greater(float a, float b) {
+  return a < b ? b : a;
+}
 
 }  // namespace impasto::paintcore

@@ -21,7 +21,8 @@
 namespace impasto::app::window {
 namespace {
 
-const std::filesystem::path kCapture = std::filesystem::path(IMPASTO_TEST_FILES_DIR) / "hid/wacom_penpartner__056A_0061.hid-recorder.txt";
+const std::filesystem::path kCapture = std::filesystem::path(IMPASTO_TEST_FILES_DIR) /
+                                       "hid/wacom_penpartner__056A_0061.hid-recorder.txt";
 
 // A 1000 x 600 px window at (200, 100) on a 1920 x 1080 screen, showing a 400 x 300-cell
 // canvas (0.25 mm cells) at 2 px a cell, turned by 30 degrees.

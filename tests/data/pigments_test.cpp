@@ -103,7 +103,8 @@ TEST(PigmentFile, AMissingFlakeFileIsAnErrorNamingTheField) {
   std::ofstream(dir / "mine.flake") << "format = impasto-flake-paint 1\n";
   std::ofstream(dir / "shiny.csv") << "# quantity: kubelka_munk\n# name: Shiny\n"
                                       "# flakes: mine.flake\nwavelength_nm,K,S\n400,1,2\n";
-  EXPECT_EQ(PigmentDatabase::load(dir).get("Shiny").flakes, (dir / "mine.flake").lexically_normal());
+  EXPECT_EQ(PigmentDatabase::load(dir).get("Shiny").flakes,
+            (dir / "mine.flake").lexically_normal());
   fs::remove_all(dir);
 }
 

@@ -1,9 +1,9 @@
 #pragma once
 // Pen reports that no descriptor describes: the vendor protocols of Huion/Gaomon and older
-// XP-Pen/Ugee (UC-Logic), current XP-Pen/Ugee, Veikk, and Wacom's Intuos V2. Their extents and pressure levels
-// come from the UC-Logic handshake (string descriptors 0x64 / 0xC8) or from the model data
-// file (hid_models.hpp). Layouts as the Linux hid-uclogic driver and OpenTabletDriver read
-// them (docs/hid.md).
+// XP-Pen/Ugee (UC-Logic), current XP-Pen/Ugee, Veikk, and Wacom's Intuos V2. Their extents and
+// pressure levels come from the UC-Logic handshake (string descriptors 0x64 / 0xC8) or from the
+// model data file (hid_models.hpp). Layouts as the Linux hid-uclogic driver and OpenTabletDriver
+// read them (docs/hid.md).
 #include <impasto/input/hid_init_exchange.hpp>
 #include <impasto/paintcore/pen_sample.hpp>
 
@@ -15,10 +15,10 @@
 namespace impasto::input::hid {
 
 enum class VendorProtocol {
-  kUcLogicV1,  // report 7, 16-bit x/y, in-range bit inverted, tilt bytes on some models
-  kUcLogicV2,  // report 8, 24-bit x/y split over the report, tilt in degrees
-  kXpPen,      // report 2, 16-bit x/y (24-bit in 12-byte reports), tilt, eraser
-  kVeikkV1,    // report 9, the pen state after a 0x41 byte
+  kUcLogicV1,      // report 7, 16-bit x/y, in-range bit inverted, tilt bytes on some models
+  kUcLogicV2,      // report 8, 24-bit x/y split over the report, tilt in degrees
+  kXpPen,          // report 2, 16-bit x/y (24-bit in 12-byte reports), tilt, eraser
+  kVeikkV1,        // report 9, the pen state after a 0x41 byte
   kWacomIntuosV2,  // report 16, 24-bit x/y, tilt, eraser (what Wacom's 0xFF0D page describes)
 };
 const char* vendor_protocol_name(VendorProtocol protocol);
