@@ -22,6 +22,14 @@ void validate(const CanvasSpec& spec) {
   // 1 dpi is a 25 mm cell; 100000 dpi is a 0.25 um cell: beyond either nothing makes sense.
   if (!std::isfinite(spec.dpi) || spec.dpi < 1.0 || spec.dpi > 100000.0)
     fail("dpi", "must be a finite number in 1..100000, got " + std::to_string(spec.dpi));
+  // Each crop or resize moves the cloth by less than the canvas: far beyond any real history.
+  constexpr std::int64_t kMaxWeaveOrigin = std::int64_t{1} << 40;
+  if (spec.weave_origin_x_cells > kMaxWeaveOrigin || spec.weave_origin_x_cells < -kMaxWeaveOrigin)
+    fail("weave_origin_x_cells",
+         "must be within +-2^40, got " + std::to_string(spec.weave_origin_x_cells));
+  if (spec.weave_origin_y_cells > kMaxWeaveOrigin || spec.weave_origin_y_cells < -kMaxWeaveOrigin)
+    fail("weave_origin_y_cells",
+         "must be within +-2^40, got " + std::to_string(spec.weave_origin_y_cells));
 }
 
 const float* DryTile::pigment(int slot) const {
@@ -66,8 +74,9 @@ void Canvas::compute_base_heights(int index, float* out) const {
   const double cell = spec_.cell_mm();
   for (int y = 0; y < ny; ++y)
     for (int x = 0; x < nx; ++x)
-      out[y * kTileSize + x] =
-          canvas_weave_height_mm(spec_.weave_seed, (x0 + x + 0.5) * cell, (y0 + y + 0.5) * cell);
+      out[y * kTileSize + x] = canvas_weave_height_mm(
+          spec_.weave_seed, (static_cast<double>(spec_.weave_origin_x_cells + x0 + x) + 0.5) * cell,
+          (static_cast<double>(spec_.weave_origin_y_cells + y0 + y) + 0.5) * cell);
 }
 
 Tile& Canvas::ensure_tile(int index, int slot_count) {
@@ -87,7 +96,9 @@ std::size_t local_index(int x, int y) {
 float Canvas::base_height_mm(int x, int y) const {
   if (const Tile* t = tile(x / kTileSize, y / kTileSize))
     return t->base_height_mm[local_index(x, y)];
-  return canvas_weave_height_mm(spec_.weave_seed, (x + 0.5) * cell_mm(), (y + 0.5) * cell_mm());
+  return canvas_weave_height_mm(
+      spec_.weave_seed, (static_cast<double>(spec_.weave_origin_x_cells + x) + 0.5) * cell_mm(),
+      (static_cast<double>(spec_.weave_origin_y_cells + y) + 0.5) * cell_mm());
 }
 
 float Canvas::dry_height_mm(int x, int y) const {

@@ -436,12 +436,18 @@ void Painting::dry(double fraction) {
 
 bool Painting::undo() {
   end_stroke();
-  return impl_->history.undo(impl_->canvas, impl_->brush, impl_->ledger, impl_->slots);
+  const CanvasSpec before = impl_->canvas.spec();
+  const bool done = impl_->history.undo(impl_->canvas, impl_->brush, impl_->ledger, impl_->slots);
+  impl_->forget_weave_cache_if_reframed(before);
+  return done;
 }
 
 bool Painting::redo() {
   end_stroke();
-  return impl_->history.redo(impl_->canvas, impl_->brush, impl_->ledger, impl_->slots);
+  const CanvasSpec before = impl_->canvas.spec();
+  const bool done = impl_->history.redo(impl_->canvas, impl_->brush, impl_->ledger, impl_->slots);
+  impl_->forget_weave_cache_if_reframed(before);
+  return done;
 }
 
 void Painting::set_undo_budget_bytes(std::size_t bytes) {

@@ -14,6 +14,8 @@
 
 namespace impasto::paintcore {
 
+inline constexpr std::size_t kDefaultSavedHistoryBytes = std::size_t{64} << 20;
+
 struct Painting::Impl {
   Impl(CanvasSpec spec, int thread_count)
       : canvas(spec),
@@ -29,6 +31,8 @@ struct Painting::Impl {
   Brush brush;
   Ledger ledger;
   UndoHistory history;
+  std::size_t saved_history_bytes = kDefaultSavedHistoryBytes;  // painting.hpp
+  std::string load_warning;  // what load() dropped (a damaged history section)
   Stepper stepper;
   std::uint64_t steps = 0;
   std::uint64_t cells_updated = 0;
@@ -45,6 +49,16 @@ struct Painting::Impl {
   std::optional<std::array<double, 2>> stroke_origin;  // where the stroke began (cells)
   std::optional<BrushPose> last_contact;  // where the brush last touched paint: it lifts there
   std::vector<int> stroke_tiles;          // tiles the stroke changed: where its paint levels
+
+  // A reframe, or its undo or redo, changes the cloth a tile index stands for: the
+  // stepper's cached weave of untouched tiles must go.
+  void forget_weave_cache_if_reframed(const CanvasSpec& before) {
+    const CanvasSpec& now = canvas.spec();
+    if (before.width_cells != now.width_cells || before.height_cells != now.height_cells ||
+        before.weave_origin_x_cells != now.weave_origin_x_cells ||
+        before.weave_origin_y_cells != now.weave_origin_y_cells)
+      stepper = Stepper();
+  }
 
   // What a stroke's steps call before they first change a tile: keep it for undo, and note
   // it as the stroke's.

@@ -130,6 +130,11 @@ std::uint64_t Painting::state_hash() const {
   h.value(canvas.spec().height_cells);
   h.value(canvas.spec().dpi);
   h.value(canvas.spec().weave_seed);
+  // The cloth's origin only once a crop has moved it, so other paintings hash as they did.
+  if (canvas.spec().weave_origin_x_cells != 0 || canvas.spec().weave_origin_y_cells != 0) {
+    h.value(canvas.spec().weave_origin_x_cells);
+    h.value(canvas.spec().weave_origin_y_cells);
+  }
   h.value(p.slots.size());
   for (const std::string& name : p.slots) h.string(name);
   const int slots = slot_count();

@@ -24,6 +24,20 @@ std::size_t dry_layer_bytes(const DryLayer& layer) {
   return bytes;
 }
 
+std::size_t canvas_bytes(const Canvas& canvas) {
+  std::size_t bytes = sizeof(Canvas) + canvas.tile_count() * sizeof(std::unique_ptr<Tile>);
+  for (int index = 0; index < canvas.tile_count(); ++index)
+    if (const Tile* tile = canvas.tile(index)) bytes += tile_bytes(*tile);
+  for (const DryLayer& layer : canvas.dry_layers()) bytes += dry_layer_bytes(layer);
+  return bytes + canvas.cracks().memory_bytes();
+}
+
+void UndoHistory::keep_canvas(std::unique_ptr<Canvas> before) {
+  if (!recording_) return;
+  current_.bytes += canvas_bytes(*before);
+  current_.canvas = std::move(before);
+}
+
 void UndoHistory::begin(const Brush& brush, const Ledger& ledger,
                         const std::vector<std::string>& slots, std::size_t dry_layers,
                         int tile_count) {
@@ -62,6 +76,12 @@ void UndoHistory::commit() {
 
 void UndoHistory::swap_state(UndoStep& step, Canvas& canvas, Brush& brush, Ledger& ledger,
                              std::vector<std::string>& slots) {
+  if (step.canvas) {
+    step.bytes -= std::min(step.bytes, canvas_bytes(*step.canvas));
+    std::swap(canvas, *step.canvas);
+    step.bytes += canvas_bytes(*step.canvas);
+    for (int index = 0; index < canvas.tile_count(); ++index) canvas.mark_dirty(index);
+  }
   for (auto& [index, tile] : step.tiles) {
     std::swap(canvas.tile_slot(index), tile);
     canvas.mark_dirty(index);
@@ -101,6 +121,14 @@ bool UndoHistory::redo(Canvas& canvas, Brush& brush, Ledger& ledger,
   step.dry_layers.clear();
   undo_.push_back(std::move(step));
   return true;
+}
+
+void UndoHistory::restore(std::deque<UndoStep> undo, std::deque<UndoStep> redo) {
+  recording_ = false;
+  current_ = UndoStep{};
+  undo_ = std::move(undo);
+  redo_ = std::move(redo);
+  enforce_budget();
 }
 
 void UndoHistory::set_budget_bytes(std::size_t bytes) {

@@ -23,6 +23,9 @@ struct UndoStep {
   std::vector<std::string> slots;    // the pigment slot table
   std::size_t dry_layer_count = 0;   // layers before the operation
   std::vector<DryLayer> dry_layers;  // after undo: the layers the operation had added
+  // A reframe (crop or resize) keeps the whole canvas of the other size; undo and redo swap
+  // it with the painting's (then `tiles` is empty).
+  std::unique_ptr<Canvas> canvas;
   std::size_t bytes = 0;
 };
 
@@ -34,6 +37,8 @@ class UndoHistory {
   bool recording() const { return recording_; }
   // Saves tile `index` unless this operation saved it already.
   void before_tile_change(int index, const Tile* current);
+  // Keeps the whole canvas as it was before this operation replaced it (a reframe).
+  void keep_canvas(std::unique_ptr<Canvas> before);
   // Ends the operation: it becomes the newest undo step and the redo list is cleared.
   void commit();
   void discard() {
@@ -44,6 +49,12 @@ class UndoHistory {
   // Undo/redo apply to the canvas, brush and ledger given; they return false when empty.
   bool undo(Canvas& canvas, Brush& brush, Ledger& ledger, std::vector<std::string>& slots);
   bool redo(Canvas& canvas, Brush& brush, Ledger& ledger, std::vector<std::string>& slots);
+
+  // The steps, oldest first (undo) and farthest first (redo: back() is redone next), for the
+  // painting file; restore() replaces them with steps read back (and keeps the budget).
+  const std::deque<UndoStep>& undo_steps() const { return undo_; }
+  const std::deque<UndoStep>& redo_steps() const { return redo_; }
+  void restore(std::deque<UndoStep> undo, std::deque<UndoStep> redo);
 
   void set_budget_bytes(std::size_t bytes);
   std::size_t budget_bytes() const { return budget_; }
@@ -68,5 +79,6 @@ class UndoHistory {
 std::size_t tile_bytes(const Tile& tile);
 std::size_t brush_bytes(const Brush& brush);
 std::size_t dry_layer_bytes(const DryLayer& layer);
+std::size_t canvas_bytes(const Canvas& canvas);  // tiles, dry layers and cracks
 
 }  // namespace impasto::paintcore

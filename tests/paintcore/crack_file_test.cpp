@@ -15,11 +15,14 @@ namespace impasto::paintcore {
 namespace {
 
 constexpr std::size_t kHeaderBytes = 8 + 4 + 8;  // magic, version, payload size
-constexpr std::uint32_t kVersion = 4;            // what save() writes
-// Version 4's payload: the canvas spec (24 bytes), the f64 parameters (7 in older versions),
-// after the cracks section the brush's body and bristles (u8 + 4 f64) (since version 3), then
-// the pigments' records (since version 4; without a record source: a u32 zero).
-constexpr std::size_t kParamsOffset = 4 + 4 + 8 + 8;
+constexpr std::uint32_t kVersion = 5;            // what save() writes
+// Version 5's payload: the canvas spec (24 bytes, then the weave's origin, 2 i64, since
+// version 5), the f64 parameters (7 in older versions), after the cracks section the brush's
+// body and bristles (u8 + 4 f64) (since version 3), then the pigments' records (since version
+// 4; without a record source: a u32 zero).
+constexpr std::size_t kWeaveOriginOffset = 4 + 4 + 8 + 8;
+constexpr std::size_t kWeaveOriginBytes = 2 * 8;
+constexpr std::size_t kParamsOffset = kWeaveOriginOffset + kWeaveOriginBytes;
 constexpr std::size_t kBrushExtrasBytes = 1 + 4 * 8;
 constexpr std::size_t kNoRecordsBytes = 4;
 // Bytes of a cracks section holding one tile with one crack cell.
@@ -63,7 +66,14 @@ class CrackFileTest : public ::testing::Test {
     }
     return "no error";
   }
-  // A version-2 payload from a version-4 one of a painting with a brush and no pigment records:
+  // A version-4 payload from a version-5 one: without the weave's origin (an uncropped canvas's
+  // is zero).
+  static std::vector<unsigned char> as_version_four(std::vector<unsigned char> payload) {
+    payload.erase(payload.begin() + kWeaveOriginOffset,
+                  payload.begin() + kWeaveOriginOffset + kWeaveOriginBytes);
+    return payload;
+  }
+  // A version-2 payload from a version-5 one of a painting with a brush and no pigment records:
   // IMPaSTo's seven parameters (any valid values, the adhesion film kept) and no brush extras
   // or records at the end.
   static std::vector<unsigned char> as_version_two(std::vector<unsigned char> payload) {
@@ -76,9 +86,11 @@ class CrackFileTest : public ::testing::Test {
     std::vector<unsigned char> old(7 * 8);
     const double values[7] = {0.1, 1.0 / 30, 0.001, 0.2, 0.3, 0.5, min_film};
     std::memcpy(old.data(), values, sizeof values);
-    payload.erase(payload.begin() + kParamsOffset,
-                  payload.begin() + kParamsOffset + static_cast<std::ptrdiff_t>(8 * fields.size()));
-    payload.insert(payload.begin() + kParamsOffset, old.begin(), old.end());
+    payload = as_version_four(std::move(payload));
+    constexpr std::size_t params = kWeaveOriginOffset;  // where they are without the origin
+    payload.erase(payload.begin() + params,
+                  payload.begin() + params + static_cast<std::ptrdiff_t>(8 * fields.size()));
+    payload.insert(payload.begin() + params, old.begin(), old.end());
     payload.resize(payload.size() - kBrushExtrasBytes - kNoRecordsBytes);
     return payload;
   }
@@ -104,8 +116,12 @@ class CrackFileTest : public ::testing::Test {
     out.write(reinterpret_cast<const char*>(bytes.data()),
               static_cast<std::streamsize>(bytes.size()));
   }
+  // The payload alone (a version-5 file may carry the undo history after it).
   static std::vector<unsigned char> payload_of(const std::vector<unsigned char>& file_bytes) {
-    return {file_bytes.begin() + kHeaderBytes, file_bytes.end() - 8};
+    std::uint64_t size = 0;
+    std::memcpy(&size, file_bytes.data() + 12, 8);
+    return {file_bytes.begin() + kHeaderBytes,
+            file_bytes.begin() + kHeaderBytes + static_cast<std::ptrdiff_t>(size)};
   }
 
   std::filesystem::path dir_;
@@ -211,7 +227,7 @@ TEST_F(CrackFileTest, PigmentRecordsRoundTripAndVersionThreeFilesLoadWithoutThem
   // Version 3: the same payload without the records section.
   const Painting bare = sample();
   bare.save(file);
-  std::vector<unsigned char> payload = payload_of(read(file));
+  std::vector<unsigned char> payload = as_version_four(payload_of(read(file)));
   payload.resize(payload.size() - kNoRecordsBytes);
   write(file, 3, payload);
   const Painting old = Painting::load(file, 1);

@@ -47,15 +47,17 @@ inline std::vector<unsigned char> saved_bytes(const Painting& painting) {
 template <typename T>
 void patch_payload(std::vector<unsigned char>& file, std::size_t offset, const T& value) {
   std::memcpy(file.data() + kFileHeaderBytes + offset, &value, sizeof(T));
+  std::uint64_t size = 0;  // the payload's (the undo history may follow its checksum)
+  std::memcpy(&size, file.data() + 12, 8);
   Hasher checksum;
-  checksum.bytes(file.data() + kFileHeaderBytes, file.size() - kFileHeaderBytes - 8);
+  checksum.bytes(file.data() + kFileHeaderBytes, size);
   const std::uint64_t digest = checksum.digest();
-  std::memcpy(file.data() + file.size() - 8, &digest, 8);
+  std::memcpy(file.data() + kFileHeaderBytes + size, &digest, 8);
 }
 
 // Payload offsets of a painting with slots named `slots`.
 inline std::size_t slots_offset() {
-  return 4 + 4 + 8 + 8 + 8 * simulation_param_fields().size();
+  return 4 + 4 + 8 + 8 + 2 * 8 + 8 * simulation_param_fields().size();  // spec, weave origin
 }
 inline std::size_t tiles_count_offset(const std::vector<std::string>& slots) {
   std::size_t offset = slots_offset() + 4;

@@ -26,6 +26,10 @@ struct CanvasSpec {
   int height_cells = 0;
   double dpi = 0.0;
   std::uint64_t weave_seed = 1;  // 0: a flat canvas (base height 0 everywhere)
+  // The cell of the cloth under the canvas's top-left cell: a crop or an anchored resize
+  // moves it, so the weave stays under the paint (canvas_reframe.hpp).
+  std::int64_t weave_origin_x_cells = 0;
+  std::int64_t weave_origin_y_cells = 0;
 
   double cell_mm() const { return 25.4 / dpi; }
   double cell_area_mm2() const { return cell_mm() * cell_mm(); }

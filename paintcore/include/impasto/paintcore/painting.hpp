@@ -16,6 +16,8 @@
 
 namespace impasto::paintcore {
 
+struct CanvasFrame;  // canvas_reframe.hpp
+
 struct PigmentMixPart {
   std::string pigment;  // by name; a slot is found or allocated for it
   double parts = 0;     // relative amount (any positive scale)
@@ -93,7 +95,12 @@ class Painting {
   void set_cracks(CrackLayer cracks);
   const CrackLayer& cracks() const { return canvas().cracks(); }
 
-  // Undo/redo of whole operations (stroke, dry, load, wipe, brush change).
+  // The canvas's size (canvas_reframe.hpp): a crop, or a resize around an anchor, as one
+  // undoable operation. Paint outside the new frame is cut away: returned (mm^3) and booked
+  // as wiped, so the ledger still balances. Throws, changing nothing, on an invalid frame.
+  PaintTotals reframe_canvas(const CanvasFrame& frame);
+
+  // Undo/redo of whole operations (stroke, dry, load, wipe, brush change, reframe).
   bool undo();
   bool redo();
   void set_undo_budget_bytes(std::size_t bytes);  // oldest steps go first; never the last
@@ -118,6 +125,12 @@ class Painting {
   const Canvas& canvas() const;
 
   // The native .impasto file (docs/painting-format.md). save() writes atomically.
+  // The file keeps the newest undo and redo steps up to saved_history_bytes (default 64 MB,
+  // oldest dropped first; 0: none), so undo goes on after reopening. A damaged history
+  // section is dropped on load and said in load_warning(); the painting itself still loads.
+  void set_saved_history_bytes(std::size_t bytes);
+  std::size_t saved_history_bytes() const;
+  const std::string& load_warning() const;
   void save(const std::filesystem::path& file) const;
   static Painting load(const std::filesystem::path& file, int threads = 0);
 

@@ -1,0 +1,318 @@
+#include "painting_history_file.hpp"
+
+#include <vector>
+
+namespace impasto::paintcore {
+using namespace file_io;  // NOLINT: the file's own building blocks
+
+namespace {
+
+using W = Writer<ByteSink>;
+
+void write_totals_of(W& w, const PaintTotals& t) {
+  w.put(static_cast<std::uint32_t>(t.pigment.size()));
+  w.put(t.volume);
+  for (double v : t.pigment) w.put(v);
+}
+
+PaintTotals read_totals_of(Reader& r, const std::string& field) {
+  PaintTotals t;
+  const auto n = r.get_count(field + ".count", 256, 8);
+  t.volume = r.get_finite(field + ".volume");
+  for (std::uint32_t s = 0; s < n; ++s) t.pigment.push_back(r.get_finite(field + ".pigment"));
+  return t;
+}
+
+// A tile in any slot count (a step keeps it as it was).
+void write_tile(W& w, const Tile& tile) {
+  w.put(static_cast<std::uint8_t>(tile.slot_count()));
+  w.put_floats(tile.dry_height_mm.data(), kTileCells);
+  w.put_floats(tile.wet_volume_mm.data(), kTileCells);
+  w.put_floats(tile.pigment_mm.data(), tile.pigment_mm.size());
+}
+
+std::unique_ptr<Tile> read_tile(Reader& r, const Canvas& frame_canvas, int index,
+                                const std::string& field) {
+  const auto slots = r.get<std::uint8_t>(field + ".slot_count");
+  if (slots > kMaxPigmentSlots) r.fail(field + ".slot_count", "more than 16 slots");
+  auto tile = frame_canvas.make_tile(index, slots);
+  r.get_amounts(tile->dry_height_mm.data(), kTileCells, field + ".dry_height");
+  r.get_amounts(tile->wet_volume_mm.data(), kTileCells, field + ".wet_volume");
+  r.get_amounts(tile->pigment_mm.data(), tile->pigment_mm.size(), field + ".pigment");
+  repair_pigment(tile->wet_volume_mm.data(), tile->pigment_mm.data(), slots, kTileCells);
+  return tile;
+}
+
+void write_brush(W& w, const Brush& brush) {
+  w.put(static_cast<std::uint8_t>(brush.empty() ? 0 : 1));
+  if (brush.empty()) return;
+  const BrushHead& head = brush.head();
+  w.put_string(head.name);
+  w.put_string(head.description);
+  w.put(head.rise);
+  write_quadric(w, head.base);
+  w.put(static_cast<std::uint32_t>(head.perturbations.size()));
+  for (const Perturbation& pt : head.perturbations) {
+    w.put(pt.factor);
+    write_quadric(w, pt.shape);
+  }
+  for (double v :
+       {head.bristles.spacing_mm, head.bristles.depth_mm, head.bristles.jitter, head.splay})
+    w.put(v);
+  w.put_string(brush.settings().head);
+  w.put(brush.settings().size_mm);
+  w.put(brush.settings().stiffness);
+  w.put(static_cast<std::uint8_t>(brush.body()));
+  w.put(static_cast<std::uint32_t>(brush.cells_across()));
+  w.put(static_cast<std::uint8_t>(brush.slot_count()));
+  w.put_floats(brush.volume_mm().data(), brush.cell_count());
+  w.put_floats(brush.pigment_mm().data(), brush.pigment_mm().size());
+}
+
+Brush read_brush(Reader& r, double cell_mm, const std::string& field) {
+  if (r.get<std::uint8_t>(field + ".present") == 0) return Brush();
+  BrushHead head;
+  head.name = r.get_string(field + ".head.name");
+  head.description = r.get_string(field + ".head.description");
+  head.rise = r.get_finite(field + ".head.rise");
+  if (head.rise < 0.0 || head.rise > 100.0) r.fail(field + ".head.rise", "must be in 0..100");
+  head.base = read_quadric(r, field + ".head.base");
+  const auto perturbations =
+      r.get_count(field + ".head.perturbations", static_cast<std::uint32_t>(kMaxPerturbations));
+  for (std::uint32_t k = 0; k < perturbations; ++k) {
+    Perturbation pt;
+    pt.factor = r.get_finite(field + ".head.perturbations.factor");
+    pt.shape = read_quadric(r, field + ".head.perturbations.shape");
+    head.perturbations.push_back(pt);
+  }
+  head.bristles.spacing_mm = r.get_finite(field + ".head.bristles.spacing_mm");
+  head.bristles.depth_mm = r.get_finite(field + ".head.bristles.depth_mm");
+  head.bristles.jitter = r.get_finite(field + ".head.bristles.jitter");
+  head.splay = r.get_finite(field + ".head.splay");
+  const Bristles& b = head.bristles;
+  if (!(b.spacing_mm >= 0 && b.spacing_mm <= 100 && b.depth_mm >= 0 && b.depth_mm <= 100 &&
+        b.jitter >= 0 && b.jitter <= 1 && head.splay >= 0 && head.splay <= 1))
+    r.fail(field + ".head.bristles", "out of range");
+  BrushSettings settings;
+  settings.head = r.get_string(field + ".settings.head");
+  settings.size_mm = r.get_finite(field + ".settings.size_mm");
+  settings.stiffness = r.get_finite(field + ".settings.stiffness");
+  const auto body = r.get<std::uint8_t>(field + ".body");
+  if (body >= kPaintBodies.size()) r.fail(field + ".body", "unknown paint body");
+  const auto across = r.get<std::uint32_t>(field + ".cells_across");
+  const auto slots = r.get<std::uint8_t>(field + ".slot_count");
+  if (slots > kMaxPigmentSlots) r.fail(field + ".slot_count", "more than 16 slots");
+  Brush brush;
+  try {
+    brush = Brush(head, settings, cell_mm, slots);
+  } catch (const std::exception& e) {
+    r.fail(field, e.what());
+  }
+  if (across != static_cast<std::uint32_t>(brush.cells_across()))
+    r.fail(field + ".cells_across", "does not match the brush size");
+  r.get_amounts(brush.volume_mm().data(), brush.cell_count(), field + ".volume");
+  r.get_amounts(brush.pigment_mm().data(), brush.pigment_mm().size(), field + ".pigment");
+  repair_pigment(brush.volume_mm().data(), brush.pigment_mm().data(), slots, brush.cell_count());
+  brush.set_body(static_cast<PaintBody>(body));
+  return brush;
+}
+
+void write_frame(W& w, const CanvasSpec& spec) {
+  w.put(static_cast<std::int32_t>(spec.width_cells));
+  w.put(static_cast<std::int32_t>(spec.height_cells));
+  w.put(spec.weave_origin_x_cells);
+  w.put(spec.weave_origin_y_cells);
+}
+
+// A whole canvas kept by a reframe step.
+void write_canvas(W& w, const Canvas& canvas) {
+  write_frame(w, canvas.spec());
+  w.put(static_cast<std::uint32_t>(canvas.allocated_tiles()));
+  for (int index = 0; index < canvas.tile_count(); ++index)
+    if (const Tile* tile = canvas.tile(index)) {
+      w.put(static_cast<std::uint32_t>(index));
+      write_tile(w, *tile);
+    }
+  w.put(static_cast<std::uint32_t>(canvas.dry_layers().size()));
+  for (const DryLayer& layer : canvas.dry_layers()) write_dry_layer(w, layer);
+  write_cracks(w, canvas.cracks());
+}
+
+std::unique_ptr<Canvas> read_canvas(Reader& r, const CanvasSpec& painting, const std::string& field,
+                                    const std::string& file) {
+  CanvasSpec spec = painting;
+  spec.width_cells = r.get<std::int32_t>(field + ".width_cells");
+  spec.height_cells = r.get<std::int32_t>(field + ".height_cells");
+  spec.weave_origin_x_cells = r.get<std::int64_t>(field + ".weave_origin_x_cells");
+  spec.weave_origin_y_cells = r.get<std::int64_t>(field + ".weave_origin_y_cells");
+  try {
+    validate(spec);
+  } catch (const std::exception& e) {
+    r.fail(field, e.what());
+  }
+  auto canvas = std::make_unique<Canvas>(spec);
+  const int tile_count = canvas->tile_count();
+  const auto tiles =
+      r.get_count(field + ".tiles.count", static_cast<std::uint32_t>(tile_count), kMinWetTileBytes);
+  int previous = -1;
+  for (std::uint32_t k = 0; k < tiles; ++k) {
+    const std::string tfield = field + ".tiles[" + std::to_string(k) + "]";
+    const auto index = static_cast<int>(
+        r.get_count(tfield + ".index", static_cast<std::uint32_t>(tile_count - 1)));
+    if (index <= previous) r.fail(tfield + ".index", "tiles are not in ascending order");
+    previous = index;
+    canvas->tile_slot(index) = read_tile(r, *canvas, index, tfield);
+  }
+  const auto layers = r.get_count(field + ".dry_layers.count", 1u << 24, 4);
+  for (std::uint32_t l = 0; l < layers; ++l)
+    canvas->dry_layers().push_back(read_dry_layer(
+        r, field + ".dry_layers[" + std::to_string(l) + "]", tile_count, kMaxPigmentSlots));
+  canvas->cracks() = read_cracks(r, *canvas, file);
+  return canvas;
+}
+
+void write_step(W& w, const UndoStep& step) {
+  w.put(static_cast<std::uint32_t>(step.dry_layer_count));
+  w.put(static_cast<std::uint32_t>(step.slots.size()));
+  for (const std::string& name : step.slots) w.put_string(name);
+  write_totals_of(w, step.ledger.loaded);
+  write_totals_of(w, step.ledger.wiped);
+  write_brush(w, step.brush);
+  w.put(static_cast<std::uint32_t>(step.tiles.size()));
+  for (const auto& [index, tile] : step.tiles) {
+    w.put(static_cast<std::uint32_t>(index));
+    w.put(static_cast<std::uint8_t>(tile ? 1 : 0));
+    if (tile) write_tile(w, *tile);
+  }
+  w.put(static_cast<std::uint32_t>(step.dry_layers.size()));
+  for (const DryLayer& layer : step.dry_layers) write_dry_layer(w, layer);
+  w.put(static_cast<std::uint8_t>(step.canvas ? 1 : 0));
+  if (step.canvas) write_canvas(w, *step.canvas);
+}
+
+// Where undo or redo stands while the steps are read: the canvas a step applies to and its
+// number of dry layers.
+struct Chain {
+  std::unique_ptr<Canvas> frame;  // an empty canvas of the step's frame (for its weave)
+  std::size_t layers = 0;
+};
+
+void set_frame(Chain& chain, const CanvasSpec& spec) {
+  const CanvasSpec& now = chain.frame->spec();
+  if (now.width_cells == spec.width_cells && now.height_cells == spec.height_cells &&
+      now.weave_origin_x_cells == spec.weave_origin_x_cells &&
+      now.weave_origin_y_cells == spec.weave_origin_y_cells)
+    return;
+  chain.frame = std::make_unique<Canvas>(spec);
+}
+
+UndoStep read_step(Reader& r, const std::string& field, bool is_redo, Chain& chain,
+                   const CanvasSpec& painting, const std::string& file) {
+  UndoStep step;
+  step.dry_layer_count = r.get<std::uint32_t>(field + ".dry_layer_count");
+  const auto slots = r.get_count(field + ".slots.count", kMaxPigmentSlots);
+  for (std::uint32_t s = 0; s < slots; ++s) {
+    step.slots.push_back(r.get_string(field + ".slots[" + std::to_string(s) + "]"));
+    if (step.slots.back().empty()) r.fail(field + ".slots", "empty pigment name");
+  }
+  step.ledger.loaded = read_totals_of(r, field + ".ledger.loaded");
+  step.ledger.wiped = read_totals_of(r, field + ".ledger.wiped");
+  step.brush = read_brush(r, painting.cell_mm(), field + ".brush");
+  step.bytes = brush_bytes(step.brush);
+  const int tile_count = chain.frame->tile_count();
+  const auto tiles = r.get_count(field + ".tiles.count", static_cast<std::uint32_t>(tile_count), 5);
+  std::vector<bool> seen(static_cast<std::size_t>(tile_count), false);
+  for (std::uint32_t k = 0; k < tiles; ++k) {
+    const std::string tfield = field + ".tiles[" + std::to_string(k) + "]";
+    const auto index = static_cast<int>(
+        r.get_count(tfield + ".index", static_cast<std::uint32_t>(tile_count - 1)));
+    if (seen[static_cast<std::size_t>(index)]) r.fail(tfield + ".index", "a tile appears twice");
+    seen[static_cast<std::size_t>(index)] = true;
+    std::unique_ptr<Tile> tile;
+    if (r.get<std::uint8_t>(tfield + ".present") != 0)
+      tile = read_tile(r, *chain.frame, index, tfield);
+    step.bytes += tile ? tile_bytes(*tile) : sizeof(std::pair<int, std::unique_ptr<Tile>>);
+    step.tiles.emplace_back(index, std::move(tile));
+  }
+  const auto added_layers = r.get_count(field + ".dry_layers.count", 1u << 24, 4);
+  if (!is_redo && added_layers != 0)
+    r.fail(field + ".dry_layers.count", "an undo step holds no added layers");
+  std::vector<DryLayer> added;
+  for (std::uint32_t l = 0; l < added_layers; ++l)
+    added.push_back(read_dry_layer(r, field + ".dry_layers[" + std::to_string(l) + "]",
+                                   chain.frame->tile_count(), static_cast<int>(slots)));
+  if (r.get<std::uint8_t>(field + ".has_canvas") != 0) {
+    if (!step.tiles.empty() || !added.empty())
+      r.fail(field + ".has_canvas", "a reframe step holds no tiles or layers of its own");
+    step.canvas = read_canvas(r, painting, field + ".canvas", file);
+    step.bytes += canvas_bytes(*step.canvas);
+  }
+  // The step against the state it applies to. Undo erases the layers from dry_layer_count
+  // on; redo adds its own to exactly dry_layer_count; a reframe keeps the number of layers,
+  // so none of one frame's layers can land on the other's canvas.
+  const auto layer_mismatch = [&](std::size_t layers) {
+    r.fail(field + ".dry_layer_count", std::to_string(step.dry_layer_count) +
+                                           " does not match the " + std::to_string(layers) +
+                                           " dry layers it applies to");
+  };
+  if (step.canvas && step.dry_layer_count != step.canvas->dry_layers().size())
+    layer_mismatch(step.canvas->dry_layers().size());
+  if (is_redo ? step.dry_layer_count != chain.layers : step.dry_layer_count > chain.layers)
+    layer_mismatch(chain.layers);
+  if (step.canvas) set_frame(chain, step.canvas->spec());
+  chain.layers = step.dry_layer_count + (is_redo ? added.size() : 0);
+  for (const DryLayer& layer : added) step.bytes += dry_layer_bytes(layer);
+  step.dry_layers = std::move(added);
+  return step;
+}
+
+}  // namespace
+
+SavedSteps steps_to_save(const UndoHistory& history, std::size_t budget) {
+  SavedSteps kept;
+  std::size_t bytes = 0;
+  const auto& undo = history.undo_steps();
+  for (auto it = undo.rbegin(); it != undo.rend() && bytes + it->bytes <= budget; ++it) {
+    bytes += it->bytes;
+    ++kept.undo;
+  }
+  const auto& redo = history.redo_steps();
+  for (auto it = redo.rbegin(); it != redo.rend() && bytes + it->bytes <= budget; ++it) {
+    bytes += it->bytes;
+    ++kept.redo;
+  }
+  return kept;
+}
+
+void write_history(const UndoHistory& history, SavedSteps steps, W& w) {
+  w.put(static_cast<std::uint64_t>(steps.undo));
+  w.put(static_cast<std::uint64_t>(steps.redo));
+  // Nearest first, each way: reading follows the canvas from now into the past and future.
+  const auto& undo = history.undo_steps();
+  for (std::size_t k = 0; k < steps.undo; ++k) write_step(w, undo[undo.size() - 1 - k]);
+  const auto& redo = history.redo_steps();
+  for (std::size_t k = 0; k < steps.redo; ++k) write_step(w, redo[redo.size() - 1 - k]);
+}
+
+void read_history(const Canvas& canvas, UndoHistory& history, Reader& r, const std::string& file) {
+  const CanvasSpec& painting = canvas.spec();
+  constexpr std::uint64_t kMinStepBytes = 4 + 4 + 2 * 12 + 1 + 4 + 4 + 1;
+  const auto undo_count = r.get<std::uint64_t>("history.undo_count");
+  const auto redo_count = r.get<std::uint64_t>("history.redo_count");
+  if (undo_count > r.left() / kMinStepBytes || redo_count > r.left() / kMinStepBytes ||
+      undo_count + redo_count > r.left() / kMinStepBytes)
+    r.fail("history.undo_count", "the steps do not fit in the section (a crafted file)");
+  std::deque<UndoStep> undo, redo;
+  Chain chain{std::make_unique<Canvas>(painting), canvas.dry_layers().size()};
+  for (std::uint64_t k = 0; k < undo_count; ++k)
+    undo.push_front(
+        read_step(r, "history.undo[" + std::to_string(k) + "]", false, chain, painting, file));
+  chain = Chain{std::make_unique<Canvas>(painting), canvas.dry_layers().size()};
+  for (std::uint64_t k = 0; k < redo_count; ++k)
+    redo.push_front(
+        read_step(r, "history.redo[" + std::to_string(k) + "]", true, chain, painting, file));
+  if (!r.at_end()) r.fail("history.end", "unexpected bytes after the last step");
+  history.restore(std::move(undo), std::move(redo));
+}
+
+}  // namespace impasto::paintcore

@@ -1,0 +1,181 @@
+// The undo history kept in the painting file (version 5): undo after reopening continues where
+// the session left off, the size cap drops the oldest steps, and a damaged history costs only
+// itself.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <fstream>
+
+#include "hasher.hpp"
+#include "impasto/paintcore/canvas_reframe.hpp"
+#include "test_util.hpp"
+
+namespace impasto::paintcore {
+namespace {
+
+using test::round_brush;
+using test::stroke_line;
+
+constexpr std::size_t kHeaderBytes = 8 + 4 + 8;  // magic, version, payload size
+
+class SavedHistory : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = std::filesystem::temp_directory_path() /
+           ("impasto_history_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+            "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    std::filesystem::create_directories(dir_);
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+
+  // A session of every kind of step: load, strokes, a drying, a crop, a stroke after it.
+  static Painting session() {
+    Painting p(CanvasSpec{150, 110, 254.0, 7}, 1);
+    p.set_brush(round_brush(3.0));
+    p.load_brush({{"red", 1.0}}, 30.0);
+    stroke_line(p, 1.0, 1.0, 12.0, 9.0, 0.8f);
+    p.dry(0.4);
+    p.load_brush({{"blue", 2.0}, {"red", 1.0}}, 30.0);
+    stroke_line(p, 12.0, 1.0, 1.0, 9.0, 0.9f);
+    p.reframe_canvas(crop_frame(11, 7, 120, 90));
+    stroke_line(p, 2.0, 2.0, 9.0, 7.0, 0.9f);
+    return p;
+  }
+
+  static std::vector<unsigned char> read(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), {}};
+  }
+  static void write(const std::filesystem::path& file, const std::vector<unsigned char>& bytes) {
+    std::ofstream out(file, std::ios::binary | std::ios::trunc);
+    out.write(reinterpret_cast<const char*>(bytes.data()),
+              static_cast<std::streamsize>(bytes.size()));
+  }
+  // Where the history section begins (its u64 size), after the payload and its checksum.
+  static std::size_t history_offset(const std::vector<unsigned char>& bytes) {
+    std::uint64_t payload = 0;
+    std::memcpy(&payload, bytes.data() + 12, 8);
+    return kHeaderBytes + payload + 8;
+  }
+  // Puts a valid checksum on an edited history section.
+  static void rehash_history(std::vector<unsigned char>& bytes) {
+    const std::size_t at = history_offset(bytes);
+    std::uint64_t size = 0;
+    std::memcpy(&size, bytes.data() + at, 8);
+    StreamHasher h;
+    h.bytes(bytes.data() + at + 8, size);
+    const std::uint64_t digest = h.digest();
+    std::memcpy(bytes.data() + at + 8 + size, &digest, 8);
+  }
+
+  std::filesystem::path dir_;
+};
+
+TEST_F(SavedHistory, UndoAfterReopeningGivesTheSameStatesAsWithoutSaving) {
+  Painting kept = session();
+  kept.undo();  // one step waits to be redone
+  const auto file = dir_ / "session.impasto";
+  kept.save(file);
+  Painting reopened = Painting::load(file, 1);
+  EXPECT_EQ(reopened.load_warning(), "");
+  ASSERT_EQ(reopened.state_hash(), kept.state_hash());
+  ASSERT_EQ(reopened.undo_depth(), kept.undo_depth());
+  ASSERT_EQ(reopened.redo_depth(), 1u);
+  ASSERT_TRUE(reopened.redo());
+  ASSERT_TRUE(kept.redo());
+  EXPECT_EQ(reopened.state_hash(), kept.state_hash());
+  // Back through the stroke after the crop, the crop, the strokes, the drying, the loads.
+  while (kept.undo()) {
+    ASSERT_TRUE(reopened.undo());
+    ASSERT_EQ(reopened.state_hash(), kept.state_hash()) << "undo depth " << kept.undo_depth();
+    EXPECT_EQ(reopened.canvas().width_cells(), kept.canvas().width_cells());
+  }
+  EXPECT_FALSE(reopened.undo());
+  while (kept.redo()) {
+    ASSERT_TRUE(reopened.redo());
+    ASSERT_EQ(reopened.state_hash(), kept.state_hash()) << "redo depth " << kept.redo_depth();
+  }
+  // Painting on after the reopened history still balances and undoes.
+  stroke_line(reopened, 3.0, 8.0, 9.0, 2.0, 0.8f);
+  EXPECT_NEAR(test::present_totals(reopened).volume, test::expected_totals(reopened).volume,
+              1e-6 * test::expected_totals(reopened).volume);
+  ASSERT_TRUE(reopened.undo());
+  EXPECT_EQ(reopened.state_hash(), kept.state_hash());
+}
+
+TEST_F(SavedHistory, TheCapKeepsTheNewestStepsAndZeroKeepsNone) {
+  Painting p = session();
+  const auto file = dir_ / "capped.impasto";
+  p.set_saved_history_bytes(0);
+  p.save(file);
+  EXPECT_EQ(Painting::load(file, 1).undo_depth(), 0u);
+  const std::uintmax_t without = std::filesystem::file_size(file);
+  p.set_saved_history_bytes(std::size_t{64} << 20);
+  p.save(file);
+  EXPECT_GT(std::filesystem::file_size(file), without);
+  // Room for little more than the newest stroke: that step is the one kept.
+  p.set_saved_history_bytes(p.undo_bytes() / 4);
+  p.save(file);
+  Painting capped = Painting::load(file, 1);
+  ASSERT_GE(capped.undo_depth(), 1u);
+  ASSERT_LT(capped.undo_depth(), p.undo_depth());
+  ASSERT_TRUE(capped.undo());
+  ASSERT_TRUE(p.undo());
+  EXPECT_EQ(capped.state_hash(), p.state_hash());
+}
+
+TEST_F(SavedHistory, ADamagedHistoryIsDroppedAndThePaintingKept) {
+  Painting p = session();
+  const auto file = dir_ / "damaged.impasto";
+  p.save(file);
+  std::vector<unsigned char> bytes = read(file);
+  bytes[history_offset(bytes) + 40] ^= 0x5a;  // inside the history: its checksum fails
+  write(file, bytes);
+  Painting loaded = Painting::load(file, 1);
+  EXPECT_EQ(loaded.state_hash(), p.state_hash());
+  EXPECT_EQ(loaded.undo_depth(), 0u);
+  EXPECT_NE(loaded.load_warning().find("damaged.impasto"), std::string::npos);
+  EXPECT_NE(loaded.load_warning().find("history_checksum"), std::string::npos)
+      << loaded.load_warning();
+}
+
+TEST_F(SavedHistory, ACraftedStepIsRefusedByField) {
+  Painting p = session();
+  const auto file = dir_ / "crafted.impasto";
+  p.save(file);
+  std::vector<unsigned char> bytes = read(file);
+  // The newest step's dry_layer_count (after the size and the two step counts): 1000 layers
+  // that undo would erase from a painting of one.
+  const std::uint32_t layers = 1000;
+  std::memcpy(bytes.data() + history_offset(bytes) + 8 + 16, &layers, 4);
+  rehash_history(bytes);
+  write(file, bytes);
+  Painting loaded = Painting::load(file, 1);
+  EXPECT_EQ(loaded.state_hash(), p.state_hash());
+  EXPECT_EQ(loaded.undo_depth(), 0u);
+  EXPECT_NE(loaded.load_warning().find("history.undo[0].dry_layer_count"), std::string::npos)
+      << loaded.load_warning();
+  // A step count far beyond the section is refused before anything is allocated for it.
+  const std::uint64_t huge = std::uint64_t{1} << 60;
+  std::memcpy(bytes.data() + history_offset(bytes) + 8, &huge, 8);
+  rehash_history(bytes);
+  write(file, bytes);
+  EXPECT_NE(Painting::load(file, 1).load_warning().find("history.undo_count"), std::string::npos);
+}
+
+TEST_F(SavedHistory, ACroppedCanvasKeepsItsClothThroughASave) {
+  Painting p = session();
+  p.set_saved_history_bytes(0);
+  const auto file = dir_ / "cloth.impasto";
+  p.save(file);
+  const Painting loaded = Painting::load(file, 1);
+  EXPECT_EQ(loaded.canvas().spec().weave_origin_x_cells, 11);
+  EXPECT_EQ(loaded.canvas().spec().weave_origin_y_cells, 7);
+  for (int y = 0; y < 90; y += 13)
+    for (int x = 0; x < 120; x += 11)
+      ASSERT_EQ(loaded.canvas().base_height_mm(x, y), p.canvas().base_height_mm(x, y));
+  EXPECT_EQ(loaded.state_hash(), p.state_hash());
+}
+
+}  // namespace
+}  // namespace impasto::paintcore
