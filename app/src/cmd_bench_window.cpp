@@ -97,7 +97,7 @@ Latency measure(const BenchWindowArgs& args, int width, int height,
   std::string failure;
   try {
     const std::string id = run_output("timeout 30 xdotool search --sync --onlyvisible --pid " +
-                                      std::to_string(pid) + " --name '^Impasto$' | head -1");
+                                      std::to_string(pid) + " --name ' Impasto$' | head -1");
     if (id.empty()) throw std::runtime_error("the window did not appear within 30 s");
     const std::string window = id.substr(0, id.find('\n'));
     std::this_thread::sleep_for(std::chrono::seconds(3));  // the replay applied, panels laid out

@@ -167,7 +167,7 @@ TEST(WindowEndToEnd, EveryMouseEventOfAFastCircleAndOfReleaseMovePressIsPainted)
   bool up = false;
   for (int i = 0; i < 120 && !up; ++i) {
     std::this_thread::sleep_for(std::chrono::milliseconds(250));
-    up = std::system("xdotool search --name '^Impasto$' >/dev/null 2>&1") == 0 &&
+    up = std::system("xdotool search --name ' Impasto$' >/dev/null 2>&1") == 0 &&
          fs::exists(session) && fs::file_size(session) > 0;
   }
   ASSERT_TRUE(up) << "the window did not open";

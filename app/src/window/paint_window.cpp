@@ -28,6 +28,7 @@
 #include <memory>
 #include <stdexcept>
 #include <thread>
+#include <utility>
 
 #include "session/preview.hpp"
 #include "session/rebuild.hpp"
@@ -52,6 +53,7 @@
 #include "window/tablet_input.hpp"
 #include "window/ui_damage.hpp"
 #include "window/window_present.hpp"
+#include "window/window_title.hpp"
 
 namespace impasto::app::window {
 namespace {
@@ -143,6 +145,7 @@ class PaintWindow {
   void handle_canvas_input();
   void handle_shortcuts();
   void run_pending_action();
+  void update_title();
   void update_swatch();
   void draw_frame(bool take_screenshot);
   void present_frame(const std::vector<render_gl::PixelRect>& canvas_changed, int fb_w, int fb_h,
@@ -224,6 +227,7 @@ class PaintWindow {
   int preview_w_ = 0, preview_h_ = 0;
   double last_input_s_ = 0.0, last_autosave_s_ = 0.0;
   std::string recording_failure_;  // the first failure of any recording in this window's life
+  std::string shown_title_;
 };
 
 PaintWindow::PaintWindow(const PaintOptions& options) : options_(options) {
@@ -255,8 +259,8 @@ void PaintWindow::create_window() {
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-  window_ =
-      glfwCreateWindow(options_.window_width, options_.window_height, "Impasto", nullptr, nullptr);
+  window_ = glfwCreateWindow(options_.window_width, options_.window_height,
+                             window_title(options_.painting, false).c_str(), nullptr, nullptr);
   if (!window_) throw std::runtime_error("cannot open a window with OpenGL 3.3 core");
   glfwMakeContextCurrent(window_);
   glfwSwapInterval(1);
@@ -578,12 +582,12 @@ void PaintWindow::sync_gpu() {
     if (full_upload_) {
       renderer_->upload_all(canvas);
       view_cache_.invalidate_all();
-      state_.tiles_uploaded = canvas.tile_count();
+      state_.tiles_uploaded += canvas.tile_count();
       full_upload_ = false;
     } else {
       renderer_->upload_tiles(canvas, dirty);
       view_cache_.invalidate_tiles(dirty);
-      state_.tiles_uploaded = static_cast<int>(dirty.size());
+      state_.tiles_uploaded += static_cast<long long>(dirty.size());
     }
   });
   state_.upload_ms = ms_since(start);
@@ -683,14 +687,22 @@ FileActions PaintWindow::file_actions() {
   actions.save = [this](const std::filesystem::path& file) {
     try {
       worker_->save(file);
-      board_panel_.board().save(PaletteBoard::file_beside(file));
       state_.file = file;
       remember_recent_file(file);
       state_.recent = load_recent_files();
-      state_.message = "saved " + file.string();
     } catch (const std::exception& e) {
-      state_.message = e.what();
+      state_.notifications.error("Could not save " + file.string() + ": " + e.what());
+      return false;
     }
+    // The painting is saved; the board beside it is a convenience.
+    try {
+      board_panel_.board().save(PaletteBoard::file_beside(file));
+    } catch (const std::exception& e) {
+      state_.notifications.warning("Saved the painting, but not its palette board: " +
+                                   std::string(e.what()));
+    }
+    state_.notifications.info("Saved " + file.string());
+    return true;
   };
   actions.export_image = [this](const std::filesystem::path& file) {
     try {
@@ -698,9 +710,9 @@ FileActions PaintWindow::file_actions() {
       worker_->with_painting([&](const paintcore::Painting& painting) {
         render::render_painting_to_file(painting, state_.settings, file);
       });
-      state_.message = "exported " + file.string();
+      state_.notifications.info("Exported " + file.string());
     } catch (const std::exception& e) {
-      state_.message = e.what();
+      state_.notifications.error("Could not export " + file.string() + ": " + e.what());
     }
   };
   return actions;
@@ -727,7 +739,7 @@ void PaintWindow::run_pending_action() {
                                   begin_session(std::nullopt, std::nullopt));
         open_board_for(std::nullopt);
         state_.file.reset();
-        state_.message = "new painting";
+        state_.notifications.info("New painting");
         break;
       }
       case PendingAction::kOpen:
@@ -740,18 +752,31 @@ void PaintWindow::run_pending_action() {
         state_.file = file;
         remember_recent_file(file);
         state_.recent = load_recent_files();
-        state_.message = "opened " + file.string();
+        state_.notifications.info("Opened " + file.string());
         break;
       }
       case PendingAction::kNone:
         break;
     }
   } catch (const std::exception& e) {
-    state_.message = e.what();
+    // The painting shown is unchanged: nothing was replaced.
+    const std::string what = action == PendingAction::kNew
+                                 ? std::string("Could not make the new painting: ")
+                                 : "Could not open " + state_.pending_path.string() + ": ";
+    state_.notifications.error(what + e.what());
+    return;
   }
   rendered_slots_.clear();
   canvas_w_ = canvas_h_ = 0;  // a new canvas: new textures, fit it to the window
   state_.hidden_dry_layers.clear();
+}
+
+// The window's title: the painting's file name (or Untitled), marked while unsaved.
+void PaintWindow::update_title() {
+  const std::string title = window_title(state_.file, worker_->stats().events_since_save > 0);
+  if (title == shown_title_) return;
+  glfwSetWindowTitle(window_, title.c_str());
+  shown_title_ = title;
 }
 
 // Puts the frame on screen: the cached canvas with ImGui's panels over it. Where the back
@@ -851,7 +876,7 @@ void PaintWindow::draw_frame(bool take_screenshot) {
                           : render_gl::ShadedViewCache::Detail::kFull;
   const render_gl::CachedDrawStats canvas =
       view_cache_.update(*renderer_, fb_view, fb_w, fb_h, detail);
-  state_.pixels_shaded = canvas.pixels_shaded;
+  state_.pixels_shaded += canvas.pixels_shaded;
   frame_changed_ = !canvas.changed.empty();
   present_frame(canvas.changed, fb_w, fb_h, fb_scale, take_screenshot);
   latency_.shown(applied_at_upload_, glfwGetTime() - session_start_s_);
@@ -875,12 +900,14 @@ void PaintWindow::run() {
     if (glfwWindowShouldClose(window_)) {
       glfwSetWindowShouldClose(window_, GLFW_FALSE);
       if (options_.exit_after) break;
-      state_.pending = PendingAction::kQuit;
-      state_.pending_confirmed = worker_->stats().events_since_save == 0;
-      if (!state_.pending_confirmed) state_.message = "unsaved changes: File > Quit to decide";
+      // As File > Quit: with unsaved changes, Save / Discard / Cancel.
+      state_.file_command = FileCommand::kQuit;
     }
     run_pending_action();
     if (state_.quit) break;
+    update_title();
+    // Reports written to the older status line are shown as notifications.
+    if (!state_.message.empty()) state_.notifications.warning(std::exchange(state_.message, {}));
     handle_shortcuts();
     poll_tablets();
     handle_canvas_input();

@@ -11,29 +11,127 @@
 #include <cstdio>
 #include <numbers>
 #include <string>
+#include <utility>
 
 namespace impasto::app::window {
 namespace {
 
 constexpr float kPanelWidth = 330.0f;
 
+FileBrowserRequest browser_request(FilePurpose purpose, const WindowState& s) {
+  FileBrowserRequest request;
+  request.purpose = purpose;
+  request.painting = s.file;
+  request.recent_files = s.recent;
+  switch (purpose) {
+    case FilePurpose::kOpenPainting:
+      request.title = "Open painting";
+      request.accept_label = "Open";
+      break;
+    case FilePurpose::kSavePainting:
+      request.title = "Save painting as";
+      request.accept_label = "Save";
+      break;
+    case FilePurpose::kExportImage:
+      request.title = "Export image";
+      request.accept_label = "Export";
+      break;
+    case FilePurpose::kOpenStrokes:
+      request.title = "Open strokes";
+      request.accept_label = "Open";
+      break;
+  }
+  return request;
+}
+
+// What the unsaved-changes prompt is about to do, for its question.
+std::string pending_words(const WindowState& s) {
+  switch (s.pending) {
+    case PendingAction::kQuit:
+      return "quitting";
+    case PendingAction::kNew:
+      return "starting a new painting";
+    case PendingAction::kOpen:
+    case PendingAction::kOpenRecent:
+      return "opening " + s.pending_path.filename().string();
+    case PendingAction::kNone:
+      break;
+  }
+  return "going on";
+}
+
+// Save, Discard or Cancel before an action that would drop unsaved paint. Save on an
+// untitled painting goes through Save as, and the action follows once it is saved.
+void unsaved_prompt(PanelContext& c) {
+  WindowState& s = c.state;
+  if (s.ask_unsaved) {
+    ImGui::OpenPopup("Unsaved changes");
+    s.ask_unsaved = false;
+  }
+  if (!ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    return;
+  }
+  const std::string name = s.file ? s.file->filename().string() : std::string("Untitled");
+  ImGui::Text("Save the changes to %s before %s?", name.c_str(), pending_words(s).c_str());
+  ImGui::TextDisabled("Changes you discard are lost.");
+  ImGui::Spacing();
+  const ImVec2 button(100.0f, 0.0f);
+  if (ImGui::Button(s.file ? "Save" : "Save as...", button)) {
+    ImGui::CloseCurrentPopup();
+    if (!s.file) {
+      s.continue_after_save = true;
+      s.file_browser.open(browser_request(FilePurpose::kSavePainting, s));
+    } else if (c.files.save(*s.file)) {
+      s.pending_confirmed = true;
+    } else {
+      s.pending = PendingAction::kNone;  // not saved: nothing is discarded
+    }
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Discard", button)) {
+    s.pending_confirmed = true;
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Cancel", button) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
+    s.pending = PendingAction::kNone;
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::EndPopup();
+}
+
 void file_menu(PanelContext& c) {
   WindowState& s = c.state;
   const bool unsaved = c.worker.stats().events_since_save > 0;
-  bool open_new = false, open_open = false, open_save_as = false, open_export = false;
-  bool open_prompt = false;
+  bool open_new = false;
+  std::optional<FilePurpose> browse;
   // An action that would discard paint runs at once when nothing is unsaved, else after the
   // prompt (opened below, at the top level of the ID stack, not inside a menu or popup).
   auto ask = [&](PendingAction action, std::filesystem::path path = {}) {
     s.pending = action;
     s.pending_path = std::move(path);
     s.pending_confirmed = !unsaved;
-    open_prompt = unsaved;
+    s.ask_unsaved = unsaved;
   };
+  auto save = [&] {
+    if (s.file) {
+      c.files.save(*s.file);
+    } else {
+      browse = FilePurpose::kSavePainting;
+    }
+  };
+  // A shortcut's command, unless a dialog is up (it has the keyboard).
+  FileCommand command = std::exchange(s.file_command, FileCommand::kNone);
+  // (Quit, from the window's close button too, always gets through: its prompt replaces the
+  // dialog.)
+  if (command != FileCommand::kQuit &&
+      (s.file_browser.is_open() || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId))) {
+    command = FileCommand::kNone;
+  }
   if (ImGui::BeginMainMenuBar()) {
     if (ImGui::BeginMenu("File")) {
-      if (ImGui::MenuItem("New...")) open_new = true;
-      if (ImGui::MenuItem("Open...")) open_open = true;
+      if (ImGui::MenuItem("New...", "Ctrl+N")) command = FileCommand::kNew;
+      if (ImGui::MenuItem("Open...", "Ctrl+O")) command = FileCommand::kOpen;
       if (ImGui::BeginMenu("Open recent", !s.recent.empty())) {
         for (const auto& file : s.recent) {
           if (ImGui::MenuItem(file.string().c_str())) ask(PendingAction::kOpenRecent, file);
@@ -41,19 +139,14 @@ void file_menu(PanelContext& c) {
         ImGui::EndMenu();
       }
       ImGui::Separator();
-      if (ImGui::MenuItem("Save", "Ctrl+S")) {
-        if (s.file) {
-          c.files.save(*s.file);
-        } else {
-          open_save_as = true;
-        }
-      }
-      if (ImGui::MenuItem("Save as...")) open_save_as = true;
-      if (ImGui::MenuItem("Export PNG/EXR...")) open_export = true;
+      if (ImGui::MenuItem("Save", "Ctrl+S")) command = FileCommand::kSave;
+      if (ImGui::MenuItem("Save as...")) command = FileCommand::kSaveAs;
+      if (ImGui::MenuItem("Export image...")) command = FileCommand::kExport;
       ImGui::Separator();
-      if (ImGui::MenuItem("Quit")) ask(PendingAction::kQuit);
+      if (ImGui::MenuItem("Quit")) command = FileCommand::kQuit;
       ImGui::EndMenu();
     }
+    edit_menu(s, c.worker, c.painting.undo_depth, c.painting.redo_depth);
     if (ImGui::BeginMenu("View")) {
       if (ImGui::MenuItem("Fit canvas", "F")) s.fit_requested = true;
       if (ImGui::MenuItem("One cell per pixel", "1")) s.view.pixels_per_cell = 1.0;
@@ -62,10 +155,30 @@ void file_menu(PanelContext& c) {
     }
     ImGui::EndMainMenuBar();
   }
+  switch (command) {
+    case FileCommand::kNew:
+      open_new = true;
+      break;
+    case FileCommand::kOpen:
+      browse = FilePurpose::kOpenPainting;
+      break;
+    case FileCommand::kSave:
+      save();
+      break;
+    case FileCommand::kSaveAs:
+      browse = FilePurpose::kSavePainting;
+      break;
+    case FileCommand::kExport:
+      browse = FilePurpose::kExportImage;
+      break;
+    case FileCommand::kQuit:
+      ask(PendingAction::kQuit);
+      break;
+    case FileCommand::kNone:
+      break;
+  }
   if (open_new) ImGui::OpenPopup("New painting");
-  if (open_open) ImGui::OpenPopup("Open painting");
-  if (open_save_as) ImGui::OpenPopup("Save painting as");
-  if (open_export) ImGui::OpenPopup("Export image");
+  if (browse) s.file_browser.open(browser_request(*browse, s));
 
   if (ImGui::BeginPopupModal("New painting", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::InputInt("width (cells)", &s.new_width);
@@ -79,44 +192,32 @@ void file_menu(PanelContext& c) {
     if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
   }
-  auto path_popup = [&](const char* title, const char* button, auto&& on_accept) {
-    if (ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-      ImGui::SetNextItemWidth(420.0f);
-      ImGui::InputText("file", &s.path_input);
-      if (ImGui::Button(button) && !s.path_input.empty()) {
-        ImGui::CloseCurrentPopup();
-        on_accept(std::filesystem::path(s.path_input));
-      }
-      ImGui::SameLine();
-      if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
-      ImGui::EndPopup();
-    }
-  };
-  path_popup("Open painting", "Open",
-             [&](const std::filesystem::path& p) { ask(PendingAction::kOpen, p); });
-  path_popup("Save painting as", "Save", [&](const std::filesystem::path& p) { c.files.save(p); });
-  path_popup("Export image", "Export",
-             [&](const std::filesystem::path& p) { c.files.export_image(p); });
 
-  if (open_prompt) ImGui::OpenPopup("Unsaved changes");
-  if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-    ImGui::TextUnformatted("The painting has unsaved changes.");
-    if (s.file && ImGui::Button("Save first")) {
-      c.files.save(*s.file);
-      s.pending_confirmed = true;
-      ImGui::CloseCurrentPopup();
+  unsaved_prompt(c);
+
+  const FileBrowserResult chosen = s.file_browser.draw();
+  const bool continuing = std::exchange(
+      s.continue_after_save, s.continue_after_save && chosen.kind == FileBrowserResult::kNone);
+  if (chosen.kind == FileBrowserResult::kChosen) {
+    switch (chosen.purpose) {
+      case FilePurpose::kOpenPainting:
+        ask(PendingAction::kOpen, chosen.file);
+        break;
+      case FilePurpose::kSavePainting: {
+        const bool saved = c.files.save(chosen.file);
+        // Saved for the prompt's sake: its action goes on; not saved: nothing is discarded.
+        if (continuing && saved) s.pending_confirmed = true;
+        if (continuing && !saved) s.pending = PendingAction::kNone;
+        break;
+      }
+      case FilePurpose::kExportImage:
+        c.files.export_image(chosen.file);
+        break;
+      case FilePurpose::kOpenStrokes:
+        break;
     }
-    if (s.file) ImGui::SameLine();
-    if (ImGui::Button("Discard changes")) {
-      s.pending_confirmed = true;
-      ImGui::CloseCurrentPopup();
-    }
-    ImGui::SameLine();
-    if (ImGui::Button("Cancel")) {
-      s.pending = PendingAction::kNone;
-      ImGui::CloseCurrentPopup();
-    }
-    ImGui::EndPopup();
+  } else if (chosen.kind == FileBrowserResult::kCancelled && continuing) {
+    s.pending = PendingAction::kNone;  // Save as cancelled: so is the action it was for
   }
 }
 
@@ -318,6 +419,20 @@ void light_panel(PanelContext& c) {
   }
   ImGui::SliderInt("wavelengths", &s.settings.wavelengths, 1, render::kMaxNodes);
   changed |= ImGui::IsItemDeactivatedAfterEdit();
+  // Chromatic adaptation, as `impasto render --adaptation`: bradford maps the light's white
+  // to the display's, as an eye adapted to the room sees it; none shows a warm light warm.
+  bool adapted = s.settings.adaptation == render::ChromaticAdaptation::bradford;
+  if (ImGui::Checkbox("adapt to the light's white", &adapted)) {
+    s.settings.adaptation =
+        adapted ? render::ChromaticAdaptation::bradford : render::ChromaticAdaptation::none;
+    s.settings_changed = true;
+  }
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "On (bradford): the light's white looks white, as to an eye adapted to the room.\n"
+        "Off (none): a warm light such as A looks warm on the display.\n"
+        "The same choice as `impasto render --adaptation bradford|none`.");
+  }
   if (changed) {
     s.settings.light = s.use_blackbody ? "blackbody:" + std::to_string(static_cast<int>(s.kelvin))
                                        : s.illuminants[static_cast<std::size_t>(s.illuminant)];
@@ -429,9 +544,46 @@ void history_panel(PanelContext& c) {
   ImGui::Text("%zu steps to undo, %zu to redo", c.painting.undo_depth, c.painting.redo_depth);
 }
 
+// Totals turned into rates over the last whole second (per-frame counts read 0 between
+// frames that change nothing, which is most of them).
+struct PerSecond {
+  double window_start_s = -1.0;
+  long long at_start = 0;
+  double rate = 0.0;
+  double update(long long total, double now_s) {
+    if (window_start_s < 0.0 || total < at_start) {
+      window_start_s = now_s;
+      at_start = total;
+    } else if (now_s - window_start_s >= 1.0) {
+      rate = static_cast<double>(total - at_start) / (now_s - window_start_s);
+      window_start_s = now_s;
+      at_start = total;
+    }
+    return rate;
+  }
+};
+
+std::string per_second_text(double rate, const char* unit) {
+  char text[48];
+  if (rate >= 1e6) {
+    std::snprintf(text, sizeof text, "%.1f M%s/s", rate / 1e6, unit);
+  } else if (rate >= 1e3) {
+    std::snprintf(text, sizeof text, "%.1f k%s/s", rate / 1e3, unit);
+  } else {
+    std::snprintf(text, sizeof text, "%.0f %s/s", rate, unit);
+  }
+  return text;
+}
+
+// The measured truth first: how long a pen event takes to reach the screen (its own time
+// stamp to the swap that shows it, pointer_latency.hpp), then what the machine is doing.
 void status_bar(PanelContext& c) {
   const WindowState& s = c.state;
+  static PerSecond shaded, tiles;
   const ImGuiIO& io = ImGui::GetIO();
+  const double now_s = ImGui::GetTime();
+  const double shaded_per_s = shaded.update(s.pixels_shaded, now_s);
+  const double tiles_per_s = tiles.update(s.tiles_uploaded, now_s);
   const float height = ImGui::GetFrameHeight() + 6.0f;
   ImGui::SetNextWindowPos(ImVec2(0, io.DisplaySize.y - height));
   ImGui::SetNextWindowSize(ImVec2(io.DisplaySize.x, height));
@@ -439,14 +591,32 @@ void status_bar(PanelContext& c) {
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus);
   const SimStats sim = c.worker.stats();
+  char latency[48] = "pen to screen: paint to measure";
+  if (s.input_latency_ms >= 0.0) {
+    std::snprintf(latency, sizeof latency, "pen to screen %.0f ms", s.input_latency_ms);
+  }
+  ImGui::TextUnformatted(latency);
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "Median over the last 100 pen samples shown: from each mouse or pen event's own time\n"
+        "stamp to the buffer swap of the first frame that shows it.");
+  }
+  ImGui::SameLine();
   ImGui::Text(
-      "frame %.1f ms | upload %.1f ms (%d tiles), shaded %lld px | input %.1f ms | sim %.2f "
-      "ms/event, %.0f ms/s busy, "
-      "%zu queued | %dx%d @ %.0f dpi | zoom %.2f | cell %.0f,%.0f | %s%s",
-      s.frame_ms, s.upload_ms, s.tiles_uploaded, s.pixels_shaded, s.input_latency_ms,
-      sim.last_event_ms, sim.busy_ms_per_s, sim.queued, c.painting.width_cells,
-      c.painting.height_cells, c.painting.dpi, s.view.pixels_per_cell, s.cursor_cell[0],
-      s.cursor_cell[1], sim.events_since_save > 0 ? "unsaved " : "", s.message.c_str());
+      "| sim %.2f ms/event, %.0f%% busy, %zu queued | shaded %s, %s | %dx%d @ %.0f dpi "
+      "| zoom %.2f | cell %.0f,%.0f",
+      sim.last_event_ms, sim.busy_ms_per_s / 10.0, sim.queued,
+      per_second_text(shaded_per_s, "px").c_str(), per_second_text(tiles_per_s, "tile").c_str(),
+      c.painting.width_cells, c.painting.height_cells, c.painting.dpi, s.view.pixels_per_cell,
+      s.cursor_cell[0], s.cursor_cell[1]);
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "sim: the paint simulation, per pen event and its share of a core\n"
+        "shaded: canvas pixels the GPU's K-M pass shaded, per second (the rest is cached)\n"
+        "tiles: canvas tiles uploaded to the GPU per second\n"
+        "last frame: %.1f ms on the UI thread, %.1f ms of it uploading",
+        s.frame_ms, s.upload_ms);
+  }
   ImGui::End();
 }
 
@@ -472,6 +642,7 @@ void draw_panels(PanelContext& context) {
   history_panel(context);
   ImGui::End();
   status_bar(context);
+  context.state.notifications.draw();
 }
 
 }  // namespace impasto::app::window

@@ -28,7 +28,7 @@ struct PaintingSnapshot {
 struct FileActions {
   std::function<void()> new_painting;  // uses state.new_*
   std::function<void(const std::filesystem::path&)> open;
-  std::function<void(const std::filesystem::path&)> save;
+  std::function<bool(const std::filesystem::path&)> save;          // false: failed (and said why)
   std::function<void(const std::filesystem::path&)> export_image;  // .png or .exr
 };
 

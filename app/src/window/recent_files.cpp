@@ -13,16 +13,21 @@ namespace {
 constexpr std::size_t kMaxRecent = 10;
 
 std::filesystem::path recent_list_path() {
-  if (const char* config = std::getenv("XDG_CONFIG_HOME"); config && *config) {
-    return std::filesystem::path(config) / "impasto" / "recent.txt";
-  }
-  if (const char* home = std::getenv("HOME"); home && *home) {
-    return std::filesystem::path(home) / ".config" / "impasto" / "recent.txt";
-  }
-  return {};
+  const auto folder = window_config_folder();
+  return folder.empty() ? folder : folder / "recent.txt";
 }
 
 }  // namespace
+
+std::filesystem::path window_config_folder() {
+  if (const char* config = std::getenv("XDG_CONFIG_HOME"); config && *config) {
+    return std::filesystem::path(config) / "impasto";
+  }
+  if (const char* home = std::getenv("HOME"); home && *home) {
+    return std::filesystem::path(home) / ".config" / "impasto";
+  }
+  return {};
+}
 
 std::vector<std::filesystem::path> load_recent_files() {
   std::vector<std::filesystem::path> files;

@@ -6,6 +6,10 @@
 
 namespace impasto::app::window {
 
+// $XDG_CONFIG_HOME/impasto (~/.config/impasto when unset; empty without either): where the
+// window keeps what it remembers between sessions.
+std::filesystem::path window_config_folder();
+
 std::vector<std::filesystem::path> load_recent_files();
 // Moves `file` to the front (at most 10 kept) and writes the list; errors are ignored (a
 // read-only home must not stop painting).

@@ -18,6 +18,9 @@
 #include <string>
 #include <vector>
 
+#include "window/file_browser.hpp"
+#include "window/notifications.hpp"
+#include "window/recent_files.hpp"
 #include "window/sim_worker.hpp"
 #include "window/tablet_input.hpp"
 
@@ -25,6 +28,10 @@ namespace impasto::app::window {
 
 // An action that discards the painting, held while the unsaved-changes prompt is open.
 enum class PendingAction { kNone, kNew, kOpen, kOpenRecent, kQuit };
+
+// A File menu command asked for elsewhere (a keyboard shortcut): set it, and the File menu
+// carries it out at its next frame exactly as if its item had been chosen.
+enum class FileCommand { kNone, kNew, kOpen, kSave, kSaveAs, kExport, kQuit };
 
 struct WindowState {
   // --- look (shared with the CPU renderer's settings) ---
@@ -77,18 +84,24 @@ struct WindowState {
   std::optional<std::filesystem::path> file;  // the painting's file, once saved or opened
   std::vector<std::filesystem::path> recent;
   PendingAction pending = PendingAction::kNone;
-  bool pending_confirmed = false;  // no unsaved changes, or the user said to go ahead
+  bool pending_confirmed = false;    // no unsaved changes, or the user said to go ahead
+  bool ask_unsaved = false;          // open the Save / Discard / Cancel prompt for `pending`
+  bool continue_after_save = false;  // that prompt's Save went to Save as: go on once saved
   std::filesystem::path pending_path;
-  std::string path_input;
+  FileCommand file_command = FileCommand::kNone;
+  FileBrowser file_browser{window_config_folder().empty() ? std::filesystem::path()
+                                                          : window_config_folder() / "folders.txt"};
   int new_width = 1024, new_height = 768;
   float new_dpi = 150.0f;
-  std::string message;  // the last file operation's result or error
+  // What the window has to say (errors, warnings, results): shown as notifications.
+  Notifications notifications;
+  std::string message;  // older reports; the frame loop moves them to `notifications`
 
   // --- status ---
   double frame_ms = 0.0;
   double upload_ms = 0.0;
-  int tiles_uploaded = 0;
-  long long pixels_shaded = 0;     // by the last frame's K-M pass (the rest was cached)
+  long long tiles_uploaded = 0;    // since the window opened
+  long long pixels_shaded = 0;     // by the K-M pass since the window opened (the rest cached)
   double input_latency_ms = -1.0;  // median, pen event to the swap showing it (< 0: none yet)
   std::array<double, 2> cursor_cell{-1, -1};
   bool quit = false;
