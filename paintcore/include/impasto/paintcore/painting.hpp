@@ -100,6 +100,12 @@ class Painting {
   // as wiped, so the ledger still balances. Throws, changing nothing, on an invalid frame.
   PaintTotals reframe_canvas(const CanvasFrame& frame);
 
+  // The painting on a canvas `scale` (1..16) times finer (dpi x scale), for export at a larger
+  // size: heights and pigment amounts interpolated between cells by Catmull-Rom, clamped at
+  // zero, so that its render shades a smooth relief. Slots, records and parameters are kept;
+  // the brush, ledger, history and cracks are not. Throws when the canvas would be too large.
+  Painting refined(int scale) const;
+
   // Undo/redo of whole operations (stroke, dry, load, wipe, brush change, reframe).
   bool undo();
   bool redo();
