@@ -16,14 +16,10 @@ namespace {
 using cracks::CavityShape;
 using cracks::Vec3d;
 
-double dot(const Vec3d& a, const Vec3d& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-
 // The cavity's frame has grooves across x and along y (cracks/close_up.hpp). A groove along
 // the canvas's x swaps the two axes; the swap keeps lengths and angles, all the shading uses.
 Vec3d to_cavity(const CanvasVec& v, bool swap_xy) {
-  return swap_xy ? Vec3d{v[1], v[0], v[2]} : Vec3d{v[0], v[1], v[2]};
+  return swap_xy ? Vec3d{v.y, v.x, v.z} : Vec3d{v.x, v.y, v.z};
 }
 
 // The cavity's profile: the air inside it is a convex set, bounded by the opening (z = 0,
@@ -33,7 +29,7 @@ struct Profile {
   double L, R;
 
   double radial(const Vec3d& p) const {
-    return cracks::is_groove(shape) ? std::abs(p[0]) : std::hypot(p[0], p[1]);
+    return cracks::is_groove(shape) ? std::abs(p.x) : std::hypot(p.x, p.y);
   }
   // Height of the wall below the point at distance rho < R from the axis.
   double floor_z(double rho) const {
@@ -52,24 +48,23 @@ struct Profile {
   }
   bool inside(const Vec3d& p) const {
     const double rho = radial(p);
-    return p[2] <= 0.0 && rho < R && p[2] >= floor_z(rho);
+    return p.z <= 0.0 && rho < R && p.z >= floor_z(rho);
   }
   // Unit radial direction of p in the cross-section (x for grooves).
   Vec3d outward(const Vec3d& p) const {
     const double rho = radial(p);
     if (rho <= 0.0) return {1.0, 0.0, 0.0};
-    return cracks::is_groove(shape) ? Vec3d{p[0] / rho, 0.0, 0.0}
-                                    : Vec3d{p[0] / rho, p[1] / rho, 0.0};
+    return cracks::is_groove(shape) ? Vec3d{p.x / rho, 0.0, 0.0} : Vec3d{p.x / rho, p.y / rho, 0.0};
   }
   // The wall point where a ray from the opening point `o` going `d` (down) leaves the air.
   // Convexity makes the exit unique: bisection between a point inside and one surely below.
   cracks::CavityWallPoint hit(const Vec3d& o, const Vec3d& d) const {
-    double t_in = 0.0, t_out = (1.01 * L + 1e-9 * R) / -d[2];
+    double t_in = 0.0, t_out = (1.01 * L + 1e-9 * R) / -d.z;
     for (int i = 0; i < 60; ++i) {
       const double t = 0.5 * (t_in + t_out);
-      (inside({o[0] + t * d[0], o[1] + t * d[1], o[2] + t * d[2]}) ? t_in : t_out) = t;
+      (inside({o.x + t * d.x, o.y + t * d.y, o.z + t * d.z}) ? t_in : t_out) = t;
     }
-    const Vec3d p{o[0] + t_in * d[0], o[1] + t_in * d[1], o[2] + t_in * d[2]};
+    const Vec3d p{o.x + t_in * d.x, o.y + t_in * d.y, o.z + t_in * d.z};
     return {p, normal_at(p)};
   }
   // Unit normal into the air at a wall point.
@@ -79,32 +74,32 @@ struct Profile {
       case CavityShape::ArcGroove:
       case CavityShape::SpherePit: {
         const double r = (R * R + L * L) / (2.0 * L);
-        const Vec3d c{0.0, cracks::is_groove(shape) ? p[1] : 0.0, r - L};
-        const Vec3d n{c[0] - p[0], c[1] - p[1], c[2] - p[2]};
+        const Vec3d c{0.0, cracks::is_groove(shape) ? p.y : 0.0, r - L};
+        const Vec3d n{c.x - p.x, c.y - p.y, c.z - p.z};
         const double len = std::sqrt(dot(n, n));
-        return {n[0] / len, n[1] / len, n[2] / len};
+        return {n.x / len, n.y / len, n.z / len};
       }
       case CavityShape::VGroove:
       case CavityShape::ConePit: {
         const double h = std::hypot(R, L);
-        return {-e[0] * L / h, -e[1] * L / h, R / h};
+        return {-e.x * L / h, -e.y * L / h, R / h};
       }
       default:  // the nearer of the vertical wall and the flat bottom
-        if (R - radial(p) < p[2] + L) return {-e[0], -e[1], 0.0};
+        if (R - radial(p) < p.z + L) return {-e.x, -e.y, 0.0};
         return {0.0, 0.0, 1.0};
     }
   }
   // Whether a ray from wall point p toward s leaves through the opening: the air is convex,
   // so it does exactly when it crosses z = 0 inside the rim.
   bool sees(const cracks::CavityWallPoint& p, const Vec3d& s) const {
-    if (s[2] <= 0.0 || dot(p.normal, s) <= 0.0) return false;
-    const double t = -p.position[2] / s[2];
-    return radial({p.position[0] + t * s[0], p.position[1] + t * s[1], 0.0}) < R;
+    if (s.z <= 0.0 || dot(p.normal, s) <= 0.0) return false;
+    const double t = -p.position.z / s.z;
+    return radial({p.position.x + t * s.x, p.position.y + t * s.y, 0.0}) < R;
   }
 };
 
 void check_unit(const CanvasVec& v, const char* field) {
-  const double len2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+  const double len2 = v.x * v.x + v.y * v.y + v.z * v.z;
   if (!std::isfinite(len2) || std::abs(len2 - 1.0) > 1e-6) {
     throw std::invalid_argument(std::string(field) + ": expected a unit vector");
   }
@@ -113,13 +108,13 @@ void check_unit(const CanvasVec& v, const char* field) {
 }  // namespace
 
 std::vector<CanvasVec> close_up_light_directions(const CloseUpLight& light) {
-  const Vec3d c{light.toward_light[0], light.toward_light[1], light.toward_light[2]};
+  const Vec3d c = light.toward_light;
   // Two unit vectors across c.
-  const Vec3d a = std::abs(c[2]) < 0.9 ? Vec3d{0.0, 0.0, 1.0} : Vec3d{1.0, 0.0, 0.0};
-  Vec3d u{a[1] * c[2] - a[2] * c[1], a[2] * c[0] - a[0] * c[2], a[0] * c[1] - a[1] * c[0]};
-  const double ul = std::sqrt(dot(u, u));
-  for (double& x : u) x /= ul;
-  const Vec3d v{c[1] * u[2] - c[2] * u[1], c[2] * u[0] - c[0] * u[2], c[0] * u[1] - c[1] * u[0]};
+  const Vec3d a = std::abs(c.z) < 0.9 ? Vec3d{0.0, 0.0, 1.0} : Vec3d{1.0, 0.0, 0.0};
+  const Vec3d across = cross(a, c);
+  const double ul = length(across);
+  const Vec3d u{across.x / ul, across.y / ul, across.z / ul};
+  const Vec3d v = cross(c, u);
   const int n = light.shadow_rays;
   const double golden = std::numbers::pi * (3.0 - std::sqrt(5.0));
   std::vector<CanvasVec> out(static_cast<std::size_t>(n));
@@ -127,9 +122,9 @@ std::vector<CanvasVec> close_up_light_directions(const CloseUpLight& light) {
     const double radius = light.angular_radius_rad * std::sqrt((k + 0.5) / n);
     const double phi = golden * k;
     const double x = std::tan(radius) * std::cos(phi), y = std::tan(radius) * std::sin(phi);
-    Vec3d s{c[0] + x * u[0] + y * v[0], c[1] + x * u[1] + y * v[1], c[2] + x * u[2] + y * v[2]};
+    Vec3d s{c.x + x * u.x + y * v.x, c.y + x * u.y + y * v.y, c.z + x * u.z + y * v.z};
     const double len = std::sqrt(dot(s, s));
-    out[static_cast<std::size_t>(k)] = {s[0] / len, s[1] / len, s[2] / len};
+    out[static_cast<std::size_t>(k)] = {s.x / len, s.y / len, s.z / len};
   }
   return out;
 }
@@ -137,7 +132,7 @@ std::vector<CanvasVec> close_up_light_directions(const CloseUpLight& light) {
 void validate(const CloseUpLight& light, const CloseUpView& view) {
   check_unit(light.toward_light, "light.toward_light");
   check_unit(view.toward_eye, "view.toward_eye");
-  if (!(view.toward_eye[2] > 0.0)) {
+  if (!(view.toward_eye.z > 0.0)) {
     throw std::invalid_argument("view.toward_eye: must look at the canvas from above (z > 0)");
   }
   if (!(light.sky_fraction >= 0.0 && light.sky_fraction <= 1.0)) {
@@ -147,7 +142,7 @@ void validate(const CloseUpLight& light, const CloseUpView& view) {
     throw std::invalid_argument("light.angular_radius_rad: expected 0..1 rad");
   }
   if (light.shadow_rays < 1) throw std::invalid_argument("light.shadow_rays: expected >= 1");
-  if (light.toward_light[2] <= 0.0 && light.sky_fraction <= 0.0) {
+  if (light.toward_light.z <= 0.0 && light.sky_fraction <= 0.0) {
     throw std::invalid_argument("light: the canvas gets no light (below the horizon, no sky)");
   }
 }
@@ -173,7 +168,7 @@ void crack_close_up_cell(const paintcore::CrackRecord& record, double cell_mm, b
   const Profile profile{shape, dims.depth_mm, dims.half_width_mm};
   const bool swap_xy = cracks::is_groove(shape) && groove_along_x;
   const Vec3d eye = to_cavity(view.toward_eye, swap_xy);
-  const Vec3d down{-eye[0], -eye[1], -eye[2]};
+  const Vec3d down{-eye.x, -eye.y, -eye.z};
   std::vector<Vec3d> suns;
   for (const CanvasVec& s : close_up_light_directions(light)) suns.push_back(to_cavity(s, swap_xy));
 
@@ -213,7 +208,7 @@ void crack_close_up_cell(const paintcore::CrackRecord& record, double cell_mm, b
 
 CloseUpIrradiance close_up_irradiance(const CloseUpLight& light) {
   // E_sky + E_sun cos(z) = 1 when the light is up; below the horizon only the sky lights.
-  const double sun_z = light.toward_light[2];
+  const double sun_z = light.toward_light.z;
   if (sun_z <= 0.0) return {1.0, 0.0};
   return {light.sky_fraction, (1.0 - light.sky_fraction) / sun_z};
 }

@@ -31,7 +31,7 @@ void sparkle_tile(benchmark::State& state, float concentration) {
   std::vector<float> c(cells, concentration), thickness(cells, 0.05f), normals;
   for (int y = 0; y < kTile; ++y) {
     for (int x = 0; x < kTile; ++x) {
-      const Vec3 n = normalize(Vec3{0.05 * std::sin(0.3 * x), 0.05 * std::cos(0.2 * y), 1});
+      const Vec3 n = normalized(Vec3{0.05 * std::sin(0.3 * x), 0.05 * std::cos(0.2 * y), 1});
       normals.insert(normals.end(), {float(n.x), float(n.y), float(n.z)});
     }
   }
@@ -50,7 +50,7 @@ void sparkle_tile(benchmark::State& state, float concentration) {
   sun.spectral.assign(kNodes.size(), 1.0);
   const Light lights[] = {sun};
   View view;
-  view.direction = normalize(Vec3{-0.3, 0.1, 1});
+  view.direction = normalized(Vec3{-0.3, 0.1, 1});
   std::vector<float> out(cells * kNodes.size());
   for (auto _ : state) {
     benchmark::DoNotOptimize(renderer().add_tile(tile, lights, view, out));

@@ -31,9 +31,9 @@ TEST(SparkleMath, UnitIndexLeavesDirectionsAndSizesUnchanged) {
 TEST(SparkleMath, RefractionObeysSnell) {
   const double eta = 1.5;
   // A tilted surface normal, to exercise the vector form of Eq. 8.
-  const Vec3 n = normalize(Vec3{0.2, -0.1, 1.0});
+  const Vec3 n = normalized(Vec3{0.2, -0.1, 1.0});
   for (double polar : {0.1, 0.6, 1.3}) {
-    const Vec3 V = normalize(direction(polar, 2.0) + n);
+    const Vec3 V = normalized(direction(polar, 2.0) + n);
     const Vec3 v = refract_into_binder(V, n, eta);
     EXPECT_NEAR(length(v), 1.0, 1e-12);
     const double cos_out = dot(V, n), cos_in = dot(v, n);

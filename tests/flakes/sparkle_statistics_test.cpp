@@ -137,7 +137,7 @@ double analytic_mean_radiance(const SparkleRenderer& r, double thickness_mm) {
   const double view_in = std::asin(std::sin(view_polar) / eta);
   const Vec3 v_light{std::sin(light_in), 0, std::cos(light_in)};
   const Vec3 v_view{-std::sin(view_in), 0, std::cos(view_in)};
-  const Vec3 nf = normalize(v_light + v_view);
+  const Vec3 nf = normalized(v_light + v_view);
   const double beta = std::acos(nf.z), cos_alpha = dot(nf, v_light);
   // P(β) of a Gaussian normalised over the hemisphere, by a fine midpoint rule.
   const double sd = paint.orientation.gaussian_sd_rad;

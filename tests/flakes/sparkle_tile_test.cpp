@@ -45,7 +45,7 @@ struct TileData {
     thickness.assign(n * n, 0.05f);
     for (int y = 0; y < n; ++y) {
       for (int x = 0; x < n; ++x) {
-        const Vec3 normal = normalize(Vec3{0.05 * std::sin(0.3 * x), 0.05 * std::cos(0.2 * y), 1});
+        const Vec3 normal = normalized(Vec3{0.05 * std::sin(0.3 * x), 0.05 * std::cos(0.2 * y), 1});
         normals.insert(normals.end(), {float(normal.x), float(normal.y), float(normal.z)});
       }
     }

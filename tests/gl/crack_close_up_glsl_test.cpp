@@ -58,12 +58,12 @@ double compare(const FullscreenPass& pass, const paintcore::CrackRecord& record,
   render::crack_close_up_cell(record, kCellMm, false, kP, surface, wall, light, view, cpu);
 
   const double G = render::crack_optics(record, kCellMm).G;
-  const double sun_z = light.toward_light[2];
+  const double sun_z = light.toward_light.z;
   const double e_sky = sun_z > 0.0 ? light.sky_fraction : 1.0;
   const double e_sun = sun_z > 0.0 ? (1.0 - light.sky_fraction) / sun_z : 0.0;
   std::vector<float> suns;
   for (const auto& s : render::close_up_light_directions(light)) {
-    for (double c : s) suns.push_back(static_cast<float>(c));
+    for (double c : {s.x, s.y, s.z}) suns.push_back(static_cast<float>(c));
   }
 
   Framebuffer target(kP, kP, TexelFormat::kRGBA32F);
@@ -75,8 +75,8 @@ double compare(const FullscreenPass& pass, const paintcore::CrackRecord& record,
   glUniform1f(program.uniform("R"), record.half_width_mm);
   glUniform1f(program.uniform("cell_mm"), static_cast<float>(kCellMm));
   glUniform1i(program.uniform("P"), kP);
-  glUniform3f(program.uniform("eye"), static_cast<float>(view.toward_eye[0]),
-              static_cast<float>(view.toward_eye[1]), static_cast<float>(view.toward_eye[2]));
+  glUniform3f(program.uniform("eye"), static_cast<float>(view.toward_eye.x),
+              static_cast<float>(view.toward_eye.y), static_cast<float>(view.toward_eye.z));
   glUniform3fv(program.uniform("suns"), light.shadow_rays, suns.data());
   glUniform1i(program.uniform("rays"), light.shadow_rays);
   glUniform1f(program.uniform("e_sky"), static_cast<float>(e_sky));

@@ -9,30 +9,11 @@
 namespace impasto::cracks {
 
 std::string_view shape_name(CavityShape shape) {
-  switch (shape) {
-    case CavityShape::ArcGroove:
-      return "arc-groove";
-    case CavityShape::VGroove:
-      return "v-groove";
-    case CavityShape::BoxGroove:
-      return "box-groove";
-    case CavityShape::SpherePit:
-      return "sphere-pit";
-    case CavityShape::ConePit:
-      return "cone-pit";
-    case CavityShape::CylinderPit:
-      return "cylinder-pit";
-  }
-  return "unknown";
+  return util::name_of(kCavityShapeNames, shape);
 }
 
 CavityShape shape_from_name(std::string_view name) {
-  for (CavityShape s : kAllShapes) {
-    if (shape_name(s) == name) return s;
-  }
-  throw std::runtime_error("unknown cavity shape '" + std::string(name) +
-                           "' (expected arc-groove, v-groove, box-groove, sphere-pit, "
-                           "cone-pit or cylinder-pit)");
+  return util::parse_name(kCavityShapeNames, name, "cavity shape");
 }
 
 void validate(const CavityDims& dims) {

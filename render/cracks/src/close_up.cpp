@@ -14,13 +14,6 @@ using detail::Vec3;
 namespace {
 constexpr double kPi = std::numbers::pi;
 
-Vec3 to_vec(const Vec3d& a) {
-  return {a[0], a[1], a[2]};
-}
-Vec3d to_array(const Vec3& a) {
-  return {a.x, a.y, a.z};
-}
-
 // Point on the profile of a groove section (x >= 0 half, deepest point at s = 0).
 CavityWallPoint groove_point(CavityShape shape, double L, double R, double s, double sign) {
   switch (shape) {
@@ -45,9 +38,9 @@ CavityWallPoint groove_point(CavityShape shape, double L, double R, double s, do
 
 // Hottel's 2-D view factor from a strip element to the opening segment [-R, R] x {0}.
 double groove_view_factor(const CavityWallPoint& p, double R) {
-  const double nx = p.normal[0], nz = p.normal[2];
+  const double nx = p.normal.x, nz = p.normal.z;
   auto sine_from_normal = [&](double rim_x) {
-    const double dx = rim_x - p.position[0], dz = -p.position[2];
+    const double dx = rim_x - p.position.x, dz = -p.position.z;
     const double len = std::hypot(dx, dz);
     if (len == 0.0) return 0.0;
     // sin of the angle from the normal, signed about the y axis.
@@ -62,7 +55,7 @@ double groove_view_factor(const CavityWallPoint& p, double R) {
 // rule converges geometrically except at the rim itself.
 double disc_view_factor(const CavityWallPoint& p, double R) {
   constexpr int kNodes = 512;
-  const Vec3 n = to_vec(p.normal), o = to_vec(p.position);
+  const Vec3 n = p.normal, o = p.position;
   double sum = 0.0;
   for (int i = 0; i < kNodes; ++i) {
     const double phi = 2.0 * kPi * (i + 0.5) / kNodes;
@@ -126,8 +119,8 @@ CavityWallPoint cavity_wall_point(CavityShape shape, const CavityDims& dims, dou
       break;
   }
   const double c = std::cos(side), sn = std::sin(side);
-  return {{half.position[0] * c, half.position[0] * sn, half.position[2]},
-          {half.normal[0] * c, half.normal[0] * sn, half.normal[2]}};
+  return {{half.position.x * c, half.position.x * sn, half.position.z},
+          {half.normal.x * c, half.normal.x * sn, half.normal.z}};
 }
 
 double opening_view_factor(CavityShape shape, const CavityDims& dims, const CavityWallPoint& p) {
@@ -136,9 +129,9 @@ double opening_view_factor(CavityShape shape, const CavityDims& dims, const Cavi
   if (is_groove(shape)) return groove_view_factor(p, R);
   if (shape == CavityShape::SpherePit) return R * R / (R * R + L * L);  // same for all points
   if (shape == CavityShape::CylinderPit) {
-    const double depth = -p.position[2];
-    const double rho = std::hypot(p.position[0], p.position[1]);
-    if (p.normal[2] > 0.5) {
+    const double depth = -p.position.z;
+    const double rho = std::hypot(p.position.x, p.position.y);
+    if (p.normal.z > 0.5) {
       // Bottom: element parallel to a disc, offset rho from its axis, at height L.
       const double h2 = depth * depth, a2 = R * R, r2 = rho * rho;
       return 0.5 *
@@ -175,7 +168,7 @@ double first_reflection_view_factor(CavityShape shape, const CavityDims& dims, d
   auto f_at = [&](Vec3 entry) {
     const auto wall = geo.trace(entry, beam);
     if (!wall) return 1.0;
-    return opening_view_factor(shape, dims, {to_array(wall->position), to_array(wall->normal)});
+    return opening_view_factor(shape, dims, {wall->position, wall->normal});
   };
   double sum = 0.0;
   if (is_groove(shape)) {
@@ -202,14 +195,13 @@ double cavity_point_radiosity(CavityShape shape, const CavityDims& dims, const C
   const ViewFactors vf = view_factors(shape, dims);
   const CavityAreas areas = cavity_areas(shape, dims);
   const double f_point = opening_view_factor(shape, dims, p);
-  const Vec3 sun = to_vec(light.sun_direction);
+  const Vec3 sun = light.sun_direction;
   const double sun_cos_canvas = std::max(sun.z, 0.0);
   double sun_direct = 0.0;
-  const double cos_wall = dot(to_vec(p.normal), sun);
+  const double cos_wall = dot(p.normal, sun);
   if (cos_wall > 0.0 && sun_cos_canvas > 0.0) {
     const detail::CavityGeometry geo(shape, dims);
-    const Vec3 start =
-        to_vec(p.position) + (1e-9 * (dims.depth_mm + dims.half_width_mm)) * to_vec(p.normal);
+    const Vec3 start = p.position + (1e-9 * (dims.depth_mm + dims.half_width_mm)) * p.normal;
     if (!geo.trace(start, sun)) sun_direct = light.sun_irradiance * cos_wall;
   }
   const double flux_per_wall_area =

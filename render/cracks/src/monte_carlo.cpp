@@ -125,9 +125,8 @@ std::array<double, 2> estimate_opening_view_factor(CavityShape shape, const Cavi
                                                    const CavityWallPoint& point,
                                                    std::uint64_t samples, std::uint64_t seed) {
   const CavityGeometry geo(shape, dims);
-  const Vec3 n{point.normal[0], point.normal[1], point.normal[2]};
-  const Vec3 start = Vec3{point.position[0], point.position[1], point.position[2]} +
-                     (1e-7 * (dims.depth_mm + dims.half_width_mm)) * n;
+  const Vec3 n = point.normal;
+  const Vec3 start = point.position + (1e-7 * (dims.depth_mm + dims.half_width_mm)) * n;
   std::uint64_t escaped = 0;
   for (std::uint64_t i = 0; i < samples; ++i) {
     const UniformBlock u = uniforms(seed, kStreamPoint, i, 0);

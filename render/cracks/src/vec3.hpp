@@ -1,32 +1,9 @@
 #pragma once
-// A minimal 3-vector for the cavity ray tracer (mm).
-#include <cmath>
+// The cavity ray tracer's 3-vector (mm): util's, the same type as the public Vec3d.
+#include <impasto/util/vec3.hpp>
 
 namespace impasto::cracks::detail {
 
-struct Vec3 {
-  double x = 0, y = 0, z = 0;
-};
-inline Vec3 operator+(Vec3 a, Vec3 b) {
-  return {a.x + b.x, a.y + b.y, a.z + b.z};
-}
-inline Vec3 operator-(Vec3 a, Vec3 b) {
-  return {a.x - b.x, a.y - b.y, a.z - b.z};
-}
-inline Vec3 operator*(double s, Vec3 a) {
-  return {s * a.x, s * a.y, s * a.z};
-}
-inline double dot(Vec3 a, Vec3 b) {
-  return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-inline Vec3 cross(Vec3 a, Vec3 b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-inline double length(Vec3 a) {
-  return std::sqrt(dot(a, a));
-}
-inline Vec3 normalized(Vec3 a) {
-  return (1.0 / length(a)) * a;
-}
+using Vec3 = util::Vec3<double>;
 
 }  // namespace impasto::cracks::detail

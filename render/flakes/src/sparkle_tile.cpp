@@ -74,7 +74,7 @@ std::size_t SparkleRenderer::add_tile(const FlakeTile& tile, std::span<const Lig
       if (!(n.z > 0.0) || !std::isfinite(length(n))) {
         throw std::runtime_error("flake tile: normal must point up and be finite" + where(i));
       }
-      cell.normal = normalize(n);
+      cell.normal = normalized(n);
     }
     cell.area_mm2 = tile.cell_size_mm * tile.cell_size_mm;
     cell.flake_concentration = tile.concentration[i];

@@ -68,7 +68,7 @@ bool SparkleRenderer::prepare(const FlakeCell& cell, const Light& light, const V
   Vec3 to_light;
   double beam = 1.0;  // scales light.spectral to the irradiance normal to the beam
   if (light.kind == Light::Kind::directional) {
-    to_light = -normalize(light.direction);
+    to_light = -normalized(light.direction);
   } else {
     const Vec3 d = light.position_mm - cell.center_mm;
     const double distance2 = dot(d, d);
@@ -76,11 +76,11 @@ bool SparkleRenderer::prepare(const FlakeCell& cell, const Light& light, const V
     beam = 1.0 / distance2;
     if (light.kind == Light::Kind::spot) {
       beam *= smoothstep(std::cos(light.spot_outer_rad), std::cos(light.spot_inner_rad),
-                         -dot(normalize(light.direction), to_light));
+                         -dot(normalized(light.direction), to_light));
     }
   }
-  const Vec3 to_view =
-      view.orthographic ? normalize(view.direction) : normalize(view.position_mm - cell.center_mm);
+  const Vec3 to_view = view.orthographic ? normalized(view.direction)
+                                         : normalized(view.position_mm - cell.center_mm);
   const Vec3 n = cell.normal;
   if (!(n.z > 0.0)) return false;  // a surface facing away from the viewer's side of the canvas
   const double cos_light = dot(n, to_light), cos_view = dot(n, to_view);

@@ -111,9 +111,9 @@ void CrackTexture::bind_close_up(const ShaderProgram& program,
   std::vector<float> suns, swapped;
   for (const render::CanvasVec& s : render::close_up_light_directions(light)) {
     suns.insert(suns.end(),
-                {static_cast<float>(s[0]), static_cast<float>(s[1]), static_cast<float>(s[2])});
+                {static_cast<float>(s.x), static_cast<float>(s.y), static_cast<float>(s.z)});
     swapped.insert(swapped.end(),
-                   {static_cast<float>(s[1]), static_cast<float>(s[0]), static_cast<float>(s[2])});
+                   {static_cast<float>(s.y), static_cast<float>(s.x), static_cast<float>(s.z)});
   }
   const int rays = static_cast<int>(suns.size() / 3);
   glUniform3fv(program.uniform("close_up_suns"), rays, suns.data());

@@ -6,7 +6,6 @@
 // shadow from the light's disc cut by the rim, and Gouffe's interreflected light. Pixels
 // outside any opening keep their cell's colour. Reflectances are relative to the canvas's
 // irradiance, so a flat white cell reads 1 and the far view's blend is the cell's mean.
-#include <array>
 #include <filesystem>
 #include <span>
 #include <string_view>
@@ -17,11 +16,12 @@
 #include "impasto/paintcore/painting.hpp"
 #include "impasto/render/image.hpp"
 #include "impasto/render/render_settings.hpp"
+#include "impasto/util/vec3.hpp"
 
 namespace impasto::render {
 
 // Canvas frame: x along the columns, y down the rows, z out of the canvas (unit vectors).
-using CanvasVec = std::array<double, 3>;
+using CanvasVec = util::Vec3<double>;
 
 struct CloseUpLight {
   CanvasVec toward_light{0.0, 0.0, 1.0};  // centre of the light's disc; z > 0 lights the canvas

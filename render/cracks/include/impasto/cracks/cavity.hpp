@@ -9,6 +9,8 @@
 #include <cstdint>
 #include <string_view>
 
+#include "impasto/util/enum_names.hpp"
+
 namespace impasto::cracks {
 
 enum class CavityShape : std::uint8_t {
@@ -28,9 +30,18 @@ constexpr bool is_groove(CavityShape s) {
   return s == CavityShape::ArcGroove || s == CavityShape::VGroove || s == CavityShape::BoxGroove;
 }
 
-// "arc-groove", "v-groove", "box-groove", "sphere-pit", "cone-pit", "cylinder-pit".
+// Their spellings (--shape), in kAllShapes' order.
+inline constexpr util::EnumNames<CavityShape, 6> kCavityShapeNames{
+    {{CavityShape::ArcGroove, "arc-groove"},
+     {CavityShape::VGroove, "v-groove"},
+     {CavityShape::BoxGroove, "box-groove"},
+     {CavityShape::SpherePit, "sphere-pit"},
+     {CavityShape::ConePit, "cone-pit"},
+     {CavityShape::CylinderPit, "cylinder-pit"}}};
+
+// The name of kCavityShapeNames.
 std::string_view shape_name(CavityShape shape);
-// Inverse of shape_name; throws std::runtime_error naming the unknown text.
+// Inverse of shape_name; throws std::runtime_error naming the unknown text and the choices.
 CavityShape shape_from_name(std::string_view name);
 
 // Size of a cavity: depth L below the opening and half-width R of the opening (mm).

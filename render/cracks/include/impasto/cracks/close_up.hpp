@@ -2,13 +2,13 @@
 // Close-up shading of points inside a cavity: where a wall point is, how much of the sky it
 // sees through the opening (its own view factor), and its radiosity under sky and sun with
 // the interreflections of Gouffé's uniform-wall assumption.
-#include <array>
+#include <impasto/util/vec3.hpp>
 
 #include "impasto/cracks/cavity.hpp"
 
 namespace impasto::cracks {
 
-using Vec3d = std::array<double, 3>;  // mm, opening at z = 0, cavity below
+using Vec3d = util::Vec3<double>;  // mm, opening at z = 0, cavity below
 
 struct CavityWallPoint {
   Vec3d position{};

@@ -39,7 +39,7 @@ struct SpecularFlake {
 };
 
 inline SpecularFlake specular_flake(Vec3 v_view, Vec3 v_light, Vec3 n) {
-  const Vec3 nf = normalize(v_view + v_light);
+  const Vec3 nf = normalized(v_view + v_light);
   return {nf, dot(nf, v_light), dot(nf, n)};
 }
 
