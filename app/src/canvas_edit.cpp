@@ -1,0 +1,84 @@
+#include "canvas_edit.hpp"
+
+#include <cstdio>
+#include <stdexcept>
+
+#include "impasto/render/relief_maps.hpp"
+#include "impasto/render/render_painting.hpp"
+
+namespace impasto::app {
+
+std::pair<int, int> parse_size_cells(const std::string& text, const std::string& option) {
+  int width = 0, height = 0;
+  char x = 0, extra = 0;
+  if (std::sscanf(text.c_str(), "%d%c%d%c", &width, &x, &height, &extra) != 3 ||
+      (x != 'x' && x != 'X') || width < 1 || height < 1 || width > paintcore::kMaxCanvasCells ||
+      height > paintcore::kMaxCanvasCells)
+    throw std::runtime_error(option + " " + text + ": expected WIDTHxHEIGHT in cells, each 1.." +
+                             std::to_string(paintcore::kMaxCanvasCells));
+  return {width, height};
+}
+
+CanvasEditResult edit_canvas(paintcore::Painting& painting, const CanvasEdit& edit) {
+  CanvasEditResult result;
+  result.old_width = painting.canvas().width_cells();
+  result.old_height = painting.canvas().height_cells();
+  const auto add_cut = [&](const paintcore::PaintTotals& cut) {
+    result.cut.volume += cut.volume;
+    if (result.cut.pigment.size() < cut.pigment.size())
+      result.cut.pigment.resize(cut.pigment.size());
+    for (std::size_t s = 0; s < cut.pigment.size(); ++s) result.cut.pigment[s] += cut.pigment[s];
+  };
+  if (edit.crop) {
+    const render::CellRegion& r = *edit.crop;
+    if (r.x < 0 || r.y < 0 || r.w < 1 || r.h < 1 || r.x + r.w > result.old_width ||
+        r.y + r.h > result.old_height)
+      throw std::runtime_error(
+          "--crop " + std::to_string(r.x) + "," + std::to_string(r.y) + "," + std::to_string(r.w) +
+          "," + std::to_string(r.h) + ": the rectangle must lie inside the " +
+          std::to_string(result.old_width) + "x" + std::to_string(result.old_height) + " canvas");
+    add_cut(painting.reframe_canvas(paintcore::crop_frame(r.x, r.y, r.w, r.h)));
+  }
+  if (edit.size) {
+    const paintcore::Canvas& c = painting.canvas();
+    add_cut(painting.reframe_canvas(paintcore::anchored_frame(
+        c.width_cells(), c.height_cells(), edit.size->first, edit.size->second, edit.anchor)));
+  }
+  result.width = painting.canvas().width_cells();
+  result.height = painting.canvas().height_cells();
+  return result;
+}
+
+std::string CanvasEditResult::summary(const paintcore::Painting& painting) const {
+  char text[160];
+  std::snprintf(text, sizeof text, "canvas %dx%d -> %dx%d cells; paint cut away: %.4g mm^3",
+                old_width, old_height, width, height, cut.volume);
+  std::string out = text;
+  std::string parts;
+  for (std::size_t s = 0; s < cut.pigment.size() && s < painting.pigment_slots().size(); ++s) {
+    if (cut.pigment[s] <= 0.0) continue;
+    std::snprintf(text, sizeof text, "%s%s %.4g", parts.empty() ? "" : ", ",
+                  painting.pigment_slots()[s].c_str(), cut.pigment[s]);
+    parts += text;
+  }
+  return parts.empty() ? out : out + " (" + parts + ")";
+}
+
+void export_painting(const paintcore::Painting& painting, const ExportRequest& request) {
+  if (request.image.empty() && request.height_map.empty() && request.normal_map.empty())
+    throw std::runtime_error("export: nothing to write (give -o, --height-map or --normal-map)");
+  std::optional<paintcore::Painting> refined;
+  if (request.scale != 1) refined.emplace(painting.refined(request.scale));
+  const paintcore::Painting& source = refined ? *refined : painting;
+  if (!request.image.empty()) {
+    render::check_render_memory(source.canvas(), request.image.string());
+    render::render_painting_to_file(source, render::RenderSettings{}, request.image);
+  }
+  if (!request.height_map.empty() || !request.normal_map.empty()) {
+    const render::HeightGrid heights = render::surface_heights(source.canvas());
+    if (!request.height_map.empty()) render::write_height_map(request.height_map, heights);
+    if (!request.normal_map.empty()) render::write_normal_map(request.normal_map, heights);
+  }
+}
+
+}  // namespace impasto::app

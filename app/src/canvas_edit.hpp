@@ -1,0 +1,44 @@
+#pragma once
+// The work of `impasto edit` (the canvas's size) and `impasto export` (an image at a larger
+// scale, the height and normal maps), apart from their options so that tests call them.
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "impasto/paintcore/canvas_reframe.hpp"
+#include "impasto/paintcore/painting.hpp"
+#include "impasto/render/crack_close_up.hpp"
+
+namespace impasto::app {
+
+struct CanvasEdit {
+  std::optional<render::CellRegion> crop;   // first: the rectangle kept
+  std::optional<std::pair<int, int>> size;  // then: the new size, width x height in cells
+  paintcore::CanvasAnchor anchor = paintcore::CanvasAnchor::kCenter;  // where the old canvas sits
+};
+
+struct CanvasEditResult {
+  int old_width = 0, old_height = 0, width = 0, height = 0;
+  paintcore::PaintTotals cut;  // mm^3 cut away, by slot
+  // "200x150 -> 100x90 cells; cut away 1.25 mm^3 of paint (Burnt Sienna 0.6, ...)"
+  std::string summary(const paintcore::Painting& painting) const;
+};
+
+// Applies the crop, then the resize; each is one undo step. Throws naming the field.
+CanvasEditResult edit_canvas(paintcore::Painting& painting, const CanvasEdit& edit);
+
+// "WIDTHxHEIGHT" in cells; throws naming `option` and the text.
+std::pair<int, int> parse_size_cells(const std::string& text, const std::string& option);
+
+struct ExportRequest {
+  int scale = 1;                     // 1, 2 or 4 (any of 1..16): pixels per cell
+  std::filesystem::path image;       // the render (.png or .exr), or empty
+  std::filesystem::path height_map;  // .png (16-bit) or .exr (float mm), or empty
+  std::filesystem::path normal_map;  // .png, or empty
+};
+
+// Writes what the request names; the maps at the same scale as the image (their pixel is a
+// cell of the refined canvas: Painting::refined). Throws std::runtime_error naming the file.
+void export_painting(const paintcore::Painting& painting, const ExportRequest& request);
+
+}  // namespace impasto::app

@@ -1,0 +1,55 @@
+// impasto export: an image at a larger scale with a smooth relief, and the relief as data for
+// 3D and print — the height map and the normal map (canvas_edit.hpp does the work).
+#include <impasto/paintcore/painting.hpp>
+
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "canvas_edit.hpp"
+#include "command.hpp"
+
+// A namespace of its own: the command files are compiled together (unity build).
+namespace impasto::app::export_cmd {
+namespace {
+
+struct ExportArgs {
+  std::string painting;
+  ExportRequest request;
+  std::string image, height_map, normal_map;
+};
+
+const CommandRegistrar registrar("export", [](CLI::App& root) {
+  CLI::App* cmd = root.add_subcommand(
+      "export", "Write a painting at a larger scale, its height map and its normal map");
+  auto args = std::make_shared<ExportArgs>();
+  cmd->add_option("painting", args->painting, "The .impasto painting file")->required();
+  cmd->add_option("--scale", args->request.scale,
+                  "Pixels per cell (1, 2, 4, ... 16): heights and paint interpolated smoothly "
+                  "(Catmull-Rom) and shaded at the finer grid; the maps too")
+      ->check(CLI::Range(1, 16))
+      ->capture_default_str();
+  cmd->add_option("-o,--out", args->image,
+                  "The render (.png display-encoded, .exr linear), default light and settings "
+                  "(impasto render has them all)");
+  cmd->add_option("--height-map", args->height_map,
+                  "The surface height in mm: .png (16-bit grey; offset, step and cell size in "
+                  "its tEXt chunks) or .exr (float mm)");
+  cmd->add_option("--normal-map", args->normal_map,
+                  "Tangent-space normals, OpenGL convention (+Y up): 8-bit RGB .png");
+  cmd->callback([args] {
+    ExportRequest request = args->request;
+    request.image = args->image;
+    request.height_map = args->height_map;
+    request.normal_map = args->normal_map;
+    const paintcore::Painting painting = paintcore::Painting::load(args->painting);
+    if (!painting.load_warning().empty())
+      std::cerr << "impasto: warning: " << painting.load_warning() << "\n";
+    export_painting(painting, request);
+    for (const std::string* file : {&args->image, &args->height_map, &args->normal_map})
+      if (!file->empty()) std::cout << "wrote " << *file << "\n";
+  });
+});
+
+}  // namespace
+}  // namespace impasto::app::export_cmd

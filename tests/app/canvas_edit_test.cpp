@@ -1,0 +1,102 @@
+// `impasto edit` (crop, resize) and `impasto export` (scale, height and normal maps), through
+// the registered commands as main() runs them.
+#include "canvas_edit.hpp"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+#include <CLI/CLI.hpp>
+
+#include <filesystem>
+#include <string>
+
+#include "command.hpp"
+#include "impasto/render/image.hpp"
+#include "impasto/render/relief_maps.hpp"
+
+namespace impasto::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+class CanvasEditCommand : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("impasto_canvas_edit_" + std::to_string(getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+    paintcore::Painting p({80, 60, 254.0, 1}, 1);
+    p.set_brush(paintcore::BrushSettings{"round", 2.0, 0.5});
+    p.load_brush({{"Burnt Sienna", 1.0}}, 20.0);
+    p.begin_stroke();
+    for (int i = 0; i < 12; ++i) {
+      paintcore::PenSample s;
+      s.x_mm = 0.5 + 0.5 * i;
+      s.y_mm = 3.0;
+      s.pressure = 0.8f;
+      s.buttons = paintcore::kPenTip;
+      p.stroke_to(s);
+    }
+    p.end_stroke();
+    p.save(painting());
+    original_hash_ = p.state_hash();
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path painting() const { return dir_ / "in.impasto"; }
+  fs::path file(const std::string& name) const { return dir_ / name; }
+  static void run(const std::string& args) {
+    CLI::App root{"impasto"};
+    add_registered_commands(root);
+    root.parse(args, false);
+  }
+
+  fs::path dir_;
+  std::uint64_t original_hash_ = 0;
+};
+
+TEST_F(CanvasEditCommand, CropThenResizeIsSavedWithItsUndo) {
+  run("edit " + painting().string() + " --crop 10,5,50,40 --size 70x70 --anchor top-left --save " +
+      file("out.impasto").string());
+  paintcore::Painting edited = paintcore::Painting::load(file("out.impasto"), 1);
+  EXPECT_EQ(edited.canvas().width_cells(), 70);
+  EXPECT_EQ(edited.canvas().height_cells(), 70);
+  EXPECT_GT(edited.wiped_totals().volume, 0.0);  // the stroke's start was cut away
+  // Reopened, two undos give the painting as it was.
+  ASSERT_TRUE(edited.undo());
+  EXPECT_EQ(edited.canvas().width_cells(), 50);
+  ASSERT_TRUE(edited.undo());
+  EXPECT_EQ(edited.state_hash(), original_hash_);
+}
+
+TEST_F(CanvasEditCommand, BadRequestsAreRefusedByName) {
+  const auto error = [&](const std::string& options) -> std::string {
+    try {
+      run("edit " + painting().string() + " " + options + " --save " + file("x.impasto").string());
+    } catch (const std::exception& e) {
+      return e.what();
+    }
+    return "no error";
+  };
+  EXPECT_NE(error("--crop 70,0,20,20").find("--crop"), std::string::npos);
+  EXPECT_NE(error("--size 20by20").find("--size"), std::string::npos);
+  EXPECT_NE(error("--size 20x20 --anchor middle").find("middle"), std::string::npos);
+  EXPECT_NE(error("").find("nothing to change"), std::string::npos);
+  EXPECT_FALSE(fs::exists(file("x.impasto")));
+}
+
+TEST_F(CanvasEditCommand, ExportWritesTheScaledImageAndTheMaps) {
+  run("export " + painting().string() + " --scale 2 -o " + file("x2.png").string() +
+      " --height-map " + file("h.png").string() + " --normal-map " + file("n.png").string());
+  const render::Image image = render::read_png(file("x2.png"));
+  EXPECT_EQ(image.width, 160);
+  EXPECT_EQ(image.height, 120);
+  const render::HeightGrid heights = render::read_height_map(file("h.png"));
+  EXPECT_EQ(heights.width, 160);
+  EXPECT_NEAR(heights.cell_mm, 0.05, 1e-12);
+  EXPECT_EQ(render::read_png(file("n.png")).width, 160);
+  EXPECT_THROW(run("export " + painting().string()), std::runtime_error);
+}
+
+}  // namespace
+}  // namespace impasto::app
