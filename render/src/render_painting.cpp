@@ -1,6 +1,7 @@
 #include "impasto/render/render_painting.hpp"
 
 #include "impasto/files/memory_budget.hpp"
+#include "impasto/render/subsurface.hpp"
 #include "impasto/render/tile_renderer.hpp"
 
 namespace impasto::render {
@@ -16,6 +17,9 @@ void check_render_memory(const paintcore::Canvas& canvas, const std::string& whe
 }
 
 Image render_painting(const paintcore::Painting& painting, const RenderSettings& settings) {
+  if (settings.surface.model == SurfaceModel::ghs && settings.surface.subsurface) {
+    return render_painting_with_subsurface(painting, settings);  // docs/surface.md
+  }
   TileRenderer renderer(settings, SpectralPalette(settings, painting));
   renderer.render_all(painting.canvas());
   return renderer.image();

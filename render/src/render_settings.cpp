@@ -51,6 +51,7 @@ void validate(const RenderSettings& s) {
           s.light_distance_mm, "in (0, 1e7]");
   require(s.spot_angle_deg > 0.0 && s.spot_angle_deg < 90.0, "spot_angle_deg", s.spot_angle_deg,
           "in (0, 90)");
+  validate(s.surface);
 }
 
 ReflectanceStorage parse_reflectance_storage(std::string_view text) {

@@ -19,6 +19,7 @@
 #include "impasto/render/relief_shading.hpp"
 #include "impasto/render/render_painting.hpp"
 #include "impasto/render/shading.hpp"
+#include "impasto/render/surface_shading.hpp"
 #include "impasto/util/fnv1a.hpp"
 
 namespace impasto::render {
@@ -72,6 +73,7 @@ TileRenderer::TileRenderer(const RenderSettings& settings, SpectralPalette palet
   validate(settings_);
   display_ = std::make_unique<DisplayTransform>(settings_.display);
   flakes_ = FlakeShading::create(settings_, palette_);
+  surface_ = SurfaceShading::create(settings_, palette_);
 }
 
 TileRenderer::TileRenderer(const RenderSettings& settings,
@@ -92,6 +94,7 @@ void TileRenderer::set_settings(const RenderSettings& settings, SpectralPalette 
   palette_ = std::move(palette);
   display_ = std::make_unique<DisplayTransform>(settings_.display);
   flakes_ = FlakeShading::create(settings_, palette_);
+  surface_ = SurfaceShading::create(settings_, palette_);
   needs_full_render_ = true;
 }
 
@@ -411,9 +414,13 @@ void TileRenderer::shade_region(const paintcore::Canvas& canvas, int tile_index,
       const shade::Shading shading =
           shade::blinn_phong(normal, to_light, ambient, material, visibility);
       float* out = &cache.rgb[3 * cell];
-      for (int ch = 0; ch < 3; ++ch) {
-        out[ch] =
-            xyz[ch] * shading.diffuse + white[static_cast<std::size_t>(ch)] * shading.specular;
+      if (surface_) {  // the ghs surface model (surface_shading.hpp) in place of Blinn-Phong
+        surface_->shade(normal, to_light, visibility, wet_volume * inverse_gloss, reflectance, out);
+      } else {
+        for (int ch = 0; ch < 3; ++ch) {
+          out[ch] =
+              xyz[ch] * shading.diffuse + white[static_cast<std::size_t>(ch)] * shading.specular;
+        }
       }
       if (flakes.active()) {
         flakes.add_cell(c, gx, gy, normal, field.at(gx, gy), wet_volume, out);

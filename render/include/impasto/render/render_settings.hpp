@@ -10,6 +10,7 @@
 #include "impasto/render/display.hpp"
 #include "impasto/render/shading.hpp"
 #include "impasto/render/spectral_sampling.hpp"
+#include "impasto/render/surface_settings.hpp"
 
 namespace impasto::render {
 
@@ -85,6 +86,9 @@ struct RenderSettings {
   // --- cracks (docs/cracks.md) ---
   bool cracks = true;  // off: cracked cells show their surface as if uncracked
   CrackModel crack_model = CrackModel::Corrected;
+
+  // --- the surface's reflection and the light spread inside the paint (docs/surface.md) ---
+  SurfaceSettings surface;
 
   // --- storage and threads ---
   ReflectanceStorage storage = ReflectanceStorage::float32;

@@ -19,6 +19,7 @@
 namespace impasto::render {
 
 class FlakeShading;
+class SurfaceShading;
 
 // What one update() did.
 struct RenderStats {
@@ -77,6 +78,7 @@ class TileRenderer {
   SpectralPalette palette_;
   std::unique_ptr<DisplayTransform> display_;
   std::unique_ptr<FlakeShading> flakes_;  // null when no pigment of the palette has flakes
+  std::unique_ptr<SurfaceShading> surface_;  // null for the Blinn-Phong surface model
   int width_ = 0, height_ = 0, tiles_x_ = 0, tiles_y_ = 0;
   double cell_mm_ = 0.0;
   bool needs_full_render_ = true;
