@@ -10,6 +10,7 @@
 #include <string>
 
 #include "command.hpp"
+#include "surface_options.hpp"
 
 // The GL path, when this build has it (render_gl's headers come with its target).
 #if __has_include(<impasto/render_gl/render_painting_gpu.hpp>)
@@ -49,6 +50,7 @@ struct RenderArgs {
   bool gpu = false;    // through the GLSL shaders, headless
   int zoom = 0;        // > 0: the close-up of --region at this many pixels per cell
   std::string region;  // "X,Y,W,H" in cells
+  SurfaceArgs surface;  // --surface, --medium, --varnish (docs/surface.md)
 };
 
 int parse_wavelengths(const std::string& text) {
@@ -104,6 +106,7 @@ void run(const RenderArgs& args) {
   settings.occlusion = !args.no_occlusion;
   settings.crack_model = parse_crack_model(args.crack_model);
   settings.ambient = args.ambient;
+  apply_surface_options(args.surface, settings);
   validate(settings);
   const paintcore::Painting painting = paintcore::Painting::load(args.painting, args.threads);
   check_render_memory(painting.canvas(), args.painting);
@@ -135,6 +138,7 @@ void run(const RenderArgs& args) {
 #endif
   } else {
     render_painting_to_file(painting, settings, args.out);
+    write_subsurface_map_if_asked(args.surface, painting, settings);
   }
   std::cout << "wrote " << args.out << " (" << painting.canvas().width_cells() << "x"
             << painting.canvas().height_cells() << ")\n";
@@ -205,6 +209,7 @@ const CommandRegistrar registrar("render", [](CLI::App& root) {
   cmd->add_option("--region", args->region, "Close-up region X,Y,W,H in cells (default: all)");
   cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)")
       ->check(CLI::Range(0, 1024));
+  add_surface_options(*cmd, args->surface);
   cmd->callback([args] { run(*args); });
 });
 
