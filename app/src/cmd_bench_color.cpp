@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "command.hpp"
+#include "vocabulary.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).
 namespace impasto::app::bench_color_cmd {
@@ -102,7 +103,7 @@ void run(const BenchColorArgs& args) {
                          {"mean_de00", r.mean_de00},
                          {"max_de00", r.max_de00},
                          {"ns_per_cell", r.ns_per_cell},
-                         {"storage", r.storage == ReflectanceStorage::float16 ? "half" : "float"},
+                         {"storage", util::name_of(kReflectanceStorageNames, r.storage)},
                          {"worst", r.worst_sample}};
       std::cout << row.dump() << "\n";
     }
@@ -126,8 +127,9 @@ void run(const BenchColorArgs& args) {
   for (const AccuracyResult& r : rows) {
     std::printf("%-6s %4s %-6s %10.4f %10.4f %12.1f  %s\n", r.light.c_str(),
                 r.nodes == 0 ? "full" : std::to_string(r.nodes).c_str(),
-                r.storage == ReflectanceStorage::float16 ? "half" : "float", r.mean_de00,
-                r.max_de00, r.ns_per_cell, r.nodes == 0 ? "-" : r.worst_sample.c_str());
+                std::string(util::name_of(kReflectanceStorageNames, r.storage)).c_str(),
+                r.mean_de00, r.max_de00, r.ns_per_cell,
+                r.nodes == 0 ? "-" : r.worst_sample.c_str());
   }
   if (training_rows.empty()) return;
   std::printf("\nTraining paints (%d; not the samples above): %s rule vs Gauss, build time\n",
@@ -145,16 +147,14 @@ const CommandRegistrar registrar("bench color", [](CLI::App& root) {
   CLI::App* cmd = bench->add_subcommand(
       "color", "CIEDE2000 of N-wavelength rendering vs the 1-nm spectrum, and ns per cell");
   auto args = std::make_shared<BenchColorArgs>();
-  cmd->add_flag("--json", args->json,
-                "One JSON object per row: n, light, mean_de00, max_de00, ns_per_cell (n = 0: "
-                "full spectrum), storage, worst");
+  add_json_flag(*cmd, args->json,
+                "one object a line: n, light, mean_de00, max_de00, ns_per_cell (n = 0: full "
+                "spectrum), storage, worst");
   cmd->add_option("--nodes", args->nodes, "Wavelength counts to test (1..16)")
       ->check(CLI::Range(1, 16));
   cmd->add_option("--lights", args->lights, "Lights (D65, A, F11, blackbody:K, FILE.csv)");
-  cmd->add_option("--weights", args->weights,
-                  "Nodes and XYZ weights (optimised and fitted: trained on the palette)")
-      ->capture_default_str()
-      ->check(CLI::IsMember(util::names_of(kNodeWeightsNames)));
+  add_choice_option(*cmd, "--weights", args->weights, kNodeWeightsNames,
+                    "Nodes and XYZ weights (optimised and fitted: trained on the palette)");
   cmd->add_option("--cells", args->timing_cells, "Cells per timing run (0: no timing)")
       ->check(CLI::Range(0, 10000000));
   cmd->add_flag("!--no-half", args->half, "Skip the half-storage rows");

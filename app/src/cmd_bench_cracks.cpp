@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "command.hpp"
+#include "vocabulary.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).
 namespace impasto::app::bench_cracks_cmd {
@@ -181,7 +182,7 @@ const CommandRegistrar registrar("bench cracks", [](CLI::App& root) {
   CLI::App* cmd = bench->add_subcommand(
       "cracks", "Gouffé cavity formula vs the Monte Carlo radiosity reference, per crack shape");
   auto args = std::make_shared<BenchCracksArgs>();
-  cmd->add_flag("--json", args->json, "Print every row as JSON");
+  add_json_flag(*cmd, args->json, "every row");
   cmd->add_option("--paths", args->paths, "Monte Carlo paths per geometry")
       ->check(CLI::Range(std::uint64_t{100}, std::uint64_t{100000000}));
   cmd->add_option("--seed", args->seed, "Monte Carlo seed");

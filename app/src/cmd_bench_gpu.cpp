@@ -12,10 +12,12 @@
 #include <chrono>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "command.hpp"
 #include "impasto/util/statistics.hpp"
+#include "vocabulary.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).
 namespace impasto::app::bench_gpu_cmd {
@@ -30,7 +32,7 @@ double ms_since(Clock::time_point start) {
 using util::median;
 
 struct BenchGpuArgs {
-  int size = 4096;  // canvas cells per side for the frame time
+  std::optional<CanvasSize> size;  // the frame time's canvas (default 4096x4096)
   int frames = 5;
   int viewport_w = 1400;  // the window's canvas view for the latency
   int viewport_h = 900;
@@ -41,8 +43,8 @@ struct BenchGpuArgs {
 
 // A painting with four pigment slots: the shader runs its per-slot loops for every pixel,
 // painted or not, so the frame time does not depend on where the paint is.
-paintcore::Painting striped_painting(int size, int slots) {
-  paintcore::Painting painting({size, size, 300.0, 1});
+paintcore::Painting striped_painting(int width, int height, int slots) {
+  paintcore::Painting painting({width, height, 300.0, 1});
   const char* names[] = {"Titanium White", "Ultramarine Blue", "Pyrrole Red",
                          "Hansa Yellow Opaque"};
   for (int s = 0; s < slots; ++s) painting.slot_for(names[s]);
@@ -50,15 +52,17 @@ paintcore::Painting striped_painting(int size, int slots) {
 }
 
 void run(const BenchGpuArgs& args) {
+  const CanvasSize canvas = args.size.value_or(CanvasSize{4096, 4096});
+  const int width = canvas.width, height = canvas.height;
   auto context = render_gl::create_headless_context();
   std::cout << "OpenGL: " << render_gl::gl_description() << " (" << context->backend_name()
             << ")\n";
   render::RenderSettings settings;
   settings.wavelengths = args.wavelengths;
 
-  // 1. A full frame of a size x size canvas, one pixel per cell.
+  // 1. A full frame of the canvas, one pixel per cell.
   {
-    paintcore::Painting painting = striped_painting(args.size, 4);
+    paintcore::Painting painting = striped_painting(width, height, 4);
     painting.set_brush({"round", 20.0, 0.5});
     painting.load_brush({{"Ultramarine Blue", 1.0}, {"Titanium White", 1.0}}, 400.0);
     painting.begin_stroke();
@@ -74,20 +78,20 @@ void run(const BenchGpuArgs& args) {
     painting.end_stroke();
     render::SpectralPalette palette(settings, painting.pigment_slots());
     const auto upload_start = Clock::now();
-    render_gl::CanvasRenderer renderer(args.size, args.size, settings, palette);
+    render_gl::CanvasRenderer renderer(width, height, settings, palette);
     renderer.upload_all(painting.canvas());
     glFinish();
     const double upload_ms = ms_since(upload_start);
-    render_gl::Framebuffer target(args.size, args.size, render_gl::TexelFormat::kRGBA8);
+    render_gl::Framebuffer target(width, height, render_gl::TexelFormat::kRGBA8);
     std::vector<double> frame_ms;
     for (int f = 0; f < args.frames; ++f) {
       target.bind();
       const auto start = Clock::now();
-      renderer.draw(render_gl::one_pixel_per_cell(args.size, args.size), args.size, args.size);
+      renderer.draw(render_gl::one_pixel_per_cell(width, height), width, height);
       glFinish();
       frame_ms.push_back(ms_since(start));
     }
-    std::cout << "frame " << args.size << "x" << args.size << " cells, " << args.wavelengths
+    std::cout << "frame " << width << "x" << height << " cells, " << args.wavelengths
               << " nodes, 4 pigments: median " << median(frame_ms) << " ms over " << args.frames
               << " frames (first upload of all tiles " << upload_ms << " ms)\n";
   }
@@ -96,13 +100,13 @@ void run(const BenchGpuArgs& args) {
   //    after a zoom re-shades every pixel; a pan by whole pixels moves the cached image and
   //    shades the strip it uncovers; a frame with nothing new copies the cache.
   {
-    paintcore::Painting painting = striped_painting(args.size, 4);
+    paintcore::Painting painting = striped_painting(width, height, 4);
     render::SpectralPalette palette(settings, painting.pigment_slots());
-    render_gl::CanvasRenderer renderer(args.size, args.size, settings, palette);
+    render_gl::CanvasRenderer renderer(width, height, settings, palette);
     renderer.upload_all(painting.canvas());
     render_gl::Framebuffer target(args.viewport_w, args.viewport_h, render_gl::TexelFormat::kRGBA8);
     render_gl::CanvasView view =
-        render_gl::fit_canvas(args.size, args.size, args.viewport_w, args.viewport_h);
+        render_gl::fit_canvas(width, height, args.viewport_w, args.viewport_h);
     render_gl::ShadedViewCache cache;
     std::vector<double> full_ms, coarse_ms, pan_ms, cached_ms;
     const auto timed_draw = [&](std::vector<double>& into,
@@ -122,8 +126,8 @@ void run(const BenchGpuArgs& args) {
       timed_draw(pan_ms, Detail::kFull);
       timed_draw(cached_ms, Detail::kFull);  // nothing new
     }
-    std::cout << "window view " << args.viewport_w << "x" << args.viewport_h << " of the "
-              << args.size << "x" << args.size << " canvas, fitted (" << view.pixels_per_cell
+    std::cout << "window view " << args.viewport_w << "x" << args.viewport_h << " of the " << width
+              << "x" << height << " canvas, fitted (" << view.pixels_per_cell
               << " px/cell): after a zoom or light change median " << median(full_ms)
               << " ms (first frame while moving, coarse: " << median(coarse_ms)
               << " ms), after a 10-px pan " << median(pan_ms) << " ms, unchanged "
@@ -198,14 +202,21 @@ void setup(CLI::App& root) {
   auto args = std::make_shared<BenchGpuArgs>();
   CLI::App* bench = command_group(root, "bench", "Measure performance");
   CLI::App* cmd = bench->add_subcommand("gpu", "Frame time and pen-to-frame latency on OpenGL");
-  cmd->add_option("--size", args->size, "Canvas cells per side for the frame time")
-      ->check(CLI::Range(64, 16384));
+  add_size_option(*cmd, args->size, "of the frame time's canvas (default 4096x4096)", true)
+      ->check(CLI::Validator(
+          [](std::string& text) {
+            const CanvasSize size = parse_canvas_size(text);
+            return size.width >= 64 && size.height >= 64 && size.width <= 16384 &&
+                           size.height <= 16384
+                       ? std::string()
+                       : std::string("64..16384 cells a side");
+          },
+          ""));
   cmd->add_option("--frames", args->frames, "Frames to time")->check(CLI::Range(1, 1000));
   cmd->add_option("--brush", args->brush_px, "Brush width in cells for the latency")
       ->check(CLI::Range(4, 1000));
   cmd->add_option("--samples", args->samples, "Pen samples to time")->check(CLI::Range(2, 10000));
-  cmd->add_option("--wavelengths", args->wavelengths, "Gaussian wavelength nodes")
-      ->check(CLI::Range(1, 16));
+  add_wavelengths_option(*cmd, args->wavelengths, false, "the shaders take 1..16");
   cmd->callback([args] { run(*args); });
 }
 

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "command.hpp"
+#include "vocabulary.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).
 namespace impasto::app::bench_marks_cmd {
@@ -33,6 +34,12 @@ std::vector<std::string> all_heads() {
     if (entry.path().extension() == ".brush") heads.push_back(entry.path().stem().string());
   std::sort(heads.begin(), heads.end());
   return heads;
+}
+
+std::vector<std::string> paint_body_names_list() {
+  std::vector<std::string> names;
+  for (const auto& info : paintcore::kPaintBodies) names.emplace_back(info.name);
+  return names;
 }
 
 void run(BenchMarksArgs args) {
@@ -91,16 +98,30 @@ const CommandRegistrar registrar("bench marks", [](CLI::App& root) {
   auto args = std::make_shared<BenchMarksArgs>();
   CLI::App* cmd = bench->add_subcommand(
       "marks", "What the standard stroke leaves for each head and paint body (docs/marks.md)");
-  cmd->add_flag("--json", args->json, "Print one JSON row per head and body");
+  add_json_flag(*cmd, args->json, "one object a line, per head and body");
   cmd->add_option("--head", args->heads, "Heads to measure (default: every head)");
-  cmd->add_option("--body", args->bodies, "Paint bodies: fluid, soft, heavy, paste (default: all)");
-  cmd->add_option("--dpi", args->stroke.dpi, "Canvas resolution")->check(CLI::Range(20.0, 1200.0));
-  cmd->add_option("--size", args->stroke.size_mm, "Head width (mm)")->check(CLI::Range(0.5, 50.0));
+  cmd->add_option("--body", args->bodies, "Paint bodies (default: all)")
+      ->check(CLI::IsMember(paint_body_names_list()));
+  add_dpi_option(*cmd, args->stroke.dpi)->check(CLI::Range(20.0, 1200.0));
+  cmd->add_option("--head-mm", args->stroke.size_mm, "Head width (mm)")
+      ->check(CLI::Range(0.5, 50.0))
+      ->capture_default_str();
+  add_deprecated_option(*cmd, "--size", "--head-mm", [args](const std::string& text) {
+    // --size is a canvas's WxH everywhere else; here it was the head's width in mm.
+    std::size_t used = 0;
+    double mm = 0.0;
+    try {
+      mm = std::stod(text, &used);
+    } catch (const std::exception&) {
+    }
+    if (used != text.size() || !(mm >= 0.5 && mm <= 50.0))
+      throw std::runtime_error("--size " + text + ": expected the head's width in mm, 0.5..50");
+    args->stroke.size_mm = mm;
+  });
   cmd->add_option("--spacing", args->stroke.spacing_mm, "Distance between pen samples (mm)")
       ->check(CLI::Range(0.001, 10.0));
-  cmd->add_option("--threads", args->stroke.threads, "Threads (0: all cores)");
-  cmd->add_option("--param", args->params,
-                  "Set a paint model constant, NAME=VALUE (docs/simulation.md); repeatable");
+  add_threads_option(*cmd, args->stroke.threads);
+  cmd->add_option("--param", args->params, vocabulary_help("--param"));
   cmd->callback([args] { run(*args); });
 });
 

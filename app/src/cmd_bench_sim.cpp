@@ -12,6 +12,7 @@
 
 #include "command.hpp"
 #include "impasto/util/statistics.hpp"
+#include "vocabulary.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).
 namespace impasto::app::bench_sim_cmd {
@@ -57,11 +58,11 @@ const CommandRegistrar registrar("bench sim", [](CLI::App& root) {
   auto args = std::make_shared<BenchSimArgs>();
   CLI::App* cmd = bench->add_subcommand(
       "sim", "Paint simulation speed: cell-steps and steps per second (median of runs)");
-  cmd->add_flag("--json", args->json, "Print one JSON row per brush size");
+  add_json_flag(*cmd, args->json, "one object a line, per brush size");
   cmd->add_option("--runs", args->runs, "Runs per brush size (the median is reported)");
   cmd->add_option("--steps", args->steps, "Timed simulation steps per run")
       ->check(CLI::Range(1, 1000000));
-  cmd->add_option("--threads", args->threads, "Threads (0: all cores)");
+  add_threads_option(*cmd, args->threads);
   cmd->add_option("--brush", args->brushes, "Brush sizes in cells across")
       ->check(CLI::Range(1, 1024));
   cmd->callback([args] { run(*args); });

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "command.hpp"
+#include "vocabulary.hpp"
 
 extern char** environ;
 
@@ -199,12 +200,12 @@ void setup(CLI::App& root) {
   cmd->add_option("--window-width", args->window_w, "Window width")->check(CLI::Range(320, 8192));
   cmd->add_option("--window-height", args->window_h, "Window height")->check(CLI::Range(240, 8192));
   cmd->add_option("--brush", args->brush_cells, "Brush width in cells")->check(CLI::Range(1, 4096));
-  cmd->add_option("--dpi", args->dpi, "Canvas cells per inch")->check(CLI::Range(1.0, 10000.0));
+  add_dpi_option(*cmd, args->dpi);
   cmd->add_option("--load", args->load_mm3, "Paint loaded on the brush, mm3 (Burnt Sienna)")
       ->check(CLI::Range(0.0, 10000.0));
   cmd->add_option("--circles", args->circles, "Circles drawn")->check(CLI::Range(1, 100));
   cmd->add_option("--moves", args->moves, "Mouse moves a circle")->check(CLI::Range(8, 10000));
-  cmd->add_flag("--json", args->json, "Print JSON");
+  add_json_flag(*cmd, args->json, "the latencies of each canvas");
   cmd->callback([args] { run(*args); });
 }
 

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "command.hpp"
+#include "vocabulary.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).
 namespace impasto::app::color_cmd {
@@ -64,10 +65,11 @@ const CommandRegistrar registrar("color", [](CLI::App& root) {
   CLI::App* x =
       group->add_subcommand("xyz", "X, Y, Z (white Y = 100) and L*a*b* of each reflectance column");
   x->add_option("spectrum", xyz->file, "Spectral CSV (docs/spectral-csv.md)")->required();
-  x->add_option("--illuminant,-i", xyz->illuminant,
-                "CIE illuminant (D65, A, F11, ...), blackbody:KELVIN or a light CSV")
-      ->capture_default_str();
-  x->add_flag("--json", xyz->json, "Print JSON instead of a table");
+  x->add_option("--light", xyz->illuminant, vocabulary_help("--light"))->capture_default_str();
+  add_json_flag(*x, xyz->json, "the light, its white and each column's XYZ and L*a*b*");
+  for (const char* old : {"--illuminant", "-i"})
+    add_deprecated_option(*x, old, "--light",
+                          [xyz](const std::string& light) { xyz->illuminant = light; });
   x->callback([xyz] { run_xyz(*xyz); });
 
   CLI::App* lights = group->add_subcommand("illuminants", "List the CIE illuminants shipped");

@@ -14,11 +14,13 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
 
 #include "command.hpp"
+#include "vocabulary.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).
 namespace impasto::app::cracks_cmd {
@@ -27,10 +29,10 @@ namespace {
 using namespace impasto::cracks;
 
 struct GenerateArgs {
-  int width = 1024, height = 1024;
+  std::optional<CanvasSize> size;  // of the uniform film; default 1024x1024
   double cell_mm = 0.1;
   double thickness_mm = 0.2;
-  std::string shape = "v-groove";
+  std::string shape{shape_name(CavityShape::VGroove)};
   std::string out;
   double max_depth_mm = 0.5;
   CraquelureSettings settings;
@@ -76,7 +78,8 @@ void run_generate(const GenerateArgs& args) {
     print_stats(map);
     return;
   }
-  CrackMap map(args.width, args.height, args.cell_mm);
+  const CanvasSize size = args.size.value_or(CanvasSize{1024, 1024});
+  CrackMap map(size.width, size.height, args.cell_mm);
   PaintFilm film;
   film.uniform_thickness_mm = args.thickness_mm;
   generate_craquelure(map, film, settings);
@@ -86,7 +89,7 @@ void run_generate(const GenerateArgs& args) {
 
 struct ImportArgs {
   std::string png;
-  std::string shape = "v-groove";
+  std::string shape{shape_name(CavityShape::VGroove)};
   CrackImageSettings settings;
   std::string painting, save;  // put the map into this painting, saved there
 };
@@ -109,7 +112,7 @@ void run_import(const ImportArgs& args) {
 struct BrushArgs {
   std::string painting, save;
   std::string points;  // "x,y x,y ..." in mm
-  std::string shape = "v-groove";
+  std::string shape{shape_name(CavityShape::VGroove)};
   double depth_mm = 0.1, half_width_mm = 0.05;
   int exposed_layer = -1;  // -1: the canvas ground
 };
@@ -148,7 +151,7 @@ void run_brush(const BrushArgs& args) {
 }
 
 struct CavityArgs {
-  std::string shape = "v-groove";
+  std::string shape{shape_name(CavityShape::VGroove)};
   double depth_mm = 0.2, half_width_mm = 0.05, rho0 = 0.5;
   CrackSceneLight light;  // the corrected model's light: sun zenith and sky share
 };
@@ -182,8 +185,8 @@ void run_table(const TableArgs& args) {
   const CavityTable table = CavityTable::measure(CavityTableGrid{}, parse_cavity_light(args.light),
                                                  args.paths, args.seed);
   std::ostringstream out;
-  out << "# impasto cracks table --light " << args.light << " --paths " << args.paths << " --seed "
-      << args.seed << "\n";
+  out << "# impasto cracks table --light-geometry " << args.light << " --paths " << args.paths
+      << " --seed " << args.seed << "\n";
   table.write_csv(out);
   files::write_file_atomically(args.out, out.str());
 }
@@ -193,8 +196,15 @@ const CommandRegistrar registrar("cracks", [](CLI::App& root) {
 
   auto gen = std::make_shared<GenerateArgs>();
   CLI::App* g = group->add_subcommand("generate", "Generate a craquelure crack map");
-  g->add_option("--width", gen->width, "Canvas width in cells")->check(CLI::Range(1, 1 << 17));
-  g->add_option("--height", gen->height, "Canvas height in cells")->check(CLI::Range(1, 1 << 17));
+  add_size_option(*g, gen->size, "of the uniform film (default 1024x1024)");
+  add_deprecated_option(*g, "--width", "--size WxH", [gen](const std::string& text) {
+    gen->size = CanvasSize{parse_canvas_size(text + "x1", "--width").width,
+                           gen->size.value_or(CanvasSize{1024, 1024}).height};
+  });
+  add_deprecated_option(*g, "--height", "--size WxH", [gen](const std::string& text) {
+    gen->size = CanvasSize{gen->size.value_or(CanvasSize{1024, 1024}).width,
+                           parse_canvas_size("1x" + text, "--height").height};
+  });
   g->add_option("--cell-mm", gen->cell_mm, "Cell size (mm)")->check(CLI::PositiveNumber);
   g->add_option("--thickness-mm", gen->thickness_mm, "Dry paint film thickness (mm)")
       ->check(CLI::NonNegativeNumber);
@@ -205,14 +215,15 @@ const CommandRegistrar registrar("cracks", [](CLI::App& root) {
       ->check(CLI::NonNegativeNumber);
   g->add_option("--jitter", gen->settings.jitter, "Island jitter, 0..1")
       ->check(CLI::Range(0.0, 1.0));
-  g->add_option("--shape", gen->shape, "Crack section: arc-groove, v-groove or box-groove");
-  g->add_option("--out", gen->out, "Write the depths as a 16-bit grey PNG");
+  add_choice_option(*g, "--shape", gen->shape, kCavityShapeNames,
+                    "Crack section (craquelure: a groove)");
+  add_out_option(*g, gen->out, "the depths as a 16-bit grey PNG");
   g->add_option("--max-depth-mm", gen->max_depth_mm, "Depth drawn white in --out (mm)")
       ->check(CLI::PositiveNumber);
   g->add_option("--painting", gen->painting,
                 "Crack this painting's dry layers (its size and cells; needs --save)");
   g->add_flag("--dry", gen->dry, "Dry the painting's wet paint before cracking it");
-  g->add_option("--save", gen->save, "Where the cracked painting is written (.impasto)");
+  add_save_option(*g, gen->save, "the cracked painting (with --painting)");
   g->callback([gen] { run_generate(*gen); });
 
   auto imp = std::make_shared<ImportArgs>();
@@ -223,19 +234,18 @@ const CommandRegistrar registrar("cracks", [](CLI::App& root) {
       ->check(CLI::PositiveNumber);
   i->add_option("--depth-to-half-width", imp->settings.depth_to_half_width, "L / R")
       ->check(CLI::PositiveNumber);
-  i->add_option("--shape", imp->shape, "Crack section: arc-groove, v-groove, box-groove, ...");
+  add_choice_option(*i, "--shape", imp->shape, kCavityShapeNames, "Crack section");
   i->add_option("--painting", imp->painting,
                 "Put the map into this painting (same size in cells; needs --save)");
-  i->add_option("--save", imp->save, "Where the cracked painting is written (.impasto)");
+  add_save_option(*i, imp->save, "the cracked painting (with --painting)");
   i->callback([imp] { run_import(*imp); });
 
   auto brush = std::make_shared<BrushArgs>();
   CLI::App* b = group->add_subcommand("brush", "Draw a crack along a polyline into a painting");
   b->add_option("painting", brush->painting, "The .impasto painting file")->required();
-  b->add_option("--save", brush->save, "Where the cracked painting is written")->required();
+  add_save_option(*b, brush->save, "the cracked painting")->required();
   b->add_option("--points", brush->points, "Polyline, \"x,y x,y ...\" in mm")->required();
-  b->add_option("--shape", brush->shape,
-                "arc-groove, v-groove, box-groove, sphere-pit, cone-pit, cylinder-pit");
+  add_choice_option(*b, "--shape", brush->shape, kCavityShapeNames, "Crack section");
   b->add_option("--depth-mm", brush->depth_mm, "Depth L (mm)")->check(CLI::PositiveNumber);
   b->add_option("--half-width-mm", brush->half_width_mm, "Half-width R (mm)")
       ->check(CLI::PositiveNumber);
@@ -246,8 +256,7 @@ const CommandRegistrar registrar("cracks", [](CLI::App& root) {
 
   auto cav = std::make_shared<CavityArgs>();
   CLI::App* c = group->add_subcommand("cavity", "F, G and apparent reflectance of one cavity");
-  c->add_option("--shape", cav->shape,
-                "arc-groove, v-groove, box-groove, sphere-pit, cone-pit, cylinder-pit");
+  add_choice_option(*c, "--shape", cav->shape, kCavityShapeNames, "Cavity section");
   c->add_option("--depth-mm", cav->depth_mm, "Depth L (mm)")->check(CLI::NonNegativeNumber);
   c->add_option("--half-width-mm", cav->half_width_mm, "Half-width R (mm)")
       ->check(CLI::PositiveNumber);
@@ -262,14 +271,17 @@ const CommandRegistrar registrar("cracks", [](CLI::App& root) {
   auto tab = std::make_shared<TableArgs>();
   CLI::App* t = group->add_subcommand(
       "table", "Measure the Monte Carlo correction table of Gouffé's formula (offline)");
-  t->add_option("--out", tab->out, "CSV file to write (data/cracks/cavity_table.csv)")->required();
+  add_out_option(*t, tab->out, "the table, a CSV (data/cracks/cavity_table*.csv)")->required();
   t->add_option("--paths", tab->paths, "Monte Carlo paths per shape and L/R")
       ->check(CLI::Range(std::uint64_t{100}, std::uint64_t{100000000}));
   t->add_option("--seed", tab->seed, "Monte Carlo seed");
-  t->add_option("--light", tab->light,
+  t->add_option("--light-geometry", tab->light,
                 "beam:ZENITH_DEG (a beam tilted across grooves; data/cracks/"
                 "cavity_table_beam_Z.csv) or diffuse (a uniform sky; cavity_table_diffuse.csv)")
       ->capture_default_str();
+  // --light is a light's spectrum everywhere else.
+  add_deprecated_option(*t, "--light", "--light-geometry",
+                        [tab](const std::string& geometry) { tab->light = geometry; });
   t->callback([tab] { run_table(*tab); });
 });
 

@@ -21,6 +21,7 @@
 #include <tuple>
 
 #include "command.hpp"
+#include "vocabulary.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).
 namespace impasto::app::hid_cmd {
@@ -270,7 +271,7 @@ const CommandRegistrar kRegistrar{
       static double record_seconds = 0.0;
       auto* record_cmd =
           group->add_subcommand("record", "Capture a tablet's reports in hid-recorder format");
-      record_cmd->add_option("--out", record_out, "output file")->required();
+      add_out_option(*record_cmd, record_out, "the capture, hid-recorder format")->required();
       record_cmd->add_option("--device", record_device, "hidraw node (default: first pen tablet)");
       record_cmd
           ->add_option("--seconds", record_seconds, "stop after this many seconds (0: Ctrl+C)")

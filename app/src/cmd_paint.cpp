@@ -4,9 +4,11 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "command.hpp"
+#include "vocabulary.hpp"
 #include "window/paint_options.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).
@@ -15,6 +17,7 @@ namespace {
 
 struct PaintArgs {
   std::string painting, replay, screenshot, record;
+  std::optional<CanvasSize> size;
   window::PaintOptions options;
 };
 
@@ -43,16 +46,21 @@ void setup(CLI::App& root) {
       ->check(CLI::Range(320, 8192));
   cmd->add_option("--window-height", args->options.window_height, "Window height in pixels")
       ->check(CLI::Range(240, 8192));
-  cmd->add_option("--width", args->options.new_canvas.width_cells, "New canvas width (cells)")
-      ->check(CLI::Range(1, 1 << 17));
-  cmd->add_option("--height", args->options.new_canvas.height_cells, "New canvas height (cells)")
-      ->check(CLI::Range(1, 1 << 17));
-  cmd->add_option("--dpi", args->options.new_canvas.dpi, "New canvas cells per inch")
-      ->check(CLI::Range(1.0, 10000.0));
-  cmd->add_option("--wavelengths", args->options.wavelengths, "Gaussian wavelength nodes")
-      ->check(CLI::Range(1, render::kMaxNodes));
+  add_size_option(*cmd, args->size, "of a new canvas");
+  add_dpi_option(*cmd, args->options.new_canvas.dpi, "of a new canvas");
+  add_wavelengths_option(*cmd, args->options.wavelengths, false, "the window renders 1..16");
+  add_deprecated_option(*cmd, "--width", "--size WxH", [args](const std::string& text) {
+    args->options.new_canvas.width_cells = parse_canvas_size(text + "x1", "--width").width;
+  });
+  add_deprecated_option(*cmd, "--height", "--size WxH", [args](const std::string& text) {
+    args->options.new_canvas.height_cells = parse_canvas_size("1x" + text, "--height").height;
+  });
   cmd->callback([args] {
     window::PaintOptions options = args->options;
+    if (args->size) {
+      options.new_canvas.width_cells = args->size->width;
+      options.new_canvas.height_cells = args->size->height;
+    }
     if (!args->painting.empty()) options.painting = args->painting;
     if (!args->replay.empty()) options.replay = args->replay;
     if (!args->screenshot.empty()) options.screenshot = args->screenshot;

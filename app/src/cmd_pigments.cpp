@@ -11,11 +11,14 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
 
 #include "command.hpp"
+#include "vocabulary.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).
 namespace impasto::app::pigments_cmd {
@@ -23,16 +26,27 @@ namespace {
 
 using namespace impasto::data;
 
-void run_list() {
+void run_list(bool json) {
   const PigmentLibrary& library = active_pigment_library();
   const auto& all = library.database().all();
+  nlohmann::json rows = nlohmann::json::array();
   for (std::size_t i = 0; i < all.size(); ++i) {
     const Pigment& p = all[i];
     const auto binder = p.metadata.find("binder");
+    if (json) {
+      rows.push_back({{"name", p.name},
+                      {"from_nm", p.K.wavelengths_nm.front()},
+                      {"to_nm", p.K.wavelengths_nm.back()},
+                      {"layer", library.origins()[i].layer},
+                      {"file", library.origins()[i].file.string()},
+                      {"binder", binder == p.metadata.end() ? "" : binder->second}});
+      continue;
+    }
     std::printf("%-32s %4.0f-%4.0f nm  %-10s %s\n", p.name.c_str(), p.K.wavelengths_nm.front(),
                 p.K.wavelengths_nm.back(), library.origins()[i].layer.c_str(),
                 binder == p.metadata.end() ? "" : binder->second.c_str());
   }
+  if (json) std::cout << rows.dump(2) << "\n";
 }
 
 void run_show(const std::string& name) {
@@ -55,15 +69,24 @@ void run_show(const std::string& name) {
 }
 
 // Every problem of a folder at once; fails the command when there is any.
-void run_check(const std::string& folder) {
+void run_check(const std::string& folder, bool json) {
   if (!std::filesystem::is_directory(folder)) throw std::runtime_error(folder + ": not a folder");
   const PigmentFolderScan scan = scan_pigment_folder(folder);
-  for (const auto& loaded : scan.pigments)
-    std::printf("ok      %s (%s)\n", loaded.file.filename().string().c_str(),
-                loaded.pigment.name.c_str());
-  for (const auto& problem : scan.problems) std::printf("error   %s\n", problem.c_str());
-  std::printf("%zu pigments load, %zu files have errors\n", scan.pigments.size(),
-              scan.problems.size());
+  if (json) {
+    nlohmann::json out{
+        {"folder", folder}, {"pigments", nlohmann::json::array()}, {"errors", scan.problems}};
+    for (const auto& loaded : scan.pigments)
+      out["pigments"].push_back(
+          {{"file", loaded.file.filename().string()}, {"name", loaded.pigment.name}});
+    std::cout << out.dump(2) << "\n";
+  } else {
+    for (const auto& loaded : scan.pigments)
+      std::printf("ok      %s (%s)\n", loaded.file.filename().string().c_str(),
+                  loaded.pigment.name.c_str());
+    for (const auto& problem : scan.problems) std::printf("error   %s\n", problem.c_str());
+    std::printf("%zu pigments load, %zu files have errors\n", scan.pigments.size(),
+                scan.problems.size());
+  }
   if (!scan.problems.empty())
     throw std::runtime_error(folder + ": " + std::to_string(scan.problems.size()) +
                              " files have errors");
@@ -153,9 +176,10 @@ const CommandRegistrar registrar("pigments", [](CLI::App& root) {
   CLI::App* group = command_group(
       root, "pigments", "The pigment library (bundled, user, --pigments) and the K/S fit");
 
-  group->add_subcommand("list", "List the pigments and the layer each comes from")->callback([] {
-    run_list();
-  });
+  auto list_json = std::make_shared<bool>(false);
+  CLI::App* list = group->add_subcommand("list", "List the pigments and the layer each comes from");
+  add_json_flag(*list, *list_json, "name, range, layer, file and binder of each pigment");
+  list->callback([list_json] { run_list(*list_json); });
 
   auto name = std::make_shared<std::string>();
   CLI::App* show = group->add_subcommand("show", "Show one pigment's metadata and K, S");
@@ -166,14 +190,18 @@ const CommandRegistrar registrar("pigments", [](CLI::App& root) {
   CLI::App* check =
       group->add_subcommand("check", "Validate a pigment folder: every error at once");
   check->add_option("folder", *folder, "Folder of pigment CSVs")->required();
-  check->callback([folder] { run_check(*folder); });
+  auto check_json = std::make_shared<bool>(false);
+  add_json_flag(*check, *check_json,
+                "the pigments that load and every error (exit status 1 "
+                "when there is any)");
+  check->callback([folder, check_json] { run_check(*folder, *check_json); });
 
   auto fit = std::make_shared<FitArgs>();
   CLI::App* f = group->add_subcommand(
       "fit", "Fit K and S from measured reflectances of masstones and mixtures");
   f->add_option("measurements", fit->measurements, "Measurements CSV (docs/pigments.md)")
       ->required();
-  f->add_option("--out", fit->out, "Folder for the fitted pigment files (default: the user layer)");
+  add_out_option(*f, fit->out, "the folder for the fitted pigment files (default: the user layer)");
   f->add_option("--reference", fit->reference,
                 "Pigment whose S is fixed to 1 (overrides '# reference:')");
   f->add_flag("--force", fit->force, "Replace existing files (their metadata is kept)");

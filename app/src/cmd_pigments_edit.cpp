@@ -8,13 +8,16 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "command.hpp"
 #include "pigment_figure.hpp"
+#include "vocabulary.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).
 namespace impasto::app::pigments_edit_cmd {
@@ -34,6 +37,7 @@ struct EditArgs {
   std::vector<std::string> set;
   double k = -1, s = -1;
   bool force = false;
+  bool json = false;
 };
 
 void run_import(const EditArgs& a) {
@@ -135,6 +139,18 @@ void run_swatch(const EditArgs& a) {
         "tint " + a.tint, render::tint_reflectance(pigment, white_of(db), tint_parts(a.tint)),
         light));
   }
+  if (a.json) {
+    nlohmann::json rows = nlohmann::json::array();
+    for (const auto& c : colours)
+      rows.push_back({{"swatch", c.label},
+                      {"XYZ", {c.xyz.X, c.xyz.Y, c.xyz.Z}},
+                      {"Lab", {c.lab.L, c.lab.a, c.lab.b}},
+                      {"sRGB", {c.srgb[0], c.srgb[1], c.srgb[2]}}});
+    std::cout
+        << nlohmann::json{{"pigment", pigment.name}, {"light", a.light}, {"swatches", rows}}.dump(2)
+        << "\n";
+    return;
+  }
   std::printf("%s under %s (L*a*b* relative to the light's white; sRGB adapted to D65)\n",
               pigment.name.c_str(), a.light.c_str());
   std::printf("%-18s %8s %8s %8s %8s %8s %8s  %s\n", "swatch", "X", "Y", "Z", "L*", "a*", "b*",
@@ -178,20 +194,22 @@ const CommandRegistrar registrar("pigments edit", [](CLI::App& root) {
 
   CLI::App* exp = group->add_subcommand("export", "Write a pigment of the library to a CSV");
   exp->add_option("name", a->name, "Pigment name")->required();
-  exp->add_option("--out", a->out, "The CSV to write")->required();
+  add_out_option(*exp, a->out, "the pigment CSV")->required();
   exp->add_flag("--force", a->force, "Replace an existing file");
   exp->callback([a] { run_export(*a); });
 
   CLI::App* plot = group->add_subcommand("plot", "Plot K, S, K/S, R-infinity and swatches");
   plot->add_option("name", a->name, "Pigment name")->required();
-  plot->add_option("--out", a->out, "FILE.png or FILE.svg")->required();
-  plot->add_option("--light", a->light, "Light of the swatches (D65, A, blackbody:K, FILE)");
+  add_out_option(*plot, a->out, "the figure, FILE.png or FILE.svg")->required();
+  plot->add_option("--light", a->light, vocabulary_help("--light", "of the swatches"))
+      ->capture_default_str();
   plot->callback([a] { run_plot(*a); });
 
   CLI::App* sw = group->add_subcommand("swatch", "XYZ, L*a*b* and sRGB of masstone, tints, glazes");
   sw->add_option("name", a->name, "Pigment name")->required();
   sw->add_option("--tint", a->tint, "Only this tint with white, 1:N (1:0 is the masstone)");
-  sw->add_option("--light", a->light, "Light (D65, A, blackbody:K, FILE)");
+  sw->add_option("--light", a->light, vocabulary_help("--light"))->capture_default_str();
+  add_json_flag(*sw, a->json, "XYZ, L*a*b* and sRGB (0..1, adapted to D65) of each swatch");
   sw->callback([a] { run_swatch(*a); });
 });
 

@@ -9,9 +9,11 @@
 #include <string>
 
 #include "command.hpp"
+#include "progress.hpp"
 #include "session/rebuild.hpp"
 #include "session/recovery_folder.hpp"
 #include "session/session_registry.hpp"
+#include "vocabulary.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).
 namespace impasto::app::recover_cmd {
@@ -19,7 +21,7 @@ namespace {
 
 struct RecoverArgs {
   bool list = false;
-  std::string apply, discard, out;
+  std::string apply, discard, save;
   bool force = false, keep = false;
 };
 
@@ -52,15 +54,19 @@ void run_recover(const RecoverArgs& args) {
   }
   if (!args.apply.empty()) {
     const SessionEntry s = find_session(sessions, args.apply);
-    std::filesystem::path out = args.out;
+    std::filesystem::path out = args.save;
     if (out.empty()) {
       out = (s.painting ? s.painting->stem().string() : std::string("untitled")) +
             ".recovered.impasto";
     }
     if (std::filesystem::exists(out) && !args.force) {
-      throw std::runtime_error(out.string() + ": exists; give another --out or --force");
+      throw std::runtime_error(out.string() + ": exists; give another --save or --force");
     }
-    RebuiltSession rebuilt = rebuild_session(input::read_stroke_file(s.strokes), {});
+    ReplayOptions options;
+    ProgressReporter progress("rebuild", "records");
+    options.progress = progress.callback();
+    RebuiltSession rebuilt = rebuild_session(input::read_stroke_file(s.strokes), options);
+    progress.finish();
     for (const auto& w : rebuilt.warnings) std::cerr << "impasto: warning: " << w << "\n";
     rebuilt.painting.save(out);
     std::cout << "recovered " << s.id << " from " << rebuilt.base << " and "
@@ -84,13 +90,15 @@ const CommandRegistrar registrar("recover", [](CLI::App& root) {
       "recover", "List or rebuild painting sessions that did not end cleanly (crash recovery)");
   cmd->add_flag("--list", args->list, "List the sessions that can be recovered (the default)");
   cmd->add_option("--apply", args->apply,
-                  "Rebuild this session (its id, or 'latest') and save the painting to --out");
+                  "Rebuild this session (its id, or 'latest') and save the painting (--save)");
   cmd->add_option("--discard", args->discard,
                   "Forget this session: remove its entry and autosave (the recording stays)");
-  cmd->add_option("--out", args->out,
-                  "Where --apply saves the painting (default: NAME.recovered.impasto here)");
-  cmd->add_flag("--force", args->force, "Let --apply replace an existing --out file");
+  add_save_option(*cmd, args->save,
+                  "where --apply puts the painting (default: NAME.recovered.impasto here)");
+  cmd->add_flag("--force", args->force, "Let --apply replace an existing --save file");
   cmd->add_flag("--keep", args->keep, "Keep the session recoverable after --apply");
+  add_deprecated_option(*cmd, "--out", "--save",
+                        [args](const std::string& file) { args->save = file; });
   cmd->callback([args] { run_recover(*args); });
 });
 

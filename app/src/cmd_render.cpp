@@ -3,14 +3,19 @@
 #include <impasto/render/crack_close_up.hpp>
 #include <impasto/render/render_painting.hpp>
 
+#include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
 
 #include "command.hpp"
 #include "surface_options.hpp"
+#include "progress.hpp"
+#include "vocabulary.hpp"
 
 // The GL path, when this build has it (render_gl's headers come with its target).
 #if __has_include(<impasto/render_gl/render_painting_gpu.hpp>)
@@ -28,12 +33,12 @@ struct RenderArgs {
   std::string painting;
   std::string out;
   std::string light = "D65";
-  std::string wavelengths = "8";
+  int wavelengths = RenderSettings{}.wavelengths;
   std::string light_dir = "225,60";
-  std::string display = "srgb";
-  std::string adaptation = "bradford";
+  std::string display{util::name_of(kDisplayEncodingNames, RenderSettings{}.display)};
+  std::string adaptation{util::name_of(kChromaticAdaptationNames, RenderSettings{}.adaptation)};
   std::string weights{util::name_of(kNodeWeightsNames, RenderSettings{}.node_weights)};
-  std::string storage = "float";
+  std::string storage{util::name_of(kReflectanceStorageNames, RenderSettings{}.storage)};
   double thickness_scale_mm = RenderSettings{}.thickness_scale_mm;
   bool saunderson = false;
   int threads = 0;
@@ -41,7 +46,7 @@ struct RenderArgs {
   double light_size_deg = RenderSettings{}.light_size_deg;
   double light_distance_mm = RenderSettings{}.light_distance_mm;
   bool no_flakes = false;
-  std::string flake_depth = "masking";
+  std::string flake_depth{util::name_of(kFlakeDepthNames, RenderSettings{}.flake_masking)};
   bool no_cracks = false;
   bool no_shadows = false;
   bool no_occlusion = false;
@@ -51,20 +56,13 @@ struct RenderArgs {
   int zoom = 0;        // > 0: the close-up of --region at this many pixels per cell
   std::string region;  // "X,Y,W,H" in cells
   SurfaceArgs surface;  // --surface, --medium, --varnish (docs/surface.md)
+  bool json = false;   // timings and the image's size as JSON
 };
 
-int parse_wavelengths(const std::string& text) {
-  if (text == "full") return 0;
-  std::size_t used = 0;
-  int n = -1;
-  try {
-    n = std::stoi(text, &used);
-  } catch (const std::exception&) {
-  }
-  if (used != text.size() || n < 1 || n > kMaxNodes) {
-    throw std::runtime_error("--wavelengths " + text + ": expected 1..16 or full");
-  }
-  return n;
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
 // "AZ,EL" in degrees.
@@ -87,7 +85,7 @@ void parse_light_dir(const std::string& text, RenderSettings& settings) {
 void run(const RenderArgs& args) {
   RenderSettings settings;
   settings.light = args.light;
-  settings.wavelengths = parse_wavelengths(args.wavelengths);
+  settings.wavelengths = args.wavelengths;
   parse_light_dir(args.light_dir, settings);
   settings.display = parse_display_encoding(args.display);
   settings.adaptation = parse_chromatic_adaptation(args.adaptation);
@@ -100,7 +98,7 @@ void run(const RenderArgs& args) {
   settings.light_size_deg = args.light_size_deg;
   settings.light_distance_mm = args.light_distance_mm;
   settings.flakes = !args.no_flakes;
-  settings.flake_masking = args.flake_depth == "masking";
+  settings.flake_masking = util::parse_name(kFlakeDepthNames, args.flake_depth, "flake depth");
   settings.cracks = !args.no_cracks;
   settings.shadows = !args.no_shadows;
   settings.occlusion = !args.no_occlusion;
@@ -108,14 +106,16 @@ void run(const RenderArgs& args) {
   settings.ambient = args.ambient;
   apply_surface_options(args.surface, settings);
   validate(settings);
+  const auto start = Clock::now();
   const paintcore::Painting painting = paintcore::Painting::load(args.painting, args.threads);
   check_render_memory(painting.canvas(), args.painting);
+  const double load_seconds = seconds_since(start);
+  const auto render_start = Clock::now();
+  int width = painting.canvas().width_cells(), height = painting.canvas().height_cells();
   if (args.zoom > 0) {
     // The close-up: the region magnified, its cracks shaded point by point.
     const CellRegion region =
-        args.region.empty()
-            ? CellRegion{0, 0, painting.canvas().width_cells(), painting.canvas().height_cells()}
-            : parse_cell_region(args.region);
+        args.region.empty() ? CellRegion{0, 0, width, height} : parse_cell_region(args.region);
     if (args.gpu) {
 #ifdef IMPASTO_RENDER_GPU
       render_gl::render_painting_close_up_gpu_to_file(painting, settings, region, args.zoom,
@@ -126,56 +126,56 @@ void run(const RenderArgs& args) {
     } else {
       render_painting_close_up_to_file(painting, settings, region, args.zoom, args.out);
     }
-    std::cout << "wrote " << args.out << " (" << region.w * args.zoom << "x" << region.h * args.zoom
-              << ", close-up)\n";
-    return;
-  }
-  if (args.gpu) {
+    width = region.w * args.zoom;
+    height = region.h * args.zoom;
+  } else if (args.gpu) {
 #ifdef IMPASTO_RENDER_GPU
     render_gl::render_painting_gpu_to_file(painting, settings, args.out);
 #else
     throw std::runtime_error("--gpu: this impasto was built without the OpenGL path");
 #endif
   } else {
-    render_painting_to_file(painting, settings, args.out);
+    ProgressReporter progress("render", "tiles");
+    render_painting_to_file(painting, settings, args.out, progress.callback());
     write_subsurface_map_if_asked(args.surface, painting, settings);
   }
-  std::cout << "wrote " << args.out << " (" << painting.canvas().width_cells() << "x"
-            << painting.canvas().height_cells() << ")\n";
+  const double render_seconds = seconds_since(render_start);
+  if (args.json) {
+    // Rendering and writing the file are one call: render_seconds holds both.
+    std::cout << nlohmann::json{{"out", args.out},
+                                {"width", width},
+                                {"height", height},
+                                {"close_up", args.zoom > 0},
+                                {"gpu", args.gpu},
+                                {"wavelengths", settings.wavelengths},
+                                {"load_seconds", load_seconds},
+                                {"render_seconds", render_seconds}}
+              << "\n";
+    return;
+  }
+  char timing[64];
+  std::snprintf(timing, sizeof timing, "%.2f s", render_seconds);
+  note("wrote " + args.out + " (" + std::to_string(width) + "x" + std::to_string(height) +
+       (args.zoom > 0 ? ", close-up" : "") + ", rendered in " + timing + ")");
 }
 
 const CommandRegistrar registrar("render", [](CLI::App& root) {
   CLI::App* cmd = root.add_subcommand(
       "render", "Render a painting to PNG (sRGB) or EXR (linear) under a light");
   auto args = std::make_shared<RenderArgs>();
-  cmd->add_option("painting", args->painting, "The .impasto painting file")->required();
-  cmd->add_option("--out,-o", args->out, "Output image, FILE.png or FILE.exr")->required();
-  cmd->add_option("--light", args->light, "D65, A, F11, ..., blackbody:KELVIN or a spectral CSV")
-      ->capture_default_str();
-  cmd->add_option("--wavelengths", args->wavelengths, "Gaussian nodes 1..16, or full (every nm)")
-      ->capture_default_str();
+  cmd->add_option("painting", args->painting, "The .impasto painting file")
+      ->required()
+      ->check(CLI::ExistingFile);
+  add_out_option(*cmd, args->out, "the image, FILE.png (sRGB) or FILE.exr (linear)")->required();
+  add_json_flag(*cmd, args->json,
+                "the image's size and the seconds taken to load and to render and write");
+  cmd->add_option("--light", args->light, vocabulary_help("--light"))->capture_default_str();
+  add_wavelengths_option(*cmd, args->wavelengths, true, "--gpu: 1..16");
   cmd->add_option("--light-dir", args->light_dir,
                   "Light azimuth,elevation in degrees (azimuth from +x toward +y, down)")
       ->capture_default_str();
-  cmd->add_option("--display", args->display,
-                  "PNG encoding: srgb, display-p3, rec709, rec2020, linear-srgb")
-      ->capture_default_str();
-  cmd->add_option("--adaptation", args->adaptation, "bradford (light white -> D65) or none")
-      ->capture_default_str();
-  cmd->add_option("--weights", args->weights,
-                  "Nodes and XYZ weights (optimised and fitted: trained on the palette)")
-      ->check(CLI::IsMember(util::names_of(kNodeWeightsNames)))
-      ->capture_default_str();
-  cmd->add_option("--storage", args->storage, "Baked reflectance storage: float or half")
-      ->capture_default_str();
-  cmd->add_option("--thickness-scale", args->thickness_scale_mm,
-                  "mm of paint per unit of K-M optical thickness")
-      ->capture_default_str();
-  cmd->add_flag("--saunderson", args->saunderson, "Apply the Saunderson surface correction");
-  cmd->add_option("--light-type", args->light_type,
-                  "directional (sun), point, spot, or diffuse (overcast: no sparkles)")
-      ->check(CLI::IsMember(util::names_of(kLightTypeNames)))
-      ->capture_default_str();
+  add_choice_option(*cmd, "--light-type", args->light_type, kLightTypeNames,
+                    "The light's kind (diffuse: overcast, no sparkles)");
   cmd->add_option("--light-size", args->light_size_deg,
                   "Apparent diameter of the light in degrees (the sun: 0.53)")
       ->check(CLI::Range(1e-3, 90.0))
@@ -184,31 +184,38 @@ const CommandRegistrar registrar("render", [](CLI::App& root) {
                   "Point and spot lights: mm from the canvas centre along --light-dir")
       ->check(CLI::Range(1.0, 1e7))
       ->capture_default_str();
-  cmd->add_flag("--no-flakes", args->no_flakes, "Flake pigments without their sparkles");
-  cmd->add_flag("--no-cracks", args->no_cracks, "Cracked cells as if uncracked");
-  cmd->add_flag("--no-shadows", args->no_shadows, "No shadows cast by the paint relief");
-  cmd->add_flag("--no-occlusion", args->no_occlusion, "No ambient occlusion in furrows");
-  cmd->add_option("--crack-model", args->crack_model,
-                  "Cavity reflectance: corrected (measured tables) or gouffe (closed form)")
-      ->check(CLI::IsMember(util::names_of(cracks::kCavityModelNames)))
-      ->capture_default_str();
-  cmd->add_option(
-         "--ambient", args->ambient,
-         "Share of the light arriving from the whole sky, 0..1 (the rest from --light-dir)")
+  cmd->add_option("--ambient", args->ambient,
+                  "Share of the light arriving from the whole sky, 0..1 (the rest from "
+                  "--light-dir)")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
-  cmd->add_option("--flake-depth", args->flake_depth,
-                  "Flake depth model: masking (Eq. 5) or no-masking (Eq. 6)")
-      ->check(CLI::IsMember({"masking", "no-masking"}))
+  add_choice_option(*cmd, "--display", args->display, kDisplayEncodingNames,
+                    "The PNG's encoding (an EXR is always linear-srgb)");
+  add_choice_option(*cmd, "--adaptation", args->adaptation, kChromaticAdaptationNames,
+                    "Chromatic adaptation (bradford: the light's white shows as D65 white)");
+  add_choice_option(*cmd, "--weights", args->weights, kNodeWeightsNames,
+                    "Nodes and XYZ weights (optimised and fitted: trained on the palette)");
+  add_choice_option(*cmd, "--storage", args->storage, kReflectanceStorageNames,
+                    "Baked reflectance storage");
+  cmd->add_option("--thickness-scale", args->thickness_scale_mm,
+                  "mm of paint per unit of K-M optical thickness")
       ->capture_default_str();
+  cmd->add_flag("--saunderson", args->saunderson, "Apply the Saunderson surface correction");
+  cmd->add_flag("--no-flakes", args->no_flakes, "Flake pigments without their sparkles");
+  add_choice_option(*cmd, "--flake-depth", args->flake_depth, kFlakeDepthNames,
+                    "Flake depth model (docs/flakes.md: Eq. 5 or Eq. 6)");
+  cmd->add_flag("--no-cracks", args->no_cracks, "Cracked cells as if uncracked");
+  add_choice_option(*cmd, "--crack-model", args->crack_model, cracks::kCavityModelNames,
+                    "Cavity reflectance (corrected: the measured tables; gouffe: closed form)");
+  cmd->add_flag("--no-shadows", args->no_shadows, "No shadows cast by the paint relief");
+  cmd->add_flag("--no-occlusion", args->no_occlusion, "No ambient occlusion in furrows");
   cmd->add_flag("--gpu", args->gpu,
                 "Render through the OpenGL shaders, headless (EGL or OSMesa); 1..16 nodes");
   cmd->add_option("--zoom", args->zoom,
                   "Close-up: pixels per cell, cracks shaded inside (with --region)")
       ->check(CLI::Range(1, 256));
   cmd->add_option("--region", args->region, "Close-up region X,Y,W,H in cells (default: all)");
-  cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)")
-      ->check(CLI::Range(0, 1024));
+  add_threads_option(*cmd, args->threads);
   add_surface_options(*cmd, args->surface);
   cmd->callback([args] { run(*args); });
 });

@@ -9,6 +9,7 @@
 #include "impasto/files/memory_budget.hpp"
 #include "impasto_version.hpp"
 #include "pigment_folder_option.hpp"
+#include "vocabulary.hpp"
 
 namespace impasto::app {
 namespace {
@@ -39,8 +40,13 @@ int run_command_line(int argc, char** argv) {
   CLI::App root{"Impasto: interactive 2.5D painting with thick, spectrally rendered paint"};
   root.require_subcommand(0, 1);
   root.set_version_flag("--version", "impasto " IMPASTO_VERSION);
+  root.footer(
+      "Options mean the same in every command (-o/--out the output file, --save the painting, "
+      "--size WxH, --wavelengths 1..16|full, --json, --quiet): impasto help vocabulary, "
+      "docs/cli.md.");
   add_registered_commands(root);
   setup_pigment_library(root);
+  add_quiet_option(root);
   // Plain `impasto` opens the painting window where there is a display to show it on.
   const bool has_display = std::getenv("DISPLAY") || std::getenv("WAYLAND_DISPLAY");
   const bool has_window =

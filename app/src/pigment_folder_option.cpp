@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <string>
 
+#include "vocabulary.hpp"
+
 namespace impasto::app {
 namespace {
 
@@ -13,7 +15,7 @@ void add_to(CLI::App& app) {
   if (app.get_option_no_throw("--pigments") == nullptr) {
     app.add_option_function<std::string>(
            "--pigments", [](const std::string& folder) { data::add_pigment_folder(folder); },
-           "Pigment folder layered over the bundled and user pigments (docs/pigments.md)")
+           vocabulary_help("--pigments"))
         ->check(CLI::ExistingDirectory)
         ->trigger_on_parse();  // each time it is given, before any command runs
   }

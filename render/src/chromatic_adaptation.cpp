@@ -14,10 +14,7 @@ constexpr Matrix3 kBradford{
 }  // namespace
 
 ChromaticAdaptation parse_chromatic_adaptation(std::string_view text) {
-  if (text == "none") return ChromaticAdaptation::none;
-  if (text == "bradford") return ChromaticAdaptation::bradford;
-  throw std::runtime_error("unknown chromatic adaptation '" + std::string(text) +
-                           "' (expected none or bradford)");
+  return util::parse_name(kChromaticAdaptationNames, text, "chromatic adaptation");
 }
 
 Matrix3 identity_matrix() {

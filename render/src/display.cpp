@@ -12,18 +12,6 @@ namespace OCIO = OCIO_NAMESPACE;
 namespace impasto::render {
 namespace {
 
-struct EncodingName {
-  DisplayEncoding encoding;
-  const char* name;
-};
-constexpr EncodingName kEncodingNames[] = {
-    {DisplayEncoding::srgb, "srgb"},
-    {DisplayEncoding::display_p3, "display-p3"},
-    {DisplayEncoding::rec709, "rec709"},
-    {DisplayEncoding::rec2020, "rec2020"},
-    {DisplayEncoding::linear_srgb, "linear-srgb"},
-};
-
 // XYZ (D65) to linear RGB for sRGB and P3-D65 primaries (IEC 61966-2-1; SMPTE EG 432-1),
 // as the 4×4 row-major matrices OCIO's MatrixTransform takes.
 constexpr double kXyzToLinearSrgb[16] = {3.2409699419,
@@ -106,29 +94,15 @@ OCIO::TransformRcPtr display_ocio_transform(DisplayEncoding encoding) {
 }
 
 DisplayEncoding parse_display_encoding(std::string_view text) {
-  for (const auto& entry : kEncodingNames) {
-    if (text == entry.name) return entry.encoding;
-  }
-  std::string accepted;
-  for (const auto& name : display_encoding_names())
-    accepted += (accepted.empty() ? "" : ", ") + name;
-  throw std::runtime_error("unknown display encoding '" + std::string(text) + "' (expected " +
-                           accepted + ")");
+  return util::parse_name(kDisplayEncodingNames, text, "display encoding");
 }
 
 std::string_view to_string(DisplayEncoding encoding) {
-  for (const auto& entry : kEncodingNames) {
-    if (entry.encoding == encoding) return entry.name;
-  }
-  return "unknown";
+  return util::name_of(kDisplayEncodingNames, encoding);
 }
 
 const std::vector<std::string>& display_encoding_names() {
-  static const std::vector<std::string> names = [] {
-    std::vector<std::string> list;
-    for (const auto& entry : kEncodingNames) list.emplace_back(entry.name);
-    return list;
-  }();
+  static const std::vector<std::string> names = util::names_of(kDisplayEncodingNames);
   return names;
 }
 

@@ -16,23 +16,25 @@ void check_render_memory(const paintcore::Canvas& canvas, const std::string& whe
                           28 * cells);
 }
 
-Image render_painting(const paintcore::Painting& painting, const RenderSettings& settings) {
+Image render_painting(const paintcore::Painting& painting, const RenderSettings& settings,
+                      const util::ProgressCallback& progress) {
   if (settings.surface.model == SurfaceModel::ghs && settings.surface.subsurface) {
     return render_painting_with_subsurface(painting, settings);  // docs/surface.md
   }
   TileRenderer renderer(settings, SpectralPalette(settings, painting));
-  renderer.render_all(painting.canvas());
+  renderer.render_all(painting.canvas(), progress);
   return renderer.image();
 }
 
 void render_painting_to_file(const paintcore::Painting& painting, const RenderSettings& settings,
-                             const std::filesystem::path& path) {
+                             const std::filesystem::path& path,
+                             const util::ProgressCallback& progress) {
   if (image_file_type(path) == ImageFileType::png) {
-    write_png(path, render_painting(painting, settings));
+    write_png(path, render_painting(painting, settings, progress));
   } else {
     RenderSettings linear = settings;
     linear.display = DisplayEncoding::linear_srgb;
-    write_exr(path, render_painting(painting, linear));
+    write_exr(path, render_painting(painting, linear, progress));
   }
 }
 

@@ -55,10 +55,7 @@ void validate(const RenderSettings& s) {
 }
 
 ReflectanceStorage parse_reflectance_storage(std::string_view text) {
-  if (text == "float") return ReflectanceStorage::float32;
-  if (text == "half") return ReflectanceStorage::float16;
-  throw std::runtime_error("unknown reflectance storage '" + std::string(text) +
-                           "' (expected float or half)");
+  return util::parse_name(kReflectanceStorageNames, text, "reflectance storage");
 }
 
 LightType parse_light_type(std::string_view text) {

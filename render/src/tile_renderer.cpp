@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
@@ -140,7 +141,8 @@ void TileRenderer::reset_caches(const paintcore::Canvas& canvas) {
   tiles_ = std::move(fresh);
 }
 
-RenderStats TileRenderer::render_all(const paintcore::Canvas& canvas) {
+RenderStats TileRenderer::render_all(const paintcore::Canvas& canvas,
+                                     const util::ProgressCallback& progress) {
   if (canvas.width_cells() != width_ || canvas.height_cells() != height_ ||
       canvas.cell_mm() != cell_mm_) {
     reset_caches(canvas);
@@ -149,11 +151,13 @@ RenderStats TileRenderer::render_all(const paintcore::Canvas& canvas) {
   run_parallel(tiles_.size(), [&](std::size_t i) { store_heights(canvas, static_cast<int>(i)); });
   update_height_range(true);
   RenderStats stats;
+  std::atomic<std::uint64_t> done{0};
   run_parallel(tiles_.size(), [&](std::size_t i) {
     const int index = static_cast<int>(i);
     bake_dry_stack(canvas, index, tiles_[i]);
     shade_region(canvas, index, 0, 0, kTileSize, kTileSize, tiles_[i]);
     ++tiles_[i].shade_count;
+    if (progress) progress(++done, tiles_.size());
   });
   stats.tiles_shaded = stats.tiles_baked = static_cast<int>(tiles_.size());
   needs_full_render_ = false;

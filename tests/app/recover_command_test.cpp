@@ -73,12 +73,12 @@ TEST_F(RecoverCommand, ApplyRebuildsThePaintingAndForgetsTheSession) {
   const input::StrokeFile file = crashed_session("one");
   ASSERT_EQ(unfinished_sessions(folder_).size(), 1u);
   const fs::path out = dir_ / "recovered.impasto";
-  run("recover --apply latest --out " + out.string());
+  run("recover --apply latest --save " + out.string());
   ReplayOptions options;
   options.threads = 1;
   EXPECT_EQ(paintcore::Painting::load(out, 1).state_hash(), replay(file, options).state_hash());
   EXPECT_TRUE(unfinished_sessions(folder_).empty());
-  EXPECT_THROW(run("recover --apply latest --out " + (dir_ / "again.impasto").string()),
+  EXPECT_THROW(run("recover --apply latest --save " + (dir_ / "again.impasto").string()),
                std::runtime_error);
 }
 
@@ -87,10 +87,10 @@ TEST_F(RecoverCommand, ApplyNeverReplacesAFileUnlessForced) {
   const fs::path out = dir_ / "taken.impasto";
   paintcore::Painting({16, 16, 150.0, 1}, 1).save(out);
   const auto before = fs::file_size(out);
-  EXPECT_THROW(run("recover --apply two --out " + out.string()), std::runtime_error);
+  EXPECT_THROW(run("recover --apply two --save " + out.string()), std::runtime_error);
   EXPECT_EQ(fs::file_size(out), before);
   EXPECT_EQ(unfinished_sessions(folder_).size(), 1u);
-  run("recover --apply two --force --out " + out.string());
+  run("recover --apply two --force --save " + out.string());
   EXPECT_NE(fs::file_size(out), before);
 }
 

@@ -56,6 +56,7 @@ bool replay_from(paintcore::Painting& painting, const input::StrokeFile& file, s
     } catch (const std::exception& e) {
       throw std::runtime_error(file.where(i) + ": " + e.what());
     }
+    if (options.progress) options.progress(i + 1, file.events.size());
   }
   player.finish();
   report = player.report();

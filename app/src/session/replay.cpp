@@ -165,6 +165,7 @@ paintcore::Painting replay(const input::StrokeFile& file, const ReplayOptions& o
     } catch (const std::exception& e) {
       throw std::runtime_error(file.where(i) + ": " + e.what());
     }
+    if (options.progress) options.progress(i + 1, file.events.size());
   }
   player.finish();
   if (report) {

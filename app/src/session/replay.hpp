@@ -3,6 +3,7 @@
 // live session takes, so a replay reproduces the painting bit-exactly.
 #include <impasto/input/stroke_events.hpp>
 #include <impasto/paintcore/painting.hpp>
+#include <impasto/util/progress.hpp>
 
 #include <cstdint>
 #include <optional>
@@ -27,6 +28,8 @@ struct ReplayOptions {
   bool auto_load = true;
   paintcore::BrushSettings default_brush{"round", 6.0, 0.5};
   double auto_load_mm3 = 0.0;  // 0: a loaded brush, 2 mm of paint over the head's square
+  // Hears of the records applied so far, of the file's all (the command line's progress).
+  util::ProgressCallback progress;
 };
 
 // What a replay did, beside the painting itself.

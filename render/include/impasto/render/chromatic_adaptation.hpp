@@ -4,6 +4,8 @@
 #include <array>
 #include <string_view>
 
+#include "impasto/util/enum_names.hpp"
+
 namespace impasto::render {
 
 using Matrix3 = std::array<std::array<double, 3>, 3>;
@@ -17,7 +19,11 @@ enum class ChromaticAdaptation {
   bradford,  // the light's white maps to D65 white (von Kries in the Bradford cone space)
 };
 
-// Parses "none" or "bradford"; throws std::runtime_error naming the accepted values.
+// Its spellings (--adaptation), the default first.
+inline constexpr util::EnumNames<ChromaticAdaptation, 2> kChromaticAdaptationNames{
+    {{ChromaticAdaptation::bradford, "bradford"}, {ChromaticAdaptation::none, "none"}}};
+
+// Parses a name of kChromaticAdaptationNames; throws std::runtime_error naming them.
 ChromaticAdaptation parse_chromatic_adaptation(std::string_view text);
 
 // The matrix taking XYZ seen under source_white to XYZ under target_white.

@@ -7,6 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include "impasto/util/enum_names.hpp"
+
 namespace impasto::render {
 
 enum class DisplayEncoding {
@@ -17,8 +19,15 @@ enum class DisplayEncoding {
   linear_srgb,  // sRGB/Rec.709 primaries, linear, unclamped (EXR output)
 };
 
-// Parses "srgb", "display-p3", "rec709", "rec2020", "linear-srgb"; throws
-// std::runtime_error naming the accepted values.
+// Its spellings (--display), the default first.
+inline constexpr util::EnumNames<DisplayEncoding, 5> kDisplayEncodingNames{
+    {{DisplayEncoding::srgb, "srgb"},
+     {DisplayEncoding::display_p3, "display-p3"},
+     {DisplayEncoding::rec709, "rec709"},
+     {DisplayEncoding::rec2020, "rec2020"},
+     {DisplayEncoding::linear_srgb, "linear-srgb"}}};
+
+// Parses a name of kDisplayEncodingNames; throws std::runtime_error naming the accepted values.
 DisplayEncoding parse_display_encoding(std::string_view text);
 std::string_view to_string(DisplayEncoding encoding);
 // Every encoding, for help texts.

@@ -19,6 +19,14 @@ enum class ReflectanceStorage {
   float32,  // exact
   float16,  // half the memory; rounding below 1e-3 relative (see docs/color-accuracy.md)
 };
+// Its spellings (--storage), the default first.
+inline constexpr util::EnumNames<ReflectanceStorage, 2> kReflectanceStorageNames{
+    {{ReflectanceStorage::float32, "float"}, {ReflectanceStorage::float16, "half"}}};
+
+// The flake depth model's spellings (--flake-depth; RenderSettings::flake_masking), the
+// default first: with masking and shadowing (Eq. 5 of docs/flakes.md) or without (Eq. 6).
+inline constexpr util::EnumNames<bool, 2> kFlakeDepthNames{
+    {{true, "masking"}, {false, "no-masking"}}};
 
 // The kind of the main light. Only a light with a direction makes flake sparkles; diffuse
 // (overcast) light lights every flake a little and none brightly.
@@ -98,7 +106,7 @@ struct RenderSettings {
 // Throws std::runtime_error naming the first field out of range (NaN included).
 void validate(const RenderSettings& settings);
 
-ReflectanceStorage parse_reflectance_storage(std::string_view text);  // "float" or "half"
+ReflectanceStorage parse_reflectance_storage(std::string_view text);  // kReflectanceStorageNames
 LightType parse_light_type(std::string_view text);                    // kLightTypeNames
 CrackModel parse_crack_model(std::string_view text);                  // cracks::kCavityModelNames
 

@@ -15,6 +15,7 @@
 #include "impasto/render/relief_shading.hpp"
 #include "impasto/render/render_settings.hpp"
 #include "impasto/render/spectral_palette.hpp"
+#include "impasto/util/progress.hpp"
 
 namespace impasto::render {
 
@@ -54,7 +55,9 @@ class TileRenderer {
   // stack is re-baked only when its dry layers differ from those it was baked from.
   RenderStats update(const paintcore::Canvas& canvas, std::span<const int> changed_tiles);
   // Renders every tile (a relight).
-  RenderStats render_all(const paintcore::Canvas& canvas);
+  // progress, when given, hears of each tile shaded (from the worker threads).
+  RenderStats render_all(const paintcore::Canvas& canvas,
+                         const util::ProgressCallback& progress = {});
 
   // The display-encoded (or linear, per settings.display) RGB of the whole canvas.
   Image image() const;

@@ -1,0 +1,92 @@
+#pragma once
+// The command line's shared words: an option means the same thing in every sub-command that
+// has it (docs/cli.md). Each add_* below is the one place where an option's name and meaning
+// are written; choices come from the enums' name tables (util::EnumNames). `impasto help
+// vocabulary` prints the reference that docs/cli.md holds, and a test compares the two.
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "impasto/util/enum_names.hpp"
+
+namespace impasto::app {
+
+// One shared option: its names, its argument and what it means wherever it appears.
+struct VocabularyWord {
+  std::string_view names;     // "-o,--out"
+  std::string_view argument;  // "FILE"
+  std::string_view meaning;   // the start of its help text in every command
+  std::string_view details;   // for the reference only: what follows from the meaning
+};
+const std::vector<VocabularyWord>& vocabulary();
+
+// One option with a fixed set of choices, read from its enum's table.
+struct VocabularyChoice {
+  std::string option;              // "--light-type"
+  std::string what;                // "the main light's kind"
+  std::vector<std::string> names;  // in the table's order
+  std::string default_name;
+};
+const std::vector<VocabularyChoice>& vocabulary_choices();
+
+// The help text of the shared option `names` ("-o,--out"): its meaning, then ": detail".
+std::string vocabulary_help(std::string_view names, std::string_view detail = {});
+
+// The Markdown reference: both tables (what `impasto help vocabulary` prints).
+std::string vocabulary_markdown();
+
+// "impasto: warning: TEXT" on stderr (also under --quiet: a warning is never noise).
+void warn(const std::string& text);
+// A line for the user on stdout, unless --quiet.
+void note(const std::string& text);
+
+// A canvas size in cells.
+struct CanvasSize {
+  int width = 0, height = 0;
+};
+// "WIDTHxHEIGHT" (1..131072 each); throws std::runtime_error naming `option` and the text.
+CanvasSize parse_canvas_size(const std::string& text, std::string_view option = "--size");
+// "1".."16" or "full" (0: every nm); throws std::runtime_error naming the text.
+int parse_wavelengths(const std::string& text, bool full_allowed = true);
+
+// The shared options. `detail` is added after the shared meaning (": ..."), for what this
+// command does with it.
+// old_square_number: a bare N (the old spelling of a square canvas) is NxN, with a warning.
+CLI::Option* add_size_option(CLI::App& cmd, std::optional<CanvasSize>& size,
+                             std::string_view detail = {}, bool old_square_number = false);
+CLI::Option* add_dpi_option(CLI::App& cmd, std::optional<double>& dpi,
+                            std::string_view detail = {});
+CLI::Option* add_dpi_option(CLI::App& cmd, double& dpi, std::string_view detail = {});
+// nodes: 1..16, or 0 for "full" where full_allowed (else "full" is refused at parse time).
+CLI::Option* add_wavelengths_option(CLI::App& cmd, int& nodes, bool full_allowed,
+                                    std::string_view detail = {});
+CLI::Option* add_out_option(CLI::App& cmd, std::string& out, std::string_view detail);
+CLI::Option* add_save_option(CLI::App& cmd, std::string& save, std::string_view detail = {});
+CLI::Option* add_json_flag(CLI::App& cmd, bool& json, std::string_view detail);
+CLI::Option* add_threads_option(CLI::App& cmd, int& threads);
+
+// An option whose value is one of an enum's names (CLI11 checks it; the help lists them).
+template <typename Enum, std::size_t N>
+CLI::Option* add_choice_option(CLI::App& cmd, const std::string& name, std::string& value,
+                               const util::EnumNames<Enum, N>& names, const std::string& help) {
+  return cmd.add_option(name, value, help)
+      ->check(CLI::IsMember(util::names_of(names)))
+      ->capture_default_str();
+}
+
+// An old spelling kept for scripts: hidden from --help; when given, warns "OLD is deprecated:
+// use NEW" and hands its value to `apply`.
+CLI::Option* add_deprecated_option(CLI::App& cmd, const std::string& old_name,
+                                   const std::string& use_instead,
+                                   std::function<void(const std::string&)> apply);
+CLI::Option* add_deprecated_flag(CLI::App& cmd, const std::string& old_name,
+                                 const std::string& use_instead, std::function<void()> apply);
+
+// --quiet on root and every sub-command (as --pigments): set before any command runs.
+void add_quiet_option(CLI::App& root);
+
+}  // namespace impasto::app

@@ -1,0 +1,399 @@
+// The impasto program run as a user runs it: each sub-command's options, exit status,
+// messages and outputs; progress in a log; --json that parses; old spellings that still work.
+// Every run is small (a 240x160-cell session of three strokes, a 64x48-cell painting).
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <CLI/CLI.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "command.hpp"
+#include "pigment_folder_option.hpp"
+#include "impasto/paintcore/painting.hpp"
+#include "impasto/render/image.hpp"
+#include "vocabulary.hpp"
+
+namespace impasto::app {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CommandRun {
+  int status = -1;
+  std::string out, err;
+};
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+int count_of(const std::string& text, const std::string& part) {
+  int n = 0;
+  for (std::size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++n;
+  return n;
+}
+
+class Cli : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() /
+           ("impasto_cli_" + std::string(info->name()) + "_" + std::to_string(getpid()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  // `impasto ARGS` with the environment assignments `env` (e.g. "IMPASTO_PROGRESS=lines"),
+  // standard output and error apart. The recovery folder is this test's own.
+  CommandRun impasto(const std::string& args, const std::string& env = "") const {
+    const fs::path out = dir_ / "stdout.txt", err = dir_ / "stderr.txt";
+    const std::string command = "cd '" + dir_.string() + "' && env -u IMPASTO_PROGRESS " +
+                                "XDG_STATE_HOME='" + (dir_ / "state").string() + "' " + env +
+                                " '" IMPASTO_EXECUTABLE "' " + args + " >'" + out.string() +
+                                "' 2>'" + err.string() + "' </dev/null";
+    const int status = std::system(command.c_str());
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(out), read_text(err)};
+  }
+
+  // A short session on a small canvas: three loaded strokes.
+  fs::path session() const {
+    const fs::path path = dir_ / "short.strokes";
+    if (fs::exists(path)) return path;
+    std::ofstream out(path);
+    out << "impasto-strokes 2\ncanvas 240 160 254\nbrush round size=4 stiffness=0.5\n";
+    const char* pigments[] = {"Ultramarine Blue", "Pyrrole Red", "Titanium White"};
+    double t = 0;
+    for (int k = 0; k < 3; ++k) {
+      out << "wipe\nload 30 \"" << pigments[k] << "\" 1\n";
+      for (int i = 0; i <= 40; ++i, t += 0.01) {
+        const bool down = i < 40;
+        out << "pen " << t << " " << 2 + 0.45 * i << " " << 4 + 4 * k << " " << (down ? 0.7 : 0)
+            << " 0 0 0 " << (down ? 17 : 16) << "\n";
+      }
+    }
+    return path;
+  }
+
+  // A 64x48-cell painting of that session, made once per test.
+  fs::path painting() const {
+    const fs::path path = dir_ / "small.impasto";
+    if (!fs::exists(path)) {
+      session();
+      const CommandRun r = impasto("replay short.strokes --size 64x48 --save small.impasto -q");
+      EXPECT_EQ(r.status, 0) << r.err;
+    }
+    return path;
+  }
+
+  fs::path dir_;
+};
+
+// Every sub-command, as "bench sim", from the registered commands.
+std::vector<std::string> command_paths() {
+  CLI::App root{"impasto"};
+  add_registered_commands(root);
+  std::vector<std::string> paths;
+  std::vector<std::pair<CLI::App*, std::string>> todo{{&root, ""}};
+  while (!todo.empty()) {
+    auto [app, path] = todo.back();
+    todo.pop_back();
+    for (CLI::App* sub : app->get_subcommands([](CLI::App*) { return true; })) {
+      const std::string name = path.empty() ? sub->get_name() : path + " " + sub->get_name();
+      paths.push_back(name);
+      todo.push_back({sub, name});
+    }
+  }
+  return paths;
+}
+
+TEST_F(Cli, TopLevelHelpListsEveryCommandAndPointsToTheVocabulary) {
+  const CommandRun r = impasto("--help");
+  ASSERT_EQ(r.status, 0) << r.err;
+  CLI::App root{"impasto"};
+  add_registered_commands(root);
+  for (CLI::App* sub : root.get_subcommands([](CLI::App*) { return true; }))
+    EXPECT_NE(r.out.find("  " + sub->get_name() + " "), std::string::npos) << sub->get_name();
+  EXPECT_NE(r.out.find("impasto help vocabulary"), std::string::npos);
+  EXPECT_NE(r.out.find("-q,--quiet"), std::string::npos);
+  EXPECT_EQ(impasto("help").out, r.out);
+}
+
+TEST_F(Cli, EverySubCommandHasAHelpWithoutOldSpellings) {
+  // The help texts in process (a program run each would take seconds), then two as run.
+  CLI::App root{"impasto"};
+  add_registered_commands(root);
+  setup_pigment_library(root);
+  add_quiet_option(root);
+  for (const std::string& path : command_paths()) {
+    CLI::App* app = &root;
+    std::istringstream names(path);
+    for (std::string name; names >> name;) app = app->get_subcommand(name);
+    const std::string help =
+        app->get_formatter()->make_help(app, app->get_name(), CLI::AppFormatMode::Normal);
+    EXPECT_NE(help.find("--quiet"), std::string::npos) << path;
+    for (const char* old : {"--png", "--stats", "--illuminant", "--width ", "Deprecated"})
+      EXPECT_EQ(help.find(old), std::string::npos) << path << " shows " << old;
+  }
+  for (const char* path : {"replay", "bench marks"}) {
+    const CommandRun r = impasto(std::string(path) + " --help");
+    EXPECT_EQ(r.status, 0) << path << ": " << r.err;
+    EXPECT_NE(r.out.find("Usage:"), std::string::npos) << path;
+  }
+}
+
+TEST_F(Cli, HelpVocabularyPrintsTheProgramsTables) {
+  const CommandRun r = impasto("help vocabulary");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out, vocabulary_markdown());
+}
+
+TEST_F(Cli, ReplayWithNothingToWriteSaysWhatItDidAndWhatWouldWrite) {
+  session();
+  const CommandRun r = impasto("replay short.strokes");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("replayed short.strokes: 3 strokes"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("240x160 cells"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("nothing written"), std::string::npos) << r.out;
+  for (const char* hint : {"-o FILE.png", "--save FILE.impasto", "--json"})
+    EXPECT_NE(r.out.find(hint), std::string::npos) << hint;
+  EXPECT_EQ(r.err, "");  // a short job in a log: no progress
+}
+
+TEST_F(Cli, ReplayWritesTheImageToOutAndThePaintingToSave) {
+  session();
+  const CommandRun r =
+      impasto("replay short.strokes -o image.png --save painting.impasto --wavelengths 4");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("wrote image.png"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("wrote painting.impasto"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("nothing written"), std::string::npos);
+  const render::Image image = render::read_png(dir_ / "image.png");
+  EXPECT_EQ(image.width, 240);
+  EXPECT_EQ(image.height, 160);
+  EXPECT_EQ(paintcore::Painting::load(dir_ / "painting.impasto").canvas().width_cells(), 240);
+}
+
+TEST_F(Cli, ReplayJsonIsTheStatisticsAloneOnStandardOutput) {
+  session();
+  const CommandRun r = impasto("replay short.strokes --json --save s.impasto");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json stats = nlohmann::json::parse(r.out);  // throws on anything else
+  EXPECT_EQ(stats.at("strokes"), 3);
+  EXPECT_EQ(stats.at("canvas").at("width_cells"), 240);
+  EXPECT_TRUE(stats.at("state_hash").is_string());
+}
+
+TEST_F(Cli, ReplayOldSpellingsStillWorkWithAWarning) {
+  session();
+  const CommandRun r = impasto("replay short.strokes --out old.impasto --png old.png --stats");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("--png is deprecated: use -o/--out"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--stats is deprecated: use --json"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--out old.impasto: --out is now the rendered image"), std::string::npos)
+      << r.err;
+  EXPECT_NO_THROW(nlohmann::json::parse(r.out));
+  EXPECT_EQ(paintcore::Painting::load(dir_ / "old.impasto").canvas().height_cells(), 160);
+  EXPECT_EQ(render::read_png(dir_ / "old.png").height, 160);
+}
+
+TEST_F(Cli, ReplayRefusesASaveThatIsNoPaintingAndTwoImages) {
+  session();
+  CommandRun r = impasto("replay short.strokes --save picture.png");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("--save picture.png: a painting is saved as FILE.impasto"),
+            std::string::npos)
+      << r.err;
+  r = impasto("replay short.strokes -o a.png --png b.png");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("two images"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "a.png"));
+}
+
+TEST_F(Cli, WavelengthsAreOneToSixteenOrFullEverywhere) {
+  session();
+  CommandRun r = impasto("replay short.strokes --wavelengths 17");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("expected 1..16 or full, not '17'"), std::string::npos) << r.err;
+  r = impasto("render " + painting().string() + " -o full.png --wavelengths full");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_TRUE(fs::exists(dir_ / "full.png"));
+  r = impasto("render " + painting().string() + " -o zero.png --wavelengths 0");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("--wavelengths 0 is deprecated: use --wavelengths full"), std::string::npos)
+      << r.err;
+  r = impasto("render " + painting().string() + " -o x.png --wavelengths many");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("--wavelengths"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, TheWindowRefusesFullWavelengthsBeforeOpening) {
+  const std::vector<std::string> paths = command_paths();
+  if (std::find(paths.begin(), paths.end(), "paint") == paths.end())
+    GTEST_SKIP() << "built without the window";
+  const CommandRun r = impasto("paint --wavelengths full", "DISPLAY=");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("full (every nm) is the CPU render's"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, SizeIsWidthByHeightInCells) {
+  session();
+  CommandRun r = impasto("replay short.strokes --size 120");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("expected WIDTHxHEIGHT in cells"), std::string::npos) << r.err;
+  r = impasto("replay short.strokes --size 120x80 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out).at("canvas").at("height_cells"), 80);
+  r = impasto("cracks generate --size 64x32 --out cracks.png --seed 3");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out).at("tiles"), 1);
+  const render::Image image = render::read_png(dir_ / "cracks.png");
+  EXPECT_EQ(image.width, 64);
+  EXPECT_EQ(image.height, 32);
+  // The old spellings: the same canvas, with a warning each.
+  r = impasto("cracks generate --width 64 --height 32 --seed 3");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(count_of(r.err, "is deprecated: use --size WxH"), 2) << r.err;
+}
+
+TEST_F(Cli, ProgressInALogIsPlainLinesEndingWithTheTotal) {
+  session();
+  const CommandRun r =
+      impasto("replay short.strokes -o p.png --wavelengths 3", "IMPASTO_PROGRESS=lines");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.err.find('\r'), std::string::npos);
+  std::istringstream lines(r.err);
+  std::string line, last_replay, last_render;
+  int replay_lines = 0, render_lines = 0;
+  while (std::getline(lines, line)) {
+    if (line.rfind("replay: ", 0) == 0) ++replay_lines, last_replay = line;
+    if (line.rfind("render: ", 0) == 0) ++render_lines, last_render = line;
+  }
+  EXPECT_GE(replay_lines, 2) << r.err;  // the first record, then the total
+  EXPECT_GE(render_lines, 2) << r.err;
+  EXPECT_NE(last_replay.find("100% "), std::string::npos) << last_replay;
+  EXPECT_NE(last_replay.find(" records, "), std::string::npos) << last_replay;
+  EXPECT_NE(last_replay.find("records/s, done"), std::string::npos) << last_replay;
+  EXPECT_NE(last_render.find("tiles/s, done"), std::string::npos) << last_render;
+}
+
+TEST_F(Cli, QuietPrintsOnlyResultsAndWarnings) {
+  session();
+  CommandRun r = impasto("replay short.strokes --quiet --save q.impasto", "IMPASTO_PROGRESS=lines");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(r.err, "");
+  EXPECT_TRUE(fs::exists(dir_ / "q.impasto"));
+  r = impasto("-q replay short.strokes --json --stats", "IMPASTO_PROGRESS=lines");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NO_THROW(nlohmann::json::parse(r.out));
+  EXPECT_EQ(r.err, "impasto: warning: --stats is deprecated: use --json\n");
+}
+
+TEST_F(Cli, RenderSaysWhatItWroteOrPrintsJson) {
+  CommandRun r = impasto("render " + painting().string() + " -o r.png --wavelengths 3");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("wrote r.png (64x48, rendered in ", 0), 0u) << r.out;
+  r = impasto("render " + painting().string() + " -o r.exr --wavelengths 3 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j.at("out"), "r.exr");
+  EXPECT_EQ(j.at("width"), 64);
+  EXPECT_EQ(j.at("height"), 48);
+  EXPECT_EQ(j.at("wavelengths"), 3);
+  EXPECT_GE(j.at("render_seconds").get<double>(), 0.0);
+  EXPECT_GE(j.at("load_seconds").get<double>(), 0.0);
+}
+
+TEST_F(Cli, RenderRefusesUnknownChoicesNamingThem) {
+  struct Case {
+    const char* option;
+    const char* a_choice;
+  };
+  for (const Case c :
+       {Case{"--display adobe-rgb", "display-p3"}, Case{"--adaptation cat02", "bradford"},
+        Case{"--storage double", "half"}, Case{"--flake-depth deep", "no-masking"},
+        Case{"--crack-model exact", "gouffe"}, Case{"--light-type laser", "spot"}}) {
+    const CommandRun r = impasto("render " + painting().string() + " -o x.png " + c.option);
+    EXPECT_NE(r.status, 0) << c.option;
+    EXPECT_NE(r.err.find(c.a_choice), std::string::npos) << c.option << ": " << r.err;
+  }
+  const CommandRun missing = impasto("render " + painting().string());
+  EXPECT_NE(missing.status, 0);
+  EXPECT_NE(missing.err.find("--out"), std::string::npos) << missing.err;
+}
+
+TEST_F(Cli, PigmentsListAndCheckPrintJson) {
+  CommandRun r = impasto("pigments list --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json list = nlohmann::json::parse(r.out);
+  bool white = false;
+  for (const auto& p : list) white |= p.at("name") == "Titanium White";
+  EXPECT_TRUE(white);
+  // A folder with one good pigment (exported from the library) and one broken file.
+  fs::create_directories(dir_ / "mine");
+  r = impasto("pigments export \"Burnt Sienna\" -o mine/sienna.csv");
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::ofstream(dir_ / "mine" / "broken.csv") << "# quantity: kubelka_munk\nwavelength_nm,K\n";
+  r = impasto("pigments check mine --json");
+  EXPECT_EQ(r.status, 1);
+  const nlohmann::json check = nlohmann::json::parse(r.out);
+  ASSERT_EQ(check.at("pigments").size(), 1u) << r.out;
+  EXPECT_EQ(check.at("pigments")[0].at("name"), "Burnt Sienna");
+  ASSERT_EQ(check.at("errors").size(), 1u) << r.out;
+  EXPECT_NE(check.at("errors")[0].get<std::string>().find("broken.csv"), std::string::npos);
+  r = impasto("pigments swatch \"Burnt Sienna\" --json --tint 1:4");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out).at("swatches").size(), 1u);
+}
+
+TEST_F(Cli, ColorXyzTakesTheLightAndTheOldIlluminant) {
+  std::ofstream(dir_ / "grey.csv") << "# quantity: reflectance\nwavelength_nm,grey\n380,0.5\n"
+                                      "780,0.5\n";
+  CommandRun r = impasto("color xyz grey.csv --light A --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json a = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(a.at("samples")[0].at("Lab")[0].get<double>(), 76.07, 0.5);  // L* of 0.5
+  r = impasto("color xyz grey.csv -i A --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(r.out), a);
+  EXPECT_NE(r.err.find("-i is deprecated: use --light"), std::string::npos) << r.err;
+}
+
+TEST_F(Cli, RecoverSavesToSaveAndStillTakesOut) {
+  const CommandRun r = impasto("recover --apply latest --out x.impasto");
+  EXPECT_EQ(r.status, 1);  // no session to recover in this test's folder
+  EXPECT_NE(r.err.find("--out is deprecated: use --save"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("no session to recover"), std::string::npos) << r.err;
+  EXPECT_EQ(impasto("recover").status, 0);
+}
+
+TEST_F(Cli, BenchSimPrintsOneJsonRowPerBrush) {
+  const CommandRun r = impasto("bench sim --json --runs 1 --steps 2 --brush 8 --brush 12");
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::istringstream lines(r.out);
+  std::string line;
+  std::vector<int> brushes;
+  while (std::getline(lines, line)) brushes.push_back(nlohmann::json::parse(line).at("brush"));
+  EXPECT_EQ(brushes, (std::vector<int>{8, 12}));
+}
+
+TEST_F(Cli, BenchMarksHeadWidthIsHeadMm) {
+  const CommandRun r = impasto("bench marks --size 0.1");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("--size is deprecated: use --head-mm"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("expected the head's width in mm"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace impasto::app
