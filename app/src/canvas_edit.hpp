@@ -8,6 +8,7 @@
 #include "impasto/paintcore/canvas_reframe.hpp"
 #include "impasto/paintcore/painting.hpp"
 #include "impasto/render/crack_close_up.hpp"
+#include "impasto/render/render_settings.hpp"
 
 namespace impasto::app {
 
@@ -35,6 +36,7 @@ struct ExportRequest {
   std::filesystem::path image;       // the render (.png or .exr), or empty
   std::filesystem::path height_map;  // .png (16-bit) or .exr (float mm), or empty
   std::filesystem::path normal_map;  // .png, or empty
+  render::RenderSettings settings;   // the image's light and look
 };
 
 // Writes what the request names; the maps at the same scale as the image (their pixel is a

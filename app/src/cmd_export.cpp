@@ -31,7 +31,7 @@ const CommandRegistrar registrar("export", [](CLI::App& root) {
       ->capture_default_str();
   cmd->add_option("-o,--out", args->image,
                   "The render (.png display-encoded, .exr linear), default light and settings "
-                  "(impasto render has them all)");
+                  "(impasto render has them all; the window's Image menu uses its light)");
   cmd->add_option("--height-map", args->height_map,
                   "The surface height in mm: .png (16-bit grey; offset, step and cell size in "
                   "its tEXt chunks) or .exr (float mm)");

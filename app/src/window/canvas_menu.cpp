@@ -1,0 +1,161 @@
+#include "window/canvas_menu.hpp"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstring>
+
+namespace impasto::app::window {
+namespace {
+
+constexpr std::array<const char*, 9> kAnchorLabels = {"##tl", "##t",  "##tr", "##l", "##c",
+                                                      "##r",  "##bl", "##b",  "##br"};
+constexpr std::array<int, 3> kScales = {1, 2, 4};
+
+bool begin_dialog(const char* title, bool& open) {
+  ImGui::SetNextWindowSize(ImVec2(460, 0), ImGuiCond_Appearing);
+  ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing,
+                          ImVec2(0.5f, 0.5f));
+  return ImGui::Begin(title, &open, ImGuiWindowFlags_NoCollapse);
+}
+
+}  // namespace
+
+CanvasMenuRequest CanvasMenu::draw(int canvas_width, int canvas_height,
+                                   const std::optional<std::filesystem::path>& painting_file) {
+  if (ImGui::BeginMainMenuBar()) {  // appends to the window's menu bar
+    if (ImGui::BeginMenu("Image")) {
+      const auto open = [&](Dialog dialog) {
+        open_ = dialog;
+        canvas_w_ = canvas_width;
+        canvas_h_ = canvas_height;
+        width_ = canvas_width;
+        height_ = canvas_height;
+        crop_ = {0, 0, canvas_width, canvas_height};
+        const std::string stem =
+            painting_file ? (painting_file->parent_path() / painting_file->stem()).string()
+                          : std::string("painting");
+        std::snprintf(stem_.data(), stem_.size(), "%s", stem.c_str());
+      };
+      if (ImGui::MenuItem("Resize canvas...")) open(Dialog::kResize);
+      if (ImGui::MenuItem("Crop...")) open(Dialog::kCrop);
+      ImGui::Separator();
+      if (ImGui::MenuItem("Export at scale and maps...")) open(Dialog::kExport);
+      ImGui::EndMenu();
+    }
+    ImGui::EndMainMenuBar();
+  }
+  switch (open_) {
+    case Dialog::kResize:
+      return draw_resize();
+    case Dialog::kCrop:
+      return draw_crop();
+    case Dialog::kExport:
+      return draw_export();
+    case Dialog::kNone:
+      break;
+  }
+  return {};
+}
+
+CanvasMenuRequest CanvasMenu::draw_resize() {
+  CanvasMenuRequest request;
+  bool open = true;
+  if (begin_dialog("Resize canvas", open)) {
+    ImGui::Text("Now %d x %d cells", canvas_w_, canvas_h_);
+    ImGui::InputInt("width (cells)", &width_);
+    ImGui::InputInt("height (cells)", &height_);
+    width_ = std::clamp(width_, 1, paintcore::kMaxCanvasCells);
+    height_ = std::clamp(height_, 1, paintcore::kMaxCanvasCells);
+    ImGui::TextUnformatted("The painting sits at:");
+    for (int k = 0; k < 9; ++k) {  // a 3 x 3 grid of anchors
+      if (k % 3 != 0) ImGui::SameLine();
+      ImGui::RadioButton(kAnchorLabels[static_cast<std::size_t>(k)], &anchor_, k);
+    }
+    if (width_ < canvas_w_ || height_ < canvas_h_)
+      ImGui::TextWrapped("Smaller: the paint outside is cut away (Edit > Undo brings it back).");
+    if (ImGui::Button("Resize")) {
+      request.frame = paintcore::anchored_frame(canvas_w_, canvas_h_, width_, height_,
+                                                static_cast<paintcore::CanvasAnchor>(anchor_));
+      open = false;
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) open = false;
+  }
+  ImGui::End();
+  if (!open) open_ = Dialog::kNone;
+  return request;
+}
+
+CanvasMenuRequest CanvasMenu::draw_crop() {
+  CanvasMenuRequest request;
+  bool open = true;
+  if (begin_dialog("Crop", open)) {
+    ImGui::Text("Keep a rectangle of the %d x %d cells", canvas_w_, canvas_h_);
+    ImGui::InputInt("left (cells)", &crop_[0]);
+    ImGui::InputInt("top (cells)", &crop_[1]);
+    crop_[0] = std::clamp(crop_[0], 0, canvas_w_ - 1);
+    crop_[1] = std::clamp(crop_[1], 0, canvas_h_ - 1);
+    ImGui::InputInt("width (cells)", &crop_[2]);
+    ImGui::InputInt("height (cells)", &crop_[3]);
+    crop_[2] = std::clamp(crop_[2], 1, canvas_w_ - crop_[0]);
+    crop_[3] = std::clamp(crop_[3], 1, canvas_h_ - crop_[1]);
+    ImGui::TextWrapped("The paint outside is cut away (Edit > Undo brings it back).");
+    if (ImGui::Button("Crop")) {
+      request.frame = paintcore::crop_frame(crop_[0], crop_[1], crop_[2], crop_[3]);
+      open = false;
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) open = false;
+  }
+  ImGui::End();
+  if (!open) open_ = Dialog::kNone;
+  return request;
+}
+
+CanvasMenuRequest CanvasMenu::draw_export() {
+  CanvasMenuRequest request;
+  bool open = true;
+  if (begin_dialog("Export at scale and maps", open)) {
+    ImGui::Combo("scale", &scale_index_,
+                 "1x\0"
+                 "2x\0"
+                 "4x\0");
+    const int scale = kScales[static_cast<std::size_t>(std::clamp(scale_index_, 0, 2))];
+    ImGui::Text("%d x %d pixels, relief interpolated smoothly", canvas_w_ * scale,
+                canvas_h_ * scale);
+    ImGui::InputText("files (stem)", stem_.data(), stem_.size());
+    const std::string stem = stem_.data();
+    const std::string suffix = scale > 1 ? "@" + std::to_string(scale) + "x" : "";
+    ImGui::Checkbox(("image: " + stem + suffix + ".png").c_str(), &image_);
+    ImGui::TextUnformatted("height map (mm):");
+    ImGui::SameLine();
+    ImGui::RadioButton("none", &height_format_, 0);
+    ImGui::SameLine();
+    ImGui::RadioButton("16-bit PNG", &height_format_, 1);
+    ImGui::SameLine();
+    ImGui::RadioButton("float EXR", &height_format_, 2);
+    ImGui::Checkbox(("normal map, OpenGL +Y up: " + stem + suffix + ".normal.png").c_str(),
+                    &normal_);
+    const bool any = image_ || height_format_ != 0 || normal_;
+    ImGui::BeginDisabled(!any || stem.empty());
+    if (ImGui::Button("Export")) {
+      ExportRequest e;
+      e.scale = scale;
+      if (image_) e.image = stem + suffix + ".png";
+      if (height_format_ != 0)
+        e.height_map = stem + suffix + (height_format_ == 1 ? ".height.png" : ".height.exr");
+      if (normal_) e.normal_map = stem + suffix + ".normal.png";
+      request.exports = e;
+      open = false;
+    }
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) open = false;
+  }
+  ImGui::End();
+  if (!open) open_ = Dialog::kNone;
+  return request;
+}
+
+}  // namespace impasto::app::window

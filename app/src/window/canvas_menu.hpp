@@ -1,0 +1,44 @@
+#pragma once
+// The Image menu: Resize canvas..., Crop... and Export at scale and maps..., each with a small
+// dialog. The menu only asks; the window applies a reframe (a new session from the reframed
+// painting, paint_window.cpp) and runs the export (canvas_edit.hpp).
+#include <array>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "canvas_edit.hpp"
+#include "impasto/paintcore/canvas_reframe.hpp"
+
+namespace impasto::app::window {
+
+struct CanvasMenuRequest {
+  std::optional<paintcore::CanvasFrame> frame;  // resize or crop: apply this frame
+  std::optional<ExportRequest> exports;         // write these files
+};
+
+class CanvasMenu {
+ public:
+  // Appends the Image menu to the main menu bar and draws an open dialog. `painting_file`
+  // names the exports' default stem.
+  CanvasMenuRequest draw(int canvas_width, int canvas_height,
+                         const std::optional<std::filesystem::path>& painting_file);
+
+ private:
+  enum class Dialog { kNone, kResize, kCrop, kExport };
+  CanvasMenuRequest draw_resize();
+  CanvasMenuRequest draw_crop();
+  CanvasMenuRequest draw_export();
+
+  Dialog open_ = Dialog::kNone;
+  int canvas_w_ = 0, canvas_h_ = 0;
+  int width_ = 0, height_ = 0;
+  int anchor_ = 4;             // CanvasAnchor's order: centre
+  std::array<int, 4> crop_{};  // x, y, w, h
+  int scale_index_ = 1;        // 1x, 2x, 4x
+  std::array<char, 512> stem_{};
+  bool image_ = true, normal_ = true;
+  int height_format_ = 1;  // 0 none, 1 16-bit PNG, 2 float EXR
+};
+
+}  // namespace impasto::app::window
