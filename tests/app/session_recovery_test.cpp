@@ -251,7 +251,26 @@ TEST(Rebuild, FromTheLatestMarkedSaveAndEarlierOnesWhenItIsGone) {
 }
 
 TEST(Rebuild, AnUndoReachingBackPastASaveUsesAnEarlierBase) {
+  // A save without its undo history (saved_history_bytes 0): the undos after it cannot be
+  // replayed from it, so the rebuild starts from the painting the session opened.
   TempDir dir("impasto_rebuild_undo");
+  LiveRun live;
+  live.save(dir.path() / "start.impasto", true);
+  live.play(stroke(3.0));
+  live.painting.set_saved_history_bytes(0);
+  live.save(dir.path() / "saved.impasto");
+  live.play({input::UndoEvent{}, input::UndoEvent{}});  // the stroke and its load
+  live.play(stroke(5.0));
+  ReplayOptions options;
+  options.threads = 1;
+  const RebuiltSession rebuilt = rebuild_session(live.recording, options);
+  EXPECT_EQ(rebuilt.painting.state_hash(), live.painting.state_hash());
+  EXPECT_NE(rebuilt.base.find("start.impasto"), std::string::npos) << rebuilt.base;
+}
+
+TEST(Rebuild, AnUndoReachingBackPastASaveUndoesIntoItsSavedHistory) {
+  // By default a save keeps its undo history: the undos after it replay from it.
+  TempDir dir("impasto_rebuild_undo_history");
   LiveRun live;
   live.save(dir.path() / "start.impasto", true);
   live.play(stroke(3.0));
@@ -262,7 +281,7 @@ TEST(Rebuild, AnUndoReachingBackPastASaveUsesAnEarlierBase) {
   options.threads = 1;
   const RebuiltSession rebuilt = rebuild_session(live.recording, options);
   EXPECT_EQ(rebuilt.painting.state_hash(), live.painting.state_hash());
-  EXPECT_NE(rebuilt.base.find("start.impasto"), std::string::npos) << rebuilt.base;
+  EXPECT_NE(rebuilt.base.find("saved.impasto"), std::string::npos) << rebuilt.base;
 }
 
 // A save mark is only as good as the round trip: the file must load with the hash the mark
