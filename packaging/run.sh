@@ -9,5 +9,5 @@ cmake --build build/release -j "$(nproc)" --target impasto
 if [ -n "${DISPLAY:-}${WAYLAND_DISPLAY:-}" ] && ./build/release/app/impasto paint --help >/dev/null 2>&1; then
   exec ./build/release/app/impasto paint "$@"
 fi
-./build/release/app/impasto replay data/strokes/demo.dat --stats --png demo.png "$@"
+./build/release/app/impasto replay data/strokes/demo.dat --json -o demo.png "$@"
 echo "wrote $(pwd)/demo.png"

@@ -120,7 +120,9 @@ void ProgressReporter::draw(std::uint64_t done, std::uint64_t total, bool last) 
   text += head;
   text += rate_text;
   if (last) {
-    text += ", done";
+    char took[32];
+    std::snprintf(took, sizeof took, ", done in %.1f s", elapsed);
+    text += took;
   } else if (rate > 0) {
     text += ", " + describe_duration(double(total - std::min(done, total)) / rate) + " left";
   }

@@ -92,6 +92,14 @@ const std::vector<VocabularyChoice>& vocabulary_choices() {
         choice("--shape", "a crack's or a pit's section", cracks::kCavityShapeNames,
                cracks::CavityShape::VGroove),
     };
+    list.push_back(choice("--surface", "the paint surface's reflection model",
+                          render::kSurfaceModelNames, defaults.surface.model));
+    list.push_back(choice("--medium", "the finish the paint's medium dries to",
+                          render::surface::kFinishNames, defaults.surface.medium));
+    VocabularyChoice varnish{"--varnish", "a varnish over the whole painting", {"none"}, "none"};
+    for (const std::string& finish : util::names_of(render::surface::kFinishNames))
+      varnish.names.push_back(finish);
+    list.push_back(std::move(varnish));
     VocabularyChoice bodies{"--body", "a paint's body, fluid to paste", {}, ""};
     for (const auto& info : paintcore::kPaintBodies) bodies.names.emplace_back(info.name);
     bodies.default_name = paintcore::body_info(paintcore::kDefaultPaintBody).name;
