@@ -123,19 +123,23 @@ void FileBrowser::draw_places() {
       if (place_button(folder_label(folder), folder)) navigate(folder);
     }
   }
-  if (request_.recent_files.empty()) return;
-  ImGui::Spacing();
-  ImGui::TextDisabled("Recent");
-  std::vector<fs::path> shown;
+  // Opening: the recent paintings themselves; saving: the folders they are in, each once.
+  const bool opening = !writes_file(request_.purpose);
+  std::vector<fs::path> shown = remembered, items;
   for (const fs::path& file : request_.recent_files) {
-    // Opening: the recent paintings themselves; saving: the folders they are in.
-    const bool opening = !writes_file(request_.purpose);
     const fs::path item = opening ? file : file.parent_path();
     if (std::find(shown.begin(), shown.end(), item) != shown.end()) continue;
     shown.push_back(item);
-    const std::string label = opening ? file.filename().string() : folder_label(item);
-    if (place_button(label, item)) {
-      navigate(opening ? file.parent_path() : item);
+    items.push_back(file);
+  }
+  if (items.empty()) return;
+  ImGui::Spacing();
+  ImGui::TextDisabled("Recent");
+  for (const fs::path& file : items) {
+    const fs::path folder = file.parent_path();
+    if (place_button(opening ? file.filename().string() : folder_label(folder),
+                     opening ? file : folder)) {
+      navigate(folder);
       if (opening) name_ = file.filename().string();
     }
   }
@@ -221,13 +225,17 @@ FileBrowserResult FileBrowser::draw() {
   ImGui::SameLine();
   if (io.KeyCtrl && ImGui::IsKeyPressed('L')) ImGui::SetKeyboardFocusHere();
   ImGui::SetNextItemWidth(-160.0f);
-  if (ImGui::InputText("##folder", &folder_input_, ImGuiInputTextFlags_EnterReturnsTrue)) {
+  // Enter, or leaving the field after typing in it, goes to the folder typed.
+  const bool entered =
+      ImGui::InputText("##folder", &folder_input_,
+                       ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
+  if (entered || (ImGui::IsItemDeactivated() && folder_input_ != folder_.string())) {
     const fs::path typed = resolve_typed_path(folder_, folder_input_);
     std::error_code code;
     if (fs::is_directory(typed, code)) {
       navigate(typed);
-      focus_name_ = true;
-    } else if (fs::is_directory(typed.parent_path(), code)) {
+      focus_name_ = entered;
+    } else if (entered && fs::is_directory(typed.parent_path(), code)) {
       navigate(typed.parent_path());
       accepted = typed.filename().string();  // a file's path: as if its name were typed
     } else {
@@ -264,7 +272,10 @@ FileBrowserResult FileBrowser::draw() {
     focus_name_ = false;
   }
   ImGui::SetNextItemWidth(-230.0f);
-  if (ImGui::InputText("##name", &name_, ImGuiInputTextFlags_EnterReturnsTrue)) accepted = name_;
+  if (ImGui::InputText("##name", &name_,
+                       ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll)) {
+    accepted = name_;
+  }
   ImGui::SameLine();
   ImGui::SetNextItemWidth(-1.0f);
   if (ImGui::BeginCombo("##type", filters_.at(filter_).label.c_str())) {
