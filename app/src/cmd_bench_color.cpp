@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "command.hpp"
+#include "progress.hpp"
 #include "vocabulary.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).
@@ -75,11 +76,17 @@ void run(const BenchColorArgs& args) {
 
   std::vector<AccuracyResult> rows;
   std::vector<TrainingRow> training_rows;
+  const std::size_t n = args.nodes.size();
+  const std::uint64_t steps =
+      args.lights.size() * ((trained ? n : 0) + n + 1 + (args.half ? n : 0));
+  std::uint64_t done = 0;
+  ProgressReporter progress("bench color", "rows");
   for (const std::string& light_name : args.lights) {
     const data::Spectrum light = data::light_from_spec(light_name);
     if (trained) {
       for (int n : args.nodes) {
         training_rows.push_back(train_rule(light, light_name, n, weights, pigments));
+        progress.update(++done, steps);
       }
     }
     std::vector<int> node_counts = args.nodes;
@@ -88,13 +95,16 @@ void run(const BenchColorArgs& args) {
       rows.push_back(evaluate_color_accuracy(light, light_name, n, pigments, samples,
                                              ReflectanceStorage::float32, weights,
                                              args.timing_cells));
+      progress.update(++done, steps);
       if (args.half && n != 0) {
         rows.push_back(evaluate_color_accuracy(light, light_name, n, pigments, samples,
                                                ReflectanceStorage::float16, weights,
                                                args.timing_cells));
+        progress.update(++done, steps);
       }
     }
   }
+  progress.finish();
 
   if (args.json) {
     for (const AccuracyResult& r : rows) {

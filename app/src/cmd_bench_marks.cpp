@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "command.hpp"
+#include "progress.hpp"
 #include "vocabulary.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).
@@ -60,9 +61,13 @@ void run(BenchMarksArgs args) {
   if (!args.json)
     std::printf("%-8s %-6s %7s %6s %6s %6s %6s %7s %8s %8s %7s %8s\n", "head", "body", "load",
                 "dep%", "med", "p90", "p99", "ridge", "furrow", "bristle", "width", "us/step");
+  ProgressReporter progress("bench marks", "marks");
+  const std::uint64_t total = heads.size() * bodies.size();
+  std::uint64_t done = 0;
   for (const std::string& head : heads)
     for (const paintcore::PaintBody body : bodies) {
       const paintcore::MarkFigures f = paintcore::measure_mark(head, body, args.stroke);
+      progress.clear();  // the row goes where the bar was; the bar again below it
       const std::string body_name(paintcore::body_info(body).name);
       if (args.json) {
         std::cout << nlohmann::json{{"head", head},
@@ -90,6 +95,7 @@ void run(BenchMarksArgs args) {
                     f.furrow_period_mm, f.bristle_spacing_mm, f.width_mm / f.size_mm,
                     1e6 * f.seconds_per_step);
       }
+      progress.update(++done, total);
     }
 }
 
@@ -102,7 +108,7 @@ const CommandRegistrar registrar("bench marks", [](CLI::App& root) {
   cmd->add_option("--head", args->heads, "Heads to measure (default: every head)");
   cmd->add_option("--body", args->bodies, "Paint bodies (default: all)")
       ->check(CLI::IsMember(paint_body_names_list()));
-  add_dpi_option(*cmd, args->stroke.dpi)->check(CLI::Range(20.0, 1200.0));
+  add_dpi_option(*cmd, args->stroke.dpi, {}, 20.0, 1200.0);
   cmd->add_option("--head-mm", args->stroke.size_mm, "Head width (mm)")
       ->check(CLI::Range(0.5, 50.0))
       ->capture_default_str();

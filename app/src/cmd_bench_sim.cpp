@@ -12,6 +12,7 @@
 
 #include "command.hpp"
 #include "impasto/util/statistics.hpp"
+#include "progress.hpp"
 #include "vocabulary.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).
@@ -33,14 +34,19 @@ void run(const BenchSimArgs& args) {
   if (args.threads < 0) throw std::runtime_error("bench sim: --threads must be >= 0");
   if (!args.json)
     std::printf("%8s %18s %16s %22s\n", "brush", "cells/s (brush)", "steps/s", "cells/s (window)");
+  ProgressReporter progress("bench sim", "runs");
+  const std::uint64_t total = args.brushes.size() * static_cast<std::uint64_t>(args.runs);
+  std::uint64_t done = 0;
   for (const int brush : args.brushes) {
     std::vector<double> cells, steps, window;
     for (int r = 0; r < args.runs; ++r) {
       const auto result = paintcore::run_sim_benchmark(brush, args.steps, args.threads);
+      progress.update(++done, total);
       cells.push_back(result.cells_per_second);
       steps.push_back(result.steps_per_second);
       window.push_back(result.window_cells_per_second);
     }
+    progress.clear();
     if (args.json) {
       std::cout << nlohmann::json{{"brush", brush},
                                   {"cells_per_second", median(cells)},
@@ -50,6 +56,7 @@ void run(const BenchSimArgs& args) {
       std::printf("%5dx%-3d %18.4g %16.4g %22.4g\n", brush, brush, median(cells), median(steps),
                   median(window));
     }
+    progress.update(done, total);  // the bar again, below the row
   }
 }
 

@@ -196,7 +196,7 @@ const CommandRegistrar registrar("cracks", [](CLI::App& root) {
 
   auto gen = std::make_shared<GenerateArgs>();
   CLI::App* g = group->add_subcommand("generate", "Generate a craquelure crack map");
-  add_size_option(*g, gen->size, "of the uniform film (default 1024x1024)");
+  add_size_option(*g, gen->size, "for the uniform film (default 1024x1024)");
   add_deprecated_option(*g, "--width", "--size WxH", [gen](const std::string& text) {
     gen->size = CanvasSize{parse_canvas_size(text + "x1", "--width").width,
                            gen->size.value_or(CanvasSize{1024, 1024}).height};
@@ -223,7 +223,7 @@ const CommandRegistrar registrar("cracks", [](CLI::App& root) {
   g->add_option("--painting", gen->painting,
                 "Crack this painting's dry layers (its size and cells; needs --save)");
   g->add_flag("--dry", gen->dry, "Dry the painting's wet paint before cracking it");
-  add_save_option(*g, gen->save, "the cracked painting (with --painting)");
+  add_save_option(*g, gen->save, "the cracked one (with --painting)");
   g->callback([gen] { run_generate(*gen); });
 
   auto imp = std::make_shared<ImportArgs>();
@@ -237,13 +237,13 @@ const CommandRegistrar registrar("cracks", [](CLI::App& root) {
   add_choice_option(*i, "--shape", imp->shape, kCavityShapeNames, "Crack section");
   i->add_option("--painting", imp->painting,
                 "Put the map into this painting (same size in cells; needs --save)");
-  add_save_option(*i, imp->save, "the cracked painting (with --painting)");
+  add_save_option(*i, imp->save, "the cracked one (with --painting)");
   i->callback([imp] { run_import(*imp); });
 
   auto brush = std::make_shared<BrushArgs>();
   CLI::App* b = group->add_subcommand("brush", "Draw a crack along a polyline into a painting");
   b->add_option("painting", brush->painting, "The .impasto painting file")->required();
-  add_save_option(*b, brush->save, "the cracked painting")->required();
+  add_save_option(*b, brush->save, "the cracked one")->required();
   b->add_option("--points", brush->points, "Polyline, \"x,y x,y ...\" in mm")->required();
   add_choice_option(*b, "--shape", brush->shape, kCavityShapeNames, "Crack section");
   b->add_option("--depth-mm", brush->depth_mm, "Depth L (mm)")->check(CLI::PositiveNumber);

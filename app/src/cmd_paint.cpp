@@ -46,9 +46,10 @@ void setup(CLI::App& root) {
       ->check(CLI::Range(320, 8192));
   cmd->add_option("--window-height", args->options.window_height, "Window height in pixels")
       ->check(CLI::Range(240, 8192));
-  add_size_option(*cmd, args->size, "of a new canvas");
-  add_dpi_option(*cmd, args->options.new_canvas.dpi, "of a new canvas");
-  add_wavelengths_option(*cmd, args->options.wavelengths, false, "the window renders 1..16");
+  add_size_option(*cmd, args->size, "for a new canvas (default 1024x768)");
+  add_dpi_option(*cmd, args->options.new_canvas.dpi, "for a new canvas");
+  add_wavelengths_option(*cmd, args->options.wavelengths, false,
+                         "here 1..16 (the window renders on the GPU)");
   add_deprecated_option(*cmd, "--width", "--size WxH", [args](const std::string& text) {
     args->options.new_canvas.width_cells = parse_canvas_size(text + "x1", "--width").width;
   });

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
 
@@ -23,6 +24,7 @@ struct RecoverArgs {
   bool list = false;
   std::string apply, discard, save;
   bool force = false, keep = false;
+  bool json = false;
 };
 
 std::string hex64(std::uint64_t value) {
@@ -75,6 +77,17 @@ void run_recover(const RecoverArgs& args) {
     if (!args.keep) discard_session(s);
     return;
   }
+  if (args.json) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const auto& s : sessions)
+      list.push_back(
+          {{"id", s.id},
+           {"painting", s.painting ? s.painting->string() : ""},
+           {"recording", s.strokes.string()},
+           {"autosave", std::filesystem::exists(s.autosave) ? s.autosave.string() : ""}});
+    std::cout << nlohmann::json{{"folder", folder.string()}, {"sessions", list}}.dump(2) << "\n";
+    return;
+  }
   std::cout << "recovery folder: " << folder.string() << "\n";
   if (sessions.empty()) std::cout << "no session to recover\n";
   for (const auto& s : sessions) {
@@ -93,10 +106,10 @@ const CommandRegistrar registrar("recover", [](CLI::App& root) {
                   "Rebuild this session (its id, or 'latest') and save the painting (--save)");
   cmd->add_option("--discard", args->discard,
                   "Forget this session: remove its entry and autosave (the recording stays)");
-  add_save_option(*cmd, args->save,
-                  "where --apply puts the painting (default: NAME.recovered.impasto here)");
+  add_save_option(*cmd, args->save, "--apply's (default: NAME.recovered.impasto in this folder)");
   cmd->add_flag("--force", args->force, "Let --apply replace an existing --save file");
   cmd->add_flag("--keep", args->keep, "Keep the session recoverable after --apply");
+  add_json_flag(*cmd, args->json, "the list: the folder, and each session's id and files");
   add_deprecated_option(*cmd, "--out", "--save",
                         [args](const std::string& file) { args->save = file; });
   cmd->callback([args] { run_recover(*args); });

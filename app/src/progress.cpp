@@ -87,6 +87,14 @@ void ProgressReporter::finish() {
   if (shown_) draw(total_, total_, true);
 }
 
+void ProgressReporter::clear() {
+  std::lock_guard lock(mutex_);
+  if (style_ != ProgressStyle::bar || !shown_ || finished_) return;
+  std::fprintf(stderr, "\r\x1b[K");
+  std::fflush(stderr);
+  last_draw_ = {};  // redraw at the next update
+}
+
 void ProgressReporter::draw(std::uint64_t done, std::uint64_t total, bool last) {
   const auto now = Clock::now();
   const double elapsed = std::chrono::duration<double>(now - start_).count();

@@ -37,6 +37,9 @@ class ProgressReporter {
   void update(std::uint64_t done, std::uint64_t total);
   // Ends the bar's line (or writes the last line) when anything was shown. Idempotent.
   void finish();
+  // Before a line of results on a terminal: takes the bar off its line (the next update
+  // draws it again below the results).
+  void clear();
   // A callback reporting here, for the job; valid while this reporter lives.
   util::ProgressCallback callback();
 

@@ -210,9 +210,10 @@ CLI::Option* add_dpi_option(CLI::App& cmd, std::optional<double>& dpi, std::stri
       ->check(CLI::Range(1.0, 20000.0));
 }
 
-CLI::Option* add_dpi_option(CLI::App& cmd, double& dpi, std::string_view detail) {
+CLI::Option* add_dpi_option(CLI::App& cmd, double& dpi, std::string_view detail, double min_dpi,
+                            double max_dpi) {
   return cmd.add_option("--dpi", dpi, vocabulary_help("--dpi", detail))
-      ->check(CLI::Range(1.0, 20000.0))
+      ->check(CLI::Range(min_dpi, max_dpi))
       ->capture_default_str();
 }
 

@@ -60,7 +60,8 @@ CLI::Option* add_size_option(CLI::App& cmd, std::optional<CanvasSize>& size,
                              std::string_view detail = {}, bool old_square_number = false);
 CLI::Option* add_dpi_option(CLI::App& cmd, std::optional<double>& dpi,
                             std::string_view detail = {});
-CLI::Option* add_dpi_option(CLI::App& cmd, double& dpi, std::string_view detail = {});
+CLI::Option* add_dpi_option(CLI::App& cmd, double& dpi, std::string_view detail = {},
+                            double min_dpi = 1.0, double max_dpi = 20000.0);
 // nodes: 1..16, or 0 for "full" where full_allowed (else "full" is refused at parse time).
 CLI::Option* add_wavelengths_option(CLI::App& cmd, int& nodes, bool full_allowed,
                                     std::string_view detail = {});

@@ -15,9 +15,9 @@
 #include <vector>
 
 #include "command.hpp"
-#include "pigment_folder_option.hpp"
 #include "impasto/paintcore/painting.hpp"
 #include "impasto/render/image.hpp"
+#include "pigment_folder_option.hpp"
 #include "vocabulary.hpp"
 
 namespace impasto::app {
@@ -376,6 +376,9 @@ TEST_F(Cli, RecoverSavesToSaveAndStillTakesOut) {
   EXPECT_NE(r.err.find("--out is deprecated: use --save"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("no session to recover"), std::string::npos) << r.err;
   EXPECT_EQ(impasto("recover").status, 0);
+  const CommandRun list = impasto("recover --json");
+  ASSERT_EQ(list.status, 0) << list.err;
+  EXPECT_TRUE(nlohmann::json::parse(list.out).at("sessions").empty());
 }
 
 TEST_F(Cli, BenchSimPrintsOneJsonRowPerBrush) {
