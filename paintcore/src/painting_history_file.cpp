@@ -2,6 +2,8 @@
 
 #include <vector>
 
+#include "impasto/files/memory_budget.hpp"
+
 namespace impasto::paintcore {
 using namespace file_io;  // NOLINT: the file's own building blocks
 
@@ -139,7 +141,7 @@ void write_canvas(W& w, const Canvas& canvas) {
 }
 
 std::unique_ptr<Canvas> read_canvas(Reader& r, const CanvasSpec& painting, const std::string& field,
-                                    const std::string& file) {
+                                    const std::string& file, std::uint64_t& table_bytes) {
   CanvasSpec spec = painting;
   spec.width_cells = r.get<std::int32_t>(field + ".width_cells");
   spec.height_cells = r.get<std::int32_t>(field + ".height_cells");
@@ -150,6 +152,14 @@ std::unique_ptr<Canvas> read_canvas(Reader& r, const CanvasSpec& painting, const
   } catch (const std::exception& e) {
     r.fail(field, e.what());
   }
+  // Each kept canvas has a tile table of its declared size, whatever its tiles: a crafted
+  // history of many huge frames must fail by name, not exhaust memory.
+  const auto tiles_along = [](int cells) {
+    return static_cast<std::uint64_t>(cells + kTileSize - 1) / kTileSize;
+  };
+  table_bytes += tiles_along(spec.width_cells) * tiles_along(spec.height_cells) *
+                 (sizeof(std::unique_ptr<Tile>) + 1);
+  files::check_allocation(file, "the undo history's canvases (" + field + ")", table_bytes);
   auto canvas = std::make_unique<Canvas>(spec);
   const int tile_count = canvas->tile_count();
   const auto tiles =
@@ -195,6 +205,7 @@ void write_step(W& w, const UndoStep& step) {
 struct Chain {
   std::unique_ptr<Canvas> frame;  // an empty canvas of the step's frame (for its weave)
   std::size_t layers = 0;
+  std::uint64_t table_bytes = 0;  // the kept canvases' tile tables, both ways
 };
 
 void set_frame(Chain& chain, const CanvasSpec& spec) {
@@ -244,7 +255,7 @@ UndoStep read_step(Reader& r, const std::string& field, bool is_redo, Chain& cha
   if (r.get<std::uint8_t>(field + ".has_canvas") != 0) {
     if (!step.tiles.empty() || !added.empty())
       r.fail(field + ".has_canvas", "a reframe step holds no tiles or layers of its own");
-    step.canvas = read_canvas(r, painting, field + ".canvas", file);
+    step.canvas = read_canvas(r, painting, field + ".canvas", file, chain.table_bytes);
     step.bytes += canvas_bytes(*step.canvas);
   }
   // The step against the state it applies to. Undo erases the layers from dry_layer_count
@@ -307,7 +318,7 @@ void read_history(const Canvas& canvas, UndoHistory& history, Reader& r, const s
   for (std::uint64_t k = 0; k < undo_count; ++k)
     undo.push_front(
         read_step(r, "history.undo[" + std::to_string(k) + "]", false, chain, painting, file));
-  chain = Chain{std::make_unique<Canvas>(painting), canvas.dry_layers().size()};
+  chain = Chain{std::make_unique<Canvas>(painting), canvas.dry_layers().size(), chain.table_bytes};
   for (std::uint64_t k = 0; k < redo_count; ++k)
     redo.push_front(
         read_step(r, "history.redo[" + std::to_string(k) + "]", true, chain, painting, file));

@@ -7,6 +7,10 @@ namespace impasto::paintcore {
 PaintTotals Painting::reframe_canvas(const CanvasFrame& frame) {
   Impl& p = *impl_;
   validate(frame, p.canvas.spec());  // before anything changes
+  const bool same = frame.width_cells == p.canvas.width_cells() &&
+                    frame.height_cells == p.canvas.height_cells() && frame.offset_x_cells == 0 &&
+                    frame.offset_y_cells == 0;
+  if (same) return PaintTotals{0.0, std::vector<double>(p.slots.size(), 0.0)};  // no step
   end_stroke();
   CutPaint cut;
   Canvas next = reframed_canvas(p.canvas, frame, slot_count(), cut);

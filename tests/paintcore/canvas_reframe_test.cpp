@@ -151,6 +151,16 @@ TEST(CanvasReframe, AnInvalidFrameChangesNothing) {
   EXPECT_EQ(p.undo_depth(), painted().undo_depth());
 }
 
+TEST(CanvasReframe, TheSameFrameIsNoStep) {
+  Painting p = painted();
+  const std::size_t depth = p.undo_depth();
+  const std::uint64_t h = p.state_hash();
+  EXPECT_EQ(p.reframe_canvas(anchored_frame(200, 150, 200, 150, CanvasAnchor::kCenter)).volume,
+            0.0);
+  EXPECT_EQ(p.undo_depth(), depth);
+  EXPECT_EQ(p.state_hash(), h);
+}
+
 TEST(CanvasReframe, AnchorsByName) {
   EXPECT_EQ(parse_canvas_anchor("centre"), CanvasAnchor::kCenter);
   EXPECT_EQ(parse_canvas_anchor("bottom-left"), CanvasAnchor::kBottomLeft);
