@@ -14,6 +14,7 @@
 #include "impasto/files/input_file.hpp"
 #include "impasto/files/memory_budget.hpp"
 #include "impasto/render/image.hpp"
+#include "impasto/render/png_encoder.hpp"
 
 namespace impasto::render {
 namespace {
@@ -26,37 +27,17 @@ void check_size(const Image& image, const std::filesystem::path& path) {
   }
 }
 
-std::uint8_t to_byte(float value) {
-  const float v = std::isnan(value) ? 0.0f : std::clamp(value, 0.0f, 1.0f);
-  return static_cast<std::uint8_t>(std::lround(v * 255.0f));
-}
-
 }  // namespace
 
-// libpng's simplified API: no setjmp/longjmp across C++ frames, errors come back as text.
+// Encoded in memory in parallel (png_encoder.hpp), then saved atomically (files::AtomicFile).
 void write_png(const std::filesystem::path& path, const Image& image) {
   check_size(image, path);
-  std::vector<std::uint8_t> bytes(image.rgb.size());
-  std::transform(image.rgb.begin(), image.rgb.end(), bytes.begin(), to_byte);
-  png_image png{};
-  png.version = PNG_IMAGE_VERSION;
-  png.width = static_cast<png_uint_32>(image.width);
-  png.height = static_cast<png_uint_32>(image.height);
-  png.format = PNG_FORMAT_RGB;  // 8-bit sRGB-encoded
-  // Encoded in memory, then saved atomically (files::AtomicFile).
-  png_alloc_size_t size = 0;
   std::string encoded;
-  if (png_image_write_to_memory(&png, nullptr, &size, 0, bytes.data(), 0, nullptr)) {
-    encoded.resize(size);
-    if (!png_image_write_to_memory(&png, encoded.data(), &size, 0, bytes.data(), 0, nullptr))
-      size = 0;
+  try {
+    encoded = encode_png(image);
+  } catch (const std::exception& error) {
+    throw std::runtime_error(path.string() + ": cannot write PNG: " + error.what());
   }
-  if (size == 0) {
-    const std::string message = png.message;
-    png_image_free(&png);
-    throw std::runtime_error(path.string() + ": cannot write PNG: " + message);
-  }
-  encoded.resize(size);
   files::write_file_atomically(path, encoded);
 }
 

@@ -13,7 +13,7 @@ void check_render_memory(const paintcore::Canvas& canvas, const std::string& whe
                           "rendering the " + std::to_string(canvas.width_cells()) + " x " +
                               std::to_string(canvas.height_cells()) +
                               "-cell canvas (canvas.width_cells x canvas.height_cells)",
-                          28 * cells);
+                          40 * cells);
 }
 
 Image render_painting(const paintcore::Painting& painting, const RenderSettings& settings,

@@ -10,10 +10,10 @@
 
 namespace impasto::render {
 
-// The memory a whole-canvas render takes (shaded tiles, heights and the image: 28 bytes a
-// cell), checked against the memory budget before anything is allocated: a crafted 193-byte
-// painting declaring a 131072 x 131072 canvas fails here at once. Throws std::runtime_error
-// "<where>: ..." naming the canvas fields.
+// The memory a whole-canvas render takes (shaded tiles, their shading factors, heights and
+// the image: 40 bytes a cell), checked against the memory budget before anything is
+// allocated: a crafted 193-byte painting declaring a 131072 x 131072 canvas fails here at
+// once. Throws std::runtime_error "<where>: ..." naming the canvas fields.
 void check_render_memory(const paintcore::Canvas& canvas, const std::string& where);
 
 // Every tile of the painting rendered with `settings` (pigments from the default database,

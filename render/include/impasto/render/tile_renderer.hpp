@@ -20,6 +20,9 @@
 namespace impasto::render {
 
 class FlakeShading;
+namespace kernels {
+struct PaddedPalette;
+}
 class SurfaceShading;
 
 // What one update() did.
@@ -61,6 +64,13 @@ class TileRenderer {
 
   // The display-encoded (or linear, per settings.display) RGB of the whole canvas.
   Image image() const;
+  // The per-cell scalar code (kubelka_munk.hpp, one node at a time) instead of the spectral
+  // kernels (structure-of-arrays over the nodes, SIMD): the reference the kernels are tested
+  // against. Takes effect at the next render_all.
+  void use_reference_kernels(bool reference) {
+    reference_kernels_ = reference;
+    needs_full_render_ = true;
+  }
   // How many times each tile has been fully shaded since construction (tests, profiling).
   std::uint64_t shade_count(int tile_index) const;
   // How many cells of a tile the flake-paint hook has looked at since construction: zero for
@@ -70,9 +80,15 @@ class TileRenderer {
  private:
   struct TileCache;
   void reset_caches(const paintcore::Canvas& canvas);
+  // may_reuse_shading: the heights and the shading settings are those the tile's cached
+  // shading factors were computed with (a relight).
   void shade_region(const paintcore::Canvas& canvas, int tile_index, int x0, int y0, int x1, int y1,
-                    TileCache& cache) const;
-  void store_heights(const paintcore::Canvas& canvas, int tile_index);
+                    TileCache& cache, bool may_reuse_shading) const;
+  // Returns whether any height of the tile changed.
+  bool store_heights(const paintcore::Canvas& canvas, int tile_index);
+  // Everything besides the heights and wet paint that the shading factors depend on.
+  std::vector<double> shading_key() const;
+  bool fast_kernels() const { return !reference_kernels_ && palette_.nodes() <= kMaxNodes; }
   void bake_dry_stack(const paintcore::Canvas& canvas, int tile_index, TileCache& cache) const;
   template <typename Work>
   void run_parallel(std::size_t count, const Work& work) const;
@@ -80,10 +96,14 @@ class TileRenderer {
   RenderSettings settings_;
   SpectralPalette palette_;
   std::unique_ptr<DisplayTransform> display_;
-  std::unique_ptr<FlakeShading> flakes_;  // null when no pigment of the palette has flakes
+  std::unique_ptr<FlakeShading> flakes_;           // null when no pigment of the palette has flakes
+  std::unique_ptr<kernels::PaddedPalette> lanes_;  // the palette laid out for the kernels
+  bool reference_kernels_ = false;
+  std::vector<double> shading_key_;          // shading_key() when the cached shading was computed
   std::unique_ptr<SurfaceShading> surface_;  // null for the Blinn-Phong surface model
   int width_ = 0, height_ = 0, tiles_x_ = 0, tiles_y_ = 0;
   double cell_mm_ = 0.0;
+  std::uint64_t weave_seed_ = 0;  // the bare canvas's heights (the weave) depend on it
   bool needs_full_render_ = true;
   std::vector<TileCache> tiles_;
   // The total height of every cell (row-major), each tile's lowest and highest: what the
