@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <numbers>
+#include <tuple>
 
 #include "impasto/render/display.hpp"
 #include "impasto/render/paint_layer.hpp"
@@ -12,6 +15,10 @@ namespace {
 
 using paintcore::kTileCells;
 using paintcore::kTileSize;
+
+// The kernel keeps the dipole profile out to this many spread lengths (its tail beyond
+// holds a few per cent of the light at most: e^(−σ_tr r)/r²).
+constexpr double kSpreadReach = 6.0;
 
 // How much each node counts in each linear-sRGB channel: the positive part of the
 // palette's readout through XYZ → linear sRGB, normalised per channel.
@@ -75,6 +82,14 @@ TopLayer top_layer(const paintcore::Canvas& canvas, int tile_index, int cell, in
   return top;
 }
 
+// Coefficients and thicknesses on a 2 % logarithmic grid: below what the K-M data resolve,
+// and what lets the spread reuse one kernel for the cells of a mix.
+double quantised(double value) {
+  if (!(value > 0.0)) return 0.0;
+  const double step = std::log(1.02);
+  return std::exp(std::round(std::log(value) / step) * step);
+}
+
 // Cumulative dipole reflectance within radius r: ∫0^r 2πr' R_d(r') dr' in closed form
 // (each pole integrates to e^(−σ_tr z) − z e^(−σ_tr d(r))/d(r)).
 double cumulative(const dipole::Medium& m, double r) {
@@ -116,7 +131,7 @@ SubsurfaceMap subsurface_map(const paintcore::Canvas& canvas, const SpectralPale
       SpreadingCell spreading;
       spreading.x = x;
       spreading.y = y;
-      spreading.layer_mm = top.volume_mm;
+      spreading.layer_mm = static_cast<float>(quantised(top.volume_mm));
       bool spreads = false;
       for (int c = 0; c < 3; ++c) {
         double absorption = 0.0, scattering = 0.0;
@@ -133,10 +148,11 @@ SubsurfaceMap subsurface_map(const paintcore::Canvas& canvas, const SpectralPale
           absorption += w * k;
           scattering += w * sc;
         }
-        const dipole::Medium medium = dipole::from_kubelka_munk(
+        dipole::Medium medium = dipole::from_kubelka_munk(
             absorption, scattering, settings.thickness_scale_mm, s.binder_index);
-        const double length =
-            std::min(dipole::diffusion_length_mm(medium), static_cast<double>(top.volume_mm));
+        medium.absorption_per_mm = quantised(medium.absorption_per_mm);
+        medium.reduced_scattering_per_mm = quantised(medium.reduced_scattering_per_mm);
+        const double length = spread_length_mm(medium, spreading.layer_mm);
         spreading.medium[static_cast<std::size_t>(c)] = medium;
         spreading.length_cells[static_cast<std::size_t>(c)] =
             static_cast<float>(length / map.cell_mm);
@@ -148,12 +164,38 @@ SubsurfaceMap subsurface_map(const paintcore::Canvas& canvas, const SpectralPale
   return map;
 }
 
-SpreadKernel spread_kernel(const dipole::Medium& medium, double length_mm, double cell_mm) {
+bool is_clear_layer(const dipole::Medium& medium, double layer_mm) {
+  // The scattering K-M's S stands for, (4/3) S = σ_s' − σ_a/3 (the mapping's K/8 term is
+  // absorption's share of the transport picture, not scattering that turns light aside).
+  const double scattering = medium.reduced_scattering_per_mm - medium.absorption_per_mm / 3.0;
+  return scattering * layer_mm < 1.0;
+}
+
+double spread_length_mm(const dipole::Medium& medium, double layer_mm) {
+  if (is_clear_layer(medium, layer_mm)) return layer_mm;
+  return std::min(dipole::diffusion_length_mm(medium), layer_mm);
+}
+
+SpreadKernel spread_kernel(const dipole::Medium& medium, double layer_mm, double cell_mm) {
   SpreadKernel kernel;
-  const double reach_mm = 3.0 * length_mm;
+  const bool clear = is_clear_layer(medium, layer_mm);
+  const double length_mm = spread_length_mm(medium, layer_mm);
+  // Clear: light comes back from the ground inside the escape cone, r <= d tan θ_c with
+  // sin θ_c = 1/η; the rest is reflected inside (and mostly absorbed by the ground's next
+  // bounce or the pigment). Scattering: the dipole out to kSpreadReach lengths.
+  const double sin_c = 1.0 / std::max(medium.eta, 1.0 + 1e-9);
+  const double reach_mm =
+      clear ? layer_mm * sin_c / std::sqrt(1.0 - sin_c * sin_c) : kSpreadReach * length_mm;
+  // Every cell with a part within the reach.
   kernel.radius =
-      std::clamp(static_cast<int>(std::floor(reach_mm / cell_mm + 0.5)), 0, kSubsurfaceMaxRadius);
-  const double total = cumulative(medium, reach_mm);
+      std::clamp(static_cast<int>(std::ceil(reach_mm / cell_mm - 0.5)), 0, kSubsurfaceMaxRadius);
+  // The profile (per mm²) and its integral out to the reach.
+  const double d2 = layer_mm * layer_mm;
+  const auto profile = [&](double r) {
+    return clear ? d2 / (std::numbers::pi * (r * r + d2) * (r * r + d2))
+                 : dipole::profile(medium, r);
+  };
+  const double total = clear ? 1.0 - d2 / (reach_mm * reach_mm + d2) : cumulative(medium, reach_mm);
   if (kernel.radius == 0 || !(total > 0.0)) {
     kernel.radius = 0;
     kernel.weights = {1.0f};
@@ -165,9 +207,18 @@ SpreadKernel spread_kernel(const dipole::Medium& medium, double length_mm, doubl
   for (int dy = -kernel.radius; dy <= kernel.radius; ++dy) {
     for (int dx = -kernel.radius; dx <= kernel.radius; ++dx) {
       if (dx == 0 && dy == 0) continue;
-      const double r = std::hypot(dx, dy) * cell_mm;
-      if (r > reach_mm) continue;
-      const double w = dipole::profile(medium, r) * cell_mm * cell_mm / total;
+      // The profile averaged over the cell (4 × 4 points): the centre's value alone misses
+      // most of a kernel about a cell wide.
+      constexpr int kSub = 4;
+      double w = 0.0;
+      for (int sy = 0; sy < kSub; ++sy) {
+        for (int sx = 0; sx < kSub; ++sx) {
+          const double r =
+              std::hypot(dx + (sx + 0.5) / kSub - 0.5, dy + (sy + 0.5) / kSub - 0.5) * cell_mm;
+          if (r <= reach_mm) w += profile(r);
+        }
+      }
+      w *= cell_mm * cell_mm / (kSub * kSub) / total;
       kernel.weights[static_cast<std::size_t>((dy + kernel.radius) * side + dx + kernel.radius)] =
           static_cast<float>(w);
       outside += w;
@@ -183,12 +234,22 @@ SpreadKernel spread_kernel(const dipole::Medium& medium, double length_mm, doubl
 }
 
 void apply_spread(const SubsurfaceMap& map, const Image& body, Image& out) {
+  // The map's coefficients are quantised (subsurface_map), so the cells of one stroke share
+  // a handful of kernels: each is made once.
+  using Key = std::tuple<double, double, double, float>;
+  std::map<Key, SpreadKernel> kernels;
   for (const SpreadingCell& cell : map.cells) {
     const float* source = body.pixel(cell.x, cell.y);
     for (int c = 0; c < 3; ++c) {
       const auto k = static_cast<std::size_t>(c);
-      const SpreadKernel kernel =
-          spread_kernel(cell.medium[k], cell.length_cells[k] * map.cell_mm, map.cell_mm);
+      const dipole::Medium& medium = cell.medium[k];
+      const Key key{medium.absorption_per_mm, medium.reduced_scattering_per_mm, medium.eta,
+                    cell.layer_mm};
+      auto found = kernels.find(key);
+      if (found == kernels.end()) {
+        found = kernels.emplace(key, spread_kernel(medium, cell.layer_mm, map.cell_mm)).first;
+      }
+      const SpreadKernel& kernel = found->second;
       const float light = source[c];
       out.pixel(cell.x, cell.y)[c] -= light;
       for (int dy = -kernel.radius; dy <= kernel.radius; ++dy) {

