@@ -78,11 +78,12 @@ void Notifications::draw() {
   ImGui::SetNextWindowPos(ImVec2(10.0f, io.DisplaySize.y - status_h - 10.0f), ImGuiCond_Always,
                           ImVec2(0.0f, 1.0f));
   ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0.0f), ImVec2(width, io.DisplaySize.y * 0.8f));
-  ImGui::SetNextWindowBgAlpha(0.0f);
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
   ImGui::Begin("##notifications", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
-                   ImGuiWindowFlags_NoNav);
+                   ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoBackground);
+  ImGui::PopStyleVar();
   std::uint64_t dismissed = 0;
   ImDrawList* draw = ImGui::GetWindowDrawList();
   for (const Note& note : notes_) {

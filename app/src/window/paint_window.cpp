@@ -82,6 +82,13 @@ constexpr auto kIdleFrame = std::chrono::milliseconds(8);
 // How long the view and the light stay still before a coarse view is refined.
 constexpr double kRefineAfter_s = 0.3;
 
+// "Could not save /a/b.impasto: why", naming the file once (most errors name it already).
+std::string failure_text(const std::string& failed, const std::filesystem::path& file,
+                         const std::string& why) {
+  if (why.find(file.string()) != std::string::npos) return failed + ": " + why;
+  return failed + " " + file.string() + ": " + why;
+}
+
 // The painting a recovered session ends with, from its recording (rebuild.hpp).
 RebuiltSession rebuild_entry(const SessionEntry& entry) {
   return rebuild_session(input::read_stroke_file(entry.strokes), ReplayOptions{});
@@ -691,7 +698,7 @@ FileActions PaintWindow::file_actions() {
       remember_recent_file(file);
       state_.recent = load_recent_files();
     } catch (const std::exception& e) {
-      state_.notifications.error("Could not save " + file.string() + ": " + e.what());
+      state_.notifications.error(failure_text("Could not save", file, e.what()));
       return false;
     }
     // The painting is saved; the board beside it is a convenience.
@@ -712,7 +719,7 @@ FileActions PaintWindow::file_actions() {
       });
       state_.notifications.info("Exported " + file.string());
     } catch (const std::exception& e) {
-      state_.notifications.error("Could not export " + file.string() + ": " + e.what());
+      state_.notifications.error(failure_text("Could not export", file, e.what()));
     }
   };
   return actions;
@@ -760,10 +767,9 @@ void PaintWindow::run_pending_action() {
     }
   } catch (const std::exception& e) {
     // The painting shown is unchanged: nothing was replaced.
-    const std::string what = action == PendingAction::kNew
-                                 ? std::string("Could not make the new painting: ")
-                                 : "Could not open " + state_.pending_path.string() + ": ";
-    state_.notifications.error(what + e.what());
+    state_.notifications.error(action == PendingAction::kNew
+                                   ? std::string("Could not make the new painting: ") + e.what()
+                                   : failure_text("Could not open", state_.pending_path, e.what()));
     return;
   }
   rendered_slots_.clear();

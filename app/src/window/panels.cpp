@@ -419,19 +419,30 @@ void light_panel(PanelContext& c) {
   }
   ImGui::SliderInt("wavelengths", &s.settings.wavelengths, 1, render::kMaxNodes);
   changed |= ImGui::IsItemDeactivatedAfterEdit();
-  // Chromatic adaptation, as `impasto render --adaptation`: bradford maps the light's white
-  // to the display's, as an eye adapted to the room sees it; none shows a warm light warm.
-  bool adapted = s.settings.adaptation == render::ChromaticAdaptation::bradford;
-  if (ImGui::Checkbox("adapt to the light's white", &adapted)) {
-    s.settings.adaptation =
-        adapted ? render::ChromaticAdaptation::bradford : render::ChromaticAdaptation::none;
-    s.settings_changed = true;
+  // Chromatic adaptation, by its names in `impasto render --adaptation`: bradford maps the
+  // light's white to the display's, as an eye adapted to the room sees it; none shows a warm
+  // light warm.
+  const auto adaptation = std::find_if(
+      render::kChromaticAdaptationNames.begin(), render::kChromaticAdaptationNames.end(),
+      [&](const auto& n) { return n.value == s.settings.adaptation; });
+  const std::string shown(adaptation != render::kChromaticAdaptationNames.end()
+                              ? adaptation->name
+                              : std::string_view("?"));
+  if (ImGui::BeginCombo("adaptation", shown.c_str())) {
+    for (const auto& [value, name] : render::kChromaticAdaptationNames) {
+      if (ImGui::Selectable(std::string(name).c_str(), value == s.settings.adaptation) &&
+          value != s.settings.adaptation) {
+        s.settings.adaptation = value;
+        s.settings_changed = true;
+      }
+    }
+    ImGui::EndCombo();
   }
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip(
-        "On (bradford): the light's white looks white, as to an eye adapted to the room.\n"
-        "Off (none): a warm light such as A looks warm on the display.\n"
-        "The same choice as `impasto render --adaptation bradford|none`.");
+        "Chromatic adaptation, as impasto render --adaptation:\n"
+        "bradford: the light's white looks white, as to an eye adapted to the room;\n"
+        "none: a warm light such as A looks warm on the display.");
   }
   if (changed) {
     s.settings.light = s.use_blackbody ? "blackbody:" + std::to_string(static_cast<int>(s.kelvin))
