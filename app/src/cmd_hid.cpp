@@ -228,7 +228,6 @@ void record(const std::string& out_path, std::string device_path, double seconds
 const CommandRegistrar kRegistrar{
     "hid", [](CLI::App& root) {
       CLI::App* group = command_group(root, "hid", "Pen tablets through USB HID");
-      group->require_subcommand(1);
 
       static bool list_handshake = false;
       auto* list_cmd = group->add_subcommand("list", "List pen tablets and their capabilities");

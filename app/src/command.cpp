@@ -28,7 +28,11 @@ CLI::App* command_group(CLI::App& root, const std::string& name, const std::stri
     if (sub->get_name() == name) return sub;
   }
   CLI::App* group = root.add_subcommand(name, description);
-  group->require_subcommand(1);
+  // `impasto bench` alone lists what it could do rather than failing.
+  group->require_subcommand(0, 1);
+  group->callback([group] {
+    if (group->get_subcommands().empty()) std::cout << help_of(*group);
+  });
   return group;
 }
 
@@ -36,10 +40,40 @@ void add_registered_commands(CLI::App& root) {
   for (auto& [name, setup] : registry()) setup(root);
 }
 
+std::string command_path(const CLI::App& app) {
+  if (!app.get_parent()) return "impasto";  // not argv[0], which may be a whole path
+  return command_path(*app.get_parent()) + " " + app.get_name();
+}
+
+std::string help_of(const CLI::App& app) {
+  return app.get_formatter()->make_help(&app, command_path(app), CLI::AppFormatMode::Normal);
+}
+
+namespace {
+
+// A command line that does not parse: the error, then how the command is used and where its
+// options are listed (CLI11's default says only "Run with --help").
+std::string failure_message(const CLI::App* root, const CLI::Error& e) {
+  const CLI::App* command = root;
+  while (!command->get_subcommands().empty()) command = command->get_subcommands().front();
+  std::string text = std::string("impasto: ") + e.what() + "\n";
+  if (command != root) {
+    const std::string path = command_path(*command);
+    text += CLI::Formatter().make_usage(command, path);
+    text += "`" + path + " --help` lists its options.\n";
+  } else {
+    text += "`impasto --help` lists the commands.\n";
+  }
+  return text;
+}
+
+}  // namespace
+
 int run_command_line(int argc, char** argv) {
   CLI::App root{"Impasto: interactive 2.5D painting with thick, spectrally rendered paint"};
   root.require_subcommand(0, 1);
   root.set_version_flag("--version", "impasto " IMPASTO_VERSION);
+  root.failure_message(failure_message);
   root.footer(
       "Options mean the same in every command (-o/--out the output file, --save the painting, "
       "--size WxH, --wavelengths 1..16|full, --json, --quiet): impasto help vocabulary, "

@@ -20,6 +20,11 @@ struct CommandRegistrar {
 // files can add sub-commands to it ("bench sim", "bench color").
 CLI::App* command_group(CLI::App& root, const std::string& name, const std::string& description);
 
+// "impasto bench sim": the command's names from the top.
+std::string command_path(const CLI::App& app);
+// The command's --help text.
+std::string help_of(const CLI::App& app);
+
 // Every registered command, sorted by name, added to root.
 void add_registered_commands(CLI::App& root);
 

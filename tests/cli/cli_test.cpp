@@ -152,6 +152,26 @@ TEST_F(Cli, EverySubCommandHasAHelpWithoutOldSpellings) {
   }
 }
 
+TEST_F(Cli, ACommandWithNothingToDoSaysWhatItCouldDo) {
+  // A group alone lists its commands.
+  CommandRun r = impasto("bench");
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("Usage: impasto bench"), std::string::npos) << r.out;
+  for (const char* sub : {"  sim ", "  marks ", "  color "})
+    EXPECT_NE(r.out.find(sub), std::string::npos) << sub;
+  // A command missing what it needs: the error, its usage and where its options are.
+  r = impasto("render");
+  EXPECT_NE(r.status, 0);
+  EXPECT_EQ(
+      r.err.rfind("impasto: painting is required\nUsage: impasto render [OPTIONS] painting\n", 0),
+      0u)
+      << r.err;
+  EXPECT_NE(r.err.find("`impasto render --help` lists its options."), std::string::npos) << r.err;
+  r = impasto("--no-such-option");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("`impasto --help` lists the commands."), std::string::npos) << r.err;
+}
+
 TEST_F(Cli, HelpVocabularyPrintsTheProgramsTables) {
   const CommandRun r = impasto("help vocabulary");
   ASSERT_EQ(r.status, 0) << r.err;
