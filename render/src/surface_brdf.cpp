@@ -48,7 +48,8 @@ double ghs_kernel(const GhsParams& p, double cos_i, double cos_o, double rho) {
   const double g = phase * phase;
   const double l_hat = p.roughness.correlation_um / lambda_um;
   const double per_m = 1.0 / (2.0 * kPi * kPi * l_hat * l_hat);
-  const double source2 = p.source_sigma * p.source_sigma;
+  const double tilt = (cos_i + cos_o) * p.subcell_slope_rms;
+  const double source2 = p.source_sigma * p.source_sigma + tilt * tilt;
   const double rho2 = rho * rho;
   if (g <= kPoissonNormalFrom) {
     // Term by term until what is left of the Poisson mass is below 1e-9; terms that weigh

@@ -17,12 +17,11 @@ constexpr double kDegreesToRadians = std::numbers::pi / 180.0;
 // BRDF tables by their parameters: renderers for the same light and surface share them
 // (the window rebuilds its renderer on every settings change; a table takes ~20 ms).
 std::shared_ptr<const surface::GhsBrdf> shared_brdf(const surface::GhsParams& p) {
-  using Key = std::tuple<double, double, double, double, double, bool>;
+  using Key = std::tuple<double, double, double, double, double, double, bool>;
   static std::mutex mutex;
   static std::map<Key, std::shared_ptr<const surface::GhsBrdf>> cache;
-  const Key key{p.roughness.rms_um, p.roughness.correlation_um,
-                p.wavelength_nm,    p.index,
-                p.source_sigma,     p.fresnel};
+  const Key key{p.roughness.rms_um, p.roughness.correlation_um, p.wavelength_nm, p.index,
+                p.source_sigma,     p.subcell_slope_rms,        p.fresnel};
   {
     std::lock_guard lock(mutex);
     if (auto it = cache.find(key); it != cache.end()) return it->second;
@@ -78,6 +77,7 @@ SurfaceShading::SurfaceShading(const RenderSettings& settings, const SpectralPal
     surface::GhsParams dry;
     dry.wavelength_nm = wavelength;
     dry.source_sigma = source_sigma;
+    dry.subcell_slope_rms = s.subcell_slope_rms;
     surface::GhsParams wet = dry;
     dry.roughness = surface::finish_roughness(s.varnish ? *s.varnish : s.medium);
     dry.index = surface::binder_index(wavelength, s.varnish ? s.varnish_index : s.binder_index);

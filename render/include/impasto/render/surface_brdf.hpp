@@ -43,10 +43,14 @@ struct GhsParams {
   // axis): a disc of angular radius a has a/2. Keeps the mirror of a smooth surface finite.
   double source_sigma = 0.013;
   bool fresnel = true;  // false: a perfect reflector (F = 1), for the white-furnace test
+  // Slopes finer than the height grid resolves (bristle marks, pigment grain under the
+  // 0.1 mm cells), RMS in radians: each term's spread grows by ((cos θ_i + cos θ_o) s)², as a
+  // facet tilted by δ turns the reflection by that much δ in direction cosines.
+  double subcell_slope_rms = 0.0;
 };
 
 // The scatter kernel before Fresnel and renormalisation, in direction-cosine space: the
-// Poisson mixture Σ_m e^(−g) g^m/m! N(ρ; s_m² + source²), with
+// Poisson mixture Σ_m e^(−g) g^m/m! N(ρ; s_m² + source² + sub-cell slopes), with
 //   g   = (2πσ/λ)² (cos θ_i + cos θ_o)²        (the GHS phase variance)
 //   s_m² = m / (2π² (ℓ/λ)²)                     (the FT of the m-th power of the ACV)
 //   ρ   = |t_i + t_o|, t the tangential part of each unit direction (0 at the mirror).

@@ -27,6 +27,9 @@ struct SurfaceSettings {
   std::optional<surface::Finish> varnish;
   double binder_index = 1.48;   // n_d of the paint's binder (linseed oil)
   double varnish_index = 1.53;  // n_d of a resin varnish (dammar, MS2A)
+  // RMS slope (radians) of the relief finer than a cell: brush and bristle marks under the
+  // 0.1 mm grid tilt a highlight by a few degrees (docs/surface.md).
+  double subcell_slope_rms = 0.05;
   // Off: the K-M body alone, without the light the surface reflects (the subsurface pass
   // renders the two apart; tests).
   bool reflection = true;
