@@ -12,7 +12,9 @@
 #include <chrono>
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
+#include <sstream>
 #include <vector>
 
 #include "command.hpp"
@@ -39,6 +41,7 @@ struct BenchGpuArgs {
   int brush_px = 128;  // brush width in cells for the latency
   int samples = 20;
   int wavelengths = 8;
+  bool json = false;
 };
 
 // A painting with four pigment slots: the shader runs its per-slot loops for every pixel,
@@ -55,8 +58,13 @@ void run(const BenchGpuArgs& args) {
   const CanvasSize canvas = args.size.value_or(CanvasSize{4096, 4096});
   const int width = canvas.width, height = canvas.height;
   auto context = render_gl::create_headless_context();
-  std::cout << "OpenGL: " << render_gl::gl_description() << " (" << context->backend_name()
-            << ")\n";
+  // Under --json the sentences below go nowhere and the numbers into one object.
+  std::ostringstream unused;
+  std::ostream& text = args.json ? unused : std::cout;
+  nlohmann::json report{{"opengl", render_gl::gl_description()},
+                        {"backend", context->backend_name()},
+                        {"latency", nlohmann::json::array()}};
+  text << "OpenGL: " << render_gl::gl_description() << " (" << context->backend_name() << ")\n";
   render::RenderSettings settings;
   settings.wavelengths = args.wavelengths;
 
@@ -91,9 +99,15 @@ void run(const BenchGpuArgs& args) {
       glFinish();
       frame_ms.push_back(ms_since(start));
     }
-    std::cout << "frame " << width << "x" << height << " cells, " << args.wavelengths
-              << " nodes, 4 pigments: median " << median(frame_ms) << " ms over " << args.frames
-              << " frames (first upload of all tiles " << upload_ms << " ms)\n";
+    report["frame"] = {{"width", width},
+                       {"height", height},
+                       {"nodes", args.wavelengths},
+                       {"median_ms", median(frame_ms)},
+                       {"frames", args.frames},
+                       {"upload_ms", upload_ms}};
+    text << "frame " << width << "x" << height << " cells, " << args.wavelengths
+         << " nodes, 4 pigments: median " << median(frame_ms) << " ms over " << args.frames
+         << " frames (first upload of all tiles " << upload_ms << " ms)\n";
   }
 
   // 2. The window's view of that canvas, fitted (zoomed out, about 0.2 px a cell): a frame
@@ -126,12 +140,19 @@ void run(const BenchGpuArgs& args) {
       timed_draw(pan_ms, Detail::kFull);
       timed_draw(cached_ms, Detail::kFull);  // nothing new
     }
-    std::cout << "window view " << args.viewport_w << "x" << args.viewport_h << " of the " << width
-              << "x" << height << " canvas, fitted (" << view.pixels_per_cell
-              << " px/cell): after a zoom or light change median " << median(full_ms)
-              << " ms (first frame while moving, coarse: " << median(coarse_ms)
-              << " ms), after a 10-px pan " << median(pan_ms) << " ms, unchanged "
-              << median(cached_ms) << " ms\n";
+    report["view"] = {{"width", args.viewport_w},
+                      {"height", args.viewport_h},
+                      {"pixels_per_cell", view.pixels_per_cell},
+                      {"zoom_ms", median(full_ms)},
+                      {"zoom_coarse_ms", median(coarse_ms)},
+                      {"pan_ms", median(pan_ms)},
+                      {"unchanged_ms", median(cached_ms)}};
+    text << "window view " << args.viewport_w << "x" << args.viewport_h << " of the " << width
+         << "x" << height << " canvas, fitted (" << view.pixels_per_cell
+         << " px/cell): after a zoom or light change median " << median(full_ms)
+         << " ms (first frame while moving, coarse: " << median(coarse_ms)
+         << " ms), after a 10-px pan " << median(pan_ms) << " ms, unchanged " << median(cached_ms)
+         << " ms\n";
   }
 
   // 3. Pen sample to updated frame with a brush_px-wide brush: simulation step, dirty tiles
@@ -185,17 +206,27 @@ void run(const BenchGpuArgs& args) {
       total_ms.push_back(ms_since(start));
     }
     painting.end_stroke();
-    std::cout << "latency, pen sample to frame, " << args.brush_px << "-cell brush, "
-              << args.viewport_w << "x" << args.viewport_h << " view at " << pixels_per_cell
-              << " px/cell, " << (cached ? "cached" : "whole view re-shaded") << ": median "
-              << median(total_ms) << " ms (simulation " << median(sim_ms) << ", upload "
-              << median(upload_ms) << ", draw " << median(draw_ms) << "; " << shaded / args.samples
-              << " px shaded a frame) over " << total_ms.size() << " samples\n";
+    report["latency"].push_back({{"brush_cells", args.brush_px},
+                                 {"pixels_per_cell", pixels_per_cell},
+                                 {"cached", cached},
+                                 {"median_ms", median(total_ms)},
+                                 {"simulation_ms", median(sim_ms)},
+                                 {"upload_ms", median(upload_ms)},
+                                 {"draw_ms", median(draw_ms)},
+                                 {"pixels_shaded_per_frame", shaded / args.samples},
+                                 {"samples", total_ms.size()}});
+    text << "latency, pen sample to frame, " << args.brush_px << "-cell brush, " << args.viewport_w
+         << "x" << args.viewport_h << " view at " << pixels_per_cell << " px/cell, "
+         << (cached ? "cached" : "whole view re-shaded") << ": median " << median(total_ms)
+         << " ms (simulation " << median(sim_ms) << ", upload " << median(upload_ms) << ", draw "
+         << median(draw_ms) << "; " << shaded / args.samples << " px shaded a frame) over "
+         << total_ms.size() << " samples\n";
   };
   for (const double zoom : {1.0, 0.25}) {
     latency(zoom, false);
     latency(zoom, true);
   }
+  if (args.json) std::cout << report.dump(2) << "\n";
 }
 
 void setup(CLI::App& root) {
@@ -217,6 +248,7 @@ void setup(CLI::App& root) {
       ->check(CLI::Range(4, 1000));
   cmd->add_option("--samples", args->samples, "Pen samples to time")->check(CLI::Range(2, 10000));
   add_wavelengths_option(*cmd, args->wavelengths, false, "the shaders take 1..16");
+  add_json_flag(*cmd, args->json, "the frame, view and latency medians in one object");
   cmd->callback([args] { run(*args); });
 }
 
