@@ -104,7 +104,7 @@ void run(const RenderArgs& args) {
   settings.occlusion = !args.no_occlusion;
   settings.crack_model = parse_crack_model(args.crack_model);
   settings.ambient = args.ambient;
-  apply_surface_options(args.surface, settings);
+  apply_surface_options(args.surface, settings, args.gpu);
   validate(settings);
   const auto start = Clock::now();
   const paintcore::Painting painting = paintcore::Painting::load(args.painting, args.threads);

@@ -30,11 +30,15 @@ void add_surface_options(CLI::App& command, SurfaceArgs& args) {
                      "scale) to this PNG");
 }
 
-void apply_surface_options(const SurfaceArgs& args, render::RenderSettings& settings) {
+void apply_surface_options(const SurfaceArgs& args, render::RenderSettings& settings, bool gpu) {
   settings.surface.model = render::parse_surface_model(args.model);
   settings.surface.medium = render::parse_finish(args.medium);
   settings.surface.varnish = render::parse_varnish(args.varnish);
   settings.surface.subsurface = !args.no_subsurface;
+  if (gpu && settings.surface.model != render::SurfaceModel::blinn) {
+    throw std::runtime_error("--surface " + args.model +
+                             ": the OpenGL path (--gpu) has the blinn surface only so far");
+  }
   if (!args.subsurface_map.empty() && settings.surface.model != render::SurfaceModel::ghs) {
     throw std::runtime_error(
         "--subsurface-map: only the ghs surface spreads light (--surface ghs)");

@@ -19,8 +19,10 @@ struct SurfaceArgs {
 };
 
 void add_surface_options(CLI::App& command, SurfaceArgs& args);
-// Writes the parsed choices into settings.surface.
-void apply_surface_options(const SurfaceArgs& args, render::RenderSettings& settings);
+// Writes the parsed choices into settings.surface. gpu: the GL path has Blinn-Phong only, so
+// --surface ghs there is an error rather than a silent fallback.
+void apply_surface_options(const SurfaceArgs& args, render::RenderSettings& settings,
+                           bool gpu = false);
 // When --subsurface-map was given: the map of where light spreads sideways, as a PNG.
 void write_subsurface_map_if_asked(const SurfaceArgs& args, const paintcore::Painting& painting,
                                    const render::RenderSettings& settings);
