@@ -23,7 +23,8 @@ inline void layer_over(const float* __restrict absorption, const float* __restri
     const float e = fast_exp(-beta * d);
     const float x = 2.0f * beta * d;
     const float series = 1.0f - x * (0.5f - x * (1.0f / 6.0f));
-    const float full = (1.0f - fast_exp(-x)) / greater(x, 1e-3f);
+    // e^(−x) = e²: one exponential, not two (the reference calls exp twice).
+    const float full = (1.0f - e * e) / greater(x, 1e-3f);
     const float f = 2.0f * d * (x < 1e-3f ? series : full);
     // One division for both (the reference divides twice: R and T may differ by an ulp).
     const float inverse = 1.0f / (alpha * f + 1.0f + e * e);

@@ -404,12 +404,12 @@ void TileRenderer::bake_dry_stack(const paintcore::Canvas& canvas, int tile_inde
     for (int c = 0; c < kTileCells; ++c) {
       const float* from = &stack[static_cast<std::size_t>(c) * padded];
       const std::size_t base = static_cast<std::size_t>(c) * static_cast<std::size_t>(nodes);
-      for (int i = 0; i < nodes; ++i) {
-        if (half) {
+      if (half) {
+        for (int i = 0; i < nodes; ++i) {
           cache.dry_f16[base + static_cast<std::size_t>(i)] = Imath::half(from[i]);
-        } else {
-          cache.dry_f32[base + static_cast<std::size_t>(i)] = from[i];
         }
+      } else {
+        std::copy_n(from, nodes, &cache.dry_f32[base]);
       }
     }
     return;
@@ -503,9 +503,17 @@ void TileRenderer::shade_region(const paintcore::Canvas& canvas, int tile_index,
                           })
              : std::all_of(cache.shading_wet.begin(), cache.shading_wet.end(),
                            [](float w) { return std::bit_cast<std::uint32_t>(w) == 0; }));
+    // Bare canvas (no paint, no dry layer): one colour for the whole tile.
+    const bool bare = tile == nullptr && !has_dry;
+    if (bare) {
+      std::copy_n(lanes_->ground.data(), padded, row_reflectance.data());
+      kernels::cells_to_xyz(*lanes_, row_reflectance.data(), 1, row_xyz.data());
+      for (int x = 1; x < columns; ++x)
+        std::copy_n(row_xyz.data(), 3, &row_xyz[3 * static_cast<std::size_t>(x)]);
+    }
     for (int y = y0; y < y1; ++y) {
       const int first = y * kTileSize + x0;
-      for (int x = 0; x < columns; ++x) {
+      for (int x = 0; x < columns && !bare; ++x) {
         float* r = &row_reflectance[static_cast<std::size_t>(x) * padded];
         const std::size_t base =
             static_cast<std::size_t>(first + x) * static_cast<std::size_t>(nodes);
@@ -529,7 +537,7 @@ void TileRenderer::shade_region(const paintcore::Canvas& canvas, int tile_index,
                                         tile->slot_count(), slots.data(), amounts.data()},
                                        columns, inverse_scale, row_reflectance.data());
       }
-      kernels::cells_to_xyz(*lanes_, row_reflectance.data(), columns, row_xyz.data());
+      if (!bare) kernels::cells_to_xyz(*lanes_, row_reflectance.data(), columns, row_xyz.data());
       for (int x = x0; x < x1; ++x) {
         const int c = y * kTileSize + x;
         const auto cell = static_cast<std::size_t>(c);
