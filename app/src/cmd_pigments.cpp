@@ -49,9 +49,23 @@ void run_list(bool json) {
   if (json) std::cout << rows.dump(2) << "\n";
 }
 
-void run_show(const std::string& name) {
+void run_show(const std::string& name, bool json) {
   const PigmentLibrary& library = active_pigment_library();
   const Pigment& p = library.database().get(name);
+  if (json) {
+    const LibraryPigment* origin = library.origin(p.name);
+    nlohmann::json out{{"name", p.name},
+                       {"layer", origin->layer},
+                       {"file", origin->file.string()},
+                       {"metadata", p.metadata},
+                       {"nm", p.K.wavelengths_nm},
+                       {"K", p.K.values},
+                       {"S", nlohmann::json::array()}};
+    out["metadata"].erase("name");
+    for (const double nm : p.K.wavelengths_nm) out["S"].push_back(p.S.at(nm));
+    std::cout << out.dump(2) << "\n";
+    return;
+  }
   std::printf("name: %s\n", p.name.c_str());
   const LibraryPigment* origin = library.origin(p.name);
   std::printf("layer: %s (%s)\n", origin->layer.c_str(), origin->file.string().c_str());
@@ -184,7 +198,9 @@ const CommandRegistrar registrar("pigments", [](CLI::App& root) {
   auto name = std::make_shared<std::string>();
   CLI::App* show = group->add_subcommand("show", "Show one pigment's metadata and K, S");
   show->add_option("name", *name, "Pigment name (case-insensitive)")->required();
-  show->callback([name] { run_show(*name); });
+  auto show_json = std::make_shared<bool>(false);
+  add_json_flag(*show, *show_json, "its metadata and K, S at K's wavelengths");
+  show->callback([name, show_json] { run_show(*name, *show_json); });
 
   auto folder = std::make_shared<std::string>();
   CLI::App* check =

@@ -372,6 +372,12 @@ TEST_F(Cli, PigmentsListAndCheckPrintJson) {
   EXPECT_EQ(check.at("pigments")[0].at("name"), "Burnt Sienna");
   ASSERT_EQ(check.at("errors").size(), 1u) << r.out;
   EXPECT_NE(check.at("errors")[0].get<std::string>().find("broken.csv"), std::string::npos);
+  r = impasto("pigments show \"Burnt Sienna\" --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json show = nlohmann::json::parse(r.out);
+  EXPECT_EQ(show.at("K").size(), show.at("nm").size());
+  EXPECT_EQ(show.at("S").size(), show.at("nm").size());
+  EXPECT_GT(show.at("nm").size(), 10u);
   r = impasto("pigments swatch \"Burnt Sienna\" --json --tint 1:4");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(nlohmann::json::parse(r.out).at("swatches").size(), 1u);
