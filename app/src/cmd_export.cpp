@@ -42,9 +42,7 @@ const CommandRegistrar registrar("export", [](CLI::App& root) {
     request.image = args->image;
     request.height_map = args->height_map;
     request.normal_map = args->normal_map;
-    const paintcore::Painting painting = paintcore::Painting::load(args->painting);
-    if (!painting.load_warning().empty())
-      std::cerr << "impasto: warning: " << painting.load_warning() << "\n";
+    const paintcore::Painting painting = paintcore::Painting::load(args->painting, 0, false);
     export_painting(painting, request);
     for (const std::string* file : {&args->image, &args->height_map, &args->normal_map})
       if (!file->empty()) std::cout << "wrote " << *file << "\n";

@@ -56,7 +56,8 @@ struct PaintingFile {
   // The painting's records, and the record source's for slots that have none.
   static Records records_to_save(const Painting::Impl& p);
   static void save(const Painting::Impl& p, const std::filesystem::path& file);
-  static std::unique_ptr<Painting::Impl> load(const std::filesystem::path& file, int threads);
+  static std::unique_ptr<Painting::Impl> load(const std::filesystem::path& file, int threads,
+                                              bool with_history);
 };
 
 PaintingFile::Records PaintingFile::records_to_save(const Painting::Impl& p) {
@@ -182,7 +183,8 @@ void PaintingFile::save(const Painting::Impl& p, const std::filesystem::path& fi
   out.commit();
 }
 
-std::unique_ptr<Painting::Impl> PaintingFile::load(const std::filesystem::path& file, int threads) {
+std::unique_ptr<Painting::Impl> PaintingFile::load(const std::filesystem::path& file, int threads,
+                                                   bool with_history) {
   const std::string name = file.string();
   files::InputFile in(file, "painting", files::kMaxPaintingBytes);
   Reader header(in, std::min<std::uint64_t>(in.size(), kHeaderBytes), 0, name);
@@ -200,7 +202,8 @@ std::unique_ptr<Painting::Impl> PaintingFile::load(const std::filesystem::path& 
     header.fail("payload_size", "says " + std::to_string(payload_size) +
                                     " bytes but the file has " + std::to_string(in.size()) +
                                     " in all (truncated or padded file)");
-  const std::uint64_t history_bytes = in.size() - kHeaderBytes - 8 - payload_size;
+  const std::uint64_t history_bytes =
+      with_history ? in.size() - kHeaderBytes - 8 - payload_size : 0;
   std::uint64_t history_size = 0;
   std::string history_problem;  // why the history cannot be read (the painting still loads)
   // First pass: the checksum, in chunks; nothing is built from a corrupt file.
@@ -386,11 +389,11 @@ void Painting::save(const std::filesystem::path& file) const {
   }
 }
 
-Painting Painting::load(const std::filesystem::path& file, int threads) {
+Painting Painting::load(const std::filesystem::path& file, int threads, bool with_history) {
   // Declared sizes are checked against the file before anything is allocated; what is left
   // (the canvas's tile table, the tiles a file really holds) can still exceed the machine.
   try {
-    return Painting(PaintingFile::load(file, threads));
+    return Painting(PaintingFile::load(file, threads, with_history));
   } catch (const std::bad_alloc&) {
     throw std::runtime_error(
         files::out_of_memory_message(file.string(), "the painting's canvas and tiles"));

@@ -91,6 +91,11 @@ TEST_F(SavedHistory, UndoAfterReopeningGivesTheSameStatesAsWithoutSaving) {
     EXPECT_EQ(reopened.canvas().width_cells(), kept.canvas().width_cells());
   }
   EXPECT_FALSE(reopened.undo());
+  // Loaded without its history (a render needs none): the same painting, nothing to undo.
+  const Painting bare = Painting::load(file, 1, false);
+  EXPECT_EQ(bare.undo_depth(), 0u);
+  EXPECT_EQ(bare.redo_depth(), 0u);
+  EXPECT_EQ(bare.state_hash(), Painting::load(file, 1).state_hash());
   while (kept.redo()) {
     ASSERT_TRUE(reopened.redo());
     ASSERT_EQ(reopened.state_hash(), kept.state_hash()) << "redo depth " << kept.redo_depth();

@@ -138,7 +138,10 @@ class Painting {
   std::size_t saved_history_bytes() const;
   const std::string& load_warning() const;
   void save(const std::filesystem::path& file) const;
-  static Painting load(const std::filesystem::path& file, int threads = 0);
+  // with_history false: the undo history section is not read (a render or a thumbnail needs
+  // none; it is the larger part of many files).
+  static Painting load(const std::filesystem::path& file, int threads = 0,
+                       bool with_history = true);
 
  private:
   struct Impl;
