@@ -13,8 +13,8 @@
 #include <string>
 
 #include "command.hpp"
-#include "surface_options.hpp"
 #include "progress.hpp"
+#include "surface_options.hpp"
 #include "vocabulary.hpp"
 
 // The GL path, when this build has it (render_gl's headers come with its target).
@@ -52,11 +52,11 @@ struct RenderArgs {
   bool no_occlusion = false;
   std::string crack_model{util::name_of(cracks::kCavityModelNames, RenderSettings{}.crack_model)};
   double ambient = RenderSettings{}.ambient;
-  bool gpu = false;    // through the GLSL shaders, headless
-  int zoom = 0;        // > 0: the close-up of --region at this many pixels per cell
-  std::string region;  // "X,Y,W,H" in cells
+  bool gpu = false;     // through the GLSL shaders, headless
+  int zoom = 0;         // > 0: the close-up of --region at this many pixels per cell
+  std::string region;   // "X,Y,W,H" in cells
   SurfaceArgs surface;  // --surface, --medium, --varnish (docs/surface.md)
-  bool json = false;   // timings and the image's size as JSON
+  bool json = false;    // timings and the image's size as JSON
 };
 
 using Clock = std::chrono::steady_clock;
@@ -106,6 +106,7 @@ void run(const RenderArgs& args) {
   settings.ambient = args.ambient;
   apply_surface_options(args.surface, settings, args.gpu);
   validate(settings);
+  image_file_type(args.out);  // a bad extension fails now, not after the render
   const auto start = Clock::now();
   const paintcore::Painting painting = paintcore::Painting::load(args.painting, args.threads);
   check_render_memory(painting.canvas(), args.painting);

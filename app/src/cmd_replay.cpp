@@ -74,6 +74,8 @@ std::string canvas_words(const paintcore::Painting& painting) {
 
 void run_replay(ReplayArgs args) {
   apply_old_spellings(args);
+  // Bad outputs fail now, not after the replay.
+  if (!args.out.empty()) render::image_file_type(args.out);
   ReplayOptions options;
   options.dpi = args.dpi;
   if (args.size) {

@@ -234,6 +234,10 @@ TEST_F(Cli, ReplayRefusesASaveThatIsNoPaintingAndTwoImages) {
   EXPECT_NE(r.err.find("--save picture.png: a painting is saved as FILE.impasto"),
             std::string::npos)
       << r.err;
+  r = impasto("replay short.strokes -o picture.tif --save p.impasto");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("picture.tif: unknown image type '.tif'"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir_ / "p.impasto"));  // refused before anything ran
   r = impasto("replay short.strokes -o a.png --png b.png");
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("two images"), std::string::npos) << r.err;
