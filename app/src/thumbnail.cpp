@@ -43,7 +43,8 @@ render::Image shrink_to_fit(const render::Image& image, int max_side) {
 void write_thumbnail(const std::filesystem::path& painting_path, const std::filesystem::path& png,
                      int size) {
   if (size < 1) throw std::runtime_error("thumbnail size must be at least 1 pixel");
-  const paintcore::Painting painting = paintcore::Painting::load(painting_path, 0);
+  const paintcore::Painting painting =
+      paintcore::Painting::load(painting_path, 0, false);  // no undo history: not drawn
   render::check_render_memory(painting.canvas(), painting_path.string());
   render::write_png(png, shrink_to_fit(render::render_painting(painting, {}), size));
 }
