@@ -18,6 +18,12 @@ void add_surface_options(CLI::App& command, SurfaceArgs& args) {
   command.add_option("--medium", args.medium, "ghs: the paint's medium, the finish it dries to")
       ->check(CLI::IsMember(util::names_of(render::surface::kFinishNames)))
       ->capture_default_str();
+  command
+      .add_option("--medium-amount", args.medium_amount,
+                  "ghs: share of medium in the paint, 0 (tube paint, dries satin) to 1 (the "
+                  "medium's finish)")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
   std::vector<std::string> varnishes{"none"};
   for (const auto& name : util::names_of(render::surface::kFinishNames)) varnishes.push_back(name);
   command.add_option("--varnish", args.varnish, "ghs: a varnish over the whole painting")
@@ -33,6 +39,7 @@ void add_surface_options(CLI::App& command, SurfaceArgs& args) {
 void apply_surface_options(const SurfaceArgs& args, render::RenderSettings& settings, bool gpu) {
   settings.surface.model = render::parse_surface_model(args.model);
   settings.surface.medium = render::parse_finish(args.medium);
+  settings.surface.medium_amount = args.medium_amount;
   settings.surface.varnish = render::parse_varnish(args.varnish);
   settings.surface.subsurface = !args.no_subsurface;
   if (gpu && settings.surface.model != render::SurfaceModel::blinn) {

@@ -13,6 +13,7 @@ struct SurfaceArgs {
   std::string model{util::name_of(render::kSurfaceModelNames, render::SurfaceSettings{}.model)};
   std::string medium{
       util::name_of(render::surface::kFinishNames, render::SurfaceSettings{}.medium)};
+  double medium_amount = render::SurfaceSettings{}.medium_amount;
   std::string varnish = "none";
   bool no_subsurface = false;
   std::string subsurface_map;  // the debug view, FILE.png; empty: none

@@ -17,6 +17,8 @@ void validate(const SurfaceSettings& s) {
           "in [1, 3]");
   require(s.varnish_index >= 1.0 && s.varnish_index <= 3.0, "varnish_index", s.varnish_index,
           "in [1, 3]");
+  require(s.medium_amount >= 0.0 && s.medium_amount <= 1.0, "medium_amount", s.medium_amount,
+          "in [0, 1]");
   require(s.subcell_slope_rms >= 0.0 && s.subcell_slope_rms <= 1.0, "subcell_slope_rms",
           s.subcell_slope_rms, "in [0, 1]");
   require(s.subsurface_min_cells > 0.0 && s.subsurface_min_cells <= 100.0, "subsurface_min_cells",

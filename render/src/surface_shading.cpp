@@ -32,6 +32,16 @@ std::shared_ptr<const surface::GhsBrdf> shared_brdf(const surface::GhsParams& p)
   return cache.emplace(key, std::move(made)).first->second;
 }
 
+// The dried paint's surface: tube paint (satin) and the medium's finish mixed by the amount
+// of medium, geometrically (roughness spans decades).
+surface::Roughness paint_roughness(const SurfaceSettings& s) {
+  const surface::Roughness tube = surface::finish_roughness(surface::Finish::satin);
+  const surface::Roughness medium = surface::finish_roughness(s.medium);
+  const double a = s.medium_amount;
+  return {std::pow(tube.rms_um, 1.0 - a) * std::pow(medium.rms_um, a),
+          std::pow(tube.correlation_um, 1.0 - a) * std::pow(medium.correlation_um, a)};
+}
+
 // 2 ∫ F(μ) μ dμ: the smooth surface's reflectance of uniform sky light.
 double hemispherical_fresnel(double n) {
   constexpr int kSteps = 512;
@@ -79,7 +89,7 @@ SurfaceShading::SurfaceShading(const RenderSettings& settings, const SpectralPal
     dry.source_sigma = source_sigma;
     dry.subcell_slope_rms = s.subcell_slope_rms;
     surface::GhsParams wet = dry;
-    dry.roughness = surface::finish_roughness(s.varnish ? *s.varnish : s.medium);
+    dry.roughness = s.varnish ? surface::finish_roughness(*s.varnish) : paint_roughness(s);
     dry.index = surface::binder_index(wavelength, s.varnish ? s.varnish_index : s.binder_index);
     wet.roughness = surface::finish_roughness(surface::Finish::gloss);
     wet.index = surface::binder_index(wavelength, s.binder_index);

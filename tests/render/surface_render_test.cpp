@@ -158,3 +158,22 @@ TEST(SurfaceRender, MattePaleAtGrazingLightAndGlossVarnishDeepensDarks) {
     EXPECT_LT(v, 0.8f * m) << elevation;  // the varnish takes it away
   }
 }
+
+TEST(SurfaceRender, MediumAmountMixesTubePaintAndTheMediumsFinish) {
+  const paintcore::Canvas black = flat_canvas(1);
+  RenderSettings tube = ghs(surface::Finish::gloss);
+  tube.surface.medium_amount = 0.0;  // no medium: tube paint, which dries satin
+  const RenderSettings satin = ghs(surface::Finish::satin);
+  EXPECT_EQ(render_canvas(tube, black).rgb, render_canvas(satin, black).rgb);
+  RenderSettings half_matte = ghs(surface::Finish::matte);
+  half_matte.surface.medium_amount = 0.5;
+  const RenderSettings matte = ghs(surface::Finish::matte);
+  for (RenderSettings* s : {&tube, &half_matte}) s->light_elevation_deg = 20.0;
+  RenderSettings satin_low = satin, matte_low = matte;
+  satin_low.light_elevation_deg = matte_low.light_elevation_deg = 20.0;
+  const float l_satin = luminance(render_canvas(satin_low, black), 20, 20);
+  const float l_half = luminance(render_canvas(half_matte, black), 20, 20);
+  const float l_matte = luminance(render_canvas(matte_low, black), 20, 20);
+  EXPECT_GT(l_half, l_satin);
+  EXPECT_LT(l_half, l_matte);
+}

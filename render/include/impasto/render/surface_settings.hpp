@@ -22,6 +22,9 @@ struct SurfaceSettings {
   // The medium the paint was mixed with: the finish of its dried surface (wet paint is a
   // liquid and always glossy).
   surface::Finish medium = surface::Finish::gloss;
+  // How much of the paint is that medium, 0..1: 0 is paint straight from the tube (it dries
+  // satin), 1 the medium's own finish; between, the roughness is interpolated geometrically.
+  double medium_amount = 1.0;
   // A varnish over the whole painting, dried: its surface replaces the paint's (the paint
   // and a resin varnish nearly match in index, so the buried rough surface scatters little).
   std::optional<surface::Finish> varnish;
