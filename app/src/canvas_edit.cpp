@@ -8,17 +8,6 @@
 
 namespace impasto::app {
 
-std::pair<int, int> parse_size_cells(const std::string& text, const std::string& option) {
-  int width = 0, height = 0;
-  char x = 0, extra = 0;
-  if (std::sscanf(text.c_str(), "%d%c%d%c", &width, &x, &height, &extra) != 3 ||
-      (x != 'x' && x != 'X') || width < 1 || height < 1 || width > paintcore::kMaxCanvasCells ||
-      height > paintcore::kMaxCanvasCells)
-    throw std::runtime_error(option + " " + text + ": expected WIDTHxHEIGHT in cells, each 1.." +
-                             std::to_string(paintcore::kMaxCanvasCells));
-  return {width, height};
-}
-
 CanvasEditResult edit_canvas(paintcore::Painting& painting, const CanvasEdit& edit) {
   CanvasEditResult result;
   result.old_width = painting.canvas().width_cells();

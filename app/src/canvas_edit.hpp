@@ -28,9 +28,6 @@ struct CanvasEditResult {
 // Applies the crop, then the resize; each is one undo step. Throws naming the field.
 CanvasEditResult edit_canvas(paintcore::Painting& painting, const CanvasEdit& edit);
 
-// "WIDTHxHEIGHT" in cells; throws naming `option` and the text.
-std::pair<int, int> parse_size_cells(const std::string& text, const std::string& option);
-
 struct ExportRequest {
   int scale = 1;                     // 1, 2 or 4 (any of 1..16): pixels per cell
   std::filesystem::path image;       // the render (.png or .exr), or empty

@@ -5,10 +5,12 @@
 
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "canvas_edit.hpp"
 #include "command.hpp"
+#include "vocabulary.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).
 namespace impasto::app::edit_cmd {
@@ -17,7 +19,7 @@ namespace {
 struct EditArgs {
   std::string painting;
   std::string crop;  // X,Y,W,H in cells
-  std::string size;  // WxH in cells
+  std::optional<CanvasSize> size;
   std::string anchor = "center";
   std::string save;
   double history_mb = 64.0;
@@ -26,17 +28,17 @@ struct EditArgs {
 void run(const EditArgs& args) {
   CanvasEdit edit;
   if (!args.crop.empty()) edit.crop = render::parse_cell_region(args.crop);
-  if (!args.size.empty()) edit.size = parse_size_cells(args.size, "--size");
+  if (args.size) edit.size = std::pair{args.size->width, args.size->height};
   edit.anchor = paintcore::parse_canvas_anchor(args.anchor);
   if (!edit.crop && !edit.size)
     throw std::runtime_error("edit: nothing to change (give --crop X,Y,W,H and/or --size WxH)");
   paintcore::Painting painting = paintcore::Painting::load(args.painting);
-  if (!painting.load_warning().empty())
-    std::cerr << "impasto: warning: " << painting.load_warning() << "\n";
+  if (!painting.load_warning().empty()) warn(painting.load_warning());
   const CanvasEditResult result = edit_canvas(painting, edit);
   painting.set_saved_history_bytes(static_cast<std::size_t>(args.history_mb * (1 << 20)));
   painting.save(args.save);
-  std::cout << result.summary(painting) << "\nwrote " << args.save << "\n";
+  std::cout << result.summary(painting) << "\n";
+  note("wrote " + args.save);
 }
 
 const CommandRegistrar registrar("edit", [](CLI::App& root) {
@@ -46,13 +48,12 @@ const CommandRegistrar registrar("edit", [](CLI::App& root) {
   cmd->add_option("painting", args->painting, "The .impasto painting file")->required();
   cmd->add_option("--crop", args->crop,
                   "Keep the rectangle X,Y,W,H (cells); the paint outside is cut away and reported");
-  cmd->add_option("--size", args->size,
-                  "The new canvas size WxH in cells (after --crop); new cells are clean canvas");
+  add_size_option(*cmd, args->size, "the new size (after --crop); new cells are clean canvas");
   cmd->add_option("--anchor", args->anchor,
                   "Where the old canvas sits when --size changes it: center, top-left, top, "
                   "top-right, left, right, bottom-left, bottom, bottom-right")
       ->capture_default_str();
-  cmd->add_option("--save", args->save, "The painting to write (.impasto)")->required();
+  add_save_option(*cmd, args->save, "the edited painting")->required();
   cmd->add_option("--history-mb", args->history_mb,
                   "Undo history kept in the saved file, newest steps first (0: none)")
       ->check(CLI::Range(0.0, 1e6))

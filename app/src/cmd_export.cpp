@@ -8,6 +8,7 @@
 
 #include "canvas_edit.hpp"
 #include "command.hpp"
+#include "vocabulary.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).
 namespace impasto::app::export_cmd {
@@ -29,9 +30,9 @@ const CommandRegistrar registrar("export", [](CLI::App& root) {
                   "(Catmull-Rom) and shaded at the finer grid; the maps too")
       ->check(CLI::Range(1, 16))
       ->capture_default_str();
-  cmd->add_option("-o,--out", args->image,
-                  "The render (.png display-encoded, .exr linear), default light and settings "
-                  "(impasto render has them all; the window's Image menu uses its light)");
+  add_out_option(*cmd, args->image,
+                 "the render at --scale, default light and settings (impasto render has them "
+                 "all; the window's Image menu uses its light)");
   cmd->add_option("--height-map", args->height_map,
                   "The surface height in mm: .png (16-bit grey; offset, step and cell size in "
                   "its tEXt chunks) or .exr (float mm)");
@@ -45,7 +46,7 @@ const CommandRegistrar registrar("export", [](CLI::App& root) {
     const paintcore::Painting painting = paintcore::Painting::load(args->painting, 0, false);
     export_painting(painting, request);
     for (const std::string* file : {&args->image, &args->height_map, &args->normal_map})
-      if (!file->empty()) std::cout << "wrote " << *file << "\n";
+      if (!file->empty()) note("wrote " + *file);
   });
 });
 
