@@ -20,6 +20,9 @@ using paintcore::kTileSize;
 // holds a few per cent of the light at most: e^(−σ_tr r)/r²).
 constexpr double kSpreadReach = 6.0;
 
+// Thicker than this is no paint layer (a crafted file): not spread.
+constexpr float kMaxLayerMm = 100.0f;
+
 // How much each node counts in each linear-sRGB channel: the positive part of the
 // palette's readout through XYZ → linear sRGB, normalised per channel.
 std::array<std::vector<double>, 3> channel_weights(const SpectralPalette& palette) {
@@ -127,7 +130,7 @@ SubsurfaceMap subsurface_map(const paintcore::Canvas& canvas, const SpectralPale
       const TopLayer top = top_layer(canvas, tile_index, cell, pigments);
       // A layer thinner than the threshold cannot spread light that far (its length is at
       // most its thickness): the common case costs this one comparison.
-      if (!(top.volume_mm > threshold_mm)) continue;
+      if (!(top.volume_mm > threshold_mm) || !(top.volume_mm < kMaxLayerMm)) continue;
       SpreadingCell spreading;
       spreading.x = x;
       spreading.y = y;
@@ -187,8 +190,10 @@ SpreadKernel spread_kernel(const dipole::Medium& medium, double layer_mm, double
   const double reach_mm =
       clear ? layer_mm * sin_c / std::sqrt(1.0 - sin_c * sin_c) : kSpreadReach * length_mm;
   // Every cell with a part within the reach.
-  kernel.radius =
-      std::clamp(static_cast<int>(std::ceil(reach_mm / cell_mm - 0.5)), 0, kSubsurfaceMaxRadius);
+  const double reach_cells = reach_mm / cell_mm - 0.5;  // NaN or huge for absurd layers
+  kernel.radius = reach_cells > 0.0 ? static_cast<int>(std::ceil(std::min(
+                                          reach_cells, static_cast<double>(kSubsurfaceMaxRadius))))
+                                    : 0;
   // The profile (per mm²) and its integral out to the reach.
   const double d2 = layer_mm * layer_mm;
   const auto profile = [&](double r) {

@@ -104,7 +104,7 @@ SurfaceShading::SurfaceShading(const RenderSettings& settings, const SpectralPal
 
 void SurfaceShading::shade(shade::Vec3 normal, shade::Vec3 to_light, shade::Visibility visibility,
                            float wetness, const float* reflectance, float xyz[3]) const {
-  const float w = std::clamp(wetness, 0.0f, 1.0f);
+  const float w = wetness > 0.0f ? std::min(wetness, 1.0f) : 0.0f;  // NaN: dry
   const float mu_i = shade::dot(normal, to_light);
   const float mu_v = normal.z;  // the viewer straight above
   const float flat_lambert = std::max(to_light.z, 0.05f);
