@@ -15,6 +15,7 @@
 #include <fstream>
 #include <iostream>
 #include <iterator>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -30,7 +31,34 @@ namespace {
 
 namespace hid = impasto::input::hid;
 
-void list_tablets(bool handshake) {
+// The tablets as JSON: what a script needs to pick one (its node, ids, model, area, levels).
+nlohmann::json tablets_json(const std::vector<hid::PenTabletInfo>& tablets) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const hid::PenTabletInfo& t : tablets) {
+    char id[16];
+    std::snprintf(id, sizeof id, "%04x:%04x", t.device.vendor_id, t.device.product_id);
+    nlohmann::json row{{"path", t.device.path},
+                       {"id", id},
+                       {"manufacturer", t.device.manufacturer},
+                       {"product", t.device.product},
+                       {"interface", t.device.interface_number},
+                       {"readable", t.readable},
+                       {"supported", t.unsupported_reason.empty()},
+                       {"unsupported_reason", t.unsupported_reason}};
+    if (t.summary) {
+      row["vendor"] = t.summary->vendor;
+      row["model"] = t.summary->model;
+      row["protocol"] = t.summary->protocol;
+      if (t.summary->area_known) row["area_mm"] = {t.summary->width_mm, t.summary->height_mm};
+      row["pressure_levels"] = t.summary->pressure_levels;
+      row["tilt"] = t.summary->tilt;
+    }
+    list.push_back(row);
+  }
+  return list;
+}
+
+void list_tablets(bool handshake, bool json) {
   if (!hid::hid_available()) {
     throw std::runtime_error("this impasto was built without hidapi: no tablet access");
   }
@@ -39,6 +67,10 @@ void list_tablets(bool handshake) {
   if (!models_error.empty())
     std::cerr << "warning: no tablet model table: " << models_error << "\n";
   const auto tablets = hid::find_pen_tablets(hid::this_machine(handshake));
+  if (json) {
+    std::cout << tablets_json(tablets).dump(2) << "\n";
+    return;
+  }
   if (tablets.empty()) {
     const std::size_t devices = hid::enumerate_hid_devices().size();
     std::cout << "No pen tablets found: " << devices << " HID device(s) seen"
@@ -234,7 +266,11 @@ const CommandRegistrar kRegistrar{
       list_cmd->add_flag("--handshake", list_handshake,
                          "ask Huion/Gaomon/XP-Pen/Ugee tablets for their parameters (this "
                          "switches them to their full-resolution reports)");
-      list_cmd->callback([] { list_tablets(list_handshake); });
+      static bool list_json = false;
+      add_json_flag(*list_cmd, list_json,
+                    "each tablet's node, USB id, model, area, pressure levels and whether "
+                    "Impasto can read it");
+      list_cmd->callback([] { list_tablets(list_handshake, list_json); });
 
       const auto tablet_options = [](CLI::App* cmd, std::string& id, std::string& strings,
                                      int& interface) {

@@ -411,6 +411,15 @@ TEST_F(Cli, RecoverSavesToSaveAndStillTakesOut) {
   EXPECT_TRUE(nlohmann::json::parse(list.out).at("sessions").empty());
 }
 
+TEST_F(Cli, HidListPrintsJson) {
+  const CommandRun r = impasto("hid list --json");
+  if (r.err.find("without hidapi") != std::string::npos) GTEST_SKIP() << r.err;
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json tablets = nlohmann::json::parse(r.out);  // this machine's: maybe none
+  ASSERT_TRUE(tablets.is_array());
+  for (const auto& t : tablets) EXPECT_TRUE(t.at("path").is_string());
+}
+
 TEST_F(Cli, BenchSimPrintsOneJsonRowPerBrush) {
   const CommandRun r = impasto("bench sim --json --runs 1 --steps 2 --brush 8 --brush 12");
   ASSERT_EQ(r.status, 0) << r.err;
