@@ -50,7 +50,8 @@ struct BenchRenderArgs {
   std::string weights{
       util::name_of(render::kNodeWeightsNames, render::RenderSettings{}.node_weights)};
   int runs = 3;
-  int threads = 0;  // the "all threads" case; 0: every core
+  int threads = 0;         // the "all threads" case; 0: every core
+  bool reference = false;  // the scalar per-cell reference instead of the spectral kernels
   bool json = false;
 };
 
@@ -139,6 +140,7 @@ void run(const BenchRenderArgs& args) {
   render::TileRenderer renderer(settings, file ? render::SpectralPalette(settings, *file)
                                                : render::SpectralPalette(settings, slots));
   const double palette_ms = ms_since(start);
+  renderer.use_reference_kernels(args.reference);
   start = Clock::now();
   renderer.render_all(canvas);
   const double first_ms = ms_since(start);
@@ -191,6 +193,7 @@ void run(const BenchRenderArgs& args) {
                        {"tiles", canvas.tile_count()},
                        {"nodes", renderer.palette().nodes()},
                        {"weights", args.weights},
+                       {"kernels", args.reference ? "reference" : "simd"},
                        {"palette_ms", palette_ms},
                        {"first_render_ms", first_ms},
                        {"relight_ms", relight_n},
@@ -198,6 +201,7 @@ void run(const BenchRenderArgs& args) {
                        {"threads", timings.back().threads},
                        {"thread_scaling", scaling},
                        {"relight_cpu_ms", util::median(timings.back().cpu_ms)},
+                       {"relight_1_thread_cpu_ms", util::median(timings.front().cpu_ms)},
                        {"thread_busy", busy},
                        {"ns_per_cell", ns_per_cell},
                        {"image_ms", image_ms},
@@ -209,14 +213,16 @@ void run(const BenchRenderArgs& args) {
     std::cout << row.dump() << "\n";
     return;
   }
-  std::printf("%dx%d cells, %d of %d tiles painted, %d nodes (%s)\n", canvas.width_cells(),
-              canvas.height_cells(), painted, canvas.tile_count(), renderer.palette().nodes(),
-              args.weights.c_str());
+  std::printf("%dx%d cells, %d of %d tiles painted, %d nodes (%s), %s kernels\n",
+              canvas.width_cells(), canvas.height_cells(), painted, canvas.tile_count(),
+              renderer.palette().nodes(), args.weights.c_str(),
+              args.reference ? "scalar reference" : "SIMD");
   std::printf("palette for D65           %9.1f ms\n", palette_ms);
   std::printf("first render (%d threads)  %9.1f ms\n", all_threads, first_ms);
   for (const Timing& t : timings) {
-    std::printf("relight, %d thread%s        %9.1f ms (median of %d)\n", t.threads,
-                t.threads == 1 ? " " : "s", util::median(t.relight_ms), args.runs);
+    std::printf("relight, %d thread%s        %9.1f ms (median of %d; CPU %.1f ms)\n", t.threads,
+                t.threads == 1 ? " " : "s", util::median(t.relight_ms), args.runs,
+                util::median(t.cpu_ms));
   }
   std::printf("ns per cell (1 thread)     %9.1f\n", ns_per_cell);
   std::printf("thread scaling 1 -> %d     %9.2fx (threads busy %.0f %% of the relight)\n",
@@ -245,6 +251,9 @@ const CommandRegistrar registrar("bench render", [](CLI::App& root) {
       ->capture_default_str();
   cmd->add_option("--threads", args->threads, "The many-thread case (0: all cores)")
       ->check(CLI::Range(0, 1024));
+  cmd->add_flag("--reference", args->reference,
+                "The scalar per-cell reference code, shading recomputed every time (the "
+                "renderer as it was before the spectral kernels)");
   cmd->add_flag("--json", args->json,
                 "One JSON object: relight_ms, relight_1_thread_ms, ns_per_cell, thread_scaling, "
                 "first_render_ms, palette_ms, png_ms, ...");
