@@ -16,6 +16,7 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 #include <string>
 #include <thread>
 #include <vector>
@@ -98,7 +99,19 @@ paintcore::Canvas synthetic_canvas(int width, int height) {
 
 render::RenderSettings settings_for(const BenchRenderArgs& args, int threads) {
   render::RenderSettings settings;
-  settings.wavelengths = args.wavelengths == "full" ? 0 : std::stoi(args.wavelengths);
+  if (args.wavelengths == "full") {
+    settings.wavelengths = 0;
+  } else {
+    std::size_t used = 0;
+    try {
+      settings.wavelengths = std::stoi(args.wavelengths, &used);
+    } catch (const std::exception&) {
+    }
+    if (used == 0 || used != args.wavelengths.size() || settings.wavelengths < 1 ||
+        settings.wavelengths > render::kMaxNodes) {
+      throw std::runtime_error("--wavelengths " + args.wavelengths + ": expected 1..16 or full");
+    }
+  }
   settings.node_weights = render::parse_node_weights(args.weights);
   settings.threads = threads;
   render::validate(settings);

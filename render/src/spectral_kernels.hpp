@@ -22,10 +22,11 @@ inline int padded_nodes(int nodes) {
   return (nodes + kLanes - 1) / kLanes * kLanes;
 }
 
-// e^x for x in [-87, 88] (clamped there), relative error below 2.5e-7: Cody-Waite reduction
-// by ln 2 and Cephes' expf polynomial, in plain float operations that vectorise.
+// e^x for x in [-87, 88] (clamped there, NaN taken as -87), relative error below 2.5e-7: Cody-Waite
+// reduction by ln 2 and Cephes' expf polynomial, in plain float operations that vectorise.
 inline float fast_exp(float x) {
-  x = util::lesser(util::greater(x, -87.0f), 88.0f);
+  x = x > -87.0f ? x : -87.0f;  // NaN too: never an out-of-range conversion below
+  x = x < 88.0f ? x : 88.0f;
   constexpr float kShifter = 12582912.0f;  // 1.5 · 2^23: adding it rounds to an integer
   const float n = (x * 1.44269504088896341f + kShifter) - kShifter;
   float r = x - n * 0.693359375f;
