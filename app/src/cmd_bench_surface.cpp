@@ -16,10 +16,12 @@
 #include <limits>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "command.hpp"
+#include "vocabulary.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).
 namespace impasto::app::bench_surface_cmd {
@@ -33,13 +35,13 @@ struct BenchSurfaceArgs {
   bool json = false;
   int realisations = 24;
   int photons = 200000;
-  int size = 256;  // test canvas, cells each way
+  std::optional<CanvasSize> size;  // the test canvas; 256x256 when not given
 };
 
 // A test painting: ridged heavy paint (white, black) and a wet glaze band of crimson-blue
 // thinning from 0.3 mm to nothing across the canvas, over a woven ground.
-paintcore::Canvas test_canvas(int size) {
-  paintcore::Canvas canvas({size, size, 254.0, 7});
+paintcore::Canvas test_canvas(int width, int height) {
+  paintcore::Canvas canvas({width, height, 254.0, 7});
   for (int ty = 0; ty < canvas.tiles_y(); ++ty) {
     for (int tx = 0; tx < canvas.tiles_x(); ++tx) {
       const int index = ty * canvas.tiles_x() + tx;
@@ -49,14 +51,14 @@ paintcore::Canvas test_canvas(int size) {
           const int gx = tx * kTileSize + x, gy = ty * kTileSize + y;
           const auto c = static_cast<std::size_t>(y * kTileSize + x);
           const float ridge = 0.25f + 0.15f * std::sin(0.4f * static_cast<float>(gy));
-          if (gy < size / 3) {  // white impasto
+          if (gy < height / 3) {  // white impasto
             tile.wet_volume_mm[c] = ridge;
             tile.pigment(0)[c] = ridge;
-          } else if (gy < 2 * size / 3) {  // black impasto
+          } else if (gy < 2 * height / 3) {  // black impasto
             tile.wet_volume_mm[c] = ridge;
             tile.pigment(1)[c] = ridge;
           } else {  // a glaze thinning to the right
-            const float glaze = 0.3f * (1.0f - static_cast<float>(gx) / static_cast<float>(size));
+            const float glaze = 0.3f * (1.0f - static_cast<float>(gx) / static_cast<float>(width));
             tile.wet_volume_mm[c] = glaze;
             tile.pigment(2)[c] = 0.05f * glaze;
           }
@@ -109,7 +111,8 @@ double delta_e00_grey(double y1, double y2) {
 void run(const BenchSurfaceArgs& args) {
   nlohmann::json out;
   // --- 1. cost per cell ---
-  const paintcore::Canvas canvas = test_canvas(args.size);
+  const CanvasSize size = args.size.value_or(CanvasSize{256, 256});
+  const paintcore::Canvas canvas = test_canvas(size.width, size.height);
   RenderSettings blinn;
   RenderSettings ghs = blinn;
   ghs.surface.model = SurfaceModel::ghs;
@@ -121,17 +124,18 @@ void run(const BenchSurfaceArgs& args) {
   const double ns_blinn = render_ns_per_cell(blinn, canvas, false);
   const double ns_ghs = render_ns_per_cell(ghs, canvas, false);
   const double ns_sub = render_ns_per_cell(ghs_sub, canvas, true);
-  out["cost"] = {{"canvas_cells", args.size * args.size},
+  out["cost"] = {{"canvas_cells", size.width * size.height},
                  {"spreading_cells", spreading},
                  {"blinn_ns_per_cell", ns_blinn},
                  {"ghs_ns_per_cell", ns_ghs},
                  {"ghs_subsurface_ns_per_cell", ns_sub}};
   if (!args.json) {
-    std::printf("cost per cell, %dx%d test canvas, 8 nodes (best of 3):\n", args.size, args.size);
+    std::printf("cost per cell, %dx%d test canvas, 8 nodes (best of 3):\n", size.width,
+                size.height);
     std::printf("  blinn                 %8.0f ns\n", ns_blinn);
     std::printf("  ghs surface           %8.0f ns  (+%.0f)\n", ns_ghs, ns_ghs - ns_blinn);
     std::printf("  ghs + subsurface      %8.0f ns  (+%.0f; %zu of %d cells spread)\n", ns_sub,
-                ns_sub - ns_ghs, spreading, args.size * args.size);
+                ns_sub - ns_ghs, spreading, size.width * size.height);
   }
 
   // --- 2. the GHS kernel against wave optics by Monte Carlo ---
@@ -262,16 +266,14 @@ const CommandRegistrar registrar("bench surface", [](CLI::App& root) {
       "Cost per cell of the surface models and their error against brute-force references "
       "(docs/surface.md)");
   auto args = std::make_shared<BenchSurfaceArgs>();
-  cmd->add_flag("--json", args->json, "Print the results as JSON");
+  add_json_flag(*cmd, args->json, "the costs, the kernel shares and the spread shares");
   cmd->add_option("--realisations", args->realisations, "Random surfaces per kernel reference")
       ->check(CLI::Range(1, 10000))
       ->capture_default_str();
   cmd->add_option("--photons", args->photons, "Photons per random walk")
       ->check(CLI::Range(100, 100000000))
       ->capture_default_str();
-  cmd->add_option("--size", args->size, "Test canvas size, cells each way")
-      ->check(CLI::Range(64, 4096))
-      ->capture_default_str();
+  add_size_option(*cmd, args->size, "the synthetic test canvas of the cost (256x256)");
   cmd->callback([args] { run(*args); });
 });
 
