@@ -20,6 +20,7 @@
 #include <string>
 
 #include "command.hpp"
+#include "progress.hpp"
 #include "vocabulary.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).
@@ -182,8 +183,10 @@ struct TableArgs {
 
 // Measures the correction table of the Gouffé closed form once, offline (minutes).
 void run_table(const TableArgs& args) {
+  ProgressReporter progress("cracks table", "traces");
   const CavityTable table = CavityTable::measure(CavityTableGrid{}, parse_cavity_light(args.light),
-                                                 args.paths, args.seed);
+                                                 args.paths, args.seed, progress.callback());
+  progress.finish();
   std::ostringstream out;
   out << "# impasto cracks table --light-geometry " << args.light << " --paths " << args.paths
       << " --seed " << args.seed << "\n";

@@ -64,7 +64,8 @@ double CavityTable::rho0(int j) const {
 }
 
 CavityTable CavityTable::measure(const CavityTableGrid& grid, CavityLight light,
-                                 std::uint64_t paths, std::uint64_t seed) {
+                                 std::uint64_t paths, std::uint64_t seed,
+                                 const util::ProgressCallback& progress) {
   check_grid(grid, "cavity table");
   CavityTable table;
   table.grid_ = grid;
@@ -75,6 +76,8 @@ CavityTable CavityTable::measure(const CavityTableGrid& grid, CavityLight light,
   table.rho_.resize(kAllShapes.size() * static_cast<std::size_t>(grid.ratio_count) *
                     static_cast<std::size_t>(grid.rho0_count));
   const MonteCarloSettings settings{paths, seed, MonteCarloSettings{}.max_bounces};
+  const std::uint64_t traces = kAllShapes.size() * static_cast<std::uint64_t>(grid.ratio_count);
+  std::uint64_t traced = 0;
   for (CavityShape shape : kAllShapes) {
     for (int i = 0; i < grid.ratio_count; ++i) {
       const EscapeHistogram h =
@@ -87,6 +90,7 @@ CavityTable CavityTable::measure(const CavityTableGrid& grid, CavityLight light,
         if (i > 0) rho = std::min(rho, static_cast<double>(table.reflectance_at(shape, i - 1, j)));
         table.rho_[table.index(shape, i, j)] = static_cast<float>(rho);
       }
+      if (progress) progress(++traced, traces);
     }
   }
   table.compute_differences();

@@ -26,6 +26,7 @@
 #include "impasto/cracks/cavity.hpp"
 #include "impasto/cracks/cavity_model.hpp"
 #include "impasto/cracks/gouffe.hpp"
+#include "impasto/util/progress.hpp"
 
 namespace impasto::cracks {
 
@@ -56,9 +57,10 @@ struct CavityTableGrid {
 
 class CavityTable {
  public:
-  // Measures the table with the Monte Carlo reference (paths per shape and L/R).
+  // Measures the table with the Monte Carlo reference (paths per shape and L/R); progress
+  // hears of each (shape, L/R) traced.
   static CavityTable measure(const CavityTableGrid& grid, CavityLight light, std::uint64_t paths,
-                             std::uint64_t seed);
+                             std::uint64_t seed, const util::ProgressCallback& progress = {});
   // Reads a table written by write_csv; throws std::runtime_error naming the file and line.
   static CavityTable read_csv(const std::filesystem::path& path);
   void write_csv(std::ostream& out) const;
