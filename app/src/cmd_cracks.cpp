@@ -194,6 +194,12 @@ void run_table(const TableArgs& args) {
   files::write_file_atomically(args.out, out.str());
 }
 
+// These commands always print one JSON object; --json is accepted for scripts that ask.
+void add_always_json(CLI::App& cmd) {
+  static bool always = true;
+  add_json_flag(cmd, always, "always, one object of statistics");
+}
+
 const CommandRegistrar registrar("cracks", [](CLI::App& root) {
   CLI::App* group = command_group(root, "cracks", "Cracks and holes as grey-body cavities");
 
@@ -227,6 +233,7 @@ const CommandRegistrar registrar("cracks", [](CLI::App& root) {
                 "Crack this painting's dry layers (its size and cells; needs --save)");
   g->add_flag("--dry", gen->dry, "Dry the painting's wet paint before cracking it");
   add_save_option(*g, gen->save, "the cracked one (with --painting)");
+  add_always_json(*g);
   g->callback([gen] { run_generate(*gen); });
 
   auto imp = std::make_shared<ImportArgs>();
@@ -241,6 +248,7 @@ const CommandRegistrar registrar("cracks", [](CLI::App& root) {
   i->add_option("--painting", imp->painting,
                 "Put the map into this painting (same size in cells; needs --save)");
   add_save_option(*i, imp->save, "the cracked one (with --painting)");
+  add_always_json(*i);
   i->callback([imp] { run_import(*imp); });
 
   auto brush = std::make_shared<BrushArgs>();
@@ -255,6 +263,7 @@ const CommandRegistrar registrar("cracks", [](CLI::App& root) {
   b->add_option("--exposed-layer", brush->exposed_layer,
                 "Dry layer the walls expose (0 = lowest); default: the canvas ground")
       ->check(CLI::Range(0, 254));
+  add_always_json(*b);
   b->callback([brush] { run_brush(*brush); });
 
   auto cav = std::make_shared<CavityArgs>();
@@ -269,6 +278,7 @@ const CommandRegistrar registrar("cracks", [](CLI::App& root) {
       ->check(CLI::Range(0.0, 90.0));
   c->add_option("--sky", cav->light.sky_share, "Corrected model: the sky's share of the light")
       ->check(CLI::Range(0.0, 1.0));
+  add_always_json(*c);
   c->callback([cav] { run_cavity(*cav); });
 
   auto tab = std::make_shared<TableArgs>();

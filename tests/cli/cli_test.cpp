@@ -420,6 +420,41 @@ TEST_F(Cli, HidListPrintsJson) {
   for (const auto& t : tablets) EXPECT_TRUE(t.at("path").is_string());
 }
 
+TEST_F(Cli, ThumbnailWritesASmallPng) {
+  const CommandRun r = impasto("thumbnail " + painting().string() + " thumb.png 32");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const render::Image image = render::read_png(dir_ / "thumb.png");
+  EXPECT_EQ(image.width, 32);  // the longer side of 64x48
+  EXPECT_EQ(image.height, 24);
+}
+
+TEST_F(Cli, CracksCommandsPrintOneJsonObject) {
+  CommandRun r = impasto("cracks cavity --shape cone-pit --depth-mm 0.2 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json cavity = nlohmann::json::parse(r.out);
+  EXPECT_EQ(cavity.at("shape"), "cone-pit");
+  EXPECT_GT(cavity.at("F").get<double>(), 0.0);
+  r = impasto("cracks cavity --shape hexagon");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("cylinder-pit"), std::string::npos) << r.err;  // the choices
+  r = impasto("cracks brush " + painting().string() + " --points \"1,1 4,3\"");
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.err.find("--save"), std::string::npos) << r.err;
+  r = impasto("cracks brush " + painting().string() + " --points \"1,1 4,3\" --save c.impasto");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_GT(nlohmann::json::parse(r.out).at("crack_cells").get<int>(), 0);
+}
+
+TEST_F(Cli, BenchColorPrintsOneJsonRowPerRule) {
+  const CommandRun r = impasto("bench color --nodes 3 --lights D65 --cells 0 --no-half --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  std::istringstream lines(r.out);
+  std::vector<int> nodes;
+  for (std::string line; std::getline(lines, line);)
+    nodes.push_back(nlohmann::json::parse(line).at("n"));
+  EXPECT_EQ(nodes, (std::vector<int>{3, 0}));  // 0: the full spectrum
+}
+
 TEST_F(Cli, BenchSimPrintsOneJsonRowPerBrush) {
   const CommandRun r = impasto("bench sim --json --runs 1 --steps 2 --brush 8 --brush 12");
   ASSERT_EQ(r.status, 0) << r.err;
