@@ -61,6 +61,11 @@ void xdotool(const std::string& args) {
   ASSERT_EQ(std::system(("xdotool " + args).c_str()), 0) << args;
 }
 
+// A capture of the whole window.
+bool whole(const Image& image) {
+  return image.width == kWindowW && image.height == kWindowH;
+}
+
 // A button: one of ImGui's blue rectangles 80-110 px wide, found on a screenshot.
 struct Button {
   int x, y;
@@ -107,11 +112,12 @@ std::vector<Button> find_buttons(const Image& image, int x0, int y0, int x1, int
   return buttons;
 }
 
+// Over the part of the region the image has (a capture can come back empty or small).
 double mean_luma(const Image& image, int x0, int y0, int x1, int y1) {
   double sum = 0.0;
   int n = 0;
-  for (int y = y0; y < y1; ++y) {
-    for (int x = x0; x < x1; ++x) {
+  for (int y = std::max(0, y0); y < std::min(image.height, y1); ++y) {
+    for (int x = std::max(0, x0); x < std::min(image.width, x1); ++x) {
       const float* p = image.pixel(x, y);
       sum += 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
       ++n;
@@ -170,7 +176,9 @@ class PaintingWindow {
   int exit_status() const { return exit_status_; }
   Image screenshot() const {
     const fs::path file = home_ / "screen.png";
-    std::system(("import -window " + id_ + " png:'" + file.string() + "' 2>/dev/null").c_str());
+    // (Bounded: import waits for a window that has gone, holding the display.)
+    std::system(
+        ("timeout 20 import -window " + id_ + " png:'" + file.string() + "' 2>/dev/null").c_str());
     try {
       return impasto::render::read_png(file);
     } catch (const std::exception&) {
@@ -195,18 +203,18 @@ class PaintingWindow {
     click(kFileMenuX, kFileMenuY);
     ASSERT_TRUE(wait_for([&] {
       const Image s = screenshot();
-      return s.width == kWindowW && mean_luma(s, 100, 125, 180, 150) < 0.3;
+      return whole(s) && mean_luma(s, 100, 125, 180, 150) < 0.3;
     })) << "the File menu did not open";
     click(40, item_y);
   }
   // The file dialog, seen open: its dark listing over the middle of the canvas.
   bool dialog_open() const {
     const Image s = screenshot();
-    return s.width == kWindowW && mean_luma(s, 560, 380, 640, 420) < 0.2;
+    return whole(s) && mean_luma(s, 560, 380, 640, 420) < 0.2;
   }
   std::vector<Button> buttons_near_centre() const {
     const Image s = screenshot();
-    if (s.width != kWindowW) return {};
+    if (!whole(s)) return {};
     return find_buttons(s, 250, 250, 860, 560);
   }
 
@@ -351,7 +359,7 @@ TEST(WindowFiles, AnErrorShowsAsANotification) {
   const auto red_pixels = [&] {
     const Image s = window.screenshot();
     int red = 0;
-    if (s.width != kWindowW) return 0;
+    if (!whole(s)) return 0;
     for (int y = 500; y < 775; ++y) {
       for (int x = 10; x < 460; ++x) {
         const float* p = s.pixel(x, y);

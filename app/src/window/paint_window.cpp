@@ -431,6 +431,7 @@ void PaintWindow::start_session() {
   if (options_.painting) {
     state_.file = options_.painting;
     remember_recent_file(*options_.painting);
+    state_.recent = load_recent_files();
   }
   open_board_for(options_.painting);
   worker_ = std::make_unique<SimWorker>(std::move(painting),
