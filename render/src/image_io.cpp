@@ -9,7 +9,6 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
-#include <thread>
 
 #include "impasto/files/atomic_file.hpp"
 #include "impasto/files/input_file.hpp"
@@ -90,9 +89,7 @@ void write_exr(const std::filesystem::path& path, const Image& image) {
   try {
     Imf::StdOSStream stream;
     {
-      // Blocks of scan lines compressed on every core (the file's bytes are the same).
-      Imf::RgbaOutputFile file(stream, Imf::Header(image.width, image.height), Imf::WRITE_RGB,
-                               static_cast<int>(std::thread::hardware_concurrency()));
+      Imf::RgbaOutputFile file(stream, Imf::Header(image.width, image.height), Imf::WRITE_RGB);
       file.setFrameBuffer(pixels.data(), 1, static_cast<std::size_t>(image.width));
       file.writePixels(image.height);
     }

@@ -348,8 +348,7 @@ TEST_F(Cli, RenderRefusesUnknownChoicesNamingThem) {
        {Case{"--display adobe-rgb", "display-p3"}, Case{"--adaptation cat02", "bradford"},
         Case{"--storage double", "half"}, Case{"--flake-depth deep", "no-masking"},
         Case{"--crack-model exact", "gouffe"}, Case{"--light-type laser", "spot"}}) {
-    // Refused while parsing, before the file is read: any existing file will do.
-    const CommandRun r = impasto("render " + session().string() + " -o x.png " + c.option);
+    const CommandRun r = impasto("render " + painting().string() + " -o x.png " + c.option);
     EXPECT_NE(r.status, 0) << c.option;
     EXPECT_NE(r.err.find(c.a_choice), std::string::npos) << c.option << ": " << r.err;
   }

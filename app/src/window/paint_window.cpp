@@ -35,6 +35,8 @@
 #include "session/recovery_folder.hpp"
 #include "session/session_registry.hpp"
 #include "session/session_start.hpp"
+#include "window/edit_help_menus.hpp"
+#include "window/eyedropper.hpp"
 #include "window/paint_options.hpp"
 #include "window/palette_board_panel.hpp"
 #include "window/panels.hpp"
@@ -48,9 +50,11 @@
 #include "window/recent_files.hpp"
 #include "window/screenshot.hpp"
 #include "window/session_banner.hpp"
+#include "window/shortcuts.hpp"
 #include "window/sim_worker.hpp"
 #include "window/swatch_chips.hpp"
 #include "window/tablet_input.hpp"
+#include "window/tool_bar.hpp"
 #include "window/ui_damage.hpp"
 #include "window/window_present.hpp"
 #include "window/window_title.hpp"
@@ -151,6 +155,9 @@ class PaintWindow {
   void sync_gpu();
   void handle_canvas_input();
   void handle_shortcuts();
+  void run_commands();
+  void pick_at(const PointerEvent& at, bool released);
+  void update_pick_cursor();
   void run_pending_action();
   void update_title();
   void update_swatch();
@@ -220,7 +227,17 @@ class PaintWindow {
       [this](double fx, double fy, double tx, double ty) { rotate_view(fx, fy, tx, ty); },
   }};
   SpeedPressure speed_pressure_;
-  int window_w_ = 0, window_h_ = 0;  // this frame's window size
+  // The keyboard: each key press (and a held key's repeats) since the last frame, in order.
+  struct KeyPress {
+    int key, mods;
+    bool repeat;
+  };
+  std::vector<KeyPress> key_presses_;
+  PickGesture pick_gesture_;  // the eyedropper's presses on the canvas
+  bool pick_cursor_ = false;  // the cursor is the eyedropper's this frame
+  GLFWcursor* crosshair_ = nullptr;
+  std::string head_before_knife_ = "round";  // where B returns to from the knife (K)
+  int window_w_ = 0, window_h_ = 0;          // this frame's window size
   double session_start_s_ = 0;
 
   // Crash recovery: this session's entry, what the window has to say about it, the sessions
@@ -244,6 +261,7 @@ PaintWindow::PaintWindow(const PaintOptions& options) : options_(options) {
   state_.illuminant =
       d65 == state_.illuminants.end() ? 0 : static_cast<int>(d65 - state_.illuminants.begin());
   state_.brush_heads = brush_heads();
+  reload_presets(state_);
   state_.recent = load_recent_files();
   create_window();
   start_session();
@@ -258,6 +276,7 @@ PaintWindow::~PaintWindow() {
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
+  if (crosshair_) glfwDestroyCursor(crosshair_);
   if (window_) glfwDestroyWindow(window_);
 }
 
@@ -298,6 +317,14 @@ void PaintWindow::create_window() {
     static_cast<PaintWindow*>(glfwGetWindowUserPointer(window))->present_whole_ = true;
   });
   presenter_ = std::make_unique<WindowPresenter>(window_);
+  // Key presses are queued as they arrive (a press and release within one frame still
+  // counts); ImGui's backend, installed next, calls this before its own.
+  glfwSetKeyCallback(window_, [](GLFWwindow* window, int key, int, int action, int mods) {
+    if (action == GLFW_RELEASE) return;
+    static_cast<PaintWindow*>(glfwGetWindowUserPointer(window))
+        ->key_presses_.push_back({key, mods, action == GLFW_REPEAT});
+  });
+  crosshair_ = glfwCreateStandardCursor(GLFW_CROSSHAIR_CURSOR);
   ImGui_ImplGlfw_InitForOpenGL(window_, true);
   ImGui_ImplOpenGL3_Init("#version 330 core");
   session_start_s_ = glfwGetTime();
@@ -658,10 +685,20 @@ void PaintWindow::handle_canvas_input() {
   // too, and its own samples carry the real pressure.
   frame.tablet_near = glfwGetTime() - tablet_seen_s_ < 0.25;
   frame.canvas_at = [](double x, double y) { return !ui_at(x, y); };
-  gestures_.apply(pointer_events_.take(), frame);
+  // The eyedropper (its tool, or Alt held) takes left presses on the canvas; a stroke under
+  // way goes on to its end.
+  const bool alt = glfwGetKey(window_, GLFW_KEY_LEFT_ALT) == GLFW_PRESS ||
+                   glfwGetKey(window_, GLFW_KEY_RIGHT_ALT) == GLFW_PRESS;
+  const bool picking = (state_.eyedropper.tool || alt) && !gestures_.painting();
+  const std::vector<PointerEvent> events = pick_gesture_.take_picks(
+      pointer_events_.take(), picking, frame.canvas_at,
+      [this](const PointerEvent& at, bool released) { pick_at(at, released); });
+  gestures_.apply(events, frame);
 
   double x = 0, y = 0;
   glfwGetCursorPos(window_, &x, &y);
+  pick_cursor_ = pick_gesture_.held() || (picking && !ui_at(x, y));
+  update_pick_cursor();
   state_.cursor_cell = state_.view.window_to_cell(x, y, window_w_, window_h_);
   // Zoom about the cursor with the wheel, down to single cells and up to 64 px a cell.
   if (!io.WantCaptureMouse && io.MouseWheel != 0.0f) {
@@ -674,20 +711,133 @@ void PaintWindow::handle_canvas_input() {
   }
 }
 
+// Keys become commands through the one table (shortcuts.hpp), unless a text field or a
+// dialog or menu has the keyboard.
 void PaintWindow::handle_shortcuts() {
-  const ImGuiIO& io = ImGui::GetIO();
-  if (io.WantTextInput) return;
-  static bool z_was_down = false, f_was_down = false;
-  const bool ctrl = io.KeyCtrl, shift = io.KeyShift;
-  const bool z = glfwGetKey(window_, GLFW_KEY_Z) == GLFW_PRESS;
-  if (z && !z_was_down && ctrl) {
-    worker_->submit(shift ? input::StrokeEvent{input::RedoEvent{}} : input::UndoEvent{});
+  const std::vector<KeyPress> keys = std::exchange(key_presses_, {});
+  const bool typing = ImGui::GetIO().WantTextInput || GImGui->OpenPopupStack.Size > 0;
+  if (!typing) {
+    for (const KeyPress& press : keys) {
+      if (const auto command = command_for_key(press.key, press.mods, press.repeat))
+        state_.commands.push_back(*command);
+    }
   }
-  z_was_down = z;
-  const bool f = glfwGetKey(window_, GLFW_KEY_F) == GLFW_PRESS;
-  if (f && !f_was_down && !ctrl) state_.fit_requested = true;
-  f_was_down = f;
-  if (glfwGetKey(window_, GLFW_KEY_1) == GLFW_PRESS && !ctrl) state_.view.pixels_per_cell = 1.0;
+  run_commands();
+}
+
+// Carries out what the keys and the menus asked for (the File menu's own at its next frame).
+// A brush change waits for the stroke under way to end.
+void PaintWindow::run_commands() {
+  std::vector<Command> waiting;
+  const auto set_brush = [&](Command command, auto&& change) {
+    if (canvas_feed_.in_stroke()) {
+      waiting.push_back(command);
+      return;
+    }
+    change();
+    worker_->submit(brush_event(state_));
+  };
+  for (const Command command : std::exchange(state_.commands, {})) {
+    paintcore::BrushSettings& brush = state_.brush;
+    switch (command) {
+      case Command::kNew:
+        state_.file_command = FileCommand::kNew;
+        break;
+      case Command::kOpen:
+        state_.file_command = FileCommand::kOpen;
+        break;
+      case Command::kSave:
+        state_.file_command = FileCommand::kSave;
+        break;
+      case Command::kSaveAs:
+        state_.file_command = FileCommand::kSaveAs;
+        break;
+      case Command::kUndo:
+        worker_->submit(input::UndoEvent{});
+        break;
+      case Command::kRedo:
+        worker_->submit(input::RedoEvent{});
+        break;
+      case Command::kBrush:
+        state_.eyedropper.tool = false;
+        if (brush.head == "knife") set_brush(command, [&] { brush.head = head_before_knife_; });
+        break;
+      case Command::kKnife:
+        state_.eyedropper.tool = false;
+        if (brush.head != "knife" && std::find(state_.brush_heads.begin(), state_.brush_heads.end(),
+                                               "knife") != state_.brush_heads.end()) {
+          set_brush(command, [&] {
+            head_before_knife_ = brush.head;
+            brush.head = "knife";
+          });
+        }
+        break;
+      case Command::kEyedropper:
+        state_.eyedropper.tool = !state_.eyedropper.tool;
+        break;
+      case Command::kBrushSmaller:
+      case Command::kBrushLarger:
+        set_brush(command, [&] {
+          const double factor =
+              command == Command::kBrushLarger ? kBrushSizeStep : 1.0 / kBrushSizeStep;
+          brush.size_mm = std::clamp(brush.size_mm * factor, kBrushSizeMinMm, kBrushSizeMaxMm);
+        });
+        break;
+      case Command::kFitCanvas:
+        state_.fit_requested = true;
+        break;
+      case Command::kOneCellPerPixel:
+        state_.view.pixels_per_cell = 1.0;
+        break;
+      case Command::kShowShortcuts:
+        state_.show_shortcuts = !state_.show_shortcuts;
+        break;
+    }
+  }
+  state_.commands.insert(state_.commands.begin(), waiting.begin(), waiting.end());
+}
+
+// The eyedropper at a window position: the paint there is shown as the mouse moves; where
+// the button is released it becomes the palette's mix and (load on pick) the brush's paint.
+void PaintWindow::pick_at(const PointerEvent& at, bool released) {
+  EyedropperState& e = state_.eyedropper;
+  const auto cell = state_.view.window_to_cell(at.x, at.y, window_w_, window_h_);
+  if (released) worker_->wait_idle();  // the paint the user sees, every stroke applied
+  std::optional<PickedPaint> picked = worker_->with_painting(
+      [&](const paintcore::Painting& painting) { return pick_paint(painting, cell[0], cell[1]); });
+  if (!picked) {
+    if (released) e.message = "nothing to pick here: bare canvas";
+    return;
+  }
+  e.picked = std::move(picked);
+  e.message.clear();
+  if (!released) return;
+  e.reveal = true;
+  try {
+    render_picked_colours(*e.picked, state_.settings);
+  } catch (const std::exception& error) {
+    e.message = error.what();
+  }
+  const std::vector<std::string> unknown = set_palette_mix(e.picked->mix, state_.mix_parts);
+  state_.mix_changed = true;
+  if (!unknown.empty())
+    e.message = "not in the pigment library, left out of the palette: " + unknown.front();
+  if (e.load_on_pick)
+    load_onto_brush(*worker_, picked_load(*e.picked, state_.load_volume_mm3, state_.paint_body));
+}
+
+// The crosshair while the eyedropper would pick (ImGui leaves the cursor alone meanwhile).
+void PaintWindow::update_pick_cursor() {
+  ImGuiIO& io = ImGui::GetIO();
+  const bool was = (io.ConfigFlags & ImGuiConfigFlags_NoMouseCursorChange) != 0;
+  if (pick_cursor_ == was) return;
+  if (pick_cursor_) {
+    io.ConfigFlags |= ImGuiConfigFlags_NoMouseCursorChange;
+    glfwSetCursor(window_, crosshair_);
+  } else {
+    io.ConfigFlags &= ~ImGuiConfigFlags_NoMouseCursorChange;
+    glfwSetCursor(window_, nullptr);
+  }
 }
 
 FileActions PaintWindow::file_actions() {
@@ -850,8 +1000,19 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   const FileActions files = file_actions();
   PanelContext context{state_, *worker_, painting, *palette_, files, board_panel_};
   draw_panels(context);
+  draw_tool_bar(state_, *worker_);
   draw_session_banners(worker_->stats(), notice_);
   pigment_editor_.draw(state_, *palette_);
+  if (ImGui::BeginMainMenuBar()) {  // Help, last on the menu bar
+    help_menu(state_);
+    ImGui::EndMainMenuBar();
+  }
+  draw_help_windows(state_);
+  if (pick_cursor_) {
+    double cursor_x = 0, cursor_y = 0;
+    glfwGetCursorPos(window_, &cursor_x, &cursor_y);
+    draw_pick_cursor(state_, static_cast<float>(cursor_x), static_cast<float>(cursor_y));
+  }
   pigment_drift_.draw(state_, *worker_);
   std::optional<RecoveryPreview> preview;
   if (previewing_ && preview_) {

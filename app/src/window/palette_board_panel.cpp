@@ -1,5 +1,7 @@
 #include "window/palette_board_panel.hpp"
 
+#include "window/eyedropper.hpp"
+
 #include <imgui.h>
 #include <impasto/data/pigments.hpp>
 
@@ -124,8 +126,7 @@ void PaletteBoardPanel::draw(WindowState& s, SimWorker& worker) {
   ImGui::BeginDisabled(!load);
   if (ImGui::Button("Pick up onto brush") && load) {
     // The canvas brush gets exactly what the board brush holds; the board brush is wiped.
-    worker.submit(input::WipeEvent{});
-    worker.submit(*load);
+    load_onto_brush(worker, *load);
     board_.wipe_brush();
   }
   ImGui::EndDisabled();

@@ -1,5 +1,7 @@
 #include "window/panels.hpp"
+#include "window/edit_help_menus.hpp"
 #include "window/plot.hpp"
+#include "window/shortcuts.hpp"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -251,7 +253,8 @@ void palette_panel(PanelContext& c) {
   ImGui::SameLine();
   ImGui::BeginGroup();
   ImGui::SetNextItemWidth(120.0f);
-  ImGui::SliderFloat("mm³", &s.load_volume_mm3, 1.0f, 400.0f, "%.0f", ImGuiSliderFlags_Logarithmic);
+  ImGui::SliderFloat("mm³", &s.load_volume_mm3, static_cast<float>(kLoadMinMm3),
+                     static_cast<float>(kLoadMaxMm3), "%.0f", ImGuiSliderFlags_Logarithmic);
   ImGui::SetNextItemWidth(120.0f);
   if (ImGui::BeginCombo("body", s.paint_body.c_str())) {
     for (const paintcore::PaintBodyInfo& body : paintcore::kPaintBodies) {
@@ -327,7 +330,9 @@ void brush_panel(PanelContext& c) {
     ImGui::EndCombo();
   }
   float size = static_cast<float>(s.brush.size_mm);
-  if (ImGui::SliderFloat("size (mm)", &size, 0.5f, 60.0f, "%.1f", ImGuiSliderFlags_Logarithmic)) {
+  if (ImGui::SliderFloat("size (mm)", &size, static_cast<float>(kBrushSizeMinMm),
+                         static_cast<float>(kBrushSizeMaxMm), "%.1f",
+                         ImGuiSliderFlags_Logarithmic)) {
     s.brush.size_mm = size;
   }
   changed = changed || ImGui::IsItemDeactivatedAfterEdit();
@@ -367,7 +372,17 @@ void spectrum_plot(const WindowState& s, const render::SpectralPalette& palette)
   options.size = ImVec2(kPanelWidth - 20, 110);
   options.markers_x.assign(palette.sampling().wavelengths_nm.begin(),
                            palette.sampling().wavelengths_nm.end());
-  draw_plot(options, std::span(&light, 1));
+  const double hovered_nm = draw_plot(options, std::span(&light, 1));
+  // The tooltip in nanometres: the light there and the nearest quadrature node.
+  const auto& nodes = options.markers_x;
+  if (!std::isnan(hovered_nm) && !nodes.empty()) {
+    const auto nearest = std::min_element(nodes.begin(), nodes.end(), [&](double a, double b) {
+      return std::abs(a - hovered_nm) < std::abs(b - hovered_nm);
+    });
+    ImGui::SetTooltip("%.1f nm\nlight: %.3g\nnearest node: %.1f nm (%d of %zu)", hovered_nm,
+                      series_at(light, hovered_nm), *nearest,
+                      static_cast<int>(nearest - nodes.begin()) + 1, nodes.size());
+  }
 }
 
 // A disc: the centre is the light straight above, the rim the horizon; drag to move it.
@@ -527,7 +542,12 @@ void tablet_panel(PanelContext& c) {
 void layers_panel(PanelContext& c) {
   WindowState& s = c.state;
   if (!ImGui::CollapsingHeader("Layers", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  ImGui::SliderFloat("dry %", &s.dry_fraction, 0.0f, 1.0f, "%.2f");
+  // Shown in percent; the dry event takes the fraction.
+  float dry_percent = 100.0f * s.dry_fraction;
+  if (ImGui::SliderFloat("dry", &dry_percent, 0.0f, 100.0f, "%.0f %%"))
+    s.dry_fraction = std::clamp(dry_percent / 100.0f, 0.0f, 1.0f);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Dry now dries this share of the wet paint, from the bottom up");
   ImGui::SameLine();
   if (ImGui::Button("Dry now")) c.worker.submit(input::DryEvent{s.dry_fraction});
   s.hidden_dry_layers.resize(c.painting.dry_layers, false);
@@ -546,13 +566,16 @@ void layers_panel(PanelContext& c) {
 void history_panel(PanelContext& c) {
   if (!ImGui::CollapsingHeader("History", ImGuiTreeNodeFlags_DefaultOpen)) return;
   ImGui::BeginDisabled(c.painting.undo_depth == 0);
-  if (ImGui::Button("Undo (Ctrl+Z)")) c.worker.submit(input::UndoEvent{});
+  const std::string undo = "Undo (" + shortcut_text(Command::kUndo) + ")";
+  if (ImGui::Button(undo.c_str())) c.worker.submit(input::UndoEvent{});
   ImGui::EndDisabled();
   ImGui::SameLine();
   ImGui::BeginDisabled(c.painting.redo_depth == 0);
-  if (ImGui::Button("Redo (Ctrl+Shift+Z)")) c.worker.submit(input::RedoEvent{});
+  const std::string redo = "Redo (" + shortcut_text(Command::kRedo) + ")";
+  if (ImGui::Button(redo.c_str())) c.worker.submit(input::RedoEvent{});
   ImGui::EndDisabled();
-  ImGui::Text("%zu steps to undo, %zu to redo", c.painting.undo_depth, c.painting.redo_depth);
+  ImGui::Text("%zu %s to undo, %zu to redo", c.painting.undo_depth,
+              c.painting.undo_depth == 1 ? "step" : "steps", c.painting.redo_depth);
 }
 
 // Totals turned into rates over the last whole second (per-frame counts read 0 between
@@ -644,6 +667,7 @@ void draw_panels(PanelContext& context) {
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                    ImGuiWindowFlags_NoSavedSettings);
   palette_panel(context);
+  eyedropper_panel(context.state, context.worker);
   context.board.draw(context.state, context.worker);
   brush_panel(context);
   tablet_panel(context);

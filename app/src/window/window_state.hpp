@@ -18,9 +18,12 @@
 #include <string>
 #include <vector>
 
+#include "window/brush_presets.hpp"
+#include "window/eyedropper.hpp"
 #include "window/file_browser.hpp"
 #include "window/notifications.hpp"
 #include "window/recent_files.hpp"
+#include "window/shortcuts.hpp"
 #include "window/sim_worker.hpp"
 #include "window/tablet_input.hpp"
 
@@ -64,6 +67,14 @@ struct WindowState {
   std::vector<std::string> brush_heads;
   bool pressure_from_speed = false;
   float mouse_pressure = 0.6f;
+
+  // --- tools, brush presets, commands (eyedropper.hpp, brush_presets.hpp, shortcuts.hpp) ---
+  EyedropperState eyedropper;
+  PresetLibrary presets;
+  bool open_save_preset = false;  // open the "Save brush preset" prompt
+  std::string preset_name_input;
+  std::vector<Command> commands;  // asked for by keys and menu items, not yet carried out
+  bool show_shortcuts = false, show_about = false;
 
   // --- tablets (the mouse paints when none is in use) ---
   TabletSettings tablet;

@@ -1,0 +1,360 @@
+// The window's everyday tools end to end, under Xvfb, driven by real X input (xdotool): the
+// eyedropper picks the paint of a stroke and loads the brush with it, Ctrl+S saves the
+// painting (with that brush), and a brush preset saved in the window is read back by the
+// next window and applied.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "impasto/paintcore/painting.hpp"
+#include "impasto/render/image.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace std::chrono_literals;
+
+const std::string kRed = "Pyrrole Red";
+const std::string kGreen = "Phthalo Green (Blue Shade)";
+
+std::string run_output(const std::string& command, int* status = nullptr) {
+  std::string output;
+  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+  if (!pipe) return output;
+  char buffer[4096];
+  while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
+  const int code = pclose(pipe);
+  if (status) *status = code;
+  return output;
+}
+
+bool have_xdotool() {
+  return std::system("command -v xdotool >/dev/null 2>&1 && command -v import >/dev/null 2>&1") ==
+         0;
+}
+
+// Waits for `done`, up to `limit` (a loaded 2-core machine is slow, never assume a speed).
+bool wait_for(const std::function<bool()>& done, std::chrono::milliseconds limit = 60s) {
+  const auto end = std::chrono::steady_clock::now() + limit;
+  while (std::chrono::steady_clock::now() < end) {
+    if (done()) return true;
+    std::this_thread::sleep_for(100ms);
+  }
+  return done();
+}
+
+std::string read_text(const fs::path& file) {
+  std::ifstream in(file);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::vector<std::string> lines_starting(const fs::path& file, const std::string& prefix) {
+  std::vector<std::string> found;
+  std::istringstream in(read_text(file));
+  std::string line;
+  while (std::getline(in, line))
+    if (line.rfind(prefix, 0) == 0) found.push_back(line);
+  return found;
+}
+
+// One painting window of its own (config and recovery folders in `dir`), recording to
+// `recording`; closed with SIGTERM at the end.
+class Window {
+ public:
+  // `state`: the recovery folder's parent, in `dir` (a window killed with unsaved work is
+  // offered for recovery by the next window sharing it).
+  Window(const fs::path& dir, const fs::path& recording, const std::vector<std::string>& args,
+         const std::string& state = "state") {
+    pid_ = fork();
+    if (pid_ == 0) {
+      setenv("XDG_CONFIG_HOME", (dir / "config").c_str(), 1);
+      setenv("XDG_STATE_HOME", (dir / state).c_str(), 1);
+      std::vector<std::string> all{
+          IMPASTO_EXECUTABLE, "paint", "--record",        recording.string(),
+          "--window-width",   "1000",  "--window-height", "700"};
+      all.insert(all.end(), args.begin(), args.end());
+      std::vector<char*> argv;
+      for (auto& a : all) argv.push_back(a.data());
+      argv.push_back(nullptr);
+      execv(IMPASTO_EXECUTABLE, argv.data());
+      _exit(127);
+    }
+    // Up once its window is mapped and its session has begun recording.
+    const std::string search = "xdotool search --onlyvisible --pid " + std::to_string(pid_);
+    up_ = wait_for(
+        [&] {
+          id_ = run_output(search + " | head -1");
+          while (!id_.empty() && (id_.back() == '\n' || id_.back() == ' ')) id_.pop_back();
+          return !id_.empty() && fs::exists(recording) && fs::file_size(recording) > 0;
+        },
+        120s);
+  }
+  ~Window() {
+    if (pid_ > 0) {
+      kill(pid_, SIGTERM);
+      waitpid(pid_, nullptr, 0);
+    }
+  }
+  bool up() const { return up_; }
+
+  // xdotool commands, positions relative to the window.
+  void move(int x, int y) { xdotool("mousemove --window " + id_ + " " + pos(x, y)); }
+  // ImGui (1.86) reads the mouse once a frame, and a frame on a loaded machine may take a
+  // few hundred ms: the cursor rests, the button is held and let go, each for longer.
+  void click(int x, int y) {
+    move(x, y);
+    std::this_thread::sleep_for(400ms);
+    xdotool("mousedown 1");
+    std::this_thread::sleep_for(400ms);
+    xdotool("mouseup 1");
+    std::this_thread::sleep_for(400ms);
+  }
+  void key(const std::string& keys) { xdotool("key " + keys); }
+  void type(const std::string& text) { xdotool("type --delay 30 '" + text + "'"); }
+  impasto::render::Image screenshot(const fs::path& png) {
+    run_output("import -window " + id_ + " '" + png.string() + "'");
+    return impasto::render::read_png(png);
+  }
+
+ private:
+  static std::string pos(int x, int y) { return std::to_string(x) + " " + std::to_string(y); }
+  static void xdotool(const std::string& args) {
+    EXPECT_EQ(std::system(("xdotool " + args).c_str()), 0) << args;
+  }
+  pid_t pid_ = -1;
+  std::string id_;
+  bool up_ = false;
+};
+
+// A painting of two strokes, red above green, on a 600 x 400 cell canvas at 150 dpi.
+fs::path two_stroke_painting(const fs::path& dir) {
+  const fs::path strokes = dir / "two.strokes";
+  std::ofstream out(strokes);
+  out << "impasto-strokes 2\ncanvas 600 400 150\nbrush round size=10 stiffness=0.5\n";
+  double t = 0.0;
+  for (const auto& [pigment, y] : {std::pair{kRed, 20.0}, std::pair{kGreen, 48.0}}) {
+    out << "wipe\nload 300 \"" << pigment << "\" 1\n";
+    for (int i = 0; i <= 70; ++i, t += 0.02)
+      out << "pen " << t << " " << 15.0 + i << " " << y << " " << (i < 70 ? 0.8 : 0.0) << " 0 0 0 "
+          << (i < 70 ? 17 : 16) << "\n";
+  }
+  out.close();
+  const fs::path painting = dir / "two.impasto";
+  int status = -1;
+  const std::string output =
+      run_output(std::string(IMPASTO_EXECUTABLE) + " replay '" + strokes.string() + "' --out '" +
+                     painting.string() + "'",
+                 &status);
+  EXPECT_EQ(status, 0) << output;
+  return painting;
+}
+
+struct Centroid {
+  int x = 0, y = 0, pixels = 0;
+};
+
+// Where the red stroke is on screen: the centroid of clearly red pixels left of the panels.
+Centroid red_centroid(const impasto::render::Image& image) {
+  long sx = 0, sy = 0;
+  Centroid c;
+  for (int y = 60; y < image.height - 40; ++y) {
+    for (int x = 0; x < image.width - 360; ++x) {
+      const float* p = image.pixel(x, y);
+      if (p[0] > 0.45f && p[1] < 0.25f && p[2] < 0.25f) {
+        sx += x;
+        sy += y;
+        ++c.pixels;
+      }
+    }
+  }
+  if (c.pixels > 0) {
+    c.x = static_cast<int>(sx / c.pixels);
+    c.y = static_cast<int>(sy / c.pixels);
+  }
+  return c;
+}
+
+fs::path test_dir(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / (name + "_" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+TEST(WindowTools, EyedropperLoadsTheBrushWithThePickedPaintAndCtrlSSavesIt) {
+  ASSERT_NE(std::getenv("DISPLAY"), nullptr) << "run under xvfb-run -a";
+  if (!have_xdotool()) GTEST_SKIP() << "xdotool or ImageMagick's import is not installed";
+  const fs::path dir = test_dir("impasto_window_eyedropper");
+  const fs::path painting = two_stroke_painting(dir);
+  const fs::path recording = dir / "session.strokes";
+  const auto saved_at = fs::last_write_time(painting);
+  {
+    Window window(dir, recording, {painting.string()});
+    ASSERT_TRUE(window.up()) << "the window did not open";
+    Centroid red;
+    ASSERT_TRUE(wait_for([&] {
+      red = red_centroid(window.screenshot(dir / "window.png"));
+      return red.pixels > 500;
+    })) << "no red stroke on screen";
+
+    // I, then a click on the red stroke: the brush is wiped and loaded with red alone.
+    window.move(red.x, red.y);
+    window.key("i");
+    window.click(red.x, red.y);
+    std::vector<std::string> loads;
+    ASSERT_TRUE(wait_for([&] {
+      loads = lines_starting(recording, "load ");
+      return !loads.empty();
+    })) << read_text(recording);
+    ASSERT_EQ(loads.size(), 1u) << read_text(recording);
+    EXPECT_NE(loads[0].find('"' + kRed + '"'), std::string::npos) << loads[0];
+    EXPECT_EQ(loads[0].find(kGreen), std::string::npos) << loads[0];
+    EXPECT_EQ(lines_starting(recording, "wipe").size(), 1u);
+
+    // Ctrl+S: the painting's own file is written again, now with that brush.
+    window.key("ctrl+s");
+    ASSERT_TRUE(wait_for([&] {
+      std::error_code error;
+      return fs::last_write_time(painting, error) != saved_at && !error &&
+             !lines_starting(recording, "saved ").empty();
+    })) << "Ctrl+S did not save "
+        << painting;
+  }
+  const impasto::paintcore::Painting saved = impasto::paintcore::Painting::load(painting);
+  const impasto::paintcore::PaintTotals brush = saved.brush_totals();
+  EXPECT_GT(brush.volume, 1.0);
+  const auto& slots = saved.pigment_slots();
+  for (std::size_t s = 0; s < slots.size(); ++s) {
+    if (slots[s] == kRed) {
+      EXPECT_GT(brush.pigment[s], 0.99 * brush.volume) << "the brush holds red";
+    } else {
+      EXPECT_LT(brush.pigment[s], 0.01 * brush.volume) << slots[s] << " on the brush";
+    }
+  }
+  fs::remove_all(dir);
+}
+
+// key = value lines of a preset file.
+std::map<std::string, std::string> preset_fields(const fs::path& file) {
+  std::map<std::string, std::string> fields;
+  std::istringstream in(read_text(file));
+  std::string line;
+  while (std::getline(in, line)) {
+    const auto equals = line.find('=');
+    if (line.empty() || line[0] == '#' || equals == std::string::npos) continue;
+    auto trim = [](std::string s) {
+      s.erase(0, s.find_first_not_of(' '));
+      s.erase(s.find_last_not_of(' ') + 1);
+      return s;
+    };
+    fields[trim(line.substr(0, equals))] = trim(line.substr(equals + 1));
+  }
+  return fields;
+}
+
+// Whether a modal window's title bar (ImGui's dark style, TitleBgActive) is in the middle of
+// the window.
+bool modal_shown(const impasto::render::Image& image) {
+  int title = 0;
+  for (int y = image.height / 4; y < image.height * 3 / 4; ++y)
+    for (int x = image.width / 4; x < image.width * 3 / 4; ++x) {
+      const float* p = image.pixel(x, y);
+      title += std::abs(p[0] - 0.16f) < 0.03f && std::abs(p[1] - 0.29f) < 0.03f &&
+               std::abs(p[2] - 0.48f) < 0.03f;
+    }
+  return title > 2000;
+}
+
+// The Edit menu at the default ImGui style (13 px font: a menu row is 17 px high).
+constexpr int kEditMenuX = 69, kMenuBarY = 10;
+constexpr int kSavePresetRowY = 177;
+// The tool bar in a 1000 px wide window: the user's preset follows the eight shipped ones, at
+// the end of the second row.
+constexpr int kBigKnifeButtonX = 438, kBigKnifeButtonY = 66;
+
+TEST(WindowTools, APresetSavedInTheWindowIsReadBackByTheNextWindowAndApplied) {
+  ASSERT_NE(std::getenv("DISPLAY"), nullptr) << "run under xvfb-run -a";
+  if (!have_xdotool()) GTEST_SKIP() << "xdotool or ImageMagick's import is not installed";
+  const fs::path dir = test_dir("impasto_window_presets");
+  const fs::path preset = dir / "config" / "impasto" / "presets" / "big-knife.preset";
+  std::string knife_brush;
+  {
+    const fs::path recording = dir / "first.strokes";
+    Window window(dir, recording, {});
+    ASSERT_TRUE(window.up()) << "the window did not open";
+    // Three steps larger, and the knife: 6 mm x 1.25^3.
+    window.move(400, 400);
+    window.key("bracketright bracketright bracketright k");
+    ASSERT_TRUE(wait_for([&] {
+      const auto brushes = lines_starting(recording, "brush knife size=11.71875 ");
+      if (!brushes.empty()) knife_brush = brushes.back();
+      return !brushes.empty();
+    })) << read_text(recording);
+    // Edit > Save brush as preset..., typed into its name field: the letters typed (b, i, k)
+    // must not act as the brush, eyedropper and knife keys meanwhile.
+    // (Tried again if a click was lost: typing only once the prompt is seen.)
+    bool prompt = false;
+    for (int attempt = 0; attempt < 4 && !prompt; ++attempt) {
+      window.key("Escape");
+      window.click(kEditMenuX, kMenuBarY);
+      window.click(kEditMenuX + 40, kSavePresetRowY);
+      prompt = wait_for([&] { return modal_shown(window.screenshot(dir / "prompt.png")); }, 5s);
+    }
+    ASSERT_TRUE(prompt) << "the Save brush preset prompt did not open";
+    window.type("Big knife");
+    window.key("Return");
+    const bool saved = wait_for([&] { return fs::exists(preset); });
+    if (!saved) window.screenshot(dir / "no-preset.png");
+    ASSERT_TRUE(saved) << "no " << preset << " (the window: " << dir / "no-preset.png"
+                       << ")";
+    const auto fields = preset_fields(preset);
+    EXPECT_EQ(fields.at("name"), "Big knife");
+    EXPECT_EQ(fields.at("head"), "knife");
+    EXPECT_EQ(fields.at("size_mm"), "11.71875");
+    EXPECT_EQ(fields.at("stiffness"), "0.5");
+    EXPECT_EQ(fields.at("body"), "heavy");
+    // Back to the round brush, a step smaller: the preset is no longer the brush.
+    window.move(400, 400);
+    window.key("b bracketleft");
+    ASSERT_TRUE(wait_for([&] {
+      return !lines_starting(recording, "brush round size=9.375 ").empty();
+    })) << read_text(recording);
+  }
+  // A new window reads the user's presets; its "Big knife" button gives the same brush again.
+  const fs::path recording = dir / "second.strokes";
+  Window window(dir, recording, {}, "second-state");
+  ASSERT_TRUE(window.up()) << "the second window did not open";
+  const std::size_t brushes_before = lines_starting(recording, "brush ").size();
+  std::vector<std::string> brushes;
+  bool applied = false;
+  for (int attempt = 0; attempt < 4 && !applied; ++attempt) {
+    window.click(kBigKnifeButtonX, kBigKnifeButtonY);
+    applied = wait_for(
+        [&] {
+          brushes = lines_starting(recording, "brush ");
+          return brushes.size() > brushes_before;
+        },
+        5s);
+  }
+  ASSERT_TRUE(applied) << read_text(recording);
+  EXPECT_EQ(brushes.back(), knife_brush);
+  fs::remove_all(dir);
+}
+
+}  // namespace
