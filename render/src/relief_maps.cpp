@@ -114,44 +114,77 @@ void read_bytes(png_structp png, png_bytep out, png_size_t size) {
   in->offset += size;
 }
 
-HeightGrid read_height_png(const std::filesystem::path& path) {
-  const std::string file = files::read_whole_file(path, "height map", files::kMaxImageFileBytes);
-  PngRead source{&file, 0};
-  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-  png_infop info = png ? png_create_info_struct(png) : nullptr;
-  HeightGrid grid;
-  std::vector<std::uint8_t> bytes;
+// libpng's part of reading a height map. The function that calls setjmp holds no C++
+// object of its own: everything it changes is in *d, and what builds strings or grows vectors
+// is a function of its own (not inlined), so a longjmp clobbers nothing.
+struct PngDecode {
+  PngRead source;
+  png_uint_32 width = 0, height = 0;
+  std::vector<std::uint8_t> bytes;  // big-endian samples, row-major
   std::vector<png_bytep> rows;
   TextChunks chunks;
-  const char* volatile problem = nullptr;
-  if (!png || !info || setjmp(png_jmpbuf(png))) {
-    png_destroy_read_struct(&png, &info, nullptr);
-    throw std::runtime_error(path.string() + ": cannot read the height map PNG" +
-                             (problem ? std::string(": ") + problem : std::string()));
+  std::string problem;
+};
+
+// Whether the header describes a height map that fits; says why not in d->problem.
+[[gnu::noinline]] bool accept_header(PngDecode* d, int bit_depth, int color_type) {
+  if (bit_depth != 16 || color_type != PNG_COLOR_TYPE_GRAY) {
+    d->problem = "not a 16-bit greyscale PNG";
+    return false;
   }
-  png_set_read_fn(png, &source, read_bytes);
-  png_read_info(png, info);
-  const auto width = png_get_image_width(png, info), height = png_get_image_height(png, info);
-  if (png_get_bit_depth(png, info) != 16 || png_get_color_type(png, info) != PNG_COLOR_TYPE_GRAY) {
-    problem = "not a 16-bit greyscale PNG";
-    png_error(png, problem);
+  const std::uint64_t pixels = static_cast<std::uint64_t>(d->width) * d->height;
+  // Deflate packs at most 1032:1; the samples and the floats must fit the memory budget.
+  if (pixels == 0 || pixels > d->source.file->size() * 1032ull ||
+      6 * pixels > files::memory_budget_bytes()) {
+    d->problem = "its declared size (IHDR " + std::to_string(d->width) + " x " +
+                 std::to_string(d->height) + ") does not fit the file or the memory budget";
+    return false;
   }
-  const std::uint64_t pixels = static_cast<std::uint64_t>(width) * height;
-  if (pixels == 0 || pixels > file.size() * 1032ull) {  // deflate packs at most 1032:1
-    problem = "its declared size does not fit the file";
-    png_error(png, problem);
-  }
-  bytes.resize(2 * pixels);
-  rows.resize(height);
-  for (png_uint_32 y = 0; y < height; ++y) rows[y] = bytes.data() + 2ull * width * y;
-  png_read_image(png, rows.data());
-  png_read_end(png, info);
+  d->bytes.resize(2 * pixels);
+  d->rows.resize(d->height);
+  for (png_uint_32 y = 0; y < d->height; ++y) d->rows[y] = d->bytes.data() + 2ull * d->width * y;
+  return true;
+}
+
+[[gnu::noinline]] void collect_text(png_structp png, png_infop info, PngDecode* d) {
   png_textp text = nullptr;
   int count = 0;
   png_get_text(png, info, &text, &count);
-  for (int k = 0; k < count; ++k) chunks.emplace_back(text[k].key, text[k].text);
-  png_destroy_read_struct(&png, &info, nullptr);
+  for (int k = 0; k < count; ++k) d->chunks.emplace_back(text[k].key, text[k].text);
+}
 
+bool decode_grey16(PngDecode* d) {
+  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  if (!png) return false;
+  png_infop info = png_create_info_struct(png);
+  if (!info || setjmp(png_jmpbuf(png))) {
+    png_destroy_read_struct(&png, &info, nullptr);
+    return false;
+  }
+  png_set_read_fn(png, &d->source, read_bytes);
+  png_read_info(png, info);
+  d->width = png_get_image_width(png, info);
+  d->height = png_get_image_height(png, info);
+  if (!accept_header(d, png_get_bit_depth(png, info), png_get_color_type(png, info)))
+    png_error(png, "refused");
+  png_read_image(png, d->rows.data());
+  png_read_end(png, info);
+  collect_text(png, info, d);
+  png_destroy_read_struct(&png, &info, nullptr);
+  return true;
+}
+
+HeightGrid read_height_png(const std::filesystem::path& path) {
+  const std::string file = files::read_whole_file(path, "height map", files::kMaxImageFileBytes);
+  PngDecode d;
+  d.source = PngRead{&file, 0};
+  if (!decode_grey16(&d))
+    throw std::runtime_error(path.string() + ": cannot read the height map PNG" +
+                             (d.problem.empty() ? std::string() : ": " + d.problem));
+  const std::vector<std::uint8_t>& bytes = d.bytes;
+  const TextChunks& chunks = d.chunks;
+  const std::uint64_t pixels = static_cast<std::uint64_t>(d.width) * d.height;
+  HeightGrid grid;
   const auto number = [&](const char* key) {
     for (const auto& [k, v] : chunks)
       if (k == key) {
@@ -164,8 +197,8 @@ HeightGrid read_height_png(const std::filesystem::path& path) {
   };
   const double offset = number(kOffsetKey), step = number(kStepKey);
   grid.cell_mm = number(kCellKey);
-  grid.width = static_cast<int>(width);
-  grid.height = static_cast<int>(height);
+  grid.width = static_cast<int>(d.width);
+  grid.height = static_cast<int>(d.height);
   grid.mm.resize(pixels);
   for (std::size_t i = 0; i < pixels; ++i)
     grid.mm[i] = static_cast<float>(offset + step * ((bytes[2 * i] << 8) | bytes[2 * i + 1]));

@@ -89,6 +89,14 @@ TEST(ReliefMaps, TheNormalMapOfASlopeDecodesToItsNormal) {
       for (int c = 0; c < 3; ++c)
         ASSERT_NEAR(2.0 * image.pixel(x, y)[c] - 1.0, expected[c], 1.0 / 255.0 + 1e-3)
             << x << "," << y << " channel " << c;
+  // An 8-bit colour PNG is no height map: refused by name.
+  try {
+    render::read_height_map(png);
+    ADD_FAILURE() << "an 8-bit RGB PNG was read as a height map";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("not a 16-bit greyscale PNG"), std::string::npos)
+        << e.what();
+  }
   std::filesystem::remove(png);
 }
 
