@@ -167,8 +167,7 @@ void run_fit(const FitArgs& args) {
                     problem.saunderson->k1, problem.saunderson->k2);
       pigment.metadata["interface"] = text;
     }
-    std::printf("wrote %s\n",
-                save_pigment_to_folder(out, std::move(pigment), args.force).string().c_str());
+    note("wrote " + save_pigment_to_folder(out, std::move(pigment), args.force).string());
   }
   const Spectrum d65 = light_from_spec("D65");
   std::vector<const Pigment*> fitted;

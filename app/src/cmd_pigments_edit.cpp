@@ -42,7 +42,7 @@ struct EditArgs {
 
 void run_import(const EditArgs& a) {
   const auto path = import_pigment_file(user_folder(), a.file, a.force);
-  std::printf("imported %s into the user layer: %s\n", a.file.c_str(), path.string().c_str());
+  note("imported " + a.file + " into the user layer: " + path.string());
 }
 
 // KEY=VALUE pairs into metadata.
@@ -73,16 +73,16 @@ void run_add(const EditArgs& a) {
   pigment.name = a.name;
   apply_settings(pigment, a.set);
   const auto path = save_pigment_to_folder(user_folder(), std::move(pigment), a.force);
-  std::printf("added %s: %s\n", a.name.c_str(), path.string().c_str());
+  note("added " + a.name + ": " + path.string());
 }
 
 void run_rename(const EditArgs& a) {
   const auto path = rename_pigment_in_folder(user_folder(), a.name, a.new_name);
-  std::printf("renamed %s to %s: %s\n", a.name.c_str(), a.new_name.c_str(), path.string().c_str());
+  note("renamed " + a.name + " to " + a.new_name + ": " + path.string());
 }
 
 void run_remove(const EditArgs& a) {
-  std::printf("removed %s\n", remove_pigment_from_folder(user_folder(), a.name).string().c_str());
+  note("removed " + remove_pigment_from_folder(user_folder(), a.name).string());
 }
 
 void run_export(const EditArgs& a) {
@@ -95,7 +95,7 @@ void run_export(const EditArgs& a) {
   if (!pigment.flakes.empty())
     copy.metadata["flakes"] = pigment.metadata.at("flakes");  // as it was, relative
   write_pigment_file(out, copy);
-  std::printf("exported %s: %s\n", pigment.name.c_str(), out.string().c_str());
+  note("exported " + pigment.name + ": " + out.string());
 }
 
 const Pigment& white_of(const PigmentDatabase& db) {
@@ -110,7 +110,7 @@ void run_plot(const EditArgs& a) {
     subtitle = ci->second + ", " + subtitle;
   write_figure(a.out, pigment_figure(pigment, subtitle, white_of(library.database()),
                                      light_from_spec(a.light), a.light));
-  std::printf("wrote %s\n", a.out.c_str());
+  note("wrote " + a.out);
 }
 
 // "1:4" -> 4 parts of white to 1 of the pigment.

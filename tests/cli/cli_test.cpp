@@ -348,7 +348,8 @@ TEST_F(Cli, RenderRefusesUnknownChoicesNamingThem) {
        {Case{"--display adobe-rgb", "display-p3"}, Case{"--adaptation cat02", "bradford"},
         Case{"--storage double", "half"}, Case{"--flake-depth deep", "no-masking"},
         Case{"--crack-model exact", "gouffe"}, Case{"--light-type laser", "spot"}}) {
-    const CommandRun r = impasto("render " + painting().string() + " -o x.png " + c.option);
+    // Refused while parsing, before the file is read: any existing file will do.
+    const CommandRun r = impasto("render " + session().string() + " -o x.png " + c.option);
     EXPECT_NE(r.status, 0) << c.option;
     EXPECT_NE(r.err.find(c.a_choice), std::string::npos) << c.option << ": " << r.err;
   }
@@ -368,6 +369,11 @@ TEST_F(Cli, PigmentsListAndCheckPrintJson) {
   fs::create_directories(dir_ / "mine");
   r = impasto("pigments export \"Burnt Sienna\" -o mine/sienna.csv");
   ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out, "exported Burnt Sienna: mine/sienna.csv\n");
+  r = impasto("pigments export \"Burnt Sienna\" -o quiet.csv --quiet");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out, "");  // the note left out
+  EXPECT_TRUE(fs::exists(dir_ / "quiet.csv"));
   std::ofstream(dir_ / "mine" / "broken.csv") << "# quantity: kubelka_munk\nwavelength_nm,K\n";
   r = impasto("pigments check mine --json");
   EXPECT_EQ(r.status, 1);
