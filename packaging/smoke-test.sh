@@ -26,8 +26,8 @@ dpkg-deb -f "$deb" Depends | grep -q libtbb || { echo "smoke test: no shlibdeps"
 
 "$impasto" --version
 "$impasto" pigments list >/dev/null
-"$impasto" replay "$root/unpacked/usr/share/impasto/strokes/demo.dat" --out demo.impasto \
-  --png demo.png >/dev/null
+"$impasto" replay "$root/unpacked/usr/share/impasto/strokes/demo.dat" --save demo.impasto \
+  -o demo.png >/dev/null
 "$impasto" render demo.impasto --out relit.png --light A --wavelengths 4 >/dev/null
 "$impasto" thumbnail demo.impasto thumb.png 128
 for png in demo.png relit.png thumb.png; do

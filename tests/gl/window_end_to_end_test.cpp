@@ -43,7 +43,7 @@ std::string run_and_capture(const std::string& command) {
 
 std::string state_hash_of_replay(const fs::path& strokes) {
   const std::string json = run_and_capture(std::string(IMPASTO_EXECUTABLE) + " replay '" +
-                                           strokes.string() + "' --stats");
+                                           strokes.string() + "' --json");
   return nlohmann::json::parse(json.substr(json.find('{'))).at("state_hash").get<std::string>();
 }
 
@@ -245,7 +245,7 @@ TEST(RenderCommand, GpuOutputMatchesTheCpuOutput) {
   const fs::path painting = dir / "demo.impasto";
   const fs::path cpu = dir / "cpu.png", gpu = dir / "gpu.png";
   const std::string impasto = IMPASTO_EXECUTABLE;
-  run_and_capture(impasto + " replay '" + kDemo.string() + "' --size 384x256 --out '" +
+  run_and_capture(impasto + " replay '" + kDemo.string() + "' --size 384x256 --save '" +
                   painting.string() + "' 2>&1");
   const std::string light = " --light A --wavelengths 6 --light-dir 200,40";
   run_and_capture(impasto + " render '" + painting.string() + "' --out '" + cpu.string() + "'" +

@@ -42,7 +42,7 @@ std::string quoted(const fs::path& path) {
 
 std::string replay_hash(const fs::path& strokes) {
   const CommandRun r =
-      run(std::string(IMPASTO_EXECUTABLE) + " replay " + quoted(strokes) + " --stats");
+      run(std::string(IMPASTO_EXECUTABLE) + " replay " + quoted(strokes) + " --json");
   EXPECT_EQ(r.status, 0) << r.output;
   return nlohmann::json::parse(r.output.substr(r.output.find('{'))).at("state_hash");
 }
@@ -113,7 +113,7 @@ TEST(WindowRecovery, AKilledSessionIsRebuiltByRecoverApply) {
   EXPECT_EQ(list.status, 0) << list.output;
   EXPECT_NE(list.output.find("untitled.session-"), std::string::npos) << list.output;
   const fs::path out = dir / "recovered.impasto";
-  const CommandRun apply = run(impasto + " recover --apply latest --out " + quoted(out));
+  const CommandRun apply = run(impasto + " recover --apply latest --save " + quoted(out));
   ASSERT_EQ(apply.status, 0) << apply.output;
   const auto at = apply.output.find("state_hash ");
   ASSERT_NE(at, std::string::npos) << apply.output;
