@@ -133,8 +133,11 @@ void run(const BenchRenderArgs& args) {
   std::unique_ptr<paintcore::Painting> file;
   paintcore::Canvas synthetic({1, 1, 150.0, 1});
   std::vector<std::string> slots = kSlots;
+  double load_ms = 0.0;  // reading the painting file (0: synthetic)
   if (!args.painting.empty()) {
+    const auto load_start = Clock::now();
     file = std::make_unique<paintcore::Painting>(paintcore::Painting::load(args.painting));
+    load_ms = ms_since(load_start);
     slots = file->pigment_slots();
   } else {
     synthetic = synthetic_canvas(width, height);
@@ -207,6 +210,7 @@ void run(const BenchRenderArgs& args) {
                        {"nodes", renderer.palette().nodes()},
                        {"weights", args.weights},
                        {"kernels", args.reference ? "reference" : "simd"},
+                       {"load_ms", load_ms},
                        {"palette_ms", palette_ms},
                        {"first_render_ms", first_ms},
                        {"relight_ms", relight_n},
@@ -230,6 +234,7 @@ void run(const BenchRenderArgs& args) {
               canvas.width_cells(), canvas.height_cells(), painted, canvas.tile_count(),
               renderer.palette().nodes(), args.weights.c_str(),
               args.reference ? "scalar reference" : "SIMD");
+  if (file) std::printf("painting file load        %9.1f ms\n", load_ms);
   std::printf("palette for D65           %9.1f ms\n", palette_ms);
   std::printf("first render (%d threads)  %9.1f ms\n", all_threads, first_ms);
   for (const Timing& t : timings) {
