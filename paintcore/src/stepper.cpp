@@ -439,6 +439,15 @@ void Stepper::scatter(Canvas& canvas, int slot_count, const BeforeTileChange& be
   const std::size_t n = w.padded();
   const int tx1 = tx0_ + tiles_across_ - 1;
   const int ty1 = (w.y0 + w.height - 1) / kTileSize;
+  // The cells this step can change in existing tiles: the box of the rows' active spans
+  // (all that copy_rows_to_tiles writes), so a view re-shades only those.
+  CellRect changed{w.x0 + w.width, w.y0 + w.height, w.x0, w.y0};
+  for (int y = 0; y < w.height; ++y) {
+    const auto k = static_cast<std::size_t>(y);
+    if (span_hi_[k] <= span_lo_[k]) continue;
+    changed = {std::min(changed.x0, w.x0 + span_lo_[k]), std::min(changed.y0, w.y0 + y),
+               std::max(changed.x1, w.x0 + span_hi_[k]), std::max(changed.y1, w.y0 + y + 1)};
+  }
   // Tiles that exist are recorded (for undo) and given every slot before the parallel writes.
   missing_tiles_.clear();
   for (int ty = ty0_; ty <= ty1; ++ty)
@@ -450,7 +459,7 @@ void Stepper::scatter(Canvas& canvas, int slot_count, const BeforeTileChange& be
       }
       before_change(index);
       canvas.ensure_tile(index, slot_count);
-      canvas.mark_dirty(index);
+      canvas.mark_dirty(index, changed);
     }
   // The squeeze writes the step's result into the gathered grids, row by row, and each row
   // goes to its tiles at once (one pass); without a squeeze the transfer's grids are it.
@@ -478,7 +487,7 @@ void Stepper::scatter(Canvas& canvas, int slot_count, const BeforeTileChange& be
     if (!has_paint) continue;
     before_change(index);
     canvas.ensure_tile(index, slot_count);
-    canvas.mark_dirty(index);
+    canvas.mark_dirty(index, {bx0, by0, bx1, by1});
     copy_rows_to_tiles(canvas, slot_count, wet, pigment, by0 - w.y0, by1 - w.y0, index);
   }
 }

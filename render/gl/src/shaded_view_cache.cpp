@@ -10,11 +10,18 @@ using paintcore::kTileSize;
 
 PixelRect tile_screen_rect(int tile_index, int tiles_x, const CanvasView& view, int viewport_w,
                            int viewport_h, render::relief::Reach reach) {
-  // The tile's cells and the rim of cells whose shading reads its heights.
-  const double x0 = (tile_index % tiles_x) * kTileSize - static_cast<double>(reach.left);
-  const double y0 = (tile_index / tiles_x) * kTileSize - static_cast<double>(reach.top);
-  const double x1 = (tile_index % tiles_x + 1) * kTileSize + static_cast<double>(reach.right);
-  const double y1 = (tile_index / tiles_x + 1) * kTileSize + static_cast<double>(reach.bottom);
+  const int x0 = tile_index % tiles_x * kTileSize, y0 = tile_index / tiles_x * kTileSize;
+  return cells_screen_rect({x0, y0, x0 + kTileSize, y0 + kTileSize}, view, viewport_w, viewport_h,
+                           reach);
+}
+
+PixelRect cells_screen_rect(const paintcore::CellRect& cells, const CanvasView& view,
+                            int viewport_w, int viewport_h, render::relief::Reach reach) {
+  // The cells and the rim of cells whose shading reads their heights.
+  const double x0 = cells.x0 - static_cast<double>(reach.left);
+  const double y0 = cells.y0 - static_cast<double>(reach.top);
+  const double x1 = cells.x1 + static_cast<double>(reach.right);
+  const double y1 = cells.y1 + static_cast<double>(reach.bottom);
   double lo_x = std::numeric_limits<double>::max(), lo_y = lo_x;
   double hi_x = std::numeric_limits<double>::lowest(), hi_y = hi_x;
   for (const auto& [cx, cy] : {std::pair{x0, y0}, {x1, y0}, {x0, y1}, {x1, y1}}) {
@@ -35,6 +42,11 @@ PixelRect tile_screen_rect(int tile_index, int tiles_x, const CanvasView& view, 
 
 void ShadedViewCache::invalidate_tiles(std::span<const int> tiles) {
   dirty_tiles_.insert(dirty_tiles_.end(), tiles.begin(), tiles.end());
+}
+
+void ShadedViewCache::invalidate_cells(std::span<const paintcore::DirtyTile> changed) {
+  for (const paintcore::DirtyTile& d : changed)
+    if (!d.cells.empty()) dirty_cells_.push_back(d.cells);
 }
 
 std::array<double, 27> ShadedViewCache::look_of(const CanvasRenderer& renderer,
@@ -170,13 +182,14 @@ CachedDrawStats ShadedViewCache::update(CanvasRenderer& renderer, const CanvasVi
     stats.changed.assign(1, {0, 0, viewport_w, viewport_h});
     all_invalid_ = false;
     dirty_tiles_.clear();
+    dirty_cells_.clear();
     check_gl_error("coarse canvas view");
     return stats;
   }
   if (all_invalid_) coarse_ = false;
 
   // The regions to re-shade: the whole viewport, or the uncovered strips and the changed
-  // tiles in view.
+  // tiles and cells in view.
   if (all_invalid_) {
     regions.assign(1, {0, 0, viewport_w, viewport_h});
     stats.full = true;
@@ -191,6 +204,10 @@ CachedDrawStats ShadedViewCache::update(CanvasRenderer& renderer, const CanvasVi
     }
     for (int tile : dirty_tiles_) {
       const PixelRect rect = tile_screen_rect(tile, tiles_x, view, viewport_w, viewport_h, reach);
+      if (!rect.empty()) regions.push_back(rect);
+    }
+    for (const paintcore::CellRect& cells : dirty_cells_) {
+      const PixelRect rect = cells_screen_rect(cells, view, viewport_w, viewport_h, reach);
       if (!rect.empty()) regions.push_back(rect);
     }
     // Many small passes cost more than one pass over their bounding box, and overlapping
@@ -209,6 +226,7 @@ CachedDrawStats ShadedViewCache::update(CanvasRenderer& renderer, const CanvasVi
   }
   all_invalid_ = false;
   dirty_tiles_.clear();
+  dirty_cells_.clear();
 
   if (!regions.empty()) {
     image_->bind();

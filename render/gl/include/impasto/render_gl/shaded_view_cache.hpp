@@ -1,7 +1,7 @@
 #pragma once
 // The shaded canvas as a window shows it, kept between frames. A frame re-shades only the
-// screen pixels that show something that changed — the tiles the simulation dirtied, grown
-// by the one-cell rim whose normals read their heights, and only where they are in view —
+// screen pixels that show something that changed — the cells the simulation dirtied (or
+// whole tiles), grown by the rim whose shading reads their heights, and only in view —
 // and copies the rest from the previous frame. A pan by whole pixels moves the cached image
 // and shades only the strips it uncovers. What changes every pixel (zoom, rotation, a pan
 // by a fraction of a pixel, the viewport size, the light, the look) re-shades the viewport
@@ -42,6 +42,9 @@ struct CachedDrawStats {
 // and shadows), clipped to the viewport (empty when out of view). Conservative by a pixel.
 PixelRect tile_screen_rect(int tile_index, int tiles_x, const CanvasView& view, int viewport_w,
                            int viewport_h, render::relief::Reach reach = {});
+// The same for any box of cells.
+PixelRect cells_screen_rect(const paintcore::CellRect& cells, const CanvasView& view,
+                            int viewport_w, int viewport_h, render::relief::Reach reach = {});
 
 class ShadedViewCache {
  public:
@@ -54,6 +57,10 @@ class ShadedViewCache {
 
   // The tiles changed on the GPU (after CanvasRenderer::upload_tiles with the same list).
   void invalidate_tiles(std::span<const int> tiles);
+  // Only these cells changed (Canvas::take_dirty_rects(), after uploading their tiles): a
+  // brush moving a few cells a frame re-shades those cells and the rim their relief reaches,
+  // not whole tiles.
+  void invalidate_cells(std::span<const paintcore::DirtyTile> changed);
   // Everything changed (a full upload, new settings, a new renderer).
   void invalidate_all() { all_invalid_ = true; }
 
@@ -87,6 +94,7 @@ class ShadedViewCache {
   CanvasView view_;
   bool all_invalid_ = true;
   std::vector<int> dirty_tiles_;
+  std::vector<paintcore::CellRect> dirty_cells_;
 };
 
 }  // namespace impasto::render_gl
