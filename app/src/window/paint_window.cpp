@@ -613,7 +613,9 @@ void PaintWindow::sync_gpu() {
       state_.visibility_changed = false;
       full_upload_ = true;
     }
-    const std::vector<int> dirty = canvas.take_dirty_tiles();
+    const std::vector<paintcore::DirtyTile> changed = canvas.take_dirty_rects();
+    std::vector<int> dirty;
+    for (const paintcore::DirtyTile& d : changed) dirty.push_back(d.index);
     if (full_upload_) {
       renderer_->upload_all(canvas);
       view_cache_.invalidate_all();
@@ -621,7 +623,7 @@ void PaintWindow::sync_gpu() {
       full_upload_ = false;
     } else {
       renderer_->upload_tiles(canvas, dirty);
-      view_cache_.invalidate_tiles(dirty);
+      view_cache_.invalidate_cells(changed);  // only the cells changed, not whole tiles
       state_.tiles_uploaded += static_cast<long long>(dirty.size());
     }
   });
