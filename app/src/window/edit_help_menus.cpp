@@ -74,6 +74,7 @@ void draw_help_windows(WindowState& s) {
   if (s.show_shortcuts) {
     ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f),
                             ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+    ImGui::SetNextWindowBgAlpha(1.0f);  // a table to read, not the painting through it
     if (ImGui::Begin("Shortcuts", &s.show_shortcuts,
                      ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
                          ImGuiWindowFlags_NoCollapse)) {
@@ -152,8 +153,13 @@ void eyedropper_panel(WindowState& s, SimWorker& worker) {
     ImGui::Text("%s paint at cell %.0f, %.0f", p.dry ? "dry" : "wet", p.cell[0], p.cell[1]);
     ImGui::Text("wet %.2f mm, dry %.2f mm", p.wet_mm, p.dry_mm);
     ImGui::EndGroup();
-    for (const auto& part : p.mix)
-      ImGui::BulletText("%5.1f %%  %s", part.parts, part.pigment.c_str());
+    for (const auto& part : p.mix) {
+      if (part.parts >= 0.05) {
+        ImGui::BulletText("%5.1f %%  %s", part.parts, part.pigment.c_str());
+      } else {
+        ImGui::BulletText(" < 0.1 %%  %s", part.pigment.c_str());  // a trace, smeared in
+      }
+    }
     if (ImGui::Button("Load onto brush")) {
       load_onto_brush(worker, picked_load(p, s.load_volume_mm3, s.paint_body));
       s.message = "brush loaded with the picked paint";

@@ -20,6 +20,14 @@ namespace {
 
 constexpr float kPanelWidth = 330.0f;
 
+// A menu item's shortcut text, from the one table (shortcuts.hpp); valid until the next call
+// (ImGui reads it during the item's call only).
+const char* keys(Command command) {
+  static std::string text;
+  text = shortcut_text(command);
+  return text.c_str();
+}
+
 FileBrowserRequest browser_request(FilePurpose purpose, const WindowState& s) {
   FileBrowserRequest request;
   request.purpose = purpose;
@@ -132,8 +140,8 @@ void file_menu(PanelContext& c) {
   }
   if (ImGui::BeginMainMenuBar()) {
     if (ImGui::BeginMenu("File")) {
-      if (ImGui::MenuItem("New...", "Ctrl+N")) command = FileCommand::kNew;
-      if (ImGui::MenuItem("Open...", "Ctrl+O")) command = FileCommand::kOpen;
+      if (ImGui::MenuItem("New...", keys(Command::kNew))) command = FileCommand::kNew;
+      if (ImGui::MenuItem("Open...", keys(Command::kOpen))) command = FileCommand::kOpen;
       if (ImGui::BeginMenu("Open recent", !s.recent.empty())) {
         for (const auto& file : s.recent) {
           if (ImGui::MenuItem(file.string().c_str())) ask(PendingAction::kOpenRecent, file);
@@ -141,8 +149,8 @@ void file_menu(PanelContext& c) {
         ImGui::EndMenu();
       }
       ImGui::Separator();
-      if (ImGui::MenuItem("Save", "Ctrl+S")) command = FileCommand::kSave;
-      if (ImGui::MenuItem("Save as...")) command = FileCommand::kSaveAs;
+      if (ImGui::MenuItem("Save", keys(Command::kSave))) command = FileCommand::kSave;
+      if (ImGui::MenuItem("Save as...", keys(Command::kSaveAs))) command = FileCommand::kSaveAs;
       if (ImGui::MenuItem("Export image...")) command = FileCommand::kExport;
       ImGui::Separator();
       if (ImGui::MenuItem("Quit")) command = FileCommand::kQuit;
@@ -150,8 +158,9 @@ void file_menu(PanelContext& c) {
     }
     edit_menu(s, c.worker, c.painting.undo_depth, c.painting.redo_depth);
     if (ImGui::BeginMenu("View")) {
-      if (ImGui::MenuItem("Fit canvas", "F")) s.fit_requested = true;
-      if (ImGui::MenuItem("One cell per pixel", "1")) s.view.pixels_per_cell = 1.0;
+      if (ImGui::MenuItem("Fit canvas", keys(Command::kFitCanvas))) s.fit_requested = true;
+      if (ImGui::MenuItem("One cell per pixel", keys(Command::kOneCellPerPixel)))
+        s.view.pixels_per_cell = 1.0;
       if (ImGui::MenuItem("Reset rotation")) s.view.rotation_rad = 0.0;
       ImGui::EndMenu();
     }
