@@ -69,6 +69,16 @@ std::string failure_message(const CLI::App* root, const CLI::Error& e) {
 
 }  // namespace
 
+void run_command_in_process(const std::string& command_line) {
+  CLI::App root{"impasto"};
+  add_registered_commands(root);
+  try {
+    root.parse(command_line, false);
+  } catch (const CLI::ParseError& e) {
+    throw UsageError(e.what());
+  }
+}
+
 int run_command_line(int argc, char** argv) {
   CLI::App root{"Impasto: interactive 2.5D painting with thick, spectrally rendered paint"};
   root.require_subcommand(0, 1);

@@ -4,12 +4,11 @@
 
 #include <gtest/gtest.h>
 #include <unistd.h>
-#include <CLI/CLI.hpp>
 
 #include <filesystem>
 #include <string>
 
-#include "command.hpp"
+#include "command_line.hpp"
 #include "impasto/render/image.hpp"
 #include "impasto/render/relief_maps.hpp"
 
@@ -45,11 +44,7 @@ class CanvasEditCommand : public ::testing::Test {
 
   fs::path painting() const { return dir_ / "in.impasto"; }
   fs::path file(const std::string& name) const { return dir_ / name; }
-  static void run(const std::string& args) {
-    CLI::App root{"impasto"};
-    add_registered_commands(root);
-    root.parse(args, false);
-  }
+  static void run(const std::string& args) { run_command_in_process(args); }
 
   fs::path dir_;
   std::uint64_t original_hash_ = 0;

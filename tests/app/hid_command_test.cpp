@@ -2,14 +2,13 @@
 // descriptors of a real Huion H610, with and without its ids and handshake; the formats
 // found are named; bad ids are refused by name.
 #include <gtest/gtest.h>
-#include <CLI/CLI.hpp>
 
 #include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "command.hpp"
+#include "command_line.hpp"
 
 namespace impasto::app {
 namespace {
@@ -22,12 +21,10 @@ struct Output {
 };
 
 Output run(const std::string& args) {
-  CLI::App root{"impasto"};
-  add_registered_commands(root);
   testing::internal::CaptureStdout();
   testing::internal::CaptureStderr();
   try {
-    root.parse(args, false);
+    run_command_in_process(args);
   } catch (...) {
     (void)testing::internal::GetCapturedStdout();
     (void)testing::internal::GetCapturedStderr();

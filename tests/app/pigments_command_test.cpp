@@ -2,7 +2,6 @@
 // refusal to overwrite, plot files.
 #include <gtest/gtest.h>
 #include <unistd.h>
-#include <CLI/CLI.hpp>
 
 #include <cstdlib>
 #include <filesystem>
@@ -10,7 +9,7 @@
 #include <sstream>
 #include <string>
 
-#include "command.hpp"
+#include "command_line.hpp"
 #include "impasto/data/data_dir.hpp"
 #include "impasto/data/pigment_library.hpp"
 #include "impasto/data/spectral_csv.hpp"
@@ -50,9 +49,7 @@ class PigmentsCommand : public ::testing::Test {
   // new process would).
   static void run(const std::string& args) {
     data::reload_active_pigment_library();
-    CLI::App root{"impasto"};
-    add_registered_commands(root);
-    root.parse(args, false);
+    run_command_in_process(args);
     data::reload_active_pigment_library();  // what the command changed
   }
   fs::path user() const { return dir_ / "xdg" / "impasto" / "pigments"; }

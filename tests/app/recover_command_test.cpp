@@ -4,12 +4,11 @@
 #include <unistd.h>
 #include <impasto/input/stroke_file.hpp>
 
-#include <CLI/CLI.hpp>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
 
-#include "command.hpp"
+#include "command_line.hpp"
 #include "session/recovery_folder.hpp"
 #include "session/replay.hpp"
 #include "session/session_registry.hpp"
@@ -59,11 +58,7 @@ class RecoverCommand : public ::testing::Test {
     return file;
   }
 
-  static void run(const std::string& args) {
-    CLI::App root{"impasto"};
-    add_registered_commands(root);
-    root.parse(args, false);
-  }
+  static void run(const std::string& args) { run_command_in_process(args); }
 
   fs::path dir_, folder_;
   std::string old_state_;

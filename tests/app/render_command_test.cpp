@@ -2,12 +2,11 @@
 // cracked cells, --zoom magnifies a region, and bad values are refused by name.
 #include <gtest/gtest.h>
 #include <unistd.h>
-#include <CLI/CLI.hpp>
 
 #include <filesystem>
 #include <string>
 
-#include "command.hpp"
+#include "command_line.hpp"
 #include "impasto/paintcore/painting.hpp"
 #include "impasto/render/image.hpp"
 
@@ -39,11 +38,7 @@ class RenderCommand : public ::testing::Test {
   fs::path out(const std::string& name) const { return dir_ / name; }
 
   // Runs `impasto ARGS` through the registered commands, as main() does.
-  static void run(const std::string& args) {
-    CLI::App root{"impasto"};
-    add_registered_commands(root);
-    root.parse(args, false);
-  }
+  static void run(const std::string& args) { run_command_in_process(args); }
 
   // Renders the painting to a PNG with extra options and reads it back.
   render::Image render_with(const std::string& name, const std::string& options) {
@@ -103,10 +98,10 @@ TEST_F(RenderCommand, BadValuesAreRefusedByName) {
   try {
     run(base + " --crack-model exact");
     ADD_FAILURE() << "no error";
-  } catch (const CLI::ParseError& e) {
+  } catch (const UsageError& e) {
     EXPECT_NE(std::string(e.what()).find("--crack-model"), std::string::npos) << e.what();
   }
-  EXPECT_THROW(run(base + " --ambient 1.5"), CLI::ParseError);
+  EXPECT_THROW(run(base + " --ambient 1.5"), UsageError);
   EXPECT_THROW(run(base + " --zoom 4 --region 30,20,8,8"), std::runtime_error);
 }
 

@@ -3,13 +3,12 @@
 // is written at the canvas's size; bad combinations are refused by name.
 #include <gtest/gtest.h>
 #include <unistd.h>
-#include <CLI/CLI.hpp>
 
 #include <cmath>
 #include <filesystem>
 #include <string>
 
-#include "command.hpp"
+#include "command_line.hpp"
 #include "impasto/paintcore/painting.hpp"
 #include "impasto/render/image.hpp"
 
@@ -36,11 +35,7 @@ class SurfaceCommand : public ::testing::Test {
   fs::path painting_path() const { return dir_ / "bare.impasto"; }
   fs::path out(const std::string& name) const { return dir_ / name; }
 
-  static void run(const std::string& args) {
-    CLI::App root{"impasto"};
-    add_registered_commands(root);
-    root.parse(args, false);
-  }
+  static void run(const std::string& args) { run_command_in_process(args); }
 
   render::Image render_with(const std::string& name, const std::string& options) {
     run("render " + painting_path().string() + " --out " + out(name).string() +
@@ -75,8 +70,8 @@ TEST_F(SurfaceCommand, WritesTheSubsurfaceMap) {
 }
 
 TEST_F(SurfaceCommand, RefusesWhatItCannotDo) {
-  EXPECT_THROW(render_with("a.png", "--surface phong"), CLI::ValidationError);
-  EXPECT_THROW(render_with("b.png", "--varnish shiny"), CLI::ValidationError);
+  EXPECT_THROW(render_with("a.png", "--surface phong"), UsageError);
+  EXPECT_THROW(render_with("b.png", "--varnish shiny"), UsageError);
   try {
     render_with("c.png", "--subsurface-map " + out("m.png").string());
     ADD_FAILURE() << "no error";
