@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <stdexcept>
 #include <string>
+#include <thread>
 
 #include "impasto/files/atomic_file.hpp"
 #include "impasto/files/input_file.hpp"
@@ -89,7 +90,9 @@ void write_exr(const std::filesystem::path& path, const Image& image) {
   try {
     Imf::StdOSStream stream;
     {
-      Imf::RgbaOutputFile file(stream, Imf::Header(image.width, image.height), Imf::WRITE_RGB);
+      // Blocks of scan lines compressed on every core (the file's bytes are the same).
+      Imf::RgbaOutputFile file(stream, Imf::Header(image.width, image.height), Imf::WRITE_RGB,
+                               static_cast<int>(std::thread::hardware_concurrency()));
       file.setFrameBuffer(pixels.data(), 1, static_cast<std::size_t>(image.width));
       file.writePixels(image.height);
     }

@@ -22,9 +22,11 @@
 #include <chrono>
 #include <cmath>
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <ctime>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <thread>
@@ -35,6 +37,7 @@
 #include "session/recovery_folder.hpp"
 #include "session/session_registry.hpp"
 #include "session/session_start.hpp"
+#include "window/canvas_menu.hpp"
 #include "window/edit_help_menus.hpp"
 #include "window/eyedropper.hpp"
 #include "window/paint_options.hpp"
@@ -182,6 +185,7 @@ class PaintWindow {
   void end_session();  // the user closed the painting on purpose: nothing to recover
   void maybe_autosave();
   void handle_recovery(const RecoveryChoice& choice);
+  void apply_canvas_request(const CanvasMenuRequest& request);  // Image menu
   void show_preview(const paintcore::Painting& painting);
   FileActions file_actions();
 
@@ -210,6 +214,7 @@ class PaintWindow {
   std::uint64_t applied_at_upload_ = 0;  // simulation jobs applied before this frame's upload
   PaletteBoardPanel board_panel_;
   PigmentEditor pigment_editor_;
+  CanvasMenu canvas_menu_;
   PigmentDriftNote pigment_drift_;
   SwatchChips swatch_chips_;
 
@@ -913,6 +918,9 @@ void PaintWindow::run_pending_action() {
         remember_recent_file(file);
         state_.recent = load_recent_files();
         state_.notifications.info("Opened " + file.string());
+        worker_->with_painting([&](const paintcore::Painting& p) {
+          if (!p.load_warning().empty()) state_.notifications.warning(p.load_warning());
+        });
         break;
       }
       case PendingAction::kNone:
@@ -1005,6 +1013,7 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   draw_tool_bar(state_, *worker_);
   draw_session_banners(worker_->stats(), notice_);
   pigment_editor_.draw(state_, *palette_);
+  const CanvasMenuRequest canvas_request = canvas_menu_.draw(canvas_w_, canvas_h_, state_.file);
   if (ImGui::BeginMainMenuBar()) {  // Help, last on the menu bar
     help_menu(state_);
     ImGui::EndMainMenuBar();
@@ -1053,6 +1062,50 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   state_.input_latency_ms = latency_.recent_median_ms().value_or(-1.0);
   state_.frame_ms = ms_since(start);
   handle_recovery(recovery);
+  apply_canvas_request(canvas_request);
+}
+
+// Image > Resize canvas / Crop: the reframed painting starts a new session, as a recovered one
+// does (kept as its first autosave and read back, so the recording's `from` names exactly what
+// that file holds); the file carries the whole undo history, so Edit > Undo undoes the reframe.
+void PaintWindow::apply_canvas_request(const CanvasMenuRequest& request) {
+  try {
+    if (request.exports) {
+      worker_->wait_idle();
+      ExportRequest exports = *request.exports;
+      exports.settings = state_.settings;  // the window's light and look
+      worker_->with_painting([&](const paintcore::Painting& p) { export_painting(p, exports); });
+      state_.notifications.info("Exported at " + std::to_string(request.exports->scale) + "x");
+    }
+    if (!request.frame) return;
+    worker_->wait_idle();
+    paintcore::PaintTotals cut;
+    worker_->edit_painting([&](paintcore::Painting& p) {
+      cut = p.reframe_canvas(*request.frame);
+      p.set_saved_history_bytes(std::numeric_limits<std::size_t>::max());
+    });
+    end_session();
+    SessionRecording recording = begin_session(state_.file, std::nullopt);
+    const std::filesystem::path through =
+        live_session_ ? live_session_->entry().autosave
+                      : std::filesystem::temp_directory_path() /
+                            ("impasto-reframe-" + std::to_string(std::time(nullptr)) + ".impasto");
+    worker_->with_painting([&](const paintcore::Painting& p) { p.save(through); });
+    paintcore::Painting reframed = paintcore::Painting::load(through);
+    if (live_session_)
+      recording.opened_from = through;
+    else
+      std::filesystem::remove(through);
+    worker_->replace_painting(std::move(reframed), std::move(recording), true);
+    char text[96];
+    std::snprintf(text, sizeof text, "Canvas %d x %d cells; %.3g mm^3 of paint cut away",
+                  request.frame->width_cells, request.frame->height_cells, cut.volume);
+    state_.notifications.info(text);
+  } catch (const std::exception& e) {
+    state_.notifications.error(std::string("Image: ") + e.what());
+  }
+  rendered_slots_.clear();
+  canvas_w_ = canvas_h_ = 0;  // a new size: new textures, fit it to the window
 }
 
 void PaintWindow::run() {
