@@ -171,7 +171,7 @@ TEST(CrackCloseUp, FiniteEverywhere) {
           const CloseUpLight light{l, 0.02, 0.25, 4};
           // No point gets more than the sky, the whole sun facing it and walls as bright as
           // white: rho0 (E_sky + E_sun + 1), E_sun = 0.75 / sin(elevation).
-          const double bound = 0.9 * (1.25 + (l[2] > 0.0 ? 0.75 / l[2] : 0.0));
+          const double bound = 0.9 * (1.25 + (l.z > 0.0 ? 0.75 / l.z : 0.0));
           for (bool along_x : {false, true}) {
             for (float x :
                  close_up(crack(shape, depth, 0.3), 12, 0.5f, 0.9f, light, {v}, along_x)) {
