@@ -130,13 +130,6 @@ std::map<std::string, std::string> kept_metadata(const std::filesystem::path& fi
   return metadata;
 }
 
-// CIEDE2000 between the measured and fitted reflectance of a sample under D65.
-double sample_delta_e(const Spectrum& measured, const Spectrum& fitted, const Spectrum& d65) {
-  const Xyz white = white_point(d65);
-  return ciede2000(xyz_to_lab(reflectance_to_xyz(measured, d65), white),
-                   xyz_to_lab(reflectance_to_xyz(fitted, d65), white));
-}
-
 void run_fit(const FitArgs& args) {
   KsFitProblem problem = read_ks_measurements(args.measurements);
   if (!args.reference.empty()) problem.reference_pigment = args.reference;
@@ -177,9 +170,9 @@ void run_fit(const FitArgs& args) {
   for (std::size_t i = 0; i < fit.residuals.size(); ++i) {
     const KsSampleResidual& r = fit.residuals[i];
     const KsSample& sample = problem.samples[i];
-    const double de =
-        sample_delta_e(sample.reflectance,
-                       mixture_reflectance(fitted, sample.concentrations, problem.saunderson), d65);
+    const double de = reflectance_delta_e(
+        sample.reflectance, mixture_reflectance(fitted, sample.concentrations, problem.saunderson),
+        d65);
     std::printf("%-32s %10.3f %12.6g %12.6g %12.6g\n", r.name.c_str(), de, r.rms_equation,
                 r.rms_reflectance, r.max_reflectance);
   }

@@ -145,4 +145,10 @@ double ciede2000(const Lab& first, const Lab& second) {
   return std::sqrt(l_term * l_term + c_term * c_term + h_term * h_term + r_t * c_term * h_term);
 }
 
+double reflectance_delta_e(const Spectrum& first, const Spectrum& second, const Spectrum& light) {
+  const Xyz white = white_point(light);
+  return ciede2000(xyz_to_lab(reflectance_to_xyz(first, light), white),
+                   xyz_to_lab(reflectance_to_xyz(second, light), white));
+}
+
 }  // namespace impasto::data

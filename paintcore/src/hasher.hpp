@@ -22,7 +22,7 @@ class Hasher {
       size -= 8;
     }
     std::uint64_t tail = 0;
-    std::memcpy(&tail, p, size);
+    if (size > 0) std::memcpy(&tail, p, size);  // (an empty vector's data() may be null)
     add(tail ^ (static_cast<std::uint64_t>(size) << 56));
   }
   template <typename T>

@@ -83,5 +83,17 @@ TEST(Ciede2000, IsZeroForEqualColours) {
   EXPECT_EQ(ciede2000({0, 0, 0}, {0, 0, 0}), 0.0);
 }
 
+// Two neutral greys differ in lightness alone: CIEDE2000 is dL / S_L, with L* of Y = 100 R and
+// S_L = 1 + 0.015 (Lm - 50)^2 / sqrt(20 + (Lm - 50)^2) (Sharma, Wu and Dalal 2005).
+TEST(ReflectanceDeltaE, OfTwoGreysIsTheirLightnessDifferenceWeighted) {
+  const Spectrum d65 = cie_illuminant("D65");
+  const auto lightness = [](double y) { return 116.0 * std::cbrt(y) - 16.0; };
+  const double l1 = lightness(0.5), l2 = lightness(0.25), mean = 0.5 * (l1 + l2);
+  const double s_l =
+      1.0 + 0.015 * (mean - 50) * (mean - 50) / std::sqrt(20.0 + (mean - 50) * (mean - 50));
+  EXPECT_NEAR(reflectance_delta_e(flat(0.5), flat(0.25), d65), (l1 - l2) / s_l, 1e-6);
+  EXPECT_EQ(reflectance_delta_e(flat(0.3), flat(0.3), d65), 0.0);
+}
+
 }  // namespace
 }  // namespace impasto::data

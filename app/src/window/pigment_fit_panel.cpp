@@ -25,7 +25,6 @@ void PigmentFitPanel::fit(const std::string& path) {
     problem_ = data::read_ks_measurements(path);
     result_ = data::fit_kubelka_munk(*problem_);
     const data::Spectrum d65 = data::light_from_spec("D65");
-    const data::Xyz white = data::white_point(d65);
     std::vector<const data::Pigment*> fitted;
     for (const auto& p : result_->pigments) fitted.push_back(&p);
     const std::string from = std::filesystem::path(path).filename().string();
@@ -39,9 +38,7 @@ void PigmentFitPanel::fit(const std::string& path) {
       row.name = sample.name;
       row.measured = sample.reflectance;
       row.fitted = data::mixture_reflectance(fitted, sample.concentrations, problem_->saunderson);
-      row.delta_e =
-          data::ciede2000(data::xyz_to_lab(data::reflectance_to_xyz(row.measured, d65), white),
-                          data::xyz_to_lab(data::reflectance_to_xyz(row.fitted, d65), white));
+      row.delta_e = data::reflectance_delta_e(row.measured, row.fitted, d65);
       row.rms = result_->residuals[i].rms_reflectance;
       row.max_abs = result_->residuals[i].max_reflectance;
       samples_.push_back(std::move(row));

@@ -34,4 +34,8 @@ Lab xyz_to_lab(const Xyz& xyz, const Xyz& white);
 // CIEDE2000 colour difference (Sharma, Wu, Dalal 2005) with kL = kC = kH = 1.
 double ciede2000(const Lab& first, const Lab& second);
 
+// CIEDE2000 between two reflectances seen under `light`, each relative to the light's white
+// (how a fit's error against a measurement is told).
+double reflectance_delta_e(const Spectrum& first, const Spectrum& second, const Spectrum& light);
+
 }  // namespace impasto::data

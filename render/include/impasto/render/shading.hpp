@@ -5,17 +5,16 @@
 #include <algorithm>
 #include <cmath>
 
+#include "impasto/util/vec3.hpp"
+
 namespace impasto::render::shade {
 
-struct Vec3 {
-  float x, y, z;
-};
+// util's 3-vector, in float as the shaders compute.
+using Vec3 = util::Vec3<float>;
+using util::dot;
 
-inline float dot(Vec3 a, Vec3 b) {
-  return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-
-inline Vec3 normalized(Vec3 v) {
+// v over its length, as GLSL's normalize divides; a zero vector gives the canvas's normal.
+inline Vec3 normalized_or_up(Vec3 v) {
   const float length = std::sqrt(dot(v, v));
   return length > 0.0f ? Vec3{v.x / length, v.y / length, v.z / length} : Vec3{0.0f, 0.0f, 1.0f};
 }
@@ -31,7 +30,7 @@ inline Vec3 light_direction(float azimuth, float elevation) {
 // and up/down, cell_size_mm apart from the centre (so 2·cell_size between them).
 inline Vec3 height_normal(float left, float right, float up, float down, float cell_size_mm) {
   const float inv_span = 0.5f / cell_size_mm;
-  return normalized({-(right - left) * inv_span, -(down - up) * inv_span, 1.0f});
+  return normalized_or_up({-(right - left) * inv_span, -(down - up) * inv_span, 1.0f});
 }
 
 // The surface parameters, blended between dry and wet paint by the cell's wetness.
@@ -74,7 +73,7 @@ inline Shading blinn_phong(Vec3 normal, Vec3 to_light, float ambient, Material m
                            Visibility visibility = {}) {
   const float flat_lambert = std::max(to_light.z, 0.05f);
   const float lambert = std::max(dot(normal, to_light), 0.0f) / flat_lambert;
-  const Vec3 half_vector = normalized({to_light.x, to_light.y, to_light.z + 1.0f});
+  const Vec3 half_vector = normalized_or_up({to_light.x, to_light.y, to_light.z + 1.0f});
   const float n_dot_h = std::max(dot(normal, half_vector), 0.0f);
   const float specular = dot(normal, to_light) > 0.0f
                              ? material.specular * std::pow(n_dot_h, material.shininess)
