@@ -1,5 +1,6 @@
 #include "window/panels.hpp"
 #include "window/edit_help_menus.hpp"
+#include "window/enum_combo.hpp"
 #include "window/plot.hpp"
 #include "window/shortcuts.hpp"
 
@@ -446,22 +447,8 @@ void light_panel(PanelContext& c) {
   // Chromatic adaptation, by its names in `impasto render --adaptation`: bradford maps the
   // light's white to the display's, as an eye adapted to the room sees it; none shows a warm
   // light warm.
-  const auto adaptation = std::find_if(
-      render::kChromaticAdaptationNames.begin(), render::kChromaticAdaptationNames.end(),
-      [&](const auto& n) { return n.value == s.settings.adaptation; });
-  const std::string shown(adaptation != render::kChromaticAdaptationNames.end()
-                              ? adaptation->name
-                              : std::string_view("?"));
-  if (ImGui::BeginCombo("adaptation", shown.c_str())) {
-    for (const auto& [value, name] : render::kChromaticAdaptationNames) {
-      if (ImGui::Selectable(std::string(name).c_str(), value == s.settings.adaptation) &&
-          value != s.settings.adaptation) {
-        s.settings.adaptation = value;
-        s.settings_changed = true;
-      }
-    }
-    ImGui::EndCombo();
-  }
+  if (enum_combo("adaptation", s.settings.adaptation, render::kChromaticAdaptationNames))
+    s.settings_changed = true;
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip(
         "Chromatic adaptation, as impasto render --adaptation:\n"
@@ -494,11 +481,8 @@ void cracks_panel(PanelContext& c) {
   WindowState& s = c.state;
   if (!ImGui::CollapsingHeader("Cracks")) return;
   ImGui::Checkbox("show cracks", &s.settings.cracks);
-  int model = s.settings.crack_model == render::CrackModel::Corrected ? 0 : 1;
-  if (ImGui::Combo("far view", &model, "measured (corrected)\0Gouffe closed form\0")) {
-    s.settings.crack_model =
-        model == 0 ? render::CrackModel::Corrected : render::CrackModel::Gouffe;
-  }
+  // By the names of impasto render --crack-model: corrected (the measured table), gouffe.
+  enum_combo("far view", s.settings.crack_model, cracks::kCavityModelNames);
   bool close_up = s.view_options.crack_close_up_min_pixels > 0.0f;
   if (ImGui::Checkbox("close-up when zoomed in", &close_up)) {
     s.view_options.crack_close_up_min_pixels = close_up ? 6.0f : 0.0f;
