@@ -2,7 +2,7 @@
 # Builds Impasto and runs every test twice: a Release build with warnings as errors (and its
 # Debian package, unpacked and run: packaging/smoke-test.sh), then a build under
 # AddressSanitizer + UndefinedBehaviorSanitizer; then a short libFuzzer run of the file and
-# HID parsers (IMPASTO_FUZZ_SECONDS per target, default 10; 0 skips it).
+# HID parsers (IMPASTO_FUZZ_SECONDS per target, default 5; 0 skips it).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash packaging/deps.sh
@@ -25,7 +25,7 @@ export LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 ctest --test-dir build/sanitize -j "$jobs" --timeout 900 -LE "no-sanitize" | tee build/sanitize/ctest.log
 
-fuzz_seconds="${IMPASTO_FUZZ_SECONDS:-10}"
+fuzz_seconds="${IMPASTO_FUZZ_SECONDS:-5}"
 if [ "$fuzz_seconds" -gt 0 ]; then
   bash tests/fuzz/run.sh "$fuzz_seconds"
 fi
