@@ -152,7 +152,7 @@ Spectrum mixture_reflectance(const std::vector<const Pigment*>& pigments,
       s += concentrations[j] * pigments[j]->S.at(grid[w]);
     }
     // No scattering at all: an opaque layer of pure absorber reflects nothing.
-    const double r = s > 0 ? reflectance_from_ks(k / s) : 0.0;
+    const double r = reflectance_infinite(k, s);
     out.values[w] = saunderson ? saunderson->to_measured(r) : r;
   }
   return out;

@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 
+#include "impasto/data/kubelka_munk.hpp"
 #include "impasto/paintcore/painting.hpp"
 #include "impasto/render/paint_layer.hpp"
 
@@ -111,8 +112,7 @@ void cells_to_xyz(const PaddedPalette& palette, float* reflectance, int count, f
     if (palette.saunderson) {
       for (int b = 0; b < padded; b += kLanes) {
         for (int i = 0; i < kLanes; ++i) {
-          const float v = r[b + i];
-          r[b + i] = k1 + (1.0f - k1) * (1.0f - k2) * v / (1.0f - k2 * v);
+          r[b + i] = data::saunderson_to_measured(r[b + i], k1, k2);
         }
       }
     }

@@ -1,21 +1,64 @@
 #pragma once
-// Kubelka–Munk relations for an opaque (infinitely thick) layer, used by the K/S fit.
-// The layer formulas of finite thickness live in render/.
+// Kubelka–Munk relations of an opaque (infinitely thick) layer and the paint–air interface:
+// the one definition of each, written once on the scalar type. The K/S fit calls them in
+// double; the renderer's float reference (render/kubelka_munk.hpp) and its vectorised
+// kernels (render/src/spectral_kernels.cpp) in float, inlined into their loops (plain
+// arithmetic, no branch a vector cannot select). The layer formulas of finite thickness live
+// in render/.
+#include <cmath>
+#include <concepts>
 
 namespace impasto::data {
 
 // K/S of an opaque layer of reflectance R∞ (IMPaSTo Eq. 5): (1 − R∞)² / (2·R∞), R∞ in (0, 1].
-double ks_from_reflectance(double reflectance);
+template <std::floating_point Real>
+constexpr Real ks_from_reflectance(Real reflectance) {
+  const Real absorbed = Real(1) - reflectance;
+  return absorbed * absorbed / (Real(2) * reflectance);
+}
 
-// The inverse: R∞ = 1 + K/S − sqrt((K/S)² + 2·K/S), for K/S >= 0.
-double reflectance_from_ks(double ks);
+// Reflectance of an infinitely thick layer (hiding power) of absorption K and scattering S:
+// R∞ = a − b with a = 1 + K/S, b = sqrt(a² − 1), written as S / (K + S + sqrt(K (K + 2S))),
+// which neither cancels for large K/S nor divides by S; 0 for K = S = 0 (nothing reflects).
+// sqrt(K) sqrt(K + 2S) rather than sqrt(K² + 2KS): K² overflows floats from K ≈ 1.8e19.
+template <std::floating_point Real>
+Real reflectance_infinite(Real absorption, Real scattering) {
+  const Real K = absorption;
+  const Real S = scattering;
+  const Real denominator = K + S + std::sqrt(K) * std::sqrt(K + Real(2) * S);
+  return denominator > Real(0) ? S / denominator : Real(0);
+}
 
-// Saunderson's correction for the paint–air interface: k1 is the external (specular)
-// reflectance, k2 the internal one. Measured → body reflectance, and back.
+// The inverse of ks_from_reflectance: R∞ of a layer whose K/S is `ks` >= 0.
+template <std::floating_point Real>
+Real reflectance_from_ks(Real ks) {
+  return reflectance_infinite(ks, Real(1));
+}
+
+// Saunderson's correction for the paint–air interface, k1 the external (front-surface,
+// specular) and k2 the internal reflection coefficient. Body reflectance seen from the air:
+//   R_measured = k1 + (1 − k1)(1 − k2) R / (1 − k2 R),
+template <std::floating_point Real>
+constexpr Real saunderson_to_measured(Real internal, Real k1, Real k2) {
+  return k1 + (Real(1) - k1) * (Real(1) - k2) * internal / (Real(1) - k2 * internal);
+}
+
+// and its inverse, measured → body reflectance.
+template <std::floating_point Real>
+constexpr Real saunderson_to_internal(Real measured, Real k1, Real k2) {
+  return (measured - k1) / (Real(1) - k1 - k2 + k2 * measured);
+}
+
+// The interface of an oil or acrylic film in air, the one default of the K/S fit and the
+// renderer (RenderSettings): the Golden data in data/pigments are corrected with these.
+inline constexpr double kSaundersonK1 = 0.03;
+inline constexpr double kSaundersonK2 = 0.65;
+
+// One interface's coefficients, measured → body reflectance and back.
 struct Saunderson {
-  double k1 = 0.03, k2 = 0.65;
-  double to_internal(double measured) const;
-  double to_measured(double internal) const;
+  double k1 = kSaundersonK1, k2 = kSaundersonK2;
+  double to_internal(double measured) const { return saunderson_to_internal(measured, k1, k2); }
+  double to_measured(double internal) const { return saunderson_to_measured(internal, k1, k2); }
 };
 
 }  // namespace impasto::data

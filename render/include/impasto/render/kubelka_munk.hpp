@@ -10,6 +10,8 @@
 // for the thickness scale that maps millimetres of paint to it).
 #include <cmath>
 
+#include "impasto/data/kubelka_munk.hpp"
+
 namespace impasto::render::km {
 
 // A layer's diffuse reflectance and transmittance, both in [0, 1] with R + T <= 1.
@@ -52,13 +54,11 @@ inline LayerRT layer(float absorption, float scattering, float thickness) {
   return {S * f / denominator, 2.0f * e / denominator};
 }
 
-// Reflectance of an infinitely thick layer (hiding power): R∞ = a − b = S / (α + β).
-// Returns 0 for K = S = 0 (nothing there reflects).
+// Reflectance of an infinitely thick layer (hiding power): R∞ = a − b = S / (α + β), 0 for
+// K = S = 0. The formula is data::reflectance_infinite (data/kubelka_munk.hpp), the one the
+// K/S fit uses, here on floats.
 inline float reflectance_infinite(float absorption, float scattering) {
-  const float K = absorption;
-  const float S = scattering;
-  const float denominator = K + S + std::sqrt(K) * std::sqrt(K + 2.0f * S);
-  return denominator > 0.0f ? S / denominator : 0.0f;
+  return data::reflectance_infinite(absorption, scattering);
 }
 
 // Stage 3 (Eq. 10): a layer (R, T) over a substrate of reflectance R_prev, counting every
@@ -84,9 +84,10 @@ inline void accumulate_pigment(float concentration, float pigment_absorption,
 // Saunderson correction: the K-M reflectance inside the paint film seen from the air, with
 // k1 the external (front-surface) and k2 the internal reflection coefficient:
 //   R_measured = k1 + (1 − k1)(1 − k2) R / (1 − k2 R).
-// The Golden data in data/ are corrected for the interface; k1 ≈ 0.03, k2 ≈ 0.65 undo it.
+// The Golden data in data/ are corrected for the interface; data::kSaundersonK1 and K2 undo
+// it. The formula is data::saunderson_to_measured, the K/S fit's, here on floats.
 inline float saunderson(float reflectance, float k1, float k2) {
-  return k1 + (1.0f - k1) * (1.0f - k2) * reflectance / (1.0f - k2 * reflectance);
+  return data::saunderson_to_measured(reflectance, k1, k2);
 }
 
 }  // namespace impasto::render::km
