@@ -1,6 +1,5 @@
-// The node search of optimised rules and the per-palette cache of trained rules
-// (node_optimisation.hpp); the training paints and the readout fit are in
-// node_optimisation_fit.cpp.
+// The node search of optimised rules (node_optimisation.hpp); the training paints and the
+// readout fit are in node_optimisation_fit.cpp, the cache of built rules in node_cache.cpp.
 #include "impasto/render/node_optimisation.hpp"
 
 #include <tbb/parallel_for.h>
@@ -8,11 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <map>
-#include <mutex>
-#include <string>
-
-#include "impasto/util/fnv1a.hpp"
 
 namespace impasto::render {
 namespace {
@@ -143,76 +137,6 @@ OptimisedRule optimise_nodes(const PaletteTrainingSet& training, const data::Spe
   }
   result.training = training.error_of(sampling);
   return result;
-}
-
-namespace {
-
-// FNV-1a over everything a palette sampling depends on.
-class ContentHash {
- public:
-  void add_bytes(const void* data, std::size_t size) { hash_.add(data, size); }
-  void add(double x) { add_bytes(&x, sizeof x); }
-  void add(const std::string& text) {
-    add(static_cast<double>(text.size()));
-    add_bytes(text.data(), text.size());
-  }
-  void add(const data::Spectrum& spectrum) {
-    add(static_cast<double>(spectrum.values.size()));
-    for (double x : spectrum.wavelengths_nm) add(x);
-    for (double x : spectrum.values) add(x);
-  }
-  std::uint64_t value() const { return hash_.value(); }
-
- private:
-  util::Fnv1a hash_;
-};
-
-}  // namespace
-
-SpectralSampling make_palette_sampling(const data::Spectrum& light,
-                                       const data::ColorMatchingFunctions& cmf, int nodes,
-                                       const WavelengthRange& range, NodeWeights weights,
-                                       const std::vector<data::Pigment>& pigments,
-                                       const data::Spectrum& ground) {
-  const bool trained = weights == NodeWeights::fitted || weights == NodeWeights::optimised;
-  if (!trained || nodes == 0 || pigments.empty()) {
-    return make_spectral_sampling(light, cmf, nodes, range,
-                                  trained ? NodeWeights::interpolatory : weights);
-  }
-  ContentHash hash;
-  hash.add(static_cast<double>(nodes));
-  hash.add(static_cast<double>(weights));
-  hash.add(range.first_nm);
-  hash.add(range.last_nm);
-  hash.add(range.step_nm);
-  hash.add(light);
-  hash.add(cmf.x);
-  hash.add(cmf.y);
-  hash.add(cmf.z);
-  hash.add(ground);
-  for (const auto& pigment : pigments) {
-    hash.add(pigment.name);
-    hash.add(pigment.K);
-    hash.add(pigment.S);
-  }
-
-  static std::mutex mutex;
-  static std::map<std::uint64_t, SpectralSampling> cache;
-  {
-    const std::lock_guard<std::mutex> lock(mutex);
-    const auto found = cache.find(hash.value());
-    if (found != cache.end()) return found->second;
-  }
-  const PaletteTrainingSet training(light, cmf, range, pigments, ground);
-  SpectralSampling sampling;
-  if (weights == NodeWeights::fitted) {
-    sampling = make_spectral_sampling(light, cmf, nodes, range, NodeWeights::interpolatory);
-    training.fit_readout(sampling);
-  } else {
-    sampling = optimise_nodes(training, light, cmf, nodes, range).sampling;
-  }
-  const std::lock_guard<std::mutex> lock(mutex);
-  return cache.emplace(hash.value(), std::move(sampling)).first->second;
 }
 
 }  // namespace impasto::render

@@ -10,6 +10,7 @@
 
 #include "impasto/data/pigment_text.hpp"
 #include "impasto/files/atomic_file.hpp"
+#include "impasto/files/cache_dir.hpp"
 #include "impasto/files/input_file.hpp"
 #include "impasto/files/message_text.hpp"
 #include "impasto/util/fnv1a.hpp"
@@ -35,11 +36,7 @@ bool plain_file_name(const std::string& name) {
 }
 
 fs::path cache_root() {
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && xdg[0] == '/')
-    return fs::path(xdg) / "impasto" / "carried-flakes";
-  if (const char* home = std::getenv("HOME"); home && *home)
-    return fs::path(home) / ".cache" / "impasto" / "carried-flakes";
-  return fs::temp_directory_path() / ("impasto-carried-flakes-" + std::to_string(getuid()));
+  return files::cache_dir("carried-flakes");
 }
 
 }  // namespace

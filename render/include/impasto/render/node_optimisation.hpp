@@ -117,8 +117,9 @@ OptimisedRule optimise_nodes(const PaletteTrainingSet& training, const data::Spe
 
 // The sampling a renderer uses for `weights`: the Gaussian rule (impasto, interpolatory),
 // the Gaussian nodes with a readout fitted to the palette (fitted), or optimised nodes and
-// readout (optimised). The palette-dependent ones are cached by content (light, range,
-// nodes, pigments, ground), so a light seen before costs nothing to return to.
+// readout (optimised). The palette-dependent ones are built once per content (light,
+// observer, range, nodes, pigments, ground) and kept in memory and on disk (node_cache.hpp),
+// so a light seen before costs a small file read, or nothing, to return to.
 SpectralSampling make_palette_sampling(const data::Spectrum& light,
                                        const data::ColorMatchingFunctions& cmf, int nodes,
                                        const WavelengthRange& range, NodeWeights weights,
