@@ -12,6 +12,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "brush_head_file.hpp"
 #include "hasher.hpp"
 #include "impasto/files/atomic_file.hpp"
 #include "impasto/files/input_file.hpp"
@@ -105,19 +106,8 @@ void PaintingFile::write_payload(const Painting::Impl& p, const Records& records
   const Brush& brush = p.brush;
   w.put(static_cast<std::uint8_t>(brush.empty() ? 0 : 1));
   if (!brush.empty()) {
-    const BrushHead& head = brush.head();
-    w.put_string(head.name);
-    w.put_string(head.description);
-    w.put(head.rise);
-    write_quadric(w, head.base);
-    w.put(static_cast<std::uint32_t>(head.perturbations.size()));
-    for (const Perturbation& pt : head.perturbations) {
-      w.put(pt.factor);
-      write_quadric(w, pt.shape);
-    }
-    w.put_string(brush.settings().head);
-    w.put(brush.settings().size_mm);
-    w.put(brush.settings().stiffness);
+    write_brush_head(w, brush.head());
+    write_brush_settings(w, brush.settings());
     w.put(static_cast<std::uint32_t>(brush.cells_across()));
     w.put_floats(brush.volume_mm().data(), brush.cell_count());
     for (int s = 0; s < slots; ++s) {
@@ -134,11 +124,8 @@ void PaintingFile::write_payload(const Painting::Impl& p, const Records& records
   w.put(p.cells_updated);
   write_cracks(w, p.canvas.cracks());
   if (!brush.empty()) {
-    const BrushHead& head = brush.head();
     w.put(static_cast<std::uint8_t>(brush.body()));
-    for (double v :
-         {head.bristles.spacing_mm, head.bristles.depth_mm, head.bristles.jitter, head.splay})
-      w.put(v);
+    write_bristles(w, brush.head());
   }
   w.put(static_cast<std::uint32_t>(records.size()));
   for (const auto& [name, record] : records) {
@@ -285,24 +272,8 @@ std::unique_ptr<Painting::Impl> PaintingFile::load(const std::filesystem::path& 
     p->canvas.dry_layers().push_back(
         read_dry_layer(r, "dry_layers[" + std::to_string(l) + "]", tile_count, slots));
   if (r.get<std::uint8_t>("brush.present") != 0) {
-    BrushHead head;
-    head.name = r.get_string("brush.head.name");
-    head.description = r.get_string("brush.head.description");
-    head.rise = r.get_finite("brush.head.rise");
-    if (head.rise < 0.0 || head.rise > 100.0) r.fail("brush.head.rise", "must be in 0..100");
-    head.base = read_quadric(r, "brush.head.base");
-    const auto perturbations =
-        r.get_count("brush.head.perturbations", static_cast<std::uint32_t>(kMaxPerturbations));
-    for (std::uint32_t k = 0; k < perturbations; ++k) {
-      Perturbation pt;
-      pt.factor = r.get_finite("brush.head.perturbations.factor");
-      pt.shape = read_quadric(r, "brush.head.perturbations.shape");
-      head.perturbations.push_back(pt);
-    }
-    BrushSettings settings;
-    settings.head = r.get_string("brush.settings.head");
-    settings.size_mm = r.get_finite("brush.settings.size_mm");
-    settings.stiffness = r.get_finite("brush.settings.stiffness");
+    const BrushHead head = read_brush_head(r, "brush.head");
+    const BrushSettings settings = read_brush_settings(r, "brush.settings");
     try {
       p->brush = Brush(head, settings, spec.cell_mm(), slots);
     } catch (const std::exception& e) {
@@ -329,14 +300,7 @@ std::unique_ptr<Painting::Impl> PaintingFile::load(const std::filesystem::path& 
     if (body >= kPaintBodies.size())
       r.fail("brush.body", "unknown paint body " + std::to_string(body));
     BrushHead head = p->brush.head();
-    head.bristles.spacing_mm = r.get_finite("brush.head.bristles.spacing_mm");
-    head.bristles.depth_mm = r.get_finite("brush.head.bristles.depth_mm");
-    head.bristles.jitter = r.get_finite("brush.head.bristles.jitter");
-    head.splay = r.get_finite("brush.head.splay");
-    const Bristles& b = head.bristles;
-    if (!(b.spacing_mm >= 0 && b.spacing_mm <= 100 && b.depth_mm >= 0 && b.depth_mm <= 100 &&
-          b.jitter >= 0 && b.jitter <= 1 && head.splay >= 0 && head.splay <= 1))
-      r.fail("brush.head.bristles", "out of range");
+    read_bristles(r, "brush.head", head);
     // The footprint depends on the bristles: rebuild the brush, keeping its paint.
     Brush rebuilt(head, p->brush.settings(), spec.cell_mm(), slots);
     rebuilt.volume_mm() = p->brush.volume_mm();

@@ -2,6 +2,7 @@
 
 #include <vector>
 
+#include "brush_head_file.hpp"
 #include "impasto/files/memory_budget.hpp"
 
 namespace impasto::paintcore {
@@ -48,22 +49,9 @@ std::unique_ptr<Tile> read_tile(Reader& r, const Canvas& frame_canvas, int index
 void write_brush(W& w, const Brush& brush) {
   w.put(static_cast<std::uint8_t>(brush.empty() ? 0 : 1));
   if (brush.empty()) return;
-  const BrushHead& head = brush.head();
-  w.put_string(head.name);
-  w.put_string(head.description);
-  w.put(head.rise);
-  write_quadric(w, head.base);
-  w.put(static_cast<std::uint32_t>(head.perturbations.size()));
-  for (const Perturbation& pt : head.perturbations) {
-    w.put(pt.factor);
-    write_quadric(w, pt.shape);
-  }
-  for (double v :
-       {head.bristles.spacing_mm, head.bristles.depth_mm, head.bristles.jitter, head.splay})
-    w.put(v);
-  w.put_string(brush.settings().head);
-  w.put(brush.settings().size_mm);
-  w.put(brush.settings().stiffness);
+  write_brush_head(w, brush.head());
+  write_bristles(w, brush.head());
+  write_brush_settings(w, brush.settings());
   w.put(static_cast<std::uint8_t>(brush.body()));
   w.put(static_cast<std::uint32_t>(brush.cells_across()));
   w.put(static_cast<std::uint8_t>(brush.slot_count()));
@@ -73,32 +61,9 @@ void write_brush(W& w, const Brush& brush) {
 
 Brush read_brush(Reader& r, double cell_mm, const std::string& field) {
   if (r.get<std::uint8_t>(field + ".present") == 0) return Brush();
-  BrushHead head;
-  head.name = r.get_string(field + ".head.name");
-  head.description = r.get_string(field + ".head.description");
-  head.rise = r.get_finite(field + ".head.rise");
-  if (head.rise < 0.0 || head.rise > 100.0) r.fail(field + ".head.rise", "must be in 0..100");
-  head.base = read_quadric(r, field + ".head.base");
-  const auto perturbations =
-      r.get_count(field + ".head.perturbations", static_cast<std::uint32_t>(kMaxPerturbations));
-  for (std::uint32_t k = 0; k < perturbations; ++k) {
-    Perturbation pt;
-    pt.factor = r.get_finite(field + ".head.perturbations.factor");
-    pt.shape = read_quadric(r, field + ".head.perturbations.shape");
-    head.perturbations.push_back(pt);
-  }
-  head.bristles.spacing_mm = r.get_finite(field + ".head.bristles.spacing_mm");
-  head.bristles.depth_mm = r.get_finite(field + ".head.bristles.depth_mm");
-  head.bristles.jitter = r.get_finite(field + ".head.bristles.jitter");
-  head.splay = r.get_finite(field + ".head.splay");
-  const Bristles& b = head.bristles;
-  if (!(b.spacing_mm >= 0 && b.spacing_mm <= 100 && b.depth_mm >= 0 && b.depth_mm <= 100 &&
-        b.jitter >= 0 && b.jitter <= 1 && head.splay >= 0 && head.splay <= 1))
-    r.fail(field + ".head.bristles", "out of range");
-  BrushSettings settings;
-  settings.head = r.get_string(field + ".settings.head");
-  settings.size_mm = r.get_finite(field + ".settings.size_mm");
-  settings.stiffness = r.get_finite(field + ".settings.stiffness");
+  BrushHead head = read_brush_head(r, field + ".head");
+  read_bristles(r, field + ".head", head);
+  const BrushSettings settings = read_brush_settings(r, field + ".settings");
   const auto body = r.get<std::uint8_t>(field + ".body");
   if (body >= kPaintBodies.size()) r.fail(field + ".body", "unknown paint body");
   const auto across = r.get<std::uint32_t>(field + ".cells_across");

@@ -84,6 +84,32 @@ TEST_F(PaintingFileTest, TheBrushKeepsItsBodyBristlesAndTheParameters) {
   EXPECT_EQ(loaded.state_hash(), p.state_hash());
 }
 
+// The brush's head, bristles and settings are read back as written, in the painting and in
+// its undo history (brush_head_file.hpp, shared by both): a loaded painting saves the same
+// bytes, a change of head included.
+TEST_F(PaintingFileTest, ALoadedPaintingSavesTheSameBytes) {
+  Painting p = sample();
+  p.set_brush(BrushSettings{"fan", 3.0, 0.4});
+  p.load_brush({{"blue", 1.0}}, 3.0);
+  test::stroke_line(p, 3.0, 2.0, 10.0, 6.0, 0.7f);
+  const auto first = dir_ / "first.impasto";
+  const auto second = dir_ / "second.impasto";
+  p.save(first);
+  const Painting q = Painting::load(first);
+  const BrushHead& head = q.brush().head();
+  ASSERT_FALSE(head.perturbations.empty());  // the fan's: the records are exercised
+  EXPECT_EQ(head.name, p.brush().head().name);
+  EXPECT_EQ(head.description, p.brush().head().description);
+  EXPECT_EQ(head.rise, p.brush().head().rise);
+  EXPECT_EQ(head.perturbations.size(), p.brush().head().perturbations.size());
+  EXPECT_EQ(head.perturbations.back().factor, p.brush().head().perturbations.back().factor);
+  EXPECT_EQ(head.bristles, p.brush().head().bristles);
+  EXPECT_EQ(q.brush().settings().size_mm, 3.0);
+  EXPECT_EQ(q.brush().settings().stiffness, 0.4);
+  q.save(second);
+  EXPECT_EQ(read(first), read(second));
+}
+
 TEST_F(PaintingFileTest, LoadedPaintingKeepsPainting) {
   Painting p = sample();
   const auto file = dir_ / "b.impasto";
