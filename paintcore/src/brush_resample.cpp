@@ -112,7 +112,8 @@ double resample_quantity(const Brush& from, const float* in, const Brush& to, fl
 
 PaintTotals resample_brush_paint(const Brush& from, Brush& to, double cell_area_mm2) {
   to.ensure_slots(from.slot_count());
-  to.set_body(from.body());  // the paint keeps its body on the new head
+  to.set_body(from.body());      // the paint keeps its body on the new head
+  to.set_medium(from.medium());  // and its medium
   std::fill(to.volume_mm().begin(), to.volume_mm().end(), 0.0f);
   std::fill(to.pigment_mm().begin(), to.pigment_mm().end(), 0.0f);
   PaintTotals lost{0.0, std::vector<double>(static_cast<std::size_t>(to.slot_count()), 0.0)};

@@ -10,6 +10,7 @@
 #include "impasto/paintcore/brush_resample.hpp"
 #include "levelling.hpp"
 #include "painting_impl.hpp"
+#include "painting_surface.hpp"
 
 namespace impasto::paintcore {
 
@@ -117,14 +118,15 @@ void Painting::set_brush(const BrushSettings& settings, const BrushHead& head) {
   p.history.commit();
 }
 
-void Painting::load_brush(const std::vector<PigmentMixPart>& mix, double volume_mm3,
-                          PaintBody body) {
+void Painting::load_brush(const std::vector<PigmentMixPart>& mix, double volume_mm3, PaintBody body,
+                          std::optional<Medium> medium) {
   Impl& p = *impl_;
   if (p.brush.empty()) throw std::runtime_error("load_brush: no brush is set (call set_brush)");
   if (!std::isfinite(volume_mm3) || volume_mm3 < 0.0 || volume_mm3 > 1e9)
     throw std::runtime_error("load_brush: field 'volume_mm3' must be in [0, 1e9], got " +
                              std::to_string(volume_mm3));
   if (mix.empty()) throw std::runtime_error("load_brush: field 'mix' is empty");
+  if (medium) validate(*medium);
   double total_parts = 0.0;
   for (const PigmentMixPart& part : mix) {
     if (!std::isfinite(part.parts) || part.parts < 0.0)
@@ -175,6 +177,7 @@ void Painting::load_brush(const std::vector<PigmentMixPart>& mix, double volume_
       added.pigment[s] += (static_cast<double>(amount) - old) * area;
     }
   }
+  mix_brush_medium(p.brush, brush_totals().volume - added.volume, added.volume, medium);
   accumulate(p.ledger.loaded, added);
   p.history.commit();
 }
@@ -239,6 +242,7 @@ void Painting::end_stroke() {
   std::erase_if(p.stroke_tiles, [&p](int index) { return p.canvas.tile(index) == nullptr; });
   p.arena.execute(
       [&] { settle_wet_paint(p.canvas, p.stroke_tiles, slot_count(), p.brush.body(), p.params); });
+  lay_stroke_medium(p.canvas, p.history, p.brush.medium(), p.stroke_tiles);
   p.stroke_tiles.clear();
   p.history.commit();
 }
@@ -429,6 +433,7 @@ void Painting::dry(double fraction) {
     });
   });
   p.canvas.dry_layers().push_back(std::move(layer));
+  dry_varnish(p.canvas, p.history, f);
   p.history.commit();
 }
 

@@ -19,6 +19,7 @@
 #include "impasto/files/memory_budget.hpp"
 #include "painting_history_file.hpp"
 #include "painting_impl.hpp"
+#include "painting_surface_file.hpp"
 
 namespace impasto::paintcore {
 using namespace file_io;  // NOLINT: the file's own building blocks
@@ -132,6 +133,8 @@ void PaintingFile::write_payload(const Painting::Impl& p, const Records& records
     w.put_string(name);
     w.put_string(record);
   }
+  // Version 6: media and varnish (painting_surface_file.hpp).
+  write_surfaces(w, p.canvas, p.brush);
 }
 
 void PaintingFile::save(const Painting::Impl& p, const std::filesystem::path& file) {
@@ -319,6 +322,7 @@ std::unique_ptr<Painting::Impl> PaintingFile::load(const std::filesystem::path& 
         r.fail(field + ".name", "a pigment's record appears twice");
     }
   }
+  if (version >= kSurfaceVersion) read_surfaces(r, p->canvas, p->brush);
   if (!r.at_end()) r.fail("end", "unexpected bytes after the last field");
   if (history_bytes > 0 && history_problem.empty()) {
     std::array<unsigned char, 16> checksum_and_size;

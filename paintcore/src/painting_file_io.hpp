@@ -24,8 +24,9 @@ constexpr char kMagic[8] = {'I', 'M', 'P', 'A', 'S', 'T', 'O', '\0'};
 // the same without the library). Versions 1 and 2 still load, with today's default parameters;
 // files before version 4 render with the library's pigments. Version 5 added the weave's
 // origin (a cropped canvas keeps its cloth) and, after the payload's checksum, the optional
-// undo history section with a checksum of its own (painting_history_file.cpp).
-constexpr std::uint32_t kVersion = 5;
+// undo history section with a checksum of its own (painting_history_file.cpp). Version 6
+// added the media and varnish of the tiles that have them (painting_surface_file.hpp).
+constexpr std::uint32_t kVersion = 6;
 constexpr std::uint32_t kOldestVersion = 1;
 constexpr std::size_t kHeaderBytes = sizeof(kMagic) + 4 + 8;
 constexpr std::uint32_t kMaxStringBytes = 4096;

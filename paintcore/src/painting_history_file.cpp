@@ -4,6 +4,7 @@
 
 #include "brush_head_file.hpp"
 #include "impasto/files/memory_budget.hpp"
+#include "painting_surface_file.hpp"
 
 namespace impasto::paintcore {
 using namespace file_io;  // NOLINT: the file's own building blocks
@@ -28,21 +29,25 @@ PaintTotals read_totals_of(Reader& r, const std::string& field) {
 
 // A tile in any slot count (a step keeps it as it was).
 void write_tile(W& w, const Tile& tile) {
-  w.put(static_cast<std::uint8_t>(tile.slot_count()));
+  w.put(static_cast<std::uint8_t>(tile.slot_count() |
+                                  (surface_planes(tile) << kHistorySurfaceShift)));
   w.put_floats(tile.dry_height_mm.data(), kTileCells);
   w.put_floats(tile.wet_volume_mm.data(), kTileCells);
   w.put_floats(tile.pigment_mm.data(), tile.pigment_mm.size());
+  write_surface_planes(w, tile);  // media and varnish (painting_surface_file.hpp)
 }
 
 std::unique_ptr<Tile> read_tile(Reader& r, const Canvas& frame_canvas, int index,
                                 const std::string& field) {
-  const auto slots = r.get<std::uint8_t>(field + ".slot_count");
+  const auto byte = r.get<std::uint8_t>(field + ".slot_count");
+  const int slots = byte & ((1 << kHistorySurfaceShift) - 1);
   if (slots > kMaxPigmentSlots) r.fail(field + ".slot_count", "more than 16 slots");
   auto tile = frame_canvas.make_tile(index, slots);
   r.get_amounts(tile->dry_height_mm.data(), kTileCells, field + ".dry_height");
   r.get_amounts(tile->wet_volume_mm.data(), kTileCells, field + ".wet_volume");
   r.get_amounts(tile->pigment_mm.data(), tile->pigment_mm.size(), field + ".pigment");
   repair_pigment(tile->wet_volume_mm.data(), tile->pigment_mm.data(), slots, kTileCells);
+  read_surface_planes(r, *tile, static_cast<std::uint8_t>(byte >> kHistorySurfaceShift), field);
   return tile;
 }
 

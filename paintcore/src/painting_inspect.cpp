@@ -195,6 +195,18 @@ std::uint64_t Painting::state_hash() const {
       }
     }
   }
+  // Media and varnish only where there are some (paint_surface.hpp), likewise.
+  for (int index = 0; index < canvas.tile_count(); ++index) {
+    const Tile* tile = canvas.tile(index);
+    if (!has_surface(tile)) continue;
+    h.value(index);
+    h.bytes(tile->medium.data(), sizeof(float) * tile->medium.size());
+    h.bytes(tile->varnish.data(), sizeof(float) * tile->varnish.size());
+  }
+  if (brush.medium().share != 0.0f) {
+    h.value(brush.medium().share);
+    h.value(brush.medium().log_rms);
+  }
   return h.digest();
 }
 
@@ -206,6 +218,8 @@ std::size_t Painting::nonfinite_count() const {
       n += count_nonfinite(tile->dry_height_mm.data(), kTileCells);
       n += count_nonfinite(tile->wet_volume_mm.data(), kTileCells);
       n += count_nonfinite(tile->pigment_mm.data(), tile->pigment_mm.size());
+      n += count_nonfinite(tile->medium.data(), tile->medium.size());
+      n += count_nonfinite(tile->varnish.data(), tile->varnish.size());
     }
   for (const DryLayer& layer : p.canvas.dry_layers())
     for (const DryTile& tile : layer.tiles) {

@@ -5,7 +5,9 @@
 namespace impasto::paintcore {
 
 std::size_t tile_bytes(const Tile& tile) {
-  return sizeof(Tile) + tile.pigment_mm.capacity() * sizeof(float);
+  return sizeof(Tile) +
+         (tile.pigment_mm.capacity() + tile.medium.capacity() + tile.varnish.capacity()) *
+             sizeof(float);
 }
 
 std::size_t brush_bytes(const Brush& brush) {
@@ -63,6 +65,13 @@ void UndoHistory::before_tile_change(int index, const Tile* current) {
   std::unique_ptr<Tile> copy = current ? std::make_unique<Tile>(*current) : nullptr;
   current_.bytes += copy ? tile_bytes(*copy) : sizeof(std::pair<int, std::unique_ptr<Tile>>);
   current_.tiles.emplace_back(index, std::move(copy));
+}
+
+std::optional<const Tile*> UndoHistory::saved_tile(int index) const {
+  if (!recording_ || saved_in_op_[static_cast<std::size_t>(index)] != op_id_) return std::nullopt;
+  for (const auto& [saved, tile] : current_.tiles)
+    if (saved == index) return tile.get();
+  return std::nullopt;
 }
 
 void UndoHistory::commit() {

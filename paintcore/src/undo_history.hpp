@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <deque>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -37,6 +38,9 @@ class UndoHistory {
   bool recording() const { return recording_; }
   // Saves tile `index` unless this operation saved it already.
   void before_tile_change(int index, const Tile* current);
+  // The tile as this operation found it, when the operation saved it (nullptr inside: the
+  // tile was absent); nullopt when the operation has not changed that tile.
+  std::optional<const Tile*> saved_tile(int index) const;
   // Keeps the whole canvas as it was before this operation replaced it (a reframe).
   void keep_canvas(std::unique_ptr<Canvas> before);
   // Ends the operation: it becomes the newest undo step and the redo list is cleared.

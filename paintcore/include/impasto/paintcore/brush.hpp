@@ -8,6 +8,7 @@
 
 #include "impasto/paintcore/brush_head.hpp"
 #include "impasto/paintcore/paint_body.hpp"
+#include "impasto/paintcore/paint_surface.hpp"
 
 namespace impasto::paintcore {
 
@@ -64,6 +65,9 @@ class Brush {
   // The body of the paint on the brush (the last paint loaded).
   PaintBody body() const { return body_; }
   void set_body(PaintBody body) { body_ = body; }
+  // The medium of the paint on the brush (paint_surface.hpp), mixed as paint is loaded.
+  const PaintMedium& medium() const { return medium_; }
+  void set_medium(const PaintMedium& medium) { medium_ = medium; }
 
  private:
   BrushHead head_;
@@ -78,6 +82,7 @@ class Brush {
   std::vector<float> volume_mm_;
   std::vector<float> pigment_mm_;
   PaintBody body_ = kDefaultPaintBody;
+  PaintMedium medium_;
 };
 
 }  // namespace impasto::paintcore

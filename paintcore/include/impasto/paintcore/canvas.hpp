@@ -61,6 +61,10 @@ struct Tile {
   std::array<float, kTileCells> dry_height_mm{};   // sum of all dry layers
   std::array<float, kTileCells> wet_volume_mm{};   // wet paint height
   std::vector<float> pigment_mm;                   // wet pigment amounts, slot-major
+  // The surface's medium and varnish per cell (paint_surface.hpp), plane-major; empty in
+  // tiles that never had either.
+  std::vector<float> medium;
+  std::vector<float> varnish;
 
   int slot_count() const { return static_cast<int>(pigment_mm.size() / kTileCells); }
   // Amounts of one slot (kTileCells values), or nullptr when the tile lacks that slot.

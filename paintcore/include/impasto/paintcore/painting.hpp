@@ -6,11 +6,13 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "impasto/paintcore/brush.hpp"
 #include "impasto/paintcore/canvas.hpp"
+#include "impasto/paintcore/paint_surface.hpp"
 #include "impasto/paintcore/pen_sample.hpp"
 #include "impasto/paintcore/simulation_params.hpp"
 
@@ -73,9 +75,11 @@ class Painting {
   void set_brush(const BrushSettings& settings, const BrushHead& head);
   const Brush& brush() const;
   // Adds volume_mm3 of paint, mixed by parts, spread evenly over the head's cells; the paint
-  // on the brush takes the given body (paint_body.hpp).
+  // on the brush takes the given body (paint_body.hpp). A medium (paint_surface.hpp) mixes
+  // with the medium of the paint already on the brush by volume; none: paint without one
+  // (the render settings' medium decides its finish, as before media were part of paint).
   void load_brush(const std::vector<PigmentMixPart>& mix, double volume_mm3,
-                  PaintBody body = kDefaultPaintBody);
+                  PaintBody body = kDefaultPaintBody, std::optional<Medium> medium = std::nullopt);
   // Removes all paint from the brush; returns what was removed.
   PaintTotals wipe_brush();
 
@@ -86,8 +90,17 @@ class Painting {
   void end_stroke();
   bool in_stroke() const;
 
-  // Dries the bottom `fraction` (0..1) of the wet layer into a new dry layer.
+  // Dries the bottom `fraction` (0..1) of the wet layer into a new dry layer, and the same
+  // fraction of what is still wet of the varnish.
   void dry(double fraction);
+
+  // A coat of varnish (paint_surface.hpp) of `finish`, thickness_mm (0, kMaxVarnishMm] thick,
+  // over the cells of `region` (clipped to the canvas; none: the whole painting), as one
+  // undoable step. It goes on wet (glossy) and dries with dry(); its finish replaces an
+  // older coat's, the thicknesses add. Throws, changing nothing, on a bad finish, thickness
+  // or a region outside the canvas.
+  void apply_varnish(Finish finish, double thickness_mm,
+                     std::optional<CellRect> region = std::nullopt);
 
   // Cracks of the dry paint and the ground (crack_layer.hpp). set_cracks replaces them all
   // after checking every record (validate_cracks) and marks the tiles whose cracks changed

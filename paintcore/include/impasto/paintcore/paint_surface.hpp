@@ -1,0 +1,99 @@
+#pragma once
+// The finish of the paint's surface as part of the paint (docs/surface.md, "Medium and
+// varnish in the painting"): the medium a mix was made with, carried by the paint into the
+// cells it is laid in, and varnish coats over the painting or part of it. paintcore keeps,
+// mixes and dries them; the renderer turns them into the GHS surface per cell
+// (render/surface_shading.hpp), the window's GLSL port reads the same cells through
+// cell_surface().
+//
+// Per cell, only in tiles that have them (Tile::medium, Tile::varnish are empty elsewhere, so
+// a painting without media or varnish costs nothing and renders as before).
+#include <cstdint>
+
+#include "impasto/paintcore/canvas.hpp"
+
+namespace impasto::paintcore {
+
+// The finishes a medium or a varnish dries to.
+enum class Finish : std::uint8_t { gloss, satin, matte };
+inline constexpr int kFinishCount = 3;
+
+// RMS height and correlation length (µm) of a film's micro-roughness.
+struct FinishRoughness {
+  double rms_um = 0.0;
+  double correlation_um = 1.0;
+};
+// The film of each finish (docs/surface.md: chosen so that 60° specular gloss falls in the
+// ranges paint makers state for each).
+FinishRoughness finish_roughness(Finish finish);
+double finish_log_rms(Finish finish);  // log10 of rms_um
+// A roughness between the finishes, by its log10 RMS: the correlation length follows the
+// gloss–satin–matte curve (geometric between neighbours, held beyond the ends), so one number
+// per cell describes the surface.
+FinishRoughness roughness_at_log_rms(double log_rms);
+// The range a cell's log10 RMS may take (a file's values are checked against it).
+inline constexpr double kMinLogRms = -3.0;
+inline constexpr double kMaxLogRms = 1.0;
+
+// The medium a mix is made with: its finish and how much of the paint it is, 0 (paint
+// straight from the tube, which dries satin) to 1 (the medium's own finish); between, the
+// roughness is interpolated geometrically (as render::SurfaceSettings's medium).
+struct Medium {
+  Finish finish = Finish::gloss;
+  double amount = 1.0;
+};
+void validate(const Medium& medium);  // throws std::runtime_error naming the field
+double medium_log_rms(const Medium& medium);
+
+// The medium a volume of paint carries: the share of that paint mixed with a medium (0: none
+// set, the render settings' medium decides, as in paintings made before media existed) and
+// the log10 RMS roughness that share dries to.
+struct PaintMedium {
+  float share = 0.0f;
+  float log_rms = 0.0f;
+  bool operator==(const PaintMedium&) const = default;
+};
+PaintMedium paint_medium(const Medium& medium);  // share 1
+// Two volumes of paint mixed: shares by volume, roughness by the volume of medium in log
+// space (amount-weighted geometric mean of the RMS heights).
+PaintMedium mix(const PaintMedium& a, double a_volume, const PaintMedium& b, double b_volume);
+
+// Paint laid on a cell mixes with the surface already there as if that surface were at least
+// this thick: a thin film over dry paint takes over only part of its finish.
+inline constexpr double kSurfaceFilmMm = 0.01;
+
+// Varnish coats: thickness in mm of paint height, at most this much a coat.
+inline constexpr double kMaxVarnishMm = 1.0;
+
+// The planes of a tile's surface data (plane-major, kTileCells values each).
+inline constexpr int kMediumPlanes = 2;   // share, log_rms
+inline constexpr int kVarnishPlanes = 3;  // thickness_mm, wet_mm, log_rms
+
+// What one cell's surface holds: the medium of its top paint and its varnish (the varnish,
+// when there is one, is the surface the light meets).
+struct CellSurface {
+  PaintMedium medium;
+  float varnish_mm = 0.0f;      // 0: not varnished
+  float varnish_wet_mm = 0.0f;  // the part not yet dried (a wet varnish is glossy)
+  float varnish_log_rms = 0.0f;
+  bool varnished() const { return varnish_mm > 0.0f; }
+  // 0 (dry) .. 1 (just applied).
+  float varnish_wetness() const { return varnished() ? varnish_wet_mm / varnish_mm : 0.0f; }
+};
+
+// The surface of cell `cell` (local index) of a tile; a null tile or one without surface data
+// gives the default (no medium, no varnish).
+CellSurface cell_surface(const Tile* tile, int cell);
+// Whether a tile holds any medium or varnish data (a renderer's per-tile shortcut).
+inline bool has_surface(const Tile* tile) {
+  return tile != nullptr && (!tile->medium.empty() || !tile->varnish.empty());
+}
+// Pointers to a plane of a tile's data (nullptr when the tile has none).
+inline const float* medium_plane(const Tile& tile, int plane) {
+  return tile.medium.empty() ? nullptr : tile.medium.data() + plane * kTileCells;
+}
+inline const float* varnish_plane(const Tile& tile, int plane) {
+  return tile.varnish.empty() ? nullptr : tile.varnish.data() + plane * kTileCells;
+}
+
+}  // namespace impasto::paintcore

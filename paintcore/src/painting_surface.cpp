@@ -1,0 +1,109 @@
+// Media carried by the paint and varnish coats (paint_surface.hpp, docs/surface.md).
+#include "painting_surface.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "painting_impl.hpp"
+
+namespace impasto::paintcore {
+
+void mix_brush_medium(Brush& brush, double before_mm3, double added_mm3,
+                      const std::optional<Medium>& medium) {
+  const PaintMedium loaded = medium ? paint_medium(*medium) : PaintMedium{};
+  brush.set_medium(before_mm3 > 0.0 ? mix(brush.medium(), before_mm3, loaded, added_mm3) : loaded);
+}
+
+void lay_stroke_medium(Canvas& canvas, const UndoHistory& history, const PaintMedium& brush,
+                       const std::vector<int>& tiles) {
+  for (const int index : tiles) {
+    Tile* tile = canvas.tile_slot(index).get();
+    if (tile == nullptr) continue;
+    // Paint without a medium over cells that never had one changes nothing: no data is made.
+    if (brush.share == 0.0f && tile->medium.empty()) continue;
+    const std::optional<const Tile*> saved = history.saved_tile(index);
+    if (!saved) continue;  // the stroke did not change this tile
+    const Tile* before = *saved;
+    if (tile->medium.empty()) {
+      tile->medium.assign(static_cast<std::size_t>(kMediumPlanes) * kTileCells, 0.0f);
+    }
+    float* share = tile->medium.data();
+    float* log_rms = share + kTileCells;
+    for (int c = 0; c < kTileCells; ++c) {
+      const float had = before != nullptr ? before->wet_volume_mm[c] : 0.0f;
+      const double gained = static_cast<double>(tile->wet_volume_mm[c]) - had;
+      if (!(gained > 0.0)) continue;  // paint taken or moved away leaves the surface's finish
+      const PaintMedium mixed = mix({share[c], log_rms[c]}, had + kSurfaceFilmMm, brush, gained);
+      share[c] = mixed.share;
+      log_rms[c] = mixed.log_rms;
+    }
+  }
+}
+
+void dry_varnish(Canvas& canvas, UndoHistory& history, float fraction) {
+  for (int index = 0; index < canvas.tile_count(); ++index) {
+    const Tile* tile = canvas.tile(index);
+    if (tile == nullptr || tile->varnish.empty()) continue;
+    const float* wet = varnish_plane(*tile, 1);
+    if (std::none_of(wet, wet + kTileCells, [](float v) { return v != 0.0f; })) continue;
+    history.before_tile_change(index, tile);
+    canvas.mark_dirty(index);
+    float* drying = canvas.tile_slot(index)->varnish.data() + kTileCells;
+    for (int c = 0; c < kTileCells; ++c) drying[c] -= drying[c] * fraction;
+  }
+}
+
+void Painting::apply_varnish(Finish finish, double thickness_mm, std::optional<CellRect> region) {
+  Impl& p = *impl_;
+  if (static_cast<int>(finish) >= kFinishCount)
+    throw std::runtime_error("apply_varnish: field 'finish' is not a finish");
+  if (!(thickness_mm > 0.0 && thickness_mm <= kMaxVarnishMm))
+    throw std::runtime_error("apply_varnish: field 'thickness_mm' must be in (0, " +
+                             std::to_string(kMaxVarnishMm) + "], got " +
+                             std::to_string(thickness_mm));
+  const CellRect whole{0, 0, p.canvas.width_cells(), p.canvas.height_cells()};
+  CellRect r = region.value_or(whole);
+  if (region) {
+    r = {std::max(r.x0, 0), std::max(r.y0, 0), std::min(r.x1, whole.x1), std::min(r.y1, whole.y1)};
+    if (r.empty())
+      throw std::runtime_error("apply_varnish: field 'region' (" + std::to_string(region->x0) +
+                               "," + std::to_string(region->y0) + " to " +
+                               std::to_string(region->x1) + "," + std::to_string(region->y1) +
+                               ") covers no cell of the " + std::to_string(whole.x1) + "x" +
+                               std::to_string(whole.y1) + " canvas");
+  }
+  end_stroke();
+  p.history.begin(p.brush, p.ledger, p.slots, p.canvas.dry_layers().size(), p.canvas.tile_count());
+  const auto coat = static_cast<float>(thickness_mm);
+  const auto rough = static_cast<float>(finish_log_rms(finish));
+  for (int ty = r.y0 / kTileSize; ty <= (r.y1 - 1) / kTileSize; ++ty) {
+    for (int tx = r.x0 / kTileSize; tx <= (r.x1 - 1) / kTileSize; ++tx) {
+      const int index = p.canvas.tile_index(tx, ty);
+      p.history.before_tile_change(index, p.canvas.tile(index));
+      Tile& tile = p.canvas.ensure_tile(index, slot_count());
+      if (tile.varnish.empty())
+        tile.varnish.assign(static_cast<std::size_t>(kVarnishPlanes) * kTileCells, 0.0f);
+      float* thickness = tile.varnish.data();
+      float* wet = thickness + kTileCells;
+      float* log_rms = wet + kTileCells;
+      const CellRect cells{std::max(r.x0 - tx * kTileSize, 0), std::max(r.y0 - ty * kTileSize, 0),
+                           std::min(r.x1 - tx * kTileSize, kTileSize),
+                           std::min(r.y1 - ty * kTileSize, kTileSize)};
+      for (int y = cells.y0; y < cells.y1; ++y) {
+        for (int x = cells.x0; x < cells.x1; ++x) {
+          const int c = y * kTileSize + x;
+          thickness[c] += coat;
+          wet[c] += coat;
+          log_rms[c] = rough;
+        }
+      }
+      p.canvas.mark_dirty(index, {tx * kTileSize + cells.x0, ty * kTileSize + cells.y0,
+                                  tx * kTileSize + cells.x1, ty * kTileSize + cells.y1});
+    }
+  }
+  p.history.commit();
+}
+
+}  // namespace impasto::paintcore
