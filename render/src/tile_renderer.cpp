@@ -21,6 +21,7 @@
 #include "impasto/render/relief_shading.hpp"
 #include "impasto/render/render_painting.hpp"
 #include "impasto/render/shading.hpp"
+#include "impasto/render/shading_key.hpp"
 #include "impasto/render/surface_shading.hpp"
 #include "impasto/util/fnv1a.hpp"
 #include "spectral_kernels.hpp"
@@ -299,31 +300,16 @@ bool TileRenderer::store_heights(const paintcore::Canvas& canvas, int tile_index
 }
 
 std::vector<double> TileRenderer::shading_key() const {
-  const auto& s = settings_;
+  // The settings' part (shading_key.hpp, shared with the window's cached view), then what
+  // the relief's marches were derived for: the cell size and the height range.
+  std::vector<double> key = shading_settings_key(settings_);
   const auto& r = relief_;
-  return {s.light_azimuth_deg,
-          s.light_elevation_deg,
-          s.ambient,
-          s.dry_material.specular,
-          s.dry_material.shininess,
-          s.wet_material.specular,
-          s.wet_material.shininess,
-          s.wet_gloss_mm,
-          static_cast<double>(r.shadows),
-          static_cast<double>(r.occlusion),
-          r.step_x,
-          r.step_y,
-          r.step_mm,
-          static_cast<double>(r.shadow_steps),
-          r.elevation,
-          r.angular_radius,
-          r.tan_low,
-          r.tan_high,
-          static_cast<double>(r.occlusion_steps_axis),
-          static_cast<double>(r.occlusion_steps_diagonal),
-          r.cell_mm,
-          max_height_,
-          cell_mm_};
+  key.insert(key.end(), {r.step_x, r.step_y, r.step_mm, static_cast<double>(r.shadow_steps),
+                         r.elevation, r.angular_radius, r.tan_low, r.tan_high,
+                         static_cast<double>(r.occlusion_steps_axis),
+                         static_cast<double>(r.occlusion_steps_diagonal), r.cell_mm, max_height_,
+                         cell_mm_});
+  return key;
 }
 
 void TileRenderer::update_height_range(bool reset) {
@@ -634,7 +620,8 @@ void TileRenderer::shade_region(const paintcore::Canvas& canvas, int tile_index,
           shade::blinn_phong(normal, to_light, ambient, material, visibility);
       float* out = &cache.rgb[3 * cell];
       if (surface_) {  // the ghs surface model (surface_shading.hpp) in place of Blinn-Phong
-        surface_->shade(normal, to_light, visibility, wet_volume * inverse_gloss, reflectance, out);
+        surface_->shade(normal, to_light, visibility, wet_volume * inverse_gloss,
+                        paintcore::cell_surface(tile, c), reflectance, out);
       } else {
         for (int ch = 0; ch < 3; ++ch) {
           out[ch] =

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "impasto/render/shading_key.hpp"
+
 namespace impasto::render_gl {
 
 using paintcore::kTileSize;
@@ -49,37 +51,20 @@ void ShadedViewCache::invalidate_cells(std::span<const paintcore::DirtyTile> cha
     if (!d.cells.empty()) dirty_cells_.push_back(d.cells);
 }
 
-std::array<double, 27> ShadedViewCache::look_of(const CanvasRenderer& renderer,
-                                                const CanvasView& view) const {
+std::vector<double> ShadedViewCache::look_of(const CanvasRenderer& renderer,
+                                             const CanvasView& view) const {
   const render::RenderSettings& s = renderer.settings();
   const GpuViewOptions& o = renderer.view_options();
-  return {s.light_azimuth_deg,
-          s.light_elevation_deg,
-          s.ambient,
-          s.dry_material.specular,
-          s.dry_material.shininess,
-          s.wet_material.specular,
-          s.wet_material.shininess,
-          s.wet_gloss_mm,
-          s.saunderson ? 1.0 : 0.0,
-          s.saunderson_k1,
-          s.saunderson_k2,
-          o.light_intensity,
-          o.background_rgb[0],
-          o.background_rgb[1],
-          o.background_rgb[2],
-          view.pixels_per_cell,
-          view.rotation_rad,
-          renderer.cell_mm(),
-          s.cracks ? 1.0 : 0.0,
-          static_cast<double>(s.crack_model),
-          o.crack_close_up_min_pixels,
-          s.shadows ? 1.0 : 0.0,
-          s.occlusion ? 1.0 : 0.0,
-          s.shadow_light_diameter_deg,
-          s.shadow_reach_mm,
-          s.occlusion_radius_mm,
-          o.smooth_zoom ? 1.0 : 0.0};
+  // The shading (render/shading_key.hpp, as the CPU renderer's relight), then the rest of
+  // what the shader reads as uniforms (CanvasRenderer::set_shading) and the view.
+  std::vector<double> look = render::shading_settings_key(s);
+  look.insert(
+      look.end(),
+      {s.saunderson ? 1.0 : 0.0, s.saunderson_k1, s.saunderson_k2, s.cracks ? 1.0 : 0.0,
+       static_cast<double>(s.crack_model), o.light_intensity, o.background_rgb[0],
+       o.background_rgb[1], o.background_rgb[2], o.crack_close_up_min_pixels,
+       o.smooth_zoom ? 1.0 : 0.0, view.pixels_per_cell, view.rotation_rad, renderer.cell_mm()});
+  return look;
 }
 
 std::vector<PixelRect> ShadedViewCache::shift_image(int dx, int dy) {

@@ -78,7 +78,7 @@ class ShadedViewCache {
 
  private:
   // Everything a pixel's colour depends on beside the canvas data and the view's centre.
-  std::array<double, 27> look_of(const CanvasRenderer& renderer, const CanvasView& view) const;
+  std::vector<double> look_of(const CanvasRenderer& renderer, const CanvasView& view) const;
   // Moves the cached image by (dx, dy) GL pixels; returns the strips left to shade.
   std::vector<PixelRect> shift_image(int dx, int dy);
   // Shades the whole viewport at 1/kCoarseFactor resolution into image_.
@@ -90,7 +90,7 @@ class ShadedViewCache {
   std::unique_ptr<Framebuffer> coarse_image_;
   bool coarse_ = false;  // image_ holds a coarse shading, to refine
   const CanvasRenderer* renderer_ = nullptr;
-  std::array<double, 27> look_{};
+  std::vector<double> look_;
   CanvasView view_;
   bool all_invalid_ = true;
   std::vector<int> dirty_tiles_;
