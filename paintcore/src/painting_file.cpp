@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <future>
 #include <limits>
 #include <map>
 #include <stdexcept>
@@ -17,6 +18,8 @@
 #include "impasto/files/atomic_file.hpp"
 #include "impasto/files/input_file.hpp"
 #include "impasto/files/memory_budget.hpp"
+#include "painting_file.hpp"
+#include "painting_file_tiles.hpp"
 #include "painting_history_file.hpp"
 #include "painting_impl.hpp"
 #include "painting_surface_file.hpp"
@@ -26,41 +29,37 @@ using namespace file_io;  // NOLINT: the file's own building blocks
 
 namespace {
 
-// Checks the history section after the payload's checksum: its size field, then its own
-// checksum. Returns why it is unusable, or "" (and its size).
-std::string check_history(files::InputFile& in, std::uint64_t section_bytes, std::uint64_t& size) {
+// The history section after the payload's checksum: its size field, its steps (checked
+// against the painting) and its own checksum, hashed as the steps are read. Returns why it
+// was dropped, or "" (then the painting holds it).
+std::string read_history_section(files::InputFile& in, std::uint64_t section_bytes,
+                                 std::uint64_t offset, const std::string& name,
+                                 const Canvas& canvas, UndoHistory& history) {
   if (section_bytes < 16) return "the section is truncated";
+  std::uint64_t size = 0;
   in.read_exact(&size, 8);
   if (size != section_bytes - 16)
     return "field 'history_size' says " + std::to_string(size) + " bytes but " +
            std::to_string(section_bytes - 16) + " follow";
   StreamHasher checksum;
-  std::vector<unsigned char> chunk(
-      std::min<std::uint64_t>(std::max<std::uint64_t>(size, 1), 1 << 20));
-  for (std::uint64_t left = size; left > 0;) {
-    const auto n = static_cast<std::size_t>(std::min<std::uint64_t>(left, chunk.size()));
-    in.read_exact(chunk.data(), n);
-    checksum.bytes(chunk.data(), n);
-    left -= n;
+  Reader h(in, size, offset + 8, name);
+  h.hash_into(&checksum);
+  std::string problem;
+  try {
+    read_history(canvas, history, h, name);
+  } catch (const std::runtime_error& e) {
+    problem = e.what();
+    h.skip_rest();  // the checksum says whether this is damage
+  } catch (const std::bad_alloc&) {
+    return "not enough memory for it";
   }
   std::uint64_t stored;
   in.read_exact(&stored, 8);
   if (stored != checksum.digest()) return "field 'history_checksum' does not match (it is corrupt)";
-  return "";
+  return problem;
 }
 
 }  // namespace
-
-struct PaintingFile {
-  using Records = std::map<std::string, std::string>;
-  template <typename W>
-  static void write_payload(const Painting::Impl& p, const Records& records, W& w);
-  // The painting's records, and the record source's for slots that have none.
-  static Records records_to_save(const Painting::Impl& p);
-  static void save(const Painting::Impl& p, const std::filesystem::path& file);
-  static std::unique_ptr<Painting::Impl> load(const std::filesystem::path& file, int threads,
-                                              bool with_history);
-};
 
 PaintingFile::Records PaintingFile::records_to_save(const Painting::Impl& p) {
   Records records = p.pigment_records;
@@ -137,39 +136,52 @@ void PaintingFile::write_payload(const Painting::Impl& p, const Records& records
   write_surfaces(w, p.canvas, p.brush);
 }
 
+namespace {
+
+// Writes a section whose bytes `write(writer)` produces: counted first (the size goes before
+// them), then written to the file while another thread hashes the same bytes from memory,
+// then the hash. Returns nothing; throws what writing throws, after the hash thread ends.
+template <typename Write>
+void put_section(files::AtomicFile& out, const Write& write, const char* what) {
+  CountingSink counter;
+  ByteSinkOf<CountingSink> counting(counter);
+  Writer<ByteSink> count(counting);
+  write(count);
+  Writer<files::AtomicFile>(out).put(counter.bytes());
+  auto digest = std::async(std::launch::async, [&write] {
+    HashingSink hasher;
+    ByteSinkOf<HashingSink> hashing(hasher);
+    Writer<ByteSink> w(hashing);
+    write(w);
+    return std::pair{hasher.bytes(), hasher.digest()};
+  });
+  FileSink file(out);
+  ByteSinkOf<FileSink> filing(file);
+  Writer<ByteSink> w(filing);
+  write(w);
+  const auto [hashed, checksum] = digest.get();
+  if (file.bytes() != counter.bytes() || hashed != counter.bytes())
+    throw std::logic_error(std::string("painting save: the ") + what +
+                           " changed size between passes");
+  Writer<files::AtomicFile>(out).put(checksum);
+}
+
+}  // namespace
+
 void PaintingFile::save(const Painting::Impl& p, const std::filesystem::path& file) {
   const Records records = records_to_save(p);
-  CountingSink counter;
-  Writer<CountingSink> count(counter);
-  write_payload(p, records, count);
   files::AtomicFile out(file);
   Writer<files::AtomicFile> header(out);
   for (char c : kMagic) header.put(c);
   header.put(kVersion);
-  header.put(counter.bytes());
-  HashingFileSink sink(out);
-  Writer<HashingFileSink> payload(sink);
-  write_payload(p, records, payload);
-  if (sink.bytes() != counter.bytes())
-    throw std::logic_error("painting save: the payload changed size between passes");
-  header.put(sink.digest());
+  put_section(
+      out, [&](Writer<ByteSink>& w) { write_payload(p, records, w); }, "payload");
   // The undo history, after the painting's checksum with one of its own: a damaged history
   // costs only itself (load drops it and says so).
   const SavedSteps steps = steps_to_save(p.history, p.saved_history_bytes);
-  if (!steps.empty()) {
-    CountingSink history_counter;
-    ByteSinkOf<CountingSink> counting(history_counter);
-    Writer<ByteSink> count_history(counting);
-    write_history(p.history, steps, count_history);
-    header.put(history_counter.bytes());
-    HashingFileSink history_sink(out);
-    ByteSinkOf<HashingFileSink> hashing(history_sink);
-    Writer<ByteSink> history(hashing);
-    write_history(p.history, steps, history);
-    if (history_sink.bytes() != history_counter.bytes())
-      throw std::logic_error("painting save: the history changed size between passes");
-    header.put(history_sink.digest());
-  }
+  if (!steps.empty())
+    put_section(
+        out, [&](Writer<ByteSink>& w) { write_history(p.history, steps, w); }, "history");
   out.commit();
 }
 
@@ -194,29 +206,42 @@ std::unique_ptr<Painting::Impl> PaintingFile::load(const std::filesystem::path& 
                                     " in all (truncated or padded file)");
   const std::uint64_t history_bytes =
       with_history ? in.size() - kHeaderBytes - 8 - payload_size : 0;
-  std::uint64_t history_size = 0;
-  std::string history_problem;  // why the history cannot be read (the painting still loads)
-  // First pass: the checksum, in chunks; nothing is built from a corrupt file.
-  {
-    StreamHasher checksum;
-    std::vector<unsigned char> chunk(std::min<std::uint64_t>(payload_size, 1 << 20));
-    for (std::uint64_t left = payload_size; left > 0;) {
-      const auto n = static_cast<std::size_t>(std::min<std::uint64_t>(left, chunk.size()));
-      in.read_exact(chunk.data(), n);
-      checksum.bytes(chunk.data(), n);
-      left -= n;
-    }
+  // One pass: the payload is hashed as it is read, and the stored checksum decides before
+  // anything is returned. A field that fails in a damaged file is reported as the damage.
+  StreamHasher checksum;
+  Reader r(in, payload_size, kHeaderBytes, name);
+  r.hash_into(&checksum);
+  const auto check_checksum = [&] {
     std::uint64_t stored;
     in.read_exact(&stored, 8);
     if (stored != checksum.digest())
       header.fail("checksum", "does not match the contents (the file is corrupt)");
-    if (history_bytes > 0) history_problem = check_history(in, history_bytes, history_size);
+  };
+  std::unique_ptr<Painting::Impl> p;
+  try {
+    p = read_payload(r, version, name, threads);
+  } catch (const std::runtime_error&) {
+    r.skip_rest();
+    check_checksum();
+    throw;
   }
-  in.rewind();
-  std::array<unsigned char, kHeaderBytes> skipped;
-  in.read_exact(skipped.data(), skipped.size());
+  check_checksum();
+  if (history_bytes > 0) {
+    std::string problem = read_history_section(in, history_bytes, kHeaderBytes + payload_size + 8,
+                                               name, p->canvas, p->history);
+    if (!problem.empty()) {
+      p->history = UndoHistory{};
+      p->load_warning =
+          name + ": the undo history was dropped (" + problem + "); the painting itself loaded";
+    }
+  }
+  for (int index = 0; index < p->canvas.tile_count(); ++index)
+    if (p->canvas.tile(index) || p->canvas.cracks().tile(index)) p->canvas.mark_dirty(index);
+  return p;
+}
 
-  Reader r(in, payload_size, kHeaderBytes, name);
+std::unique_ptr<Painting::Impl> PaintingFile::read_payload(Reader& r, std::uint32_t version,
+                                                           const std::string& name, int threads) {
   CanvasSpec spec;
   spec.width_cells = r.get<std::int32_t>("canvas.width_cells");
   spec.height_cells = r.get<std::int32_t>("canvas.height_cells");
@@ -255,21 +280,7 @@ std::unique_ptr<Painting::Impl> PaintingFile::load(const std::filesystem::path& 
   const int tile_count = p->canvas.tile_count();
   const auto tiles = r.get_count("tiles.count", static_cast<std::uint32_t>(tile_count),
                                  kMinWetTileBytes + slots * kTileCells * sizeof(float));
-  int previous = -1;
-  for (std::uint32_t k = 0; k < tiles; ++k) {
-    const std::string field = "tiles[" + std::to_string(k) + "]";
-    const auto index =
-        static_cast<int>(r.get_count(field + ".index", static_cast<std::uint32_t>(tile_count - 1)));
-    if (index <= previous) r.fail(field + ".index", "tiles are not in ascending order");
-    previous = index;
-    Tile& tile = p->canvas.ensure_tile(index, slots);
-    r.get_amounts(tile.dry_height_mm.data(), kTileCells, field + ".dry_height");
-    r.get_amounts(tile.wet_volume_mm.data(), kTileCells, field + ".wet_volume");
-    if (slots > 0) {
-      r.get_amounts(tile.pigment_mm.data(), tile.pigment_mm.size(), field + ".pigment");
-      repair_pigment(tile.wet_volume_mm.data(), tile.pigment_mm.data(), slots, kTileCells);
-    }
-  }
+  read_wet_tiles(r, p->canvas, slots, tiles, p->arena);
   const auto layers = r.get_count("dry_layers.count", 1u << 24, 4);
   for (std::uint32_t l = 0; l < layers; ++l)
     p->canvas.dry_layers().push_back(
@@ -324,25 +335,6 @@ std::unique_ptr<Painting::Impl> PaintingFile::load(const std::filesystem::path& 
   }
   if (version >= kSurfaceVersion) read_surfaces(r, p->canvas, p->brush);
   if (!r.at_end()) r.fail("end", "unexpected bytes after the last field");
-  if (history_bytes > 0 && history_problem.empty()) {
-    std::array<unsigned char, 16> checksum_and_size;
-    in.read_exact(checksum_and_size.data(), checksum_and_size.size());
-    Reader h(in, history_size, kHeaderBytes + payload_size + 16, name);
-    try {
-      read_history(p->canvas, p->history, h, name);
-    } catch (const std::runtime_error& e) {
-      history_problem = e.what();
-    } catch (const std::bad_alloc&) {
-      history_problem = "not enough memory for it";
-    }
-  }
-  if (!history_problem.empty()) {
-    p->history = UndoHistory{};
-    p->load_warning = name + ": the undo history was dropped (" + history_problem +
-                      "); the painting itself loaded";
-  }
-  for (int index = 0; index < tile_count; ++index)
-    if (p->canvas.tile(index) || p->canvas.cracks().tile(index)) p->canvas.mark_dirty(index);
   return p;
 }
 

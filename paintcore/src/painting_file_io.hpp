@@ -56,20 +56,33 @@ class CountingSink {
   std::uint64_t bytes_ = 0;
 };
 
-class HashingFileSink {
+// The two passes that follow the count, run at once (painting_file.cpp): one hashes the
+// bytes, the other writes them to the file.
+class HashingSink {
  public:
-  explicit HashingFileSink(files::AtomicFile& file) : file_(file) {}
   void write(const void* data, std::size_t size) {
     hasher_.bytes(data, size);
-    file_.write(data, size);
     bytes_ += size;
   }
   std::uint64_t bytes() const { return bytes_; }
   std::uint64_t digest() const { return hasher_.digest(); }
 
  private:
-  files::AtomicFile& file_;
   StreamHasher hasher_;
+  std::uint64_t bytes_ = 0;
+};
+
+class FileSink {
+ public:
+  explicit FileSink(files::AtomicFile& file) : file_(file) {}
+  void write(const void* data, std::size_t size) {
+    file_.write(data, size);
+    bytes_ += size;
+  }
+  std::uint64_t bytes() const { return bytes_; }
+
+ private:
+  files::AtomicFile& file_;
   std::uint64_t bytes_ = 0;
 };
 
@@ -127,13 +140,32 @@ class Reader {
   void get_amounts(float* out, std::size_t count, const std::string& field) {
     need(count * sizeof(float), field);
     read(out, count * sizeof(float));
+    if (std::string why = amounts_problem(out, count); !why.empty()) fail(field, why);
+  }
+  // Why amounts read elsewhere (tiles decoded in parallel) are not amounts, or "".
+  static std::string amounts_problem(const float* values, std::size_t count) {
     for (std::size_t i = 0; i < count; ++i)
-      if (!std::isfinite(out[i]) || out[i] < 0.0f || out[i] > kMaxAmountMm) {
+      if (!std::isfinite(values[i]) || values[i] < 0.0f || values[i] > kMaxAmountMm) {
         char why[96];
         std::snprintf(why, sizeof why, " (%g) is negative, not finite or above %g mm",
-                      static_cast<double>(out[i]), static_cast<double>(kMaxAmountMm));
-        fail(field, "value " + std::to_string(i) + why);
+                      static_cast<double>(values[i]), static_cast<double>(kMaxAmountMm));
+        return "value " + std::to_string(i) + why;
       }
+    return "";
+  }
+  // Raw bytes (a batch of tiles, decoded elsewhere).
+  void get_bytes(void* out, std::size_t bytes, const std::string& field) {
+    need(bytes, field);
+    read(out, bytes);
+  }
+  // Every byte read from now on is hashed too, so the checksum is checked in the same pass.
+  void hash_into(StreamHasher* hasher) { hasher_ = hasher; }
+  // Reads (and hashes) what is left: after a field failed, the checksum says whether the
+  // file is corrupt rather than crafted.
+  void skip_rest() {
+    unsigned char chunk[64 << 10];
+    while (left() > 0)
+      read(chunk, static_cast<std::size_t>(std::min<std::uint64_t>(left(), sizeof chunk)));
   }
   std::string get_string(const std::string& field, std::uint32_t max_bytes = kMaxStringBytes) {
     const auto size = get<std::uint32_t>(field + " length");
@@ -168,9 +200,11 @@ class Reader {
   }
   void read(void* out, std::size_t bytes) {
     in_.read_exact(out, bytes);
+    if (hasher_ != nullptr) hasher_->bytes(out, bytes);
     pos_ += bytes;
   }
   files::InputFile& in_;
+  StreamHasher* hasher_ = nullptr;
   std::uint64_t size_;
   std::uint64_t offset_;
   std::uint64_t pos_ = 0;

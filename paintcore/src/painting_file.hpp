@@ -1,0 +1,36 @@
+#pragma once
+// The painting file's reader and writer (painting_file.cpp), a friend of Painting: it builds
+// a Painting from its state, as the synthetic painting of the benchmark does too.
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+
+#include "painting_impl.hpp"
+
+namespace impasto::paintcore {
+
+namespace file_io {
+class Reader;
+}
+
+struct PaintingFile {
+  using Records = std::map<std::string, std::string>;
+  template <typename W>
+  static void write_payload(const Painting::Impl& p, const Records& records, W& w);
+  // The painting's records, and the record source's for slots that have none.
+  static Records records_to_save(const Painting::Impl& p);
+  static void save(const Painting::Impl& p, const std::filesystem::path& file);
+  static std::unique_ptr<Painting::Impl> load(const std::filesystem::path& file, int threads,
+                                              bool with_history);
+  // The payload's fields, from the canvas spec to the last (the checksum is the caller's).
+  static std::unique_ptr<Painting::Impl> read_payload(file_io::Reader& r, std::uint32_t version,
+                                                      const std::string& name, int threads);
+  // An empty painting's state, and a Painting around a state (the synthetic painting's).
+  static std::unique_ptr<Painting::Impl> make_impl(const CanvasSpec& spec, int threads) {
+    return std::make_unique<Painting::Impl>(spec, threads);
+  }
+  static Painting adopt(std::unique_ptr<Painting::Impl> impl) { return Painting(std::move(impl)); }
+};
+
+}  // namespace impasto::paintcore
