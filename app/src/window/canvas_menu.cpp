@@ -12,13 +12,6 @@ constexpr std::array<const char*, 9> kAnchorLabels = {"##tl", "##t",  "##tr", "#
                                                       "##r",  "##bl", "##b",  "##br"};
 constexpr std::array<int, 3> kScales = {1, 2, 4};
 
-bool begin_dialog(const char* title, bool& open) {
-  ImGui::SetNextWindowSize(ImVec2(460, 0), ImGuiCond_Appearing);
-  ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing,
-                          ImVec2(0.5f, 0.5f));
-  return ImGui::Begin(title, &open, ImGuiWindowFlags_NoCollapse);
-}
-
 }  // namespace
 
 CanvasMenuRequest CanvasMenu::draw(int canvas_width, int canvas_height,
@@ -58,10 +51,26 @@ CanvasMenuRequest CanvasMenu::draw(int canvas_width, int canvas_height,
   return {};
 }
 
+bool CanvasMenu::dialog(const char* title, const char* action, const std::function<bool()>& body) {
+  bool open = true, chosen = false;
+  ImGui::SetNextWindowSize(ImVec2(460, 0), ImGuiCond_Appearing);
+  ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing,
+                          ImVec2(0.5f, 0.5f));
+  if (ImGui::Begin(title, &open, ImGuiWindowFlags_NoCollapse)) {
+    ImGui::BeginDisabled(!body());
+    if (ImGui::Button(action)) chosen = true;
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) open = false;
+  }
+  ImGui::End();
+  if (chosen || !open) open_ = Dialog::kNone;
+  return chosen;
+}
+
 CanvasMenuRequest CanvasMenu::draw_resize() {
   CanvasMenuRequest request;
-  bool open = true;
-  if (begin_dialog("Resize canvas", open)) {
+  const bool resize = dialog("Resize canvas", "Resize", [&] {
     ImGui::Text("Now %d x %d cells", canvas_w_, canvas_h_);
     ImGui::InputInt("width (cells)", &width_);
     ImGui::InputInt("height (cells)", &height_);
@@ -74,23 +83,17 @@ CanvasMenuRequest CanvasMenu::draw_resize() {
     }
     if (width_ < canvas_w_ || height_ < canvas_h_)
       ImGui::TextWrapped("Smaller: the paint outside is cut away (Edit > Undo brings it back).");
-    if (ImGui::Button("Resize")) {
-      request.frame = paintcore::anchored_frame(canvas_w_, canvas_h_, width_, height_,
-                                                static_cast<paintcore::CanvasAnchor>(anchor_));
-      open = false;
-    }
-    ImGui::SameLine();
-    if (ImGui::Button("Cancel")) open = false;
-  }
-  ImGui::End();
-  if (!open) open_ = Dialog::kNone;
+    return true;
+  });
+  if (resize)
+    request.frame = paintcore::anchored_frame(canvas_w_, canvas_h_, width_, height_,
+                                              static_cast<paintcore::CanvasAnchor>(anchor_));
   return request;
 }
 
 CanvasMenuRequest CanvasMenu::draw_crop() {
   CanvasMenuRequest request;
-  bool open = true;
-  if (begin_dialog("Crop", open)) {
+  const bool crop = dialog("Crop", "Crop", [&] {
     ImGui::Text("Keep a rectangle of the %d x %d cells", canvas_w_, canvas_h_);
     ImGui::InputInt("left (cells)", &crop_[0]);
     ImGui::InputInt("top (cells)", &crop_[1]);
@@ -101,32 +104,27 @@ CanvasMenuRequest CanvasMenu::draw_crop() {
     crop_[2] = std::clamp(crop_[2], 1, canvas_w_ - crop_[0]);
     crop_[3] = std::clamp(crop_[3], 1, canvas_h_ - crop_[1]);
     ImGui::TextWrapped("The paint outside is cut away (Edit > Undo brings it back).");
-    if (ImGui::Button("Crop")) {
-      request.frame = paintcore::crop_frame(crop_[0], crop_[1], crop_[2], crop_[3]);
-      open = false;
-    }
-    ImGui::SameLine();
-    if (ImGui::Button("Cancel")) open = false;
-  }
-  ImGui::End();
-  if (!open) open_ = Dialog::kNone;
+    return true;
+  });
+  if (crop) request.frame = paintcore::crop_frame(crop_[0], crop_[1], crop_[2], crop_[3]);
   return request;
 }
 
 CanvasMenuRequest CanvasMenu::draw_export() {
   CanvasMenuRequest request;
-  bool open = true;
-  if (begin_dialog("Export at scale and maps", open)) {
+  int scale = 1;
+  std::string stem, suffix;
+  const bool export_now = dialog("Export at scale and maps", "Export", [&] {
     ImGui::Combo("scale", &scale_index_,
                  "1x\0"
                  "2x\0"
                  "4x\0");
-    const int scale = kScales[static_cast<std::size_t>(std::clamp(scale_index_, 0, 2))];
+    scale = kScales[static_cast<std::size_t>(std::clamp(scale_index_, 0, 2))];
     ImGui::Text("%d x %d pixels, relief interpolated smoothly", canvas_w_ * scale,
                 canvas_h_ * scale);
     ImGui::InputText("files (stem)", stem_.data(), stem_.size());
-    const std::string stem = stem_.data();
-    const std::string suffix = scale > 1 ? "@" + std::to_string(scale) + "x" : "";
+    stem = stem_.data();
+    suffix = scale > 1 ? "@" + std::to_string(scale) + "x" : "";
     ImGui::Checkbox(("image: " + stem + suffix + ".png").c_str(), &image_);
     ImGui::TextUnformatted("height map (mm):");
     ImGui::SameLine();
@@ -138,23 +136,17 @@ CanvasMenuRequest CanvasMenu::draw_export() {
     ImGui::Checkbox(("normal map, OpenGL +Y up: " + stem + suffix + ".normal.png").c_str(),
                     &normal_);
     const bool any = image_ || height_format_ != 0 || normal_;
-    ImGui::BeginDisabled(!any || stem.empty());
-    if (ImGui::Button("Export")) {
-      ExportRequest e;
-      e.scale = scale;
-      if (image_) e.image = stem + suffix + ".png";
-      if (height_format_ != 0)
-        e.height_map = stem + suffix + (height_format_ == 1 ? ".height.png" : ".height.exr");
-      if (normal_) e.normal_map = stem + suffix + ".normal.png";
-      request.exports = e;
-      open = false;
-    }
-    ImGui::EndDisabled();
-    ImGui::SameLine();
-    if (ImGui::Button("Cancel")) open = false;
+    return any && !stem.empty();
+  });
+  if (export_now) {
+    ExportRequest e;
+    e.scale = scale;
+    if (image_) e.image = stem + suffix + ".png";
+    if (height_format_ != 0)
+      e.height_map = stem + suffix + (height_format_ == 1 ? ".height.png" : ".height.exr");
+    if (normal_) e.normal_map = stem + suffix + ".normal.png";
+    request.exports = e;
   }
-  ImGui::End();
-  if (!open) open_ = Dialog::kNone;
   return request;
 }
 

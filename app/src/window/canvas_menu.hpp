@@ -4,6 +4,7 @@
 // painting, paint_window.cpp) and runs the export (canvas_edit.hpp).
 #include <array>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -29,6 +30,10 @@ class CanvasMenu {
   CanvasMenuRequest draw_resize();
   CanvasMenuRequest draw_crop();
   CanvasMenuRequest draw_export();
+  // The open dialog `title`: `body` draws its fields and says whether `action` may be taken
+  // now; then the `action` and Cancel buttons. True in the frame `action` is pressed; the
+  // dialog closes then, on Cancel and by its close box.
+  bool dialog(const char* title, const char* action, const std::function<bool()>& body);
 
   Dialog open_ = Dialog::kNone;
   int canvas_w_ = 0, canvas_h_ = 0;
