@@ -8,7 +8,7 @@
 
 namespace impasto::paintcore {
 
-FinishRoughness finish_roughness(Finish finish) {
+FinishRoughness film_roughness(Finish finish) {
   switch (finish) {
     case Finish::gloss:
       return {0.01, 4.0};
@@ -21,26 +21,26 @@ FinishRoughness finish_roughness(Finish finish) {
 }
 
 double finish_log_rms(Finish finish) {
-  return std::log10(finish_roughness(finish).rms_um);
+  return std::log10(film_roughness(finish).rms_um);
 }
 
 FinishRoughness roughness_at_log_rms(double log_rms) {
   // The finishes ordered by roughness: gloss < satin < matte.
   constexpr std::array<Finish, kFinishCount> kOrder{Finish::gloss, Finish::satin, Finish::matte};
   const double rms = std::pow(10.0, log_rms);
-  const FinishRoughness first = finish_roughness(kOrder.front());
+  const FinishRoughness first = film_roughness(kOrder.front());
   if (log_rms <= finish_log_rms(kOrder.front())) return {rms, first.correlation_um};
   for (std::size_t k = 1; k < kOrder.size(); ++k) {
     const double lo = finish_log_rms(kOrder[k - 1]);
     const double hi = finish_log_rms(kOrder[k]);
     if (log_rms <= hi) {
       const double t = (log_rms - lo) / (hi - lo);
-      const double a = finish_roughness(kOrder[k - 1]).correlation_um;
-      const double b = finish_roughness(kOrder[k]).correlation_um;
+      const double a = film_roughness(kOrder[k - 1]).correlation_um;
+      const double b = film_roughness(kOrder[k]).correlation_um;
       return {rms, a * std::pow(b / a, t)};
     }
   }
-  return {rms, finish_roughness(kOrder.back()).correlation_um};
+  return {rms, film_roughness(kOrder.back()).correlation_um};
 }
 
 void validate(const Medium& medium) {

@@ -35,7 +35,10 @@ void lay_stroke_medium(Canvas& canvas, const UndoHistory& history, const PaintMe
       const float had = before != nullptr ? before->wet_volume_mm[c] : 0.0f;
       const double gained = static_cast<double>(tile->wet_volume_mm[c]) - had;
       if (!(gained > 0.0)) continue;  // paint taken or moved away leaves the surface's finish
-      const PaintMedium mixed = mix({share[c], log_rms[c]}, had + kSurfaceFilmMm, brush, gained);
+      // The surface there: the wet paint, over at most a film's depth of dry paint (none on
+      // the bare ground, where the first paint makes the surface).
+      const double under = had + std::min<double>(kSurfaceFilmMm, tile->dry_height_mm[c]);
+      const PaintMedium mixed = mix({share[c], log_rms[c]}, under, brush, gained);
       share[c] = mixed.share;
       log_rms[c] = mixed.log_rms;
     }

@@ -153,15 +153,13 @@ double GhsBrdf::eval(const std::array<double, 3>& l, const std::array<double, 3>
 }
 
 Roughness finish_roughness(Finish finish) {
-  switch (finish) {
-    case Finish::gloss:
-      return {0.01, 4.0};
-    case Finish::satin:
-      return {0.08, 4.0};
-    case Finish::matte:
-      return {1.5, 5.0};
-  }
-  return {};
+  const paintcore::FinishRoughness r = paintcore::film_roughness(finish);
+  return {r.rms_um, r.correlation_um};
+}
+
+Roughness roughness_at_log_rms(double log_rms) {
+  const paintcore::FinishRoughness r = paintcore::roughness_at_log_rms(log_rms);
+  return {r.rms_um, r.correlation_um};
 }
 
 }  // namespace impasto::render::surface

@@ -1,6 +1,7 @@
 #include "impasto/render/surface_shading.hpp"
 
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <cmath>
@@ -68,6 +69,13 @@ SurfaceShading::SurfaceShading(const RenderSettings& settings, const SpectralPal
   const SurfaceSettings& s = settings.surface;
   const int nodes = palette.nodes();
   const auto count = static_cast<std::size_t>(nodes);
+  wavelengths_.assign(palette.sampling().wavelengths_nm.begin(),
+                      palette.sampling().wavelengths_nm.begin() + nodes);
+  subcell_slope_rms_ = s.subcell_slope_rms;
+  binder_index_ = s.binder_index;
+  varnish_index_ = s.varnish_index;
+  settings_varnish_ = s.varnish.has_value();
+  default_log_rms_ = std::log10(paint_roughness(s).rms_um);
   dry_.resize(count);
   wet_.resize(count);
   reference_.resize(count);
@@ -79,6 +87,7 @@ SurfaceShading::SurfaceShading(const RenderSettings& settings, const SpectralPal
   // The light's disc (the shadows' diameter, so a highlight is as soft as a penumbra) as a
   // Gaussian in direction cosines: a disc of radius a has a/2 per axis.
   const double source_sigma = 0.25 * settings.shadow_light_diameter_deg * kDegreesToRadians;
+  source_sigma_ = source_sigma;
   const double flat_mu = std::max(std::sin(settings.light_elevation_deg * kDegreesToRadians),
                                   0.05);  // as Blinn-Phong's
   tbb::parallel_for(0, nodes, [&](int i) {
@@ -102,8 +111,61 @@ SurfaceShading::SurfaceShading(const RenderSettings& settings, const SpectralPal
   });
 }
 
+int SurfaceShading::level_of(double log_rms) {
+  const double k = std::round((log_rms - paintcore::kMinLogRms) / kLevelStep);
+  return static_cast<int>(std::clamp(k, 0.0, static_cast<double>(kLevels - 1)));  // NaN: 0
+}
+
+double SurfaceShading::level_log_rms(int level) {
+  return paintcore::kMinLogRms + level * kLevelStep;
+}
+
+const SurfaceShading::Brdfs& SurfaceShading::level(bool varnish, double log_rms) const {
+  const int k = level_of(log_rms);
+  const auto slot = static_cast<std::size_t>((varnish ? kLevels : 0) + k);
+  std::call_once(level_made_[slot], [&] {
+    Brdfs made(wavelengths_.size());
+    // Isolated: a worker waiting here must not pick up another cell's call for this level.
+    tbb::this_task_arena::isolate([&] {
+      tbb::parallel_for(std::size_t{0}, made.size(), [&](std::size_t i) {
+        surface::GhsParams p;
+        p.wavelength_nm = wavelengths_[i];
+        p.source_sigma = source_sigma_;
+        p.subcell_slope_rms = subcell_slope_rms_;
+        p.roughness = surface::roughness_at_log_rms(level_log_rms(k));
+        p.index = surface::binder_index(wavelengths_[i], varnish ? varnish_index_ : binder_index_);
+        made[i] = shared_brdf(p);
+      });
+    });
+    levels_[slot] = std::move(made);
+  });
+  return levels_[slot];
+}
+
 void SurfaceShading::shade(shade::Vec3 normal, shade::Vec3 to_light, shade::Visibility visibility,
                            float wetness, const float* reflectance, float xyz[3]) const {
+  shade_on(dry_, normal, to_light, visibility, wetness, reflectance, xyz);
+}
+
+void SurfaceShading::shade(shade::Vec3 normal, shade::Vec3 to_light, shade::Visibility visibility,
+                           float wetness, const paintcore::CellSurface& cell,
+                           const float* reflectance, float xyz[3]) const {
+  if (cell.varnished()) {
+    // A varnish is a liquid when it goes on: glossy (the wet surface) until it dries.
+    const float w = std::max(wetness > 0.0f ? wetness : 0.0f, cell.varnish_wetness());
+    shade_on(level(true, cell.varnish_log_rms), normal, to_light, visibility, w, reflectance, xyz);
+  } else if (cell.medium.share > 0.0f && !settings_varnish_) {
+    const double share = std::min(cell.medium.share, 1.0f);
+    const double log_rms = share * cell.medium.log_rms + (1.0 - share) * default_log_rms_;
+    shade_on(level(false, log_rms), normal, to_light, visibility, wetness, reflectance, xyz);
+  } else {
+    shade_on(dry_, normal, to_light, visibility, wetness, reflectance, xyz);
+  }
+}
+
+void SurfaceShading::shade_on(const Brdfs& dry_brdfs, shade::Vec3 normal, shade::Vec3 to_light,
+                              shade::Visibility visibility, float wetness, const float* reflectance,
+                              float xyz[3]) const {
   const float w = wetness > 0.0f ? std::min(wetness, 1.0f) : 0.0f;  // NaN: dry
   const float mu_i = shade::dot(normal, to_light);
   const float mu_v = normal.z;  // the viewer straight above
@@ -125,7 +187,7 @@ void SurfaceShading::shade(shade::Vec3 normal, shade::Vec3 to_light, shade::Visi
   float* value = values.data();
   for (int i = 0; i < nodes; ++i) {
     const auto k = static_cast<std::size_t>(i);
-    const surface::GhsBrdf& dry = *dry_[k];
+    const surface::GhsBrdf& dry = *dry_brdfs[k];
     const surface::GhsBrdf& wet = *wet_[k];
     const auto mix = [w](double a, double b) { return static_cast<float>(a + w * (b - a)); };
     const float albedo_in = mu_i > 0.0f ? mix(dry.albedo(mu_i), wet.albedo(mu_i)) : 0.0f;

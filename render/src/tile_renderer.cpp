@@ -620,7 +620,8 @@ void TileRenderer::shade_region(const paintcore::Canvas& canvas, int tile_index,
           shade::blinn_phong(normal, to_light, ambient, material, visibility);
       float* out = &cache.rgb[3 * cell];
       if (surface_) {  // the ghs surface model (surface_shading.hpp) in place of Blinn-Phong
-        surface_->shade(normal, to_light, visibility, wet_volume * inverse_gloss, reflectance, out);
+        surface_->shade(normal, to_light, visibility, wet_volume * inverse_gloss,
+                        paintcore::cell_surface(tile, c), reflectance, out);
       } else {
         for (int ch = 0; ch < 3; ++ch) {
           out[ch] =

@@ -36,16 +36,16 @@ std::filesystem::path temp_file(const char* name) {
 }
 
 TEST(PaintMedium, AmountRunsFromTubePaintToTheFinishGeometrically) {
-  const double satin = std::log10(finish_roughness(Finish::satin).rms_um);
-  const double matte = std::log10(finish_roughness(Finish::matte).rms_um);
+  const double satin = std::log10(film_roughness(Finish::satin).rms_um);
+  const double matte = std::log10(film_roughness(Finish::matte).rms_um);
   EXPECT_DOUBLE_EQ(medium_log_rms({Finish::matte, 0.0}), satin);
   EXPECT_DOUBLE_EQ(medium_log_rms({Finish::matte, 1.0}), matte);
   EXPECT_NEAR(medium_log_rms({Finish::matte, 0.5}), 0.5 * (satin + matte), 1e-12);
   // The correlation length follows the finishes' curve and meets each finish.
   for (Finish f : {Finish::gloss, Finish::satin, Finish::matte}) {
     const FinishRoughness r = roughness_at_log_rms(finish_log_rms(f));
-    EXPECT_NEAR(r.rms_um, finish_roughness(f).rms_um, 1e-12);
-    EXPECT_NEAR(r.correlation_um, finish_roughness(f).correlation_um, 1e-12);
+    EXPECT_NEAR(r.rms_um, film_roughness(f).rms_um, 1e-12);
+    EXPECT_NEAR(r.correlation_um, film_roughness(f).correlation_um, 1e-12);
   }
   EXPECT_THROW(validate(Medium{Finish::gloss, 1.5}), std::runtime_error);
 }

@@ -25,7 +25,7 @@ struct FinishRoughness {
 };
 // The film of each finish (docs/surface.md: chosen so that 60° specular gloss falls in the
 // ranges paint makers state for each).
-FinishRoughness finish_roughness(Finish finish);
+FinishRoughness film_roughness(Finish finish);
 double finish_log_rms(Finish finish);  // log10 of rms_um
 // A roughness between the finishes, by its log10 RMS: the correlation length follows the
 // gloss–satin–matte curve (geometric between neighbours, held beyond the ends), so one number
@@ -58,8 +58,9 @@ PaintMedium paint_medium(const Medium& medium);  // share 1
 // space (amount-weighted geometric mean of the RMS heights).
 PaintMedium mix(const PaintMedium& a, double a_volume, const PaintMedium& b, double b_volume);
 
-// Paint laid on a cell mixes with the surface already there as if that surface were at least
-// this thick: a thin film over dry paint takes over only part of its finish.
+// Paint laid on a cell mixes with the surface already there: its wet paint and at most this
+// depth of the dry paint under it, so a thin film over dry paint takes over only part of its
+// finish, and the first paint on the bare ground all of it.
 inline constexpr double kSurfaceFilmMm = 0.01;
 
 // Varnish coats: thickness in mm of paint height, at most this much a coat.

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <string_view>
 
+#include "impasto/paintcore/paint_surface.hpp"
 #include "impasto/util/enum_names.hpp"
 
 namespace impasto::render::surface {
@@ -94,13 +95,15 @@ class GhsBrdf {
   double hemispherical_albedo_ = 0.0;
 };
 
-// The kinds of medium and varnish an artist chooses between, and their surfaces.
-enum class Finish { gloss, satin, matte };
+// The kinds of medium and varnish an artist chooses between (part of the paint:
+// paintcore/paint_surface.hpp), and their surfaces.
+using Finish = paintcore::Finish;
 inline constexpr util::EnumNames<Finish, 3> kFinishNames{
     {{Finish::gloss, "gloss"}, {Finish::satin, "satin"}, {Finish::matte, "matte"}}};
-// RMS roughness and correlation length of a film of that finish (docs/surface.md: chosen so
-// that 60° specular gloss falls in the ranges paint makers state for each).
+// RMS roughness and correlation length of a film of that finish (paintcore's table).
 Roughness finish_roughness(Finish finish);
+// A surface between the finishes by its log10 RMS (paintcore::roughness_at_log_rms).
+Roughness roughness_at_log_rms(double log_rms);
 
 template <typename F>
 double GhsBrdf::integrate_disc(double cos_i, double inner_radius, const F& integrand) {

@@ -6,8 +6,10 @@
 // thread-safe. docs/surface.md derives the terms.
 #include <array>
 #include <memory>
+#include <mutex>
 #include <vector>
 
+#include "impasto/paintcore/paint_surface.hpp"
 #include "impasto/render/render_settings.hpp"
 #include "impasto/render/shading.hpp"
 #include "impasto/render/spectral_palette.hpp"
@@ -27,10 +29,28 @@ class SurfaceShading {
   // (0 dry .. 1 fully wet, blended as Blinn-Phong's materials are); writes display XYZ.
   void shade(shade::Vec3 normal, shade::Vec3 to_light, shade::Visibility visibility, float wetness,
              const float* reflectance, float xyz[3]) const;
+  // The same on the cell's own surface (paintcore::cell_surface): where the painting varnished
+  // the cell, its varnish (glossy while wet); else the settings' varnish if any; else the
+  // medium of the cell's paint, its share mixed in log RMS with the settings' medium; a cell
+  // with neither shades exactly as above (old paintings render as before, bit for bit).
+  void shade(shade::Vec3 normal, shade::Vec3 to_light, shade::Visibility visibility, float wetness,
+             const paintcore::CellSurface& cell, const float* reflectance, float xyz[3]) const;
+
+  // The dry surfaces a painting's cells use: log10 RMS quantised to kLevelStep (the BRDF
+  // tables of a level are made the first time a cell needs them, ~20 ms a node).
+  static constexpr double kLevelStep = 0.1;
+  static constexpr int kLevels =
+      static_cast<int>((paintcore::kMaxLogRms - paintcore::kMinLogRms) / kLevelStep) + 1;
+  static int level_of(double log_rms);
+  static double level_log_rms(int level);
 
   // The surface of one node (dry: the varnish's when varnished, else the medium's; wet).
   const surface::GhsBrdf& dry_brdf(int node) const { return *dry_[static_cast<std::size_t>(node)]; }
   const surface::GhsBrdf& wet_brdf(int node) const { return *wet_[static_cast<std::size_t>(node)]; }
+  // What the body is divided by at that node (see reference_ below): the GPU port reads it.
+  float reference(int node) const { return reference_[static_cast<std::size_t>(node)]; }
+  float reference_sky(int node) const { return reference_sky_[static_cast<std::size_t>(node)]; }
+  bool reflection() const { return reflection_; }
 
  private:
   int nodes_;
@@ -43,6 +63,21 @@ class SurfaceShading {
   // smooth canvas shows its K-M reflectance as the Blinn-Phong path does.
   std::vector<float> reference_;      // t0(flat light) · t0(view)
   std::vector<float> reference_sky_;  // t̄0 · t0(view)
+
+  using Brdfs = std::vector<std::shared_ptr<const surface::GhsBrdf>>;  // one a node
+  void shade_on(const Brdfs& dry, shade::Vec3 normal, shade::Vec3 to_light,
+                shade::Visibility visibility, float wetness, const float* reflectance,
+                float xyz[3]) const;
+  // The tables of a level, for the paint (binder index) or a varnish (varnish index).
+  const Brdfs& level(bool varnish, double log_rms) const;
+  std::vector<double> wavelengths_;
+  double source_sigma_ = 0.0;
+  double subcell_slope_rms_ = 0.0;
+  double binder_index_ = 1.48, varnish_index_ = 1.53;
+  bool settings_varnish_ = false;  // the settings' varnish covers every cell
+  double default_log_rms_ = 0.0;   // the settings' medium
+  mutable std::array<std::once_flag, 2 * kLevels> level_made_;
+  mutable std::array<Brdfs, 2 * kLevels> levels_;
 };
 
 }  // namespace impasto::render
