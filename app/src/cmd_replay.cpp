@@ -34,6 +34,8 @@ struct ReplayArgs {
   std::string save, out, preview, light = "D65";
   std::string old_png;  // --png, the old spelling of --out
   int wavelengths = render::RenderSettings{}.wavelengths;
+  std::string weights{
+      util::name_of(render::kNodeWeightsNames, render::RenderSettings{}.node_weights)};
   std::string light_type{
       util::name_of(render::kLightTypeNames, render::RenderSettings{}.light_type)};
   double light_size_deg = render::RenderSettings{}.light_size_deg;
@@ -135,6 +137,7 @@ void run_replay(ReplayArgs args) {
     render::RenderSettings settings;
     settings.light = args.light;
     settings.wavelengths = args.wavelengths;
+    settings.node_weights = render::parse_node_weights(args.weights);
     settings.threads = args.threads;
     settings.light_type = render::parse_light_type(args.light_type);
     settings.light_size_deg = args.light_size_deg;
@@ -180,6 +183,9 @@ const CommandRegistrar registrar("replay", [](CLI::App& root) {
   cmd->add_option("--light", args->light, vocabulary_help("--light", "for --out"))
       ->capture_default_str();
   add_wavelengths_option(*cmd, args->wavelengths, true, "for --out");
+  add_choice_option(
+      *cmd, "--weights", args->weights, render::kNodeWeightsNames,
+      "Nodes and XYZ weights for --out (optimised and fitted: trained on the palette)");
   add_choice_option(*cmd, "--light-type", args->light_type, render::kLightTypeNames,
                     "The light's kind for --out (diffuse: no sparkles)");
   cmd->add_option("--light-size", args->light_size_deg,

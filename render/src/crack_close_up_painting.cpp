@@ -10,6 +10,8 @@
 
 #include "impasto/render/crack_close_up.hpp"
 #include "impasto/render/render_painting.hpp"
+#include "impasto/render/spectral_palette.hpp"
+#include "impasto/render/tile_renderer.hpp"
 
 namespace impasto::render {
 namespace {
@@ -34,10 +36,14 @@ Image render_painting_close_up(const paintcore::Painting& painting, const Render
     return render_crack_close_up(blank, surface, surface, region, pixels_per_cell, {}, {});
   }
   // What cracks through the film show: the bare canvas (the same ground and weave), lit
-  // without the relief's shadows and occlusion, as the GPU shades it from its normal alone.
+  // without the relief's shadows and occlusion, as the GPU shades it from its normal alone,
+  // and through the painting's palette as there (its wavelength rule is trained on its
+  // pigments: a painting without them would have another).
   RenderSettings bare = flat;
   bare.shadows = bare.occlusion = false;
-  const Image ground = render_painting(paintcore::Painting(painting.canvas().spec()), bare);
+  TileRenderer bare_renderer(bare, SpectralPalette(bare, painting));
+  bare_renderer.render_all(paintcore::Canvas(painting.canvas().spec()));
+  const Image ground = bare_renderer.image();
   Image walls = surface;
   const paintcore::Canvas& canvas = painting.canvas();
   for (int y = 0; y < canvas.height_cells(); ++y) {

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "../common/short_session.hpp"
 #include "command.hpp"
 #include "impasto/paintcore/painting.hpp"
 #include "impasto/render/image.hpp"
@@ -66,23 +67,10 @@ class Cli : public ::testing::Test {
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(out), read_text(err)};
   }
 
-  // A short session on a small canvas: three loaded strokes.
+  // The short session (tests/common/short_session.hpp), written once per test.
   fs::path session() const {
     const fs::path path = dir_ / "short.strokes";
-    if (fs::exists(path)) return path;
-    std::ofstream out(path);
-    out << "impasto-strokes 2\ncanvas 240 160 254\nbrush round size=4 stiffness=0.5\n";
-    const char* pigments[] = {"Ultramarine Blue", "Pyrrole Red", "Titanium White"};
-    double t = 0;
-    for (int k = 0; k < 3; ++k) {
-      out << "wipe\nload 30 \"" << pigments[k] << "\" 1\n";
-      for (int i = 0; i <= 40; ++i, t += 0.01) {
-        const bool down = i < 40;
-        out << "pen " << t << " " << 2 + 0.45 * i << " " << 4 + 4 * k << " " << (down ? 0.7 : 0)
-            << " 0 0 0 " << (down ? 17 : 16) << "\n";
-      }
-    }
-    return path;
+    return fs::exists(path) ? path : test::write_short_session(path);
   }
 
   // A 64x48-cell painting of that session, made once per test.
@@ -452,7 +440,8 @@ TEST_F(Cli, CracksCommandsPrintOneJsonObject) {
 }
 
 TEST_F(Cli, BenchColorPrintsOneJsonRowPerRule) {
-  const CommandRun r = impasto("bench color --nodes 3 --lights D65 --cells 0 --no-half --json");
+  const CommandRun r = impasto(
+      "bench color --nodes 3 --lights D65 --cells 0 --no-half --weights interpolatory --json");
   ASSERT_EQ(r.status, 0) << r.err;
   std::istringstream lines(r.out);
   std::vector<int> nodes;

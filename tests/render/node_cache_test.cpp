@@ -13,6 +13,7 @@
 #include "impasto/data/lights.hpp"
 #include "impasto/data/pigments.hpp"
 #include "impasto/render/node_optimisation.hpp"
+#include "impasto/render/render_settings.hpp"
 #include "impasto/render/spectral_palette.hpp"
 
 using namespace impasto;
@@ -200,4 +201,7 @@ TEST_F(NodeCache, InTheBackgroundTheInterpolatoryRuleStandsIn) {
     expect_same(rule("F11"), optimised);  // built: no stand-in now
     EXPECT_FALSE(background.stood_in());
   }
+}
+TEST(RenderDefaults, TheOptimisedRuleIsTheDefault) {
+  EXPECT_EQ(RenderSettings{}.node_weights, NodeWeights::optimised);
 }

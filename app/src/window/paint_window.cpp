@@ -11,6 +11,7 @@
 #include <impasto/input/stroke_import.hpp>
 #include <impasto/paintcore/brush_head.hpp>
 #include <impasto/render/display.hpp>
+#include <impasto/render/node_cache.hpp>
 #include <impasto/render/render_painting.hpp>
 #include <impasto/render_gl/canvas_renderer.hpp>
 #include <impasto/render_gl/gl.hpp>
@@ -204,6 +205,8 @@ class PaintWindow {
   std::array<double, 6> last_motion_{};  // the view and the light at the last frame
   double last_motion_s_ = -1e9;          // when they last changed
   std::unique_ptr<render::SpectralPalette> palette_;
+  bool palette_stands_in_ = false;    // the Gaussian rule while the palette's own is built
+  std::uint64_t rules_finished_ = 0;  // render::palette_rules_finished() when it was made
   std::vector<std::string> rendered_slots_;
   int canvas_w_ = 0, canvas_h_ = 0;
   bool full_upload_ = true;
@@ -595,9 +598,15 @@ void PaintWindow::sync_gpu() {
     const paintcore::Canvas& canvas = painting.canvas();
     const bool resized = canvas.width_cells() != canvas_w_ || canvas.height_cells() != canvas_h_;
     const bool slots_changed = painting.pigment_slots() != rendered_slots_;
-    if (resized || slots_changed || state_.settings_changed || !palette_) {
+    // The palette's trained rule, built in the background, is ready: it takes over.
+    const bool rule_ready =
+        palette_stands_in_ && render::palette_rules_finished() != rules_finished_;
+    if (resized || slots_changed || state_.settings_changed || !palette_ || rule_ready) {
+      rules_finished_ = render::palette_rules_finished();
+      const render::BackgroundPaletteRules background;  // no frame waits for a rule's build
       palette_ =
           std::make_unique<render::SpectralPalette>(state_.settings, painting);  // its pigments
+      palette_stands_in_ = background.stood_in();
       rendered_slots_ = painting.pigment_slots();
       if (resized || !renderer_) {
         renderer_ = std::make_unique<render_gl::CanvasRenderer>(
@@ -1134,9 +1143,9 @@ void PaintWindow::run() {
     handle_shortcuts();
     poll_tablets();
     handle_canvas_input();
-    // A scripted run waits until the replay is applied and a few frames have laid out the
-    // panels, then captures the whole window.
-    frames_since_idle = worker_->idle() ? frames_since_idle + 1 : 0;
+    // A scripted run waits until the replay is applied, the palette's own rule is built and a
+    // few frames have laid out the panels, then captures the whole window.
+    frames_since_idle = worker_->idle() && !palette_stands_in_ ? frames_since_idle + 1 : 0;
     const bool capture = !screenshot_done && frames_since_idle >= 3;
     const auto frame_start = Clock::now();
     draw_frame(capture);

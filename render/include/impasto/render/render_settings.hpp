@@ -48,7 +48,7 @@ struct RenderSettings {
   std::string light = "D65";  // data::light_from_spec: "D65", "A", "F11", "blackbody:5600", file
   int wavelengths = 8;        // Gaussian nodes 1..16, or 0 for every nm (the reference)
   WavelengthRange range;      // the measure the nodes are chosen on
-  NodeWeights node_weights = NodeWeights::interpolatory;
+  NodeWeights node_weights = NodeWeights::optimised;  // built once a palette (node_cache.hpp)
   ChromaticAdaptation adaptation = ChromaticAdaptation::bradford;
   DisplayEncoding display = DisplayEncoding::srgb;
 
