@@ -6,6 +6,8 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "vocabulary.hpp"
+
 namespace impasto::app {
 
 void add_surface_options(CLI::App& command, SurfaceArgs& args) {
@@ -42,9 +44,19 @@ void apply_surface_options(const SurfaceArgs& args, render::RenderSettings& sett
   settings.surface.medium_amount = args.medium_amount;
   settings.surface.varnish = render::parse_varnish(args.varnish);
   settings.surface.subsurface = !args.no_subsurface;
-  if (gpu && settings.surface.model != render::SurfaceModel::blinn) {
-    throw std::runtime_error("--surface " + args.model +
-                             ": the OpenGL path (--gpu) has the blinn surface only so far");
+  if (gpu && settings.surface.model == render::SurfaceModel::ghs) {
+    // The OpenGL path has the ghs surface (surface_ghs_lib.glsl) but not the subsurface
+    // spread, a whole-painting pass on the CPU (docs/surface.md).
+    if (!args.subsurface_map.empty()) {
+      throw std::runtime_error(
+          "--subsurface-map: the subsurface spread is CPU only so far (render without --gpu)");
+    }
+    if (settings.surface.subsurface) {
+      note(
+          "--gpu: the ghs surface without the subsurface spread (CPU only so far), as "
+          "--no-subsurface renders it");
+      settings.surface.subsurface = false;
+    }
   }
   if (!args.subsurface_map.empty() && settings.surface.model != render::SurfaceModel::ghs) {
     throw std::runtime_error(

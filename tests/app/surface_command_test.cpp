@@ -1,6 +1,6 @@
 // `impasto render --surface ...` (app/src/surface_options.cpp): blinn ignores the finishes and
 // renders as the default; ghs changes the image and its finishes differ; the subsurface map
-// is written at the canvas's size; bad combinations are refused by name.
+// is written at the canvas's size; bad combinations are refused by name; --gpu renders ghs.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -79,9 +79,25 @@ TEST_F(SurfaceCommand, RefusesWhatItCannotDo) {
     EXPECT_NE(std::string(e.what()).find("--subsurface-map"), std::string::npos) << e.what();
   }
 #if __has_include(<impasto/render_gl/render_painting_gpu.hpp>)
-  EXPECT_THROW(render_with("d.png", "--surface ghs --gpu"), std::runtime_error);
+  // The OpenGL path has no subsurface spread (CPU only): no map from it.
+  EXPECT_THROW(
+      render_with("d.png", "--surface ghs --gpu --subsurface-map " + out("m.png").string()),
+      std::runtime_error);
 #endif
 }
+
+#if __has_include(<impasto/render_gl/render_painting_gpu.hpp>)
+// --gpu renders the ghs surface as the CPU does without the spread, within a level of 255
+// (tests/gl/ghs_surface_test.cpp compares the float images; here the PNGs round each).
+TEST_F(SurfaceCommand, GpuRendersGhsAsTheCpuDoesWithoutTheSpread) {
+  const std::string options = "--surface ghs --medium matte --varnish satin";
+  const render::Image gpu = render_with("gpu.png", options + " --gpu");
+  const render::Image cpu = render_with("cpu.png", options + " --no-subsurface");
+  ASSERT_EQ(gpu.rgb.size(), cpu.rgb.size());
+  for (std::size_t i = 0; i < gpu.rgb.size(); ++i) ASSERT_NEAR(gpu.rgb[i], cpu.rgb[i], 1.01 / 255);
+  EXPECT_NE(gpu.rgb, render_with("blinn.png", "--gpu").rgb);
+}
+#endif
 
 }  // namespace
 }  // namespace impasto::app

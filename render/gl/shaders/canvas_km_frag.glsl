@@ -4,9 +4,12 @@
 // pixel shows its cell as the CPU reference renders it; zoomed in, colour, normal and relief
 // light are interpolated between cell centres; zoomed out, the shaded colours of the cells
 // under the pixel are averaged.
-// Assembled after #version, MAX_NODES/MAX_SLOTS defines, km_lib, shading_lib, relief_lib, flakes_lib,
-// cracks_lib, crack_close_up_lib, crack_close_up_canvas_lib and the OpenColorIO display
-// function `vec4 ocio_display(vec4 xyz)`.
+// With the ghs surface model (surface_ghs_lib) the rough surface per node replaces
+// Blinn-Phong: the K-M reflectance of each node is weighted by the light the surface lets
+// through, and the surface's own light is added per node.
+// Assembled after #version, MAX_NODES/MAX_SLOTS defines, km_lib, shading_lib, surface_ghs_lib,
+// relief_lib, flakes_lib, cracks_lib, crack_close_up_lib, crack_close_up_canvas_lib and the
+// OpenColorIO display function `vec4 ocio_display(vec4 xyz)`.
 
 in vec2 uv;
 out vec4 frag_color;
@@ -43,10 +46,11 @@ float total_height(ivec2 cell) {
 }
 
 // A cell's K-M colour (display XYZ, before shading): the wet layer of `volume` mm over the
-// dry reflectance, the crack's far-view blend in. With close_up, also the colour as if
-// uncracked and the bare ground's, which the close-up draws.
-vec3 cell_xyz(ivec2 cell, float volume, vec4 crack, bool close_up, out vec3 xyz_uncracked,
-              out vec3 xyz_ground) {
+// dry reflectance, the crack's far-view blend in, each node's reflectance weighted by
+// body[node] (1 for Blinn-Phong; the ghs model's body light). With close_up, also the colour
+// as if uncracked and the bare ground's (unweighted), which the close-up draws.
+vec3 cell_xyz(ivec2 cell, float volume, vec4 crack, bool close_up, float body[MAX_NODES],
+              out vec3 xyz_uncracked, out vec3 xyz_ground) {
   // Concentration = amount / volume, as the CPU's gather_shares computes it.
   float inverse_volume = volume > 0.0 ? 1.0 / volume : 0.0;
   float concentration[MAX_SLOTS];
@@ -78,14 +82,21 @@ vec3 cell_xyz(ivec2 cell, float volume, vec4 crack, bool close_up, out vec3 xyz_
     }
     if (close_up) {
       float ground = crack_ground[node];
-      xyz_uncracked += node_to_xyz[node] * (saunderson ? km_saunderson(R, saunderson_k.x, saunderson_k.y) : R);
+      xyz_uncracked += node_to_xyz[node] * (saunderson ? km_saunderson(R, saunderson_k.x, saunderson_k.y) : R) * body[node];
       xyz_ground += node_to_xyz[node] * (saunderson ? km_saunderson(ground, saunderson_k.x, saunderson_k.y) : ground);
     }
     R = crack_blend(crack, crack_wall, R);
     if (saunderson) R = km_saunderson(R, saunderson_k.x, saunderson_k.y);
-    xyz += node_to_xyz[node] * R;
+    xyz += node_to_xyz[node] * R * body[node];
   }
   return xyz;
+}
+
+// Blinn-Phong's weights: the K-M colour as it is.
+float[MAX_NODES] unit_body() {
+  float body[MAX_NODES];
+  for (int node = 0; node < MAX_NODES; ++node) body[node] = 1.0;
+  return body;
 }
 
 vec3 cell_normal(ivec2 cell) {
@@ -101,6 +112,13 @@ vec3 shade_surface(vec3 xyz, vec3 normal, float volume, vec2 visibility) {
   return light_intensity * (xyz * shading.x + white_xyz * shading.y);
 }
 
+// A cell's K-M colour (weighted by the ghs body light) to its shaded colour: Blinn-Phong, or
+// with the ghs model the surface's own light added.
+vec3 shade_cell(vec3 xyz, vec3 surface_xyz, vec3 normal, float volume, vec2 visibility) {
+  return ghs_enabled ? light_intensity * (xyz + surface_xyz)
+                     : shade_surface(xyz, normal, volume, visibility);
+}
+
 // One cell as the CPU reference renders it, sparkles included; at close-up zoom over a
 // crack (allow_close_up), the crack's inside at cell_position.
 vec3 cell_colour(ivec2 cell, vec2 cell_position, bool allow_close_up) {
@@ -108,15 +126,27 @@ vec3 cell_colour(ivec2 cell, vec2 cell_position, bool allow_close_up) {
   vec4 crack = crack_at(cell);
   // Zoomed in over a crack: the close-up needs the cell as if uncracked and the bare ground.
   bool close_up = allow_close_up && crack.x > 0.0 && close_up_zoomed(screen_to_cell);
-  vec3 xyz_uncracked;
-  vec3 xyz_ground;
-  vec3 xyz = cell_xyz(cell, volume, crack, close_up, xyz_uncracked, xyz_ground);
   vec3 normal = cell_normal(cell);
   vec2 visibility = relief_visibility(surface, canvas_cells, cell, cell_mm);
   vec3 sparkles = light_intensity * flake_sparkles(cell, normal, total_height(cell));
-  vec3 shaded = shade_surface(xyz, normal, volume, visibility) + sparkles;
+  // The ghs surface: per node, the light the K-M body gets and the surface's own light.
+  float body[MAX_NODES];
+  vec3 surface_xyz = vec3(0.0);
+  if (ghs_enabled) {
+    float surface_light[MAX_NODES];
+    ghs_shade(cell, node_count, normal, to_light, ambient, visibility, volume * inverse_gloss_mm,
+              body, surface_light);
+    for (int node = 0; node < node_count; ++node) surface_xyz += node_to_xyz[node] * surface_light[node];
+  } else {
+    body = unit_body();
+  }
+  vec3 xyz_uncracked;
+  vec3 xyz_ground;
+  vec3 xyz = cell_xyz(cell, volume, crack, close_up, body, xyz_uncracked, xyz_ground);
+  vec3 shaded = shade_cell(xyz, surface_xyz, normal, volume, visibility) + sparkles;
   if (close_up) {
-    vec3 uncracked = shade_surface(xyz_uncracked, normal, volume, visibility) + sparkles;
+    // The crack's inside keeps the close-up's own shading.
+    vec3 uncracked = shade_cell(xyz_uncracked, surface_xyz, normal, volume, visibility) + sparkles;
     vec4 inside = crack_close_up_colour(cell, canvas_cells, fract(cell_position), crack, cell_mm,
                                         uncracked, xyz_ground, to_light, ambient, dry_material,
                                         white_xyz, light_intensity);
@@ -142,7 +172,7 @@ vec3 interpolated_colour(vec2 cell_position, ivec2 cell) {
       float v = texelFetch(surface, c, 0).r;
       vec3 unused_uncracked;
       vec3 unused_ground;
-      xyz += w * cell_xyz(c, v, crack_at(c), false, unused_uncracked, unused_ground);
+      xyz += w * cell_xyz(c, v, crack_at(c), false, unit_body(), unused_uncracked, unused_ground);
       volume += w * v;
       normal += w * cell_normal(c);
       visibility += w * relief_visibility(surface, canvas_cells, c, cell_mm);
@@ -193,7 +223,9 @@ void main() {
   } else if (outside) {
     frag_color = vec4(background, 1.0);
     return;
-  } else if (zoomed_in && !(crack_at(cell).x > 0.0 && close_up_zoomed(screen_to_cell))) {
+  } else if (zoomed_in && !ghs_enabled &&
+             !(crack_at(cell).x > 0.0 && close_up_zoomed(screen_to_cell))) {
+    // (The ghs model shades per node after the colour: zoomed in, its cells are magnified.)
     shaded = interpolated_colour(cell_position, cell);
   } else {
     shaded = cell_colour(cell, cell_position, true);

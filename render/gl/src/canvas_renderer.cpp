@@ -9,6 +9,7 @@
 #include "embedded_shaders.hpp"
 #include "impasto/render/shading.hpp"
 #include "impasto/render_gl/dry_reflectance.hpp"
+#include "impasto/render_gl/ghs_surface_tables.hpp"
 #include "impasto/render_gl/shader_library.hpp"
 
 namespace impasto::render_gl {
@@ -62,6 +63,7 @@ CanvasRenderer::CanvasRenderer(int width_cells, int height_cells,
   build_program();
   flakes_ = std::make_unique<FlakeTextures>(width_, height_, settings_, palette_);
   cracks_ = std::make_unique<CrackTexture>(width_, height_);
+  ghs_ = std::make_unique<GhsSurfaceTables>(settings_, palette_);
 }
 
 CanvasRenderer::~CanvasRenderer() = default;
@@ -85,6 +87,7 @@ void CanvasRenderer::build_program() {
                        "\n#define MAX_SLOTS " + std::to_string(paintcore::kMaxPigmentSlots) + "\n";
   source += shaders::km_lib;
   source += shading_glsl();
+  source += surface_ghs_glsl();
   source += relief_glsl();
   source += flakes_glsl();
   source += cracks_glsl();
@@ -105,9 +108,14 @@ void CanvasRenderer::set_settings(const render::RenderSettings& settings,
   allocate_textures();
   if (encoding_changed) build_program();
   flakes_ = std::make_unique<FlakeTextures>(width_, height_, settings_, palette_);
+  ghs_ = std::make_unique<GhsSurfaceTables>(settings_, palette_);
 }
 
 void CanvasRenderer::set_shading(const render::RenderSettings& settings) {
+  // The ghs tables depend on the light's elevation (the body's reference) and its disc.
+  const bool ghs_light_changed =
+      ghs_->active() && (settings.light_elevation_deg != settings_.light_elevation_deg ||
+                         settings.shadow_light_diameter_deg != settings_.shadow_light_diameter_deg);
   settings_.light_azimuth_deg = settings.light_azimuth_deg;
   settings_.light_elevation_deg = settings.light_elevation_deg;
   settings_.ambient = settings.ambient;
@@ -125,6 +133,7 @@ void CanvasRenderer::set_shading(const render::RenderSettings& settings) {
   settings_.shadow_reach_mm = settings.shadow_reach_mm;
   settings_.occlusion_radius_mm = settings.occlusion_radius_mm;
   render::validate(settings_);
+  if (ghs_light_changed) ghs_ = std::make_unique<GhsSurfaceTables>(settings_, palette_);
 }
 
 render::relief::Reach CanvasRenderer::relief_reach() const {
@@ -304,6 +313,7 @@ void CanvasRenderer::draw(const CanvasView& view, int viewport_w, int viewport_h
   flakes_->bind(program, settings_, cell_mm_);
   cracks_->bind(program, palette_, settings_);
   cracks_->bind_close_up(program, settings_, options_.crack_close_up_min_pixels);
+  ghs_->bind(program);
 
   pass_->draw();
   check_gl_error("canvas K-M pass");

@@ -6,6 +6,7 @@ namespace impasto::render_gl::shaders {
 extern const char* const fullscreen_vert;            // full-viewport triangle, uv 0..1
 extern const char* const km_lib;                     // K-M layer and compositing (no #version)
 extern const char* const shading_lib;                // normals and Blinn-Phong (no #version)
+extern const char* const surface_ghs_lib;            // the ghs surface model (no #version)
 extern const char* const relief_lib;                 // relief shadows and occlusion (no #version)
 extern const char* const flakes_lib;                 // flake sparkles (no #version)
 extern const char* const cracks_lib;                 // crack far-view blend (no #version)

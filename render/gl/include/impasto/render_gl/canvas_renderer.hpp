@@ -13,6 +13,7 @@
 #include "impasto/render_gl/crack_texture.hpp"
 #include "impasto/render_gl/flake_textures.hpp"
 #include "impasto/render_gl/fullscreen_pass.hpp"
+#include "impasto/render_gl/ghs_surface_tables.hpp"
 #include "impasto/render_gl/gpu_display_transform.hpp"
 #include "impasto/render_gl/gpu_view_options.hpp"
 #include "impasto/render_gl/texture.hpp"
@@ -34,8 +35,9 @@ class CanvasRenderer {
   // baked per node, so its reflectance changes with the light).
   void set_settings(const render::RenderSettings& settings, render::SpectralPalette palette);
   // Takes only what the shader reads as uniforms (light direction, ambient, materials,
-  // gloss, Saunderson, cracks and their model) from `settings`: no re-bake, no upload. For
-  // dragging the light.
+  // gloss, Saunderson, cracks and their model) from `settings`: no re-bake, no upload (the
+  // ghs surface's tables follow the light's elevation). For dragging the light. The surface
+  // model, medium and varnish come with set_settings.
   void set_shading(const render::RenderSettings& settings);
   // Dry layer i is not shown where hidden[i] (colour only; heights keep every layer). Call
   // upload_all afterwards.
@@ -81,6 +83,7 @@ class CanvasRenderer {
   int pigment_layers_ = 0, node_layers_ = 0;
   std::unique_ptr<FlakeTextures> flakes_;  // sparkles of flake pigments (nothing without)
   std::unique_ptr<CrackTexture> cracks_;   // crack optics per cell (nothing without cracks)
+  std::unique_ptr<GhsSurfaceTables> ghs_;  // the ghs surface model (inactive for blinn)
   std::vector<float> tile_min_height_;     // each tile's lowest total height (mm)
   std::vector<float> tile_max_height_;     // each tile's highest total height (mm)
   float max_height_ = 0.0f;

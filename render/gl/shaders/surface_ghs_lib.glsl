@@ -1,0 +1,160 @@
+// The ghs surface model: a port of render/src/surface_brdf.cpp (the GHS kernel, Fresnel, the
+// renormalised BRDF) and of render::SurfaceShading::shade (render/src/surface_shading.cpp),
+// the CPU reference it is tested against (tests/gl/ghs_surface_test.cpp). docs/surface.md
+// derives the terms.
+// Needs MAX_NODES, SHADE_OCCLUSION_DIRECT_SHARE (shading_lib), and from the C++
+// (GhsSurfaceTables): GHS_TABLE_SIZE (surface::GhsBrdf::kTableSize), GHS_SURFACES (the table
+// rows per node: the dry surface, then the wet one).
+
+uniform bool ghs_enabled;     // SurfaceSettings::model == ghs; else Blinn-Phong
+uniform bool ghs_reflection;  // SurfaceSettings::reflection
+// Per surface and node (row surface * MAX_NODES + node), at cos θ = i / (GHS_TABLE_SIZE - 1):
+// r the renormalisation, g the directional albedo, as GhsBrdf tabulates them.
+uniform sampler2D ghs_tables;
+uniform vec2 ghs_roughness[GHS_SURFACES];               // (RMS height, correlation length) µm
+uniform float ghs_index[GHS_SURFACES * MAX_NODES];      // the film's index at the node
+uniform float ghs_hemispherical[GHS_SURFACES * MAX_NODES];
+uniform float ghs_wavelength_nm[MAX_NODES];
+uniform vec2 ghs_reference[MAX_NODES];  // (t0(flat light)·t0(view), t̄0·t0(view)): the body's divisors
+uniform float ghs_source_sigma;         // the light's disc in direction cosines
+uniform float ghs_subcell_slope;        // SurfaceSettings::subcell_slope_rms
+
+const float GHS_PI = 3.14159265358979;
+// Above this phase variance the Poisson mixture is summed as m ~ Normal(g, g) by a 9-point
+// Gauss–Hermite rule, as surface_brdf.cpp does (tests/gl/ghs_surface_test.cpp checks the
+// kernel on both sides of it against the C++).
+const float GHS_POISSON_NORMAL_FROM = 25.0;
+const float GHS_HERMITE_NODES[5] =
+    float[5](0.0, 0.7235510187528376, 1.468553289216668, 2.266580584531843, 3.190993201781528);
+const float GHS_HERMITE_WEIGHTS[5] = float[5](0.7202352156060510, 0.4326515590025558,
+                                              0.08847452739437657, 0.004943624275536947,
+                                              0.00003960697726326438);
+
+// The dry surface's row of a cell. One painting-wide surface today (the render settings'
+// medium or varnish); a medium stored per mix would read its surface index from a texture here.
+int ghs_dry_surface(ivec2 cell) { return 0; }
+const int GHS_WET = GHS_SURFACES - 1;
+
+float ghs_gaussian_2d(float rho2, float variance) {
+  return exp(-rho2 / (2.0 * variance)) / (2.0 * GHS_PI * variance);
+}
+
+// surface::ghs_kernel: Σ_m e^(−g) g^m/m! N(ρ; s_m² + source² + sub-cell slopes).
+float ghs_kernel(vec2 roughness, float wavelength_nm, float source_sigma, float subcell_slope,
+                 float cos_i, float cos_o, float rho) {
+  float lambda_um = wavelength_nm * 1e-3;
+  float phase = 2.0 * GHS_PI * roughness.x / lambda_um * (cos_i + cos_o);
+  float g = phase * phase;
+  float l_hat = roughness.y / lambda_um;
+  float per_m = 1.0 / (2.0 * GHS_PI * GHS_PI * l_hat * l_hat);
+  float tilt = (cos_i + cos_o) * subcell_slope;
+  float source2 = source_sigma * source_sigma + tilt * tilt;
+  float rho2 = rho * rho;
+  if (g <= GHS_POISSON_NORMAL_FROM) {
+    // Term by term; the C++ stops once what is left of the Poisson mass is below 1e-9 and
+    // skips terms lighter than that: past the mode (m > g) the weights only fall, so the
+    // first one below 1e-9 there ends the same sum.
+    float weight = exp(-g);
+    float sum = weight * ghs_gaussian_2d(rho2, source2);
+    for (int m = 1; m < 200; ++m) {
+      weight *= g / float(m);
+      if (weight <= 1e-9) {
+        if (float(m) > g) break;
+        continue;
+      }
+      sum += weight * ghs_gaussian_2d(rho2, per_m * float(m) + source2);
+    }
+    return sum;
+  }
+  float spread = sqrt(2.0 * g);
+  float sum = GHS_HERMITE_WEIGHTS[0] * ghs_gaussian_2d(rho2, per_m * g + source2);
+  for (int k = 1; k < 5; ++k) {
+    for (int side = 0; side < 2; ++side) {
+      float m = g + (side == 0 ? -1.0 : 1.0) * spread * GHS_HERMITE_NODES[k];
+      sum += GHS_HERMITE_WEIGHTS[k] * ghs_gaussian_2d(rho2, per_m * m + source2);
+    }
+  }
+  return sum / sqrt(GHS_PI);
+}
+
+// surface::fresnel_dielectric: unpolarised, exact.
+float ghs_fresnel(float cos_i, float n) {
+  float c = clamp(cos_i, 0.0, 1.0);
+  float sin_t2 = (1.0 - c * c) / (n * n);
+  if (sin_t2 >= 1.0) return 1.0;
+  float cos_t = sqrt(1.0 - sin_t2);
+  float rs = (c - n * cos_t) / (c + n * cos_t);
+  float rp = (n * c - cos_t) / (n * c + cos_t);
+  return 0.5 * (rs * rs + rp * rp);
+}
+
+// GhsBrdf's tables at cos_i, interpolated as table_lookup does: (renormalisation, albedo).
+vec2 ghs_table(int row, float cos_i) {
+  float u = clamp(cos_i, 0.0, 1.0) * float(GHS_TABLE_SIZE - 1);
+  int k = min(int(u), GHS_TABLE_SIZE - 2);
+  float f = u - float(k);
+  vec2 a = texelFetch(ghs_tables, ivec2(k, row), 0).rg;
+  vec2 b = texelFetch(ghs_tables, ivec2(k + 1, row), 0).rg;
+  return a * (1.0 - f) + b * f;
+}
+
+// GhsBrdf::eval of one surface at one node.
+float ghs_brdf(int surface, int node, float cos_i, float cos_o, float rho, float cos_half) {
+  if (cos_i <= 0.0 || cos_o <= 0.0) return 0.0;
+  int row = surface * MAX_NODES + node;
+  float renorm = min(ghs_table(row, cos_i).x, ghs_table(row, cos_o).x);
+  return ghs_fresnel(cos_half, ghs_index[row]) * renorm *
+         ghs_kernel(ghs_roughness[surface], ghs_wavelength_nm[node], ghs_source_sigma,
+                    ghs_subcell_slope, cos_i, cos_o, rho);
+}
+
+float ghs_mix(float dry, float wet, float w) { return dry + w * (wet - dry); }
+
+// SurfaceShading::shade without the K-M reflectance, for `nodes` nodes: per node, what
+// multiplies the reflectance (body) and the surface's own light (surface_light), so that the
+// cell's colour is Σ node_to_xyz·(R·body + surface_light). Viewer straight above;
+// visibility = (shadow, occlusion).
+void ghs_shade(ivec2 cell, int nodes, vec3 normal, vec3 to_light, float ambient, vec2 visibility,
+               float wetness, out float body[MAX_NODES], out float surface_light[MAX_NODES]) {
+  float w = wetness > 0.0 ? min(wetness, 1.0) : 0.0;  // NaN: dry
+  int dry = ghs_dry_surface(cell);
+  float mu_i = dot(normal, to_light);
+  float mu_v = normal.z;
+  float flat_lambert = max(to_light.z, 0.05);
+  float lit = max(mu_i, 0.0);
+  float direct = visibility.x * (1.0 - SHADE_OCCLUSION_DIRECT_SHARE * (1.0 - visibility.y));
+  // The half-way geometry: |tangential part of l + v| and the Fresnel angle's cosine.
+  vec3 sum = vec3(to_light.xy, to_light.z + 1.0);
+  float sum2 = dot(sum, sum);
+  float along = dot(normal, sum);
+  float rho = sqrt(max(0.0, sum2 - along * along));
+  float cos_half = (1.0 + to_light.z) / sqrt(sum2);
+  float sky = ambient * visibility.y;
+  float sun = 1.0 - ambient;
+  for (int node = 0; node < nodes; ++node) {
+    int dry_row = dry * MAX_NODES + node;
+    int wet_row = GHS_WET * MAX_NODES + node;
+    float albedo_in =
+        mu_i > 0.0 ? ghs_mix(ghs_table(dry_row, mu_i).y, ghs_table(wet_row, mu_i).y, w) : 0.0;
+    float albedo_view = ghs_mix(ghs_table(dry_row, mu_v).y, ghs_table(wet_row, mu_v).y, w);
+    float albedo_sky = ghs_mix(ghs_hemispherical[dry_row], ghs_hemispherical[wet_row], w);
+    float exit_share = 1.0 - albedo_view;
+    body[node] = sky * (1.0 - albedo_sky) * exit_share / ghs_reference[node].y +
+                 sun * (lit / flat_lambert) * direct * (1.0 - albedo_in) * exit_share /
+                     ghs_reference[node].x;
+    surface_light[node] = 0.0;
+    if (ghs_reflection) {
+      // The dry and the wet surface in one loop (one copy of the kernel in the compiled
+      // shader), each skipped where it has no weight.
+      float f_surface[2] = float[2](0.0, 0.0);
+      for (int s = 0; mu_i > 0.0 && s < 2; ++s) {
+        if (s == 0 ? w < 1.0 : w > 0.0) {
+          f_surface[s] = ghs_brdf(s == 0 ? dry : GHS_WET, node, mu_i, mu_v, rho, cos_half);
+        }
+      }
+      float f = ghs_mix(f_surface[0], f_surface[1], w);
+      // π f cos θ_i against the white Lambertian's cos θ_flat: the units of the body above.
+      surface_light[node] = sun * visibility.x * GHS_PI * f * lit / flat_lambert + sky * albedo_view;
+    }
+  }
+}
