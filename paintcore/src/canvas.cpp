@@ -73,11 +73,14 @@ void Canvas::compute_base_heights(int index, float* out) const {
   const int nx = std::min(kTileSize, spec_.width_cells - x0);
   const int ny = std::min(kTileSize, spec_.height_cells - y0);
   const double cell = spec_.cell_mm();
+  std::array<double, kTileSize> x_mm{}, y_mm{};
+  for (int x = 0; x < nx; ++x)
+    x_mm[static_cast<std::size_t>(x)] =
+        (static_cast<double>(spec_.weave_origin_x_cells + x0 + x) + 0.5) * cell;
   for (int y = 0; y < ny; ++y)
-    for (int x = 0; x < nx; ++x)
-      out[y * kTileSize + x] = canvas_weave_height_mm(
-          spec_.weave_seed, (static_cast<double>(spec_.weave_origin_x_cells + x0 + x) + 0.5) * cell,
-          (static_cast<double>(spec_.weave_origin_y_cells + y0 + y) + 0.5) * cell);
+    y_mm[static_cast<std::size_t>(y)] =
+        (static_cast<double>(spec_.weave_origin_y_cells + y0 + y) + 0.5) * cell;
+  canvas_weave_heights_mm(spec_.weave_seed, x_mm.data(), nx, y_mm.data(), ny, out, kTileSize);
 }
 
 Tile& Canvas::ensure_tile(int index, int slot_count) {

@@ -11,5 +11,10 @@ inline constexpr double kWeaveAmplitudeMm = 0.05;   // height of a thread crossi
 
 // Height in mm of the canvas surface at (x_mm, y_mm); seed 0 gives a flat canvas (0).
 float canvas_weave_height_mm(std::uint64_t seed, double x_mm, double y_mm);
+// The heights of a grid of cells, columns at x_mm[0..nx) and rows at y_mm[0..ny), into
+// out[y * stride + x]: the same floats as canvas_weave_height_mm at each cell, with what one
+// coordinate decides computed once a column or row (a tile's weave, 5x fewer sines).
+void canvas_weave_heights_mm(std::uint64_t seed, const double* x_mm, int nx, const double* y_mm,
+                             int ny, float* out, int stride);
 
 }  // namespace impasto::paintcore
