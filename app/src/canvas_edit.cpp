@@ -35,6 +35,35 @@ CanvasEditResult edit_canvas(paintcore::Painting& painting, const CanvasEdit& ed
   }
   result.width = painting.canvas().width_cells();
   result.height = painting.canvas().height_cells();
+  if (edit.varnish_region && !edit.varnish)
+    throw std::runtime_error("--region: says where a varnish goes (give --varnish FINISH)");
+  if (edit.varnish) {
+    paintcore::CellRect cells{0, 0, result.width, result.height};
+    if (edit.varnish_region) {
+      const render::CellRegion& r = *edit.varnish_region;
+      if (r.x < 0 || r.y < 0 || r.w < 1 || r.h < 1 || r.x + r.w > result.width ||
+          r.y + r.h > result.height)
+        throw std::runtime_error("--region " + std::to_string(r.x) + "," + std::to_string(r.y) +
+                                 "," + std::to_string(r.w) + "," + std::to_string(r.h) +
+                                 ": the rectangle must lie inside the " +
+                                 std::to_string(result.width) + "x" +
+                                 std::to_string(result.height) + " canvas");
+      cells = {r.x, r.y, r.x + r.w, r.y + r.h};
+    }
+    if (!(edit.varnish_thickness_mm > 0.0 && edit.varnish_thickness_mm <= paintcore::kMaxVarnishMm))
+      throw std::runtime_error("--varnish-thickness " + std::to_string(edit.varnish_thickness_mm) +
+                               ": must be in (0, " + std::to_string(paintcore::kMaxVarnishMm) +
+                               "] mm");
+    painting.apply_varnish(*edit.varnish, edit.varnish_thickness_mm, cells);
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "%.3g mm of %s varnish over %dx%d cells (wet: it dries with "
+                  "the paint)",
+                  edit.varnish_thickness_mm,
+                  std::string(paintcore::finish_name(*edit.varnish)).c_str(), cells.x1 - cells.x0,
+                  cells.y1 - cells.y0);
+    result.varnished = text;
+  }
   return result;
 }
 
@@ -50,7 +79,8 @@ std::string CanvasEditResult::summary(const paintcore::Painting& painting) const
                   painting.pigment_slots()[s].c_str(), cut.pigment[s]);
     parts += text;
   }
-  return parts.empty() ? out : out + " (" + parts + ")";
+  if (!parts.empty()) out += " (" + parts + ")";
+  return varnished.empty() ? out : out + "; " + varnished;
 }
 
 void export_painting(const paintcore::Painting& painting, const ExportRequest& request) {

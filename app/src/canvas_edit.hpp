@@ -1,6 +1,6 @@
 #pragma once
-// The work of `impasto edit` (the canvas's size) and `impasto export` (an image at a larger
-// scale, the height and normal maps), apart from their options so that tests call them.
+// The work of `impasto edit` (the canvas's size, a coat of varnish) and `impasto export` (an image
+// at a larger scale, the height and normal maps), apart from their options so that tests call them.
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -16,16 +16,23 @@ struct CanvasEdit {
   std::optional<render::CellRegion> crop;   // first: the rectangle kept
   std::optional<std::pair<int, int>> size;  // then: the new size, width x height in cells
   paintcore::CanvasAnchor anchor = paintcore::CanvasAnchor::kCenter;  // where the old canvas sits
+  // Last: a coat of varnish (paint_surface.hpp) over the region's cells (of the canvas after
+  // the crop and resize), or over the whole painting.
+  std::optional<paintcore::Finish> varnish;
+  double varnish_thickness_mm = 0.03;
+  std::optional<render::CellRegion> varnish_region;
 };
 
 struct CanvasEditResult {
   int old_width = 0, old_height = 0, width = 0, height = 0;
   paintcore::PaintTotals cut;  // mm^3 cut away, by slot
+  std::string varnished;       // "0.03 mm of satin varnish over 50x40 cells", or empty
   // "200x150 -> 100x90 cells; cut away 1.25 mm^3 of paint (Burnt Sienna 0.6, ...)"
   std::string summary(const paintcore::Painting& painting) const;
 };
 
-// Applies the crop, then the resize; each is one undo step. Throws naming the field.
+// Applies the crop, the resize, then the varnish; each is one undo step. Throws naming the
+// option.
 CanvasEditResult edit_canvas(paintcore::Painting& painting, const CanvasEdit& edit);
 
 struct ExportRequest {

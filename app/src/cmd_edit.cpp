@@ -1,7 +1,9 @@
-// impasto edit: the canvas's size — crop to a rectangle, or resize around an anchor — saved
-// as a painting whose undo history holds the change (canvas_edit.hpp does the work).
+// impasto edit: the canvas's size — crop to a rectangle, or resize around an anchor — and a
+// coat of varnish, saved as a painting whose undo history holds the change (canvas_edit.hpp
+// does the work).
 #include <impasto/paintcore/canvas_reframe.hpp>
 #include <impasto/paintcore/painting.hpp>
+#include <impasto/render/surface_settings.hpp>
 
 #include <iostream>
 #include <memory>
@@ -21,6 +23,9 @@ struct EditArgs {
   std::string crop;  // X,Y,W,H in cells
   std::optional<CanvasSize> size;
   std::string anchor = "center";
+  std::string varnish = "none";
+  double varnish_thickness_mm = 0.03;
+  std::string region;  // X,Y,W,H in cells
   std::string save;
   double history_mb = 64.0;
 };
@@ -30,8 +35,12 @@ void run(const EditArgs& args) {
   if (!args.crop.empty()) edit.crop = render::parse_cell_region(args.crop);
   if (args.size) edit.size = std::pair{args.size->width, args.size->height};
   edit.anchor = paintcore::parse_canvas_anchor(args.anchor);
-  if (!edit.crop && !edit.size)
-    throw std::runtime_error("edit: nothing to change (give --crop X,Y,W,H and/or --size WxH)");
+  edit.varnish = render::parse_varnish(args.varnish);
+  edit.varnish_thickness_mm = args.varnish_thickness_mm;
+  if (!args.region.empty()) edit.varnish_region = render::parse_cell_region(args.region);
+  if (!edit.crop && !edit.size && !edit.varnish && !edit.varnish_region)
+    throw std::runtime_error(
+        "edit: nothing to change (give --crop X,Y,W,H, --size WxH and/or --varnish FINISH)");
   paintcore::Painting painting = paintcore::Painting::load(args.painting);
   if (!painting.load_warning().empty()) warn(painting.load_warning());
   const CanvasEditResult result = edit_canvas(painting, edit);
@@ -43,7 +52,9 @@ void run(const EditArgs& args) {
 
 const CommandRegistrar registrar("edit", [](CLI::App& root) {
   CLI::App* cmd = root.add_subcommand(
-      "edit", "Crop or resize a painting's canvas (undoable: the saved history holds the change)");
+      "edit",
+      "Crop or resize a painting's canvas, or varnish it (undoable: the saved history holds the "
+      "change)");
   auto args = std::make_shared<EditArgs>();
   cmd->add_option("painting", args->painting, "The .impasto painting file")->required();
   cmd->add_option("--crop", args->crop,
@@ -53,6 +64,18 @@ const CommandRegistrar registrar("edit", [](CLI::App& root) {
                   "Where the old canvas sits when --size changes it: center, top-left, top, "
                   "top-right, left, right, bottom-left, bottom, bottom-right")
       ->capture_default_str();
+  std::vector<std::string> varnishes{"none"};
+  for (const auto& name : util::names_of(render::surface::kFinishNames)) varnishes.push_back(name);
+  cmd->add_option("--varnish", args->varnish,
+                  "A coat of varnish of this finish over the painting (or --region), wet until "
+                  "the painting is dried; ghs renders its surface (docs/surface.md)")
+      ->check(CLI::IsMember(varnishes))
+      ->capture_default_str();
+  cmd->add_option("--varnish-thickness", args->varnish_thickness_mm, "The coat's thickness, mm")
+      ->check(CLI::Range(1e-4, paintcore::kMaxVarnishMm))
+      ->capture_default_str();
+  cmd->add_option("--region", args->region,
+                  "Varnish only the rectangle X,Y,W,H (cells, after --crop and --size)");
   add_save_option(*cmd, args->save, "the edited painting")->required();
   cmd->add_option("--history-mb", args->history_mb,
                   "Undo history kept in the saved file, newest steps first (0: none)")

@@ -96,7 +96,10 @@ const std::vector<VocabularyChoice>& vocabulary_choices() {
                           render::kSurfaceModelNames, defaults.surface.model));
     list.push_back(choice("--medium", "the finish the paint's medium dries to",
                           render::surface::kFinishNames, defaults.surface.medium));
-    VocabularyChoice varnish{"--varnish", "a varnish over the whole painting", {"none"}, "none"};
+    VocabularyChoice varnish{"--varnish",
+                             "a varnish: render's where the painting has none, edit's a coat",
+                             {"none"},
+                             "none"};
     for (const std::string& finish : util::names_of(render::surface::kFinishNames))
       varnish.names.push_back(finish);
     list.push_back(std::move(varnish));

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include <impasto/paintcore/paint_body.hpp>
+#include <impasto/paintcore/paint_surface.hpp>
 
 namespace impasto::input::detail {
 
@@ -115,12 +116,25 @@ BrushEvent parse_brush(const Fields& f, const LineContext& where) {
 
 LoadEvent parse_load(Fields f, const LineContext& where) {
   LoadEvent load;
-  // An optional last field body=NAME gives the paint's body.
-  if (f.size() > 1 && !is_quoted(f.back()) && f.back().starts_with("body=")) {
-    load.body = std::string(f.back().substr(5));
-    if (!paintcore::paint_body_from_name(load.body))
-      where.fail("body", "unknown paint body '" + load.body.substr(0, 32) +
-                             "' (known: " + paintcore::paint_body_names() + ")");
+  // Optional last fields, in any order: body=NAME gives the paint's body, medium=FINISH[:AMOUNT]
+  // its medium (paint_surface.hpp).
+  while (f.size() > 1 && !is_quoted(f.back()) &&
+         (f.back().starts_with("body=") || f.back().starts_with("medium="))) {
+    if (f.back().starts_with("medium=")) {
+      if (!load.medium.empty()) where.fail("medium", "given twice");
+      load.medium = std::string(f.back().substr(7));
+      try {
+        paintcore::parse_medium(load.medium);
+      } catch (const std::runtime_error& e) {
+        where.fail("medium", e.what());
+      }
+    } else {
+      if (!load.body.empty()) where.fail("body", "given twice");
+      load.body = std::string(f.back().substr(5));
+      if (!paintcore::paint_body_from_name(load.body))
+        where.fail("body", "unknown paint body '" + load.body.substr(0, 32) +
+                               "' (known: " + paintcore::paint_body_names() + ")");
+    }
     f.pop_back();
   }
   if (f.size() < 4 || f.size() % 2 != 0) {
@@ -258,6 +272,7 @@ struct LineWriter {
       line.add(shortest(p.parts));
     }
     if (!e.body.empty()) line.add("body=" + e.body);
+    if (!e.medium.empty()) line.add("medium=" + e.medium);
     return line.text;
   }
   std::string operator()(const WipeEvent&) const { return "wipe"; }

@@ -5,6 +5,8 @@
 #include <map>
 #include <stdexcept>
 
+#include "impasto/paintcore/paint_surface.hpp"
+
 namespace impasto::paintcore {
 namespace {
 
@@ -193,6 +195,7 @@ Canvas reframed_canvas(const Canvas& canvas, const CanvasFrame& frame, int slot_
         target.dry_height_mm[t] = tile->dry_height_mm[c];
         target.wet_volume_mm[t] = tile->wet_volume_mm[c];
         for (int s = 0; s < slots; ++s) target.pigment(s)[t] = tile->pigment(s)[c];
+        copy_cell_surface(tile, static_cast<int>(c), target, static_cast<int>(t));
       }
   }
   for (const DryLayer& layer : canvas.dry_layers())

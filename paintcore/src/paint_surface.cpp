@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -43,6 +44,19 @@ FinishRoughness roughness_at_log_rms(double log_rms) {
   return {rms, film_roughness(kOrder.back()).correlation_um};
 }
 
+std::string medium_spelling(const Medium& medium) {
+  std::string out(finish_name(medium.finish));
+  if (medium.amount != 1.0) {
+    char amount[32];
+    for (int digits = 6; digits <= 17; ++digits) {  // the shortest that reads back the same
+      std::snprintf(amount, sizeof amount, ":%.*g", digits, medium.amount);
+      if (std::stod(amount + 1) == medium.amount) break;
+    }
+    out += amount;
+  }
+  return out;
+}
+
 void validate(const Medium& medium) {
   if (static_cast<int>(medium.finish) >= kFinishCount)
     throw std::runtime_error("medium: field 'finish' is not a finish");
@@ -73,6 +87,21 @@ PaintMedium mix(const PaintMedium& a, double a_volume, const PaintMedium& b, dou
                     ? static_cast<float>((medium_a * a.log_rms + medium_b * b.log_rms) / medium)
                     : a.log_rms;
   return out;
+}
+
+void copy_cell_surface(const Tile* from, int from_cell, Tile& to, int to_cell) {
+  if (from == nullptr) return;
+  const auto f = static_cast<std::size_t>(from_cell), t = static_cast<std::size_t>(to_cell);
+  if (!from->medium.empty()) {
+    if (to.medium.empty()) to.medium.assign(std::size_t{kMediumPlanes} * kTileCells, 0.0f);
+    for (std::size_t k = 0; k < kMediumPlanes; ++k)
+      to.medium[k * kTileCells + t] = from->medium[k * kTileCells + f];
+  }
+  if (!from->varnish.empty()) {
+    if (to.varnish.empty()) to.varnish.assign(std::size_t{kVarnishPlanes} * kTileCells, 0.0f);
+    for (std::size_t k = 0; k < kVarnishPlanes; ++k)
+      to.varnish[k * kTileCells + t] = from->varnish[k * kTileCells + f];
+  }
 }
 
 CellSurface cell_surface(const Tile* tile, int cell) {

@@ -147,6 +147,17 @@ Painting Painting::refined(int scale) const {
             if (tile.wet_volume_mm[static_cast<std::size_t>(c)] == 0.0f) out[c] = 0.0f;
         }
       }
+      // Media and varnish: each fine cell takes its coarse cell's (a finish, not a height).
+      if (any_tile(ax, ay, [&](int i) { return has_surface(coarse.tile(i)); })) {
+        Tile& tile = fine.ensure_tile(index, slots);
+        for (int y = 0; y < ny; ++y)
+          for (int x = 0; x < nx; ++x) {
+            const int cx = (ftx * kTileSize + x) / scale, cy = (fty * kTileSize + y) / scale;
+            copy_cell_surface(coarse.tile(coarse.tile_index(cx / kTileSize, cy / kTileSize)),
+                              (cy % kTileSize) * kTileSize + cx % kTileSize, tile,
+                              y * kTileSize + x);
+          }
+      }
       for (std::size_t l = 0; l < coarse.dry_layers().size(); ++l) {
         const DryLayer& layer = coarse.dry_layers()[l];
         if (!any_tile(ax, ay, [&](int i) { return layer.find(i) != nullptr; })) continue;

@@ -50,6 +50,37 @@ class CanvasEditCommand : public ::testing::Test {
   std::uint64_t original_hash_ = 0;
 };
 
+TEST_F(CanvasEditCommand, VarnishOverARegionIsSavedWithItsUndoAndDriesWithThePaint) {
+  run("edit " + painting().string() +
+      " --varnish satin --varnish-thickness 0.05 --region 40,10,20,30 --save " +
+      file("varnished.impasto").string());
+  paintcore::Painting edited = paintcore::Painting::load(file("varnished.impasto"), 1);
+  const paintcore::Tile* tile = edited.canvas().tile(0);
+  ASSERT_NE(tile, nullptr);
+  const paintcore::CellSurface in = paintcore::cell_surface(tile, 20 * 64 + 45);
+  EXPECT_FLOAT_EQ(in.varnish_mm, 0.05f);
+  EXPECT_FLOAT_EQ(in.varnish_wetness(), 1.0f);
+  EXPECT_FLOAT_EQ(in.varnish_log_rms,
+                  static_cast<float>(paintcore::finish_log_rms(paintcore::Finish::satin)));
+  EXPECT_FALSE(paintcore::cell_surface(tile, 20 * 64 + 39).varnished());
+  edited.dry(1.0);
+  EXPECT_FLOAT_EQ(paintcore::cell_surface(edited.canvas().tile(0), 20 * 64 + 45).varnish_wetness(),
+                  0.0f);
+  ASSERT_TRUE(edited.undo());  // the drying
+  ASSERT_TRUE(edited.undo());  // the varnish
+  EXPECT_EQ(edited.state_hash(), original_hash_);
+  // Bad requests name their option.
+  for (const std::string& bad : {std::string(" --varnish satin --region 70,50,20,20"),
+                                 std::string(" --region 0,0,5,5")}) {
+    try {
+      run("edit " + painting().string() + bad + " --save " + file("bad.impasto").string());
+      ADD_FAILURE() << bad;
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find("--region"), std::string::npos) << e.what();
+    }
+  }
+}
+
 TEST_F(CanvasEditCommand, CropThenResizeIsSavedWithItsUndo) {
   run("edit " + painting().string() + " --crop 10,5,50,40 --size 70x70 --anchor top-left --save " +
       file("out.impasto").string());

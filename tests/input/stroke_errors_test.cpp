@@ -74,6 +74,13 @@ INSTANTIATE_TEST_SUITE_P(
         ErrorCase{"UnknownBody", kHeader + "load 5 \"Titanium White\" 1 body=gel\n",
                   "bad.strokes:2: field 'body': unknown paint body 'gel' (known: fluid, soft, "
                   "heavy, paste)"},
+        ErrorCase{"UnknownMedium", kHeader + "load 5 \"Titanium White\" 1 medium=shiny\n",
+                  "bad.strokes:2: field 'medium': unknown finish 'shiny' (known: gloss, satin, "
+                  "matte)"},
+        ErrorCase{"MediumAmountOutOfRange",
+                  kHeader + "load 5 \"Titanium White\" 1 medium=matte:1.5 body=soft\n",
+                  "bad.strokes:2: field 'medium': the amount of medium '1.5' is not a number in "
+                  "[0, 1]"},
         ErrorCase{"Garbage", kHeader + "pen 0 1x 0 0 0 0 0 0\n",
                   "bad.strokes:2: field 'x': expected a number, found '1x'"},
         ErrorCase{"TimeBackwards", kHeader + "pen 1 0 0 0 0 0 0 0\npen 0.5 0 0 0 0 0 0 0\n",

@@ -37,6 +37,8 @@ StrokeFile session() {
       BrushEvent{"round", 4.5, 0.7, {{"bristles", 200.0}, {"splay", 0.125}}},
       LoadEvent{30.0, {{"Titanium White", 2.0}, {"Ultramarine Blue (Green Shade)", 1.0}}, {}},
       LoadEvent{5.0, {{"Titanium White", 1.0}}, "fluid"},
+      LoadEvent{5.0, {{"Titanium White", 1.0}}, "soft", "matte:0.5"},
+      LoadEvent{5.0, {{"Titanium White", 1.0}}, {}, "gloss"},
       pen(0.0, 10.0, 20.0, 0.0f, paintcore::kPenInRange),
       // Values with no short decimal form: the writer must keep every bit.
       pen(0.1, 1.0 / 3.0, std::nextafter(20.0, 30.0), 1.0f / 3.0f,

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 
+#include "impasto/paintcore/canvas_reframe.hpp"
 #include "test_util.hpp"
 
 namespace impasto::paintcore {
@@ -191,6 +192,24 @@ TEST(PaintSurface, UndoAfterReopeningStillTakesTheVarnishAway) {
   EXPECT_GT(surface_at(back, 30, 20).medium.share, 0.5f);  // the stroke's medium stays
   ASSERT_TRUE(back.undo());
   EXPECT_FLOAT_EQ(surface_at(back, 30, 20).medium.share, 0.0f);
+}
+
+TEST(PaintSurface, CropAndTheFinerCanvasKeepTheSurfaceWithThePaint) {
+  Painting p = brushed();
+  p.load_brush({{"red", 1.0}}, 5.0, kDefaultPaintBody, Medium{Finish::matte, 1.0});
+  test::stroke_line(p, 1.0, 2.0, 5.0, 2.0, 0.8f);
+  p.apply_varnish(Finish::satin, 0.05, CellRect{70, 10, 90, 30});
+  const CellSurface painted = surface_at(p, 30, 20), varnished = surface_at(p, 80, 20);
+  ASSERT_GT(painted.medium.share, 0.5f);
+  const Painting fine = p.refined(2);
+  EXPECT_EQ(surface_at(fine, 61, 41).medium, painted.medium);
+  EXPECT_EQ(surface_at(fine, 161, 41).varnish_mm, varnished.varnish_mm);
+  EXPECT_FALSE(surface_at(fine, 200, 41).varnished());
+  p.reframe_canvas(crop_frame(20, 5, 80, 40));
+  EXPECT_EQ(surface_at(p, 10, 15).medium, painted.medium);
+  EXPECT_EQ(surface_at(p, 60, 15).varnish_mm, varnished.varnish_mm);
+  ASSERT_TRUE(p.undo());
+  EXPECT_EQ(surface_at(p, 80, 20).varnish_mm, varnished.varnish_mm);
 }
 
 }  // namespace

@@ -116,7 +116,9 @@ void SessionPlayer::apply(const input::StrokeEvent& event) {
                 data::PigmentDatabase::defaults().get(part.pigment);
               mix.push_back({part.pigment, part.parts});
             }
-            painting_.load_brush(mix, e.volume_mm3, load_body(e));
+            painting_.load_brush(
+                mix, e.volume_mm3, load_body(e),
+                e.medium.empty() ? std::nullopt : std::optional(paintcore::parse_medium(e.medium)));
           },
           [&](const input::WipeEvent&) { painting_.wipe_brush(); },
           [&](const input::DryEvent& e) { painting_.dry(e.fraction); },

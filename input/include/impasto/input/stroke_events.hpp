@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <variant>
 #include <vector>
 
@@ -61,10 +62,21 @@ struct PigmentPart {
 
 // Load the brush with a volume of a pigment mix.
 struct LoadEvent {
+  // A constructor, not an aggregate: the medium came later, and the callers that name only
+  // the volume, the mix and the body need not spell it.
+  LoadEvent() = default;
+  LoadEvent(double volume, std::vector<PigmentPart> parts, std::string paint_body = {},
+            std::string paint_medium = {})
+      : volume_mm3(volume),
+        mix(std::move(parts)),
+        body(std::move(paint_body)),
+        medium(std::move(paint_medium)) {}
   double volume_mm3 = 0.0;
   std::vector<PigmentPart> mix;
   // The paint's body (paint_body.hpp); the default body when empty.
   std::string body;
+  // The paint's medium, "FINISH[:AMOUNT]" (paintcore::parse_medium); none when empty.
+  std::string medium;
   bool operator==(const LoadEvent&) const = default;
 };
 

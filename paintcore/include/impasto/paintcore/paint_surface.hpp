@@ -8,7 +8,12 @@
 //
 // Per cell, only in tiles that have them (Tile::medium, Tile::varnish are empty elsewhere, so
 // a painting without media or varnish costs nothing and renders as before).
+#include <array>
 #include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <string_view>
 
 #include "impasto/paintcore/canvas.hpp"
 
@@ -17,6 +22,12 @@ namespace impasto::paintcore {
 // The finishes a medium or a varnish dries to.
 enum class Finish : std::uint8_t { gloss, satin, matte };
 inline constexpr int kFinishCount = 3;
+// Their spellings (stroke files, the command line, the painting's summary).
+inline constexpr std::array<std::string_view, kFinishCount> kFinishSpellings{"gloss", "satin",
+                                                                             "matte"};
+constexpr std::string_view finish_name(Finish finish) {
+  return kFinishSpellings[static_cast<std::size_t>(finish)];
+}
 
 // RMS height and correlation length (µm) of a film's micro-roughness.
 struct FinishRoughness {
@@ -44,6 +55,37 @@ struct Medium {
 };
 void validate(const Medium& medium);  // throws std::runtime_error naming the field
 double medium_log_rms(const Medium& medium);
+std::string medium_spelling(const Medium& medium);  // what parse_medium reads back
+
+// Inline: the stroke files' reader (input) takes paintcore's headers, not its library.
+inline std::optional<Finish> finish_from_name(std::string_view name) {
+  for (int k = 0; k < kFinishCount; ++k)
+    if (kFinishSpellings[static_cast<std::size_t>(k)] == name) return static_cast<Finish>(k);
+  return std::nullopt;
+}
+
+// "matte" (amount 1) or "matte:0.5"; throws std::runtime_error saying what is wrong.
+inline Medium parse_medium(std::string_view text) {
+  const auto colon = text.find(':');
+  const std::string_view name = text.substr(0, colon);
+  const std::optional<Finish> finish = finish_from_name(name);
+  if (!finish)
+    throw std::runtime_error("unknown finish '" + std::string(name.substr(0, 32)) +
+                             "' (known: gloss, satin, matte)");
+  Medium medium{*finish, 1.0};
+  if (colon != std::string_view::npos) {
+    const std::string amount(text.substr(colon + 1, 32));
+    std::size_t used = 0;
+    try {
+      medium.amount = std::stod(amount, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != amount.size() || !(medium.amount >= 0.0 && medium.amount <= 1.0))
+      throw std::runtime_error("the amount of medium '" + amount + "' is not a number in [0, 1]");
+  }
+  return medium;
+}
 
 // The medium a volume of paint carries: the share of that paint mixed with a medium (0: none
 // set, the render settings' medium decides, as in paintings made before media existed) and
@@ -89,6 +131,10 @@ CellSurface cell_surface(const Tile* tile, int cell);
 inline bool has_surface(const Tile* tile) {
   return tile != nullptr && (!tile->medium.empty() || !tile->varnish.empty());
 }
+// Copies one cell's medium and varnish from `from` (null or without data: nothing) to `to`,
+// making `to`'s planes when needed: a crop, a resize or a finer canvas keeps the surface with
+// the paint.
+void copy_cell_surface(const Tile* from, int from_cell, Tile& to, int to_cell);
 // Pointers to a plane of a tile's data (nullptr when the tile has none).
 inline const float* medium_plane(const Tile& tile, int plane) {
   return tile.medium.empty() ? nullptr : tile.medium.data() + plane * kTileCells;

@@ -99,7 +99,9 @@ class GhsBrdf {
 // paintcore/paint_surface.hpp), and their surfaces.
 using Finish = paintcore::Finish;
 inline constexpr util::EnumNames<Finish, 3> kFinishNames{
-    {{Finish::gloss, "gloss"}, {Finish::satin, "satin"}, {Finish::matte, "matte"}}};
+    {{Finish::gloss, paintcore::finish_name(Finish::gloss)},
+     {Finish::satin, paintcore::finish_name(Finish::satin)},
+     {Finish::matte, paintcore::finish_name(Finish::matte)}}};
 // RMS roughness and correlation length of a film of that finish (paintcore's table).
 Roughness finish_roughness(Finish finish);
 // A surface between the finishes by its log10 RMS (paintcore::roughness_at_log_rms).
