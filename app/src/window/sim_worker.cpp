@@ -1,5 +1,6 @@
 #include "window/sim_worker.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <variant>
 
@@ -8,6 +9,10 @@ namespace {
 
 // The recording is synced at every stroke end and at least this often while it has news.
 constexpr double kSyncEvery_s = 2.0;
+// An autosave keeps only the newest undo steps: it runs every few seconds, and the session's
+// recording holds the rest (a recovery that must undo further starts from an earlier mark,
+// session/rebuild.hpp). File > Save keeps the painting's own cap (64 MB by default).
+constexpr std::size_t kAutosaveHistoryBytes = std::size_t{4} << 20;
 
 double now_s() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
@@ -144,11 +149,15 @@ void SimWorker::do_autosave(const std::filesystem::path& file) {
   std::string error;
   bool saved = false;
   if (!painting_.in_stroke()) {
+    const std::size_t history = painting_.saved_history_bytes();
     try {
+      painting_.set_saved_history_bytes(std::min(history, kAutosaveHistoryBytes));
       painting_.save(file);
+      painting_.set_saved_history_bytes(history);
       mark_saved(file);
       saved = true;
     } catch (const std::exception& e) {
+      painting_.set_saved_history_bytes(history);
       error = std::string("autosave failed: ") + e.what();
     }
   }
