@@ -96,9 +96,12 @@ class ContentHash {
   util::Fnv1a hash_;
 };
 
-NodeRuleKey key_of(const data::Spectrum& light, const data::ColorMatchingFunctions& cmf, int nodes,
-                   const WavelengthRange& range, NodeWeights weights,
-                   const std::vector<data::Pigment>& pigments, const data::Spectrum& ground) {
+}  // namespace
+
+NodeRuleKey palette_rule_key(const data::Spectrum& light, const data::ColorMatchingFunctions& cmf,
+                             int nodes, const WavelengthRange& range, NodeWeights weights,
+                             const std::vector<data::Pigment>& pigments,
+                             const data::Spectrum& ground) {
   ContentHash hash;
   hash.add(kOptimiserVersion);
   hash.add(static_cast<double>(nodes));
@@ -118,6 +121,23 @@ NodeRuleKey key_of(const data::Spectrum& light, const data::ColorMatchingFunctio
   }
   return {hash.value(), weights, nodes};
 }
+
+SpectralSampling build_palette_rule(const data::Spectrum& light,
+                                    const data::ColorMatchingFunctions& cmf, int nodes,
+                                    const WavelengthRange& range, NodeWeights weights,
+                                    const std::vector<data::Pigment>& pigments,
+                                    const data::Spectrum& ground) {
+  const PaletteTrainingSet training(light, cmf, range, pigments, ground);
+  if (weights == NodeWeights::fitted) {
+    SpectralSampling sampling =
+        make_spectral_sampling(light, cmf, nodes, range, NodeWeights::interpolatory);
+    training.fit_readout(sampling);
+    return sampling;
+  }
+  return optimise_nodes(training, light, cmf, nodes, range).sampling;
+}
+
+namespace {
 
 // --- the rules of this process ---
 
@@ -141,20 +161,6 @@ struct Registry {
 Registry& registry() {
   static Registry instance;
   return instance;
-}
-
-SpectralSampling build_rule(const data::Spectrum& light, const data::ColorMatchingFunctions& cmf,
-                            int nodes, const WavelengthRange& range, NodeWeights weights,
-                            const std::vector<data::Pigment>& pigments,
-                            const data::Spectrum& ground) {
-  const PaletteTrainingSet training(light, cmf, range, pigments, ground);
-  if (weights == NodeWeights::fitted) {
-    SpectralSampling sampling =
-        make_spectral_sampling(light, cmf, nodes, range, NodeWeights::interpolatory);
-    training.fit_readout(sampling);
-    return sampling;
-  }
-  return optimise_nodes(training, light, cmf, nodes, range).sampling;
 }
 
 }  // namespace
@@ -317,7 +323,7 @@ SpectralSampling make_palette_sampling(const data::Spectrum& light,
                                   trained ? NodeWeights::interpolatory : weights);
   };
   if (!trained || nodes == 0 || pigments.empty()) return stand_in();
-  const NodeRuleKey key = key_of(light, cmf, nodes, range, weights, pigments, ground);
+  const NodeRuleKey key = palette_rule_key(light, cmf, nodes, range, weights, pigments, ground);
 
   Registry& r = registry();
   std::unique_lock<std::mutex> lock(r.mutex);
@@ -350,7 +356,8 @@ SpectralSampling make_palette_sampling(const data::Spectrum& light,
   lock.unlock();
   auto build = [=, &r] {
     try {
-      SpectralSampling sampling = build_rule(light, cmf, nodes, range, weights, pigments, ground);
+      SpectralSampling sampling =
+          build_palette_rule(light, cmf, nodes, range, weights, pigments, ground);
       store_node_rule(key, sampling);
       const std::lock_guard<std::mutex> guard(r.mutex);
       r.built.emplace(key.hash, sampling);

@@ -13,7 +13,10 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
+#include "impasto/data/pigments.hpp"
+#include "impasto/data/spectrum.hpp"
 #include "impasto/render/spectral_sampling.hpp"
 
 namespace impasto::render {
@@ -26,6 +29,18 @@ struct NodeRuleKey {
   NodeWeights weights = NodeWeights::optimised;
   int nodes = 0;
 };
+
+// The key of a palette's rule (what make_palette_sampling looks it up by), and the rule built
+// from scratch, neither looked up nor kept (benchmarks time it).
+NodeRuleKey palette_rule_key(const data::Spectrum& light, const data::ColorMatchingFunctions& cmf,
+                             int nodes, const WavelengthRange& range, NodeWeights weights,
+                             const std::vector<data::Pigment>& pigments,
+                             const data::Spectrum& ground);
+SpectralSampling build_palette_rule(const data::Spectrum& light,
+                                    const data::ColorMatchingFunctions& cmf, int nodes,
+                                    const WavelengthRange& range, NodeWeights weights,
+                                    const std::vector<data::Pigment>& pigments,
+                                    const data::Spectrum& ground);
 
 // The rule file's text, and back. parse_node_rule throws std::runtime_error saying what is
 // wrong (a wrong header, version, key or checksum; a node outside `range`, out of order or
