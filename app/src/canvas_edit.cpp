@@ -64,6 +64,13 @@ CanvasEditResult edit_canvas(paintcore::Painting& painting, const CanvasEdit& ed
                   cells.y1 - cells.y0);
     result.varnished = text;
   }
+  if (edit.dry) {
+    if (!(*edit.dry >= 0.0 && *edit.dry <= 1.0))
+      throw std::runtime_error("--dry " + std::to_string(*edit.dry) + ": must be in [0, 1]");
+    painting.dry(*edit.dry);
+    result.dried = *edit.dry;
+  }
+  result.reframed = edit.crop.has_value() || edit.size.has_value();
   return result;
 }
 
@@ -71,7 +78,7 @@ std::string CanvasEditResult::summary(const paintcore::Painting& painting) const
   char text[160];
   std::snprintf(text, sizeof text, "canvas %dx%d -> %dx%d cells; paint cut away: %.4g mm^3",
                 old_width, old_height, width, height, cut.volume);
-  std::string out = text;
+  std::string out = reframed ? text : "";
   std::string parts;
   for (std::size_t s = 0; s < cut.pigment.size() && s < painting.pigment_slots().size(); ++s) {
     if (cut.pigment[s] <= 0.0) continue;
@@ -80,7 +87,13 @@ std::string CanvasEditResult::summary(const paintcore::Painting& painting) const
     parts += text;
   }
   if (!parts.empty()) out += " (" + parts + ")";
-  return varnished.empty() ? out : out + "; " + varnished;
+  const auto add = [&out](const std::string& part) { out += (out.empty() ? "" : "; ") + part; };
+  if (!varnished.empty()) add(varnished);
+  if (dried) {
+    std::snprintf(text, sizeof text, "dried by %.3g", *dried);
+    add(text);
+  }
+  return out;
 }
 
 void export_painting(const paintcore::Painting& painting, const ExportRequest& request) {

@@ -21,18 +21,22 @@ struct CanvasEdit {
   std::optional<paintcore::Finish> varnish;
   double varnish_thickness_mm = 0.03;
   std::optional<render::CellRegion> varnish_region;
+  // Then: let the wet paint and varnish dry by this fraction (Painting::dry), or not at all.
+  std::optional<double> dry;
 };
 
 struct CanvasEditResult {
   int old_width = 0, old_height = 0, width = 0, height = 0;
-  paintcore::PaintTotals cut;  // mm^3 cut away, by slot
-  std::string varnished;       // "0.03 mm of satin varnish over 50x40 cells", or empty
+  paintcore::PaintTotals cut;   // mm^3 cut away, by slot
+  bool reframed = false;        // a crop or a resize was asked for
+  std::string varnished;        // "0.03 mm of satin varnish over 50x40 cells", or empty
+  std::optional<double> dried;  // the fraction dried last
   // "200x150 -> 100x90 cells; cut away 1.25 mm^3 of paint (Burnt Sienna 0.6, ...)"
   std::string summary(const paintcore::Painting& painting) const;
 };
 
-// Applies the crop, the resize, then the varnish; each is one undo step. Throws naming the
-// option.
+// Applies the crop, the resize, the varnish, then the drying; each is one undo step. Throws
+// naming the option.
 CanvasEditResult edit_canvas(paintcore::Painting& painting, const CanvasEdit& edit);
 
 struct ExportRequest {

@@ -26,6 +26,7 @@ struct EditArgs {
   std::string varnish = "none";
   double varnish_thickness_mm = 0.03;
   std::string region;  // X,Y,W,H in cells
+  std::optional<double> dry;
   std::string save;
   double history_mb = 64.0;
 };
@@ -38,9 +39,11 @@ void run(const EditArgs& args) {
   edit.varnish = render::parse_varnish(args.varnish);
   edit.varnish_thickness_mm = args.varnish_thickness_mm;
   if (!args.region.empty()) edit.varnish_region = render::parse_cell_region(args.region);
-  if (!edit.crop && !edit.size && !edit.varnish && !edit.varnish_region)
+  edit.dry = args.dry;
+  if (!edit.crop && !edit.size && !edit.varnish && !edit.varnish_region && !edit.dry)
     throw std::runtime_error(
-        "edit: nothing to change (give --crop X,Y,W,H, --size WxH and/or --varnish FINISH)");
+        "edit: nothing to change (give --crop X,Y,W,H, --size WxH, --varnish FINISH and/or "
+        "--dry FRACTION)");
   paintcore::Painting painting = paintcore::Painting::load(args.painting);
   if (!painting.load_warning().empty()) warn(painting.load_warning());
   const CanvasEditResult result = edit_canvas(painting, edit);
@@ -76,6 +79,10 @@ const CommandRegistrar registrar("edit", [](CLI::App& root) {
       ->capture_default_str();
   cmd->add_option("--region", args->region,
                   "Varnish only the rectangle X,Y,W,H (cells, after --crop and --size)");
+  cmd->add_option("--dry", args->dry,
+                  "Last, let the wet paint and varnish dry by this fraction, 0..1 (as a stroke "
+                  "file's dry record)")
+      ->check(CLI::Range(0.0, 1.0));
   add_save_option(*cmd, args->save, "the edited painting")->required();
   cmd->add_option("--history-mb", args->history_mb,
                   "Undo history kept in the saved file, newest steps first (0: none)")

@@ -63,15 +63,17 @@ TEST_F(CanvasEditCommand, VarnishOverARegionIsSavedWithItsUndoAndDriesWithThePai
   EXPECT_FLOAT_EQ(in.varnish_log_rms,
                   static_cast<float>(paintcore::finish_log_rms(paintcore::Finish::satin)));
   EXPECT_FALSE(paintcore::cell_surface(tile, 20 * 64 + 39).varnished());
-  edited.dry(1.0);
+  run("edit " + file("varnished.impasto").string() + " --dry 1 --save " +
+      file("dried.impasto").string());
+  edited = paintcore::Painting::load(file("dried.impasto"), 1);
   EXPECT_FLOAT_EQ(paintcore::cell_surface(edited.canvas().tile(0), 20 * 64 + 45).varnish_wetness(),
                   0.0f);
   ASSERT_TRUE(edited.undo());  // the drying
   ASSERT_TRUE(edited.undo());  // the varnish
   EXPECT_EQ(edited.state_hash(), original_hash_);
   // Bad requests name their option.
-  for (const std::string& bad : {std::string(" --varnish satin --region 70,50,20,20"),
-                                 std::string(" --region 0,0,5,5")}) {
+  for (const std::string& bad :
+       {std::string(" --varnish satin --region 70,50,20,20"), std::string(" --region 0,0,5,5")}) {
     try {
       run("edit " + painting().string() + bad + " --save " + file("bad.impasto").string());
       ADD_FAILURE() << bad;
