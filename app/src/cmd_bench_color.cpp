@@ -7,6 +7,7 @@
 #include <impasto/data/lights.hpp>
 #include <impasto/data/pigments.hpp>
 #include <impasto/render/color_accuracy.hpp>
+#include <impasto/render/node_cache.hpp>
 #include <impasto/render/node_optimisation.hpp>
 #include <impasto/render/render_settings.hpp>
 #include <impasto/render/spectral_palette.hpp>
@@ -54,11 +55,13 @@ TrainingRow train_rule(const data::Spectrum& light, const std::string& light_nam
   const data::Spectrum ground = hiding_reflectance(data::PigmentDatabase::defaults().get(
       "Titanium White"));  // the ground of the accuracy samples
   const auto start = std::chrono::steady_clock::now();
-  // The first request for this light builds the rule; the accuracy rows below reuse it.
+  // Built from scratch (what a new palette or light costs once) and kept: the accuracy rows
+  // below read it from the cache.
   const SpectralSampling rule =
-      make_palette_sampling(light, cmf, nodes, {}, weights, pigments, ground);
+      build_palette_rule(light, cmf, nodes, {}, weights, pigments, ground);
   const std::chrono::duration<double, std::milli> elapsed =
       std::chrono::steady_clock::now() - start;
+  store_node_rule(palette_rule_key(light, cmf, nodes, {}, weights, pigments, ground), rule);
   const PaletteTrainingSet training(light, cmf, {}, pigments, ground);
   return {nodes,
           light_name,
