@@ -3,6 +3,7 @@
 #include "window/enum_combo.hpp"
 #include "window/plot.hpp"
 #include "window/shortcuts.hpp"
+#include "window/surface_panel.hpp"
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -666,6 +667,7 @@ void draw_panels(PanelContext& context) {
   tablet_panel(context);
   light_panel(context);
   cracks_panel(context);
+  surface_panel(context.state);
   layers_panel(context);
   history_panel(context);
   ImGui::End();
