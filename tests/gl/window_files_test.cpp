@@ -4,27 +4,19 @@
 // be opened shows as an error notification. What the window shows is read from its title
 // and from screenshots of it (import).
 #include <gtest/gtest.h>
-#include <signal.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
-#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <functional>
-#include <sstream>
 #include <string>
-#include <thread>
 #include <vector>
 
-#include "impasto/render/image.hpp"
+#include "window_driver.hpp"
 
 namespace {
 
-namespace fs = std::filesystem;
+using namespace impasto::window_test;
 using impasto::render::Image;
 
 // The window's layout at 1200 x 800 (ImGui's default font): the File menu's items, and the
@@ -36,30 +28,6 @@ constexpr int kDialogX = (kWindowW - 780) / 2, kDialogY = (kWindowH - 500) / 2;
 constexpr int kFolderFieldX = kDialogX + 320, kFolderFieldY = kDialogY + 36;
 constexpr int kNameFieldX = kDialogX + 300, kNameFieldY = kDialogY + 451;
 constexpr int kAcceptX = kDialogX + 726, kAcceptY = kDialogY + 474;
-
-std::string output_of(const std::string& command) {
-  std::string output;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return output;
-  char buffer[4096];
-  while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
-  pclose(pipe);
-  while (!output.empty() && (output.back() == '\n' || output.back() == ' ')) output.pop_back();
-  return output;
-}
-
-bool wait_for(const std::function<bool()>& ready, double seconds = 60.0) {
-  const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-  while (std::chrono::steady_clock::now() < end) {
-    if (ready()) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(150));
-  }
-  return false;
-}
-
-void xdotool(const std::string& args) {
-  ASSERT_EQ(std::system(("xdotool " + args).c_str()), 0) << args;
-}
 
 // A capture of the whole window.
 bool whole(const Image& image) {
@@ -112,190 +80,98 @@ std::vector<Button> find_buttons(const Image& image, int x0, int y0, int x1, int
   return buttons;
 }
 
-// Over the part of the region the image has (a capture can come back empty or small).
-double mean_luma(const Image& image, int x0, int y0, int x1, int y1) {
-  double sum = 0.0;
-  int n = 0;
-  for (int y = std::max(0, y0); y < std::min(image.height, y1); ++y) {
-    for (int x = std::max(0, x0); x < std::min(image.width, x1); ++x) {
-      const float* p = image.pixel(x, y);
-      sum += 0.2126 * p[0] + 0.7152 * p[1] + 0.0722 * p[2];
-      ++n;
-    }
-  }
-  return n ? sum / n : 0.0;
+// The window's menus and dialogs, read from its screenshots.
+// File > item, once the menu is seen open (its dark popup over the white canvas).
+void file_menu(Window& window, int item_y) {
+  window.tap(kFileMenuX, kFileMenuY);
+  ASSERT_TRUE(wait_for([&] {
+    const Image s = window.screenshot();
+    return whole(s) && mean_luma(s, 100, 125, 180, 150) < 0.3;
+  })) << "the File menu did not open";
+  window.tap(40, item_y);
 }
 
-// One painting window, run as a child with its own home, config and state folders.
-class PaintingWindow {
- public:
-  PaintingWindow(const fs::path& home, std::vector<std::string> args) : home_(home) {
-    pid_ = fork();
-    if (pid_ == 0) {
-      setenv("HOME", home.c_str(), 1);
-      setenv("XDG_CONFIG_HOME", (home / ".config").c_str(), 1);
-      setenv("XDG_STATE_HOME", (home / ".state").c_str(), 1);
-      std::vector<std::string> argv{IMPASTO_EXECUTABLE, "paint",
-                                    "--window-width",   std::to_string(kWindowW),
-                                    "--window-height",  std::to_string(kWindowH)};
-      argv.insert(argv.end(), args.begin(), args.end());
-      std::vector<char*> c_args;
-      for (auto& a : argv) c_args.push_back(a.data());
-      c_args.push_back(nullptr);
-      execv(IMPASTO_EXECUTABLE, c_args.data());
-      _exit(127);
-    }
-    wait_for(
-        [&] {
-          id_ = output_of("xdotool search --pid " + std::to_string(pid_) +
-                          " --name ' Impasto$' 2>/dev/null | head -1");
-          return !id_.empty();
-        },
-        60.0);
-    // The panels laid out: the status bar has its text.
-    if (!id_.empty()) wait_for([&] { return mean_luma(screenshot(), 0, 780, 400, 800) > 0.02; });
-  }
-  ~PaintingWindow() {
-    if (running()) {
-      kill(pid_, SIGTERM);
-      waitpid(pid_, nullptr, 0);
-    }
-  }
-  bool up() const { return !id_.empty(); }
-  std::string title() const { return output_of("xdotool getwindowname " + id_ + " 2>/dev/null"); }
-  bool running() {
-    if (exited_) return false;
-    int status = 0;
-    if (waitpid(pid_, &status, WNOHANG) == pid_) {
-      exited_ = true;
-      exit_status_ = status;
-      return false;
-    }
-    return true;
-  }
-  int exit_status() const { return exit_status_; }
-  Image screenshot() const {
-    const fs::path file = home_ / "screen.png";
-    // (Bounded: import waits for a window that has gone, holding the display.)
-    std::system(
-        ("timeout 20 import -window " + id_ + " png:'" + file.string() + "' 2>/dev/null").c_str());
-    try {
-      return impasto::render::read_png(file);
-    } catch (const std::exception&) {
-      return Image{};
-    }
-  }
-  void click(int x, int y) const {
-    xdotool("mousemove --window " + id_ + " " + std::to_string(x) + " " + std::to_string(y) +
-            " sleep 0.1 click 1 sleep 0.1");
-  }
-  void type(const std::string& text) const { xdotool("type --delay 15 '" + text + "'"); }
-  // A stroke across the canvas (left of the panels).
-  void paint(int y) const {
-    std::string drag = "mousemove --window " + id_ + " 150 " + std::to_string(y) + " mousedown 1";
-    for (int x = 160; x <= 500; x += 10) {
-      drag += " mousemove --window " + id_ + " " + std::to_string(x) + " " + std::to_string(y);
-    }
-    xdotool(drag + " mouseup 1");
-  }
-  // File > item, once the menu is seen open (its dark popup over the white canvas).
-  void file_menu(int item_y) const {
-    click(kFileMenuX, kFileMenuY);
-    ASSERT_TRUE(wait_for([&] {
-      const Image s = screenshot();
-      return whole(s) && mean_luma(s, 100, 125, 180, 150) < 0.3;
-    })) << "the File menu did not open";
-    click(40, item_y);
-  }
-  // The file dialog, seen open: its dark listing over the middle of the canvas.
-  bool dialog_open() const {
-    const Image s = screenshot();
-    return whole(s) && mean_luma(s, 560, 380, 640, 420) < 0.2;
-  }
-  std::vector<Button> buttons_near_centre() const {
-    const Image s = screenshot();
-    if (!whole(s)) return {};
-    return find_buttons(s, 250, 250, 860, 560);
-  }
-
- private:
-  fs::path home_;
-  pid_t pid_ = -1;
-  std::string id_;
-  bool exited_ = false;
-  int exit_status_ = -1;
-};
-
-fs::path fresh_home(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / (name + "_" + std::to_string(getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
+// The file dialog, seen open: its dark listing over the middle of the canvas.
+bool dialog_open(const Window& window) {
+  const Image s = window.screenshot();
+  return whole(s) && mean_luma(s, 560, 380, 640, 420) < 0.2;
 }
 
-std::string contents(const fs::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
+std::vector<Button> buttons_near_centre(const Window& window) {
+  const Image s = window.screenshot();
+  if (!whole(s)) return {};
+  return find_buttons(s, 250, 250, 860, 560);
 }
 
-bool have_tools() {
-  return std::system("command -v xdotool >/dev/null 2>&1 && command -v import >/dev/null 2>&1") ==
-         0;
+// A stroke across the canvas (left of the panels).
+void paint(Window& window, int y) {
+  window.scrub(150, 500, y);
+}
+
+// A window of its own whose home is `home` (the file dialog starts there), with hidden
+// config and state folders in it.
+WindowSetup at_home(std::vector<std::string> args = {}) {
+  WindowSetup setup;
+  setup.args = std::move(args);
+  setup.width = kWindowW;
+  setup.height = kWindowH;
+  setup.config = ".config";
+  setup.state = ".state";
+  setup.home = true;
+  return setup;
 }
 
 // Save as through the dialog: into a folder typed in its folder field, under a typed name;
 // the title follows; saving over it asks first, and Cancel there keeps the file.
 TEST(WindowFiles, SaveAsSavesWhereTheDialogSaysAndAsksBeforeReplacing) {
   ASSERT_NE(std::getenv("DISPLAY"), nullptr) << "run under xvfb-run -a";
-  if (!have_tools()) GTEST_SKIP() << "xdotool or ImageMagick's import is not installed";
-  const fs::path home = fresh_home("impasto_window_save_as");
+  if (!have_xdotool()) GTEST_SKIP() << "xdotool or ImageMagick's import is not installed";
+  const fs::path home = test_dir("impasto_window_save_as");
   const fs::path folder = home / "paintings";
   fs::create_directories(folder);
-  PaintingWindow window(home, {});
+  Window window(home, at_home());
   ASSERT_TRUE(window.up()) << "the window did not open";
   EXPECT_EQ(window.title(), "Untitled \u2014 Impasto");
-  window.paint(300);
+  paint(window, 300);
   ASSERT_TRUE(wait_for([&] { return window.title().starts_with("\u2022 Untitled"); }))
       << window.title();
 
-  window.file_menu(kMenuSaveAsY);
-  ASSERT_TRUE(wait_for([&] { return window.dialog_open(); })) << "no Save as dialog";
-  window.click(kFolderFieldX, kFolderFieldY);
-  window.type(folder.string());
-  window.click(kNameFieldX, kNameFieldY);  // leaving the folder field goes there
-  window.type("study");
-  window.click(kAcceptX, kAcceptY);
+  file_menu(window, kMenuSaveAsY);
+  ASSERT_TRUE(wait_for([&] { return dialog_open(window); })) << "no Save as dialog";
+  window.tap(kFolderFieldX, kFolderFieldY);
+  window.type(folder.string(), 15);
+  window.tap(kNameFieldX, kNameFieldY);  // leaving the folder field goes there
+  window.type("study", 15);
+  window.tap(kAcceptX, kAcceptY);
   const fs::path saved = folder / "study.impasto";
   ASSERT_TRUE(wait_for([&] { return fs::exists(saved); })) << "nothing saved at " << saved;
   EXPECT_TRUE(wait_for([&] { return window.title() == "study.impasto \u2014 Impasto"; }))
       << window.title();
   EXPECT_FALSE(fs::exists(home / "study.impasto"));
   // The folder is remembered for the next dialog, in this session and the next.
-  EXPECT_NE(contents(home / ".config" / "impasto" / "folders.txt").find(folder.string()),
+  EXPECT_NE(read_text(home / ".config" / "impasto" / "folders.txt").find(folder.string()),
             std::string::npos);
 
   // Again over the same file: the dialog opens in that folder with its name; Save asks.
-  window.paint(400);
+  paint(window, 400);
   ASSERT_TRUE(wait_for([&] { return window.title().starts_with("\u2022 study"); }));
-  const std::string first = contents(saved);
-  window.file_menu(kMenuSaveAsY);
-  ASSERT_TRUE(wait_for([&] { return window.dialog_open(); }));
-  window.click(kAcceptX, kAcceptY);
+  const std::string first = read_text(saved);
+  file_menu(window, kMenuSaveAsY);
+  ASSERT_TRUE(wait_for([&] { return dialog_open(window); }));
+  window.tap(kAcceptX, kAcceptY);
   std::vector<Button> replace;  // Replace, Cancel
-  ASSERT_TRUE(wait_for([&] { return (replace = window.buttons_near_centre()).size() == 2; }))
+  ASSERT_TRUE(wait_for([&] { return (replace = buttons_near_centre(window)).size() == 2; }))
       << "no question before replacing the file";
-  window.click(replace[1].x, replace[1].y);  // Cancel: the file stays as it was
-  ASSERT_TRUE(wait_for([&] { return window.buttons_near_centre().empty(); }));
-  EXPECT_TRUE(window.dialog_open());
-  EXPECT_EQ(contents(saved), first);
-  window.click(kAcceptX, kAcceptY);
-  ASSERT_TRUE(wait_for([&] { return (replace = window.buttons_near_centre()).size() == 2; }));
-  window.click(replace[0].x, replace[0].y);  // Replace
+  window.tap(replace[1].x, replace[1].y);  // Cancel: the file stays as it was
+  ASSERT_TRUE(wait_for([&] { return buttons_near_centre(window).empty(); }));
+  EXPECT_TRUE(dialog_open(window));
+  EXPECT_EQ(read_text(saved), first);
+  window.tap(kAcceptX, kAcceptY);
+  ASSERT_TRUE(wait_for([&] { return (replace = buttons_near_centre(window)).size() == 2; }));
+  window.tap(replace[0].x, replace[0].y);  // Replace
   EXPECT_TRUE(wait_for([&] { return window.title() == "study.impasto \u2014 Impasto"; }))
       << window.title();
-  EXPECT_NE(contents(saved), first) << "the second stroke was not saved";
+  EXPECT_NE(read_text(saved), first) << "the second stroke was not saved";
   fs::remove_all(home);
 }
 
@@ -303,46 +179,46 @@ TEST(WindowFiles, SaveAsSavesWhereTheDialogSaysAndAsksBeforeReplacing) {
 // untitled painting) saves through the dialog and quits; Discard quits without saving.
 TEST(WindowFiles, TheQuitPromptsButtonsDoWhatTheySay) {
   ASSERT_NE(std::getenv("DISPLAY"), nullptr) << "run under xvfb-run -a";
-  if (!have_tools()) GTEST_SKIP() << "xdotool or ImageMagick's import is not installed";
-  const fs::path home = fresh_home("impasto_window_quit");
+  if (!have_xdotool()) GTEST_SKIP() << "xdotool or ImageMagick's import is not installed";
+  const fs::path home = test_dir("impasto_window_quit");
   {
-    PaintingWindow window(home, {});
+    Window window(home, at_home());
     ASSERT_TRUE(window.up());
-    window.paint(300);
+    paint(window, 300);
     ASSERT_TRUE(wait_for([&] { return window.title().starts_with("\u2022 "); }));
-    window.file_menu(kMenuQuitY);
+    file_menu(window, kMenuQuitY);
     std::vector<Button> prompt;  // Save as..., Discard, Cancel
-    ASSERT_TRUE(wait_for([&] { return (prompt = window.buttons_near_centre()).size() == 3; }))
+    ASSERT_TRUE(wait_for([&] { return (prompt = buttons_near_centre(window)).size() == 3; }))
         << "no Save / Discard / Cancel prompt";
-    window.click(prompt[2].x, prompt[2].y);  // Cancel
-    ASSERT_TRUE(wait_for([&] { return window.buttons_near_centre().empty(); }));
+    window.tap(prompt[2].x, prompt[2].y);  // Cancel
+    ASSERT_TRUE(wait_for([&] { return buttons_near_centre(window).empty(); }));
     EXPECT_TRUE(window.running());
     EXPECT_TRUE(window.title().starts_with("\u2022 Untitled")) << window.title();
 
-    window.file_menu(kMenuQuitY);
-    ASSERT_TRUE(wait_for([&] { return (prompt = window.buttons_near_centre()).size() == 3; }));
-    window.click(prompt[0].x, prompt[0].y);  // Save as...: the dialog, in home
-    ASSERT_TRUE(wait_for([&] { return window.dialog_open(); }));
-    window.type("kept");  // the name field has the keyboard, its proposal selected
-    window.click(kAcceptX, kAcceptY);
+    file_menu(window, kMenuQuitY);
+    ASSERT_TRUE(wait_for([&] { return (prompt = buttons_near_centre(window)).size() == 3; }));
+    window.tap(prompt[0].x, prompt[0].y);  // Save as...: the dialog, in home
+    ASSERT_TRUE(wait_for([&] { return dialog_open(window); }));
+    window.type("kept", 15);  // the name field has the keyboard, its proposal selected
+    window.tap(kAcceptX, kAcceptY);
     EXPECT_TRUE(wait_for([&] { return !window.running(); })) << "did not quit after saving";
     EXPECT_EQ(window.exit_status(), 0);
     EXPECT_TRUE(fs::exists(home / "kept.impasto"));
   }
   {
-    PaintingWindow window(home, {(home / "kept.impasto").string()});
+    Window window(home, at_home({(home / "kept.impasto").string()}));
     ASSERT_TRUE(window.up());
     EXPECT_EQ(window.title(), "kept.impasto \u2014 Impasto");
-    const std::string saved = contents(home / "kept.impasto");
-    window.paint(450);
+    const std::string saved = read_text(home / "kept.impasto");
+    paint(window, 450);
     ASSERT_TRUE(wait_for([&] { return window.title().starts_with("\u2022 kept"); }));
-    window.file_menu(kMenuQuitY);
+    file_menu(window, kMenuQuitY);
     std::vector<Button> prompt;  // Save, Discard, Cancel
-    ASSERT_TRUE(wait_for([&] { return (prompt = window.buttons_near_centre()).size() == 3; }));
-    window.click(prompt[1].x, prompt[1].y);  // Discard
+    ASSERT_TRUE(wait_for([&] { return (prompt = buttons_near_centre(window)).size() == 3; }));
+    window.tap(prompt[1].x, prompt[1].y);  // Discard
     EXPECT_TRUE(wait_for([&] { return !window.running(); })) << "did not quit on Discard";
     EXPECT_EQ(window.exit_status(), 0);
-    EXPECT_EQ(contents(home / "kept.impasto"), saved) << "Discard wrote the painting";
+    EXPECT_EQ(read_text(home / "kept.impasto"), saved) << "Discard wrote the painting";
   }
   fs::remove_all(home);
 }
@@ -351,10 +227,10 @@ TEST(WindowFiles, TheQuitPromptsButtonsDoWhatTheySay) {
 // (red, lower left, over the canvas), and stays until dismissed.
 TEST(WindowFiles, AnErrorShowsAsANotification) {
   ASSERT_NE(std::getenv("DISPLAY"), nullptr) << "run under xvfb-run -a";
-  if (!have_tools()) GTEST_SKIP() << "xdotool or ImageMagick's import is not installed";
-  const fs::path home = fresh_home("impasto_window_error");
+  if (!have_xdotool()) GTEST_SKIP() << "xdotool or ImageMagick's import is not installed";
+  const fs::path home = test_dir("impasto_window_error");
   std::ofstream(home / "broken.impasto") << "not a painting";
-  PaintingWindow window(home, {});
+  Window window(home, at_home());
   ASSERT_TRUE(window.up());
   const auto red_pixels = [&] {
     const Image s = window.screenshot();
@@ -369,10 +245,10 @@ TEST(WindowFiles, AnErrorShowsAsANotification) {
     return red;
   };
   EXPECT_LT(red_pixels(), 100);
-  window.file_menu(kMenuOpenY);
-  ASSERT_TRUE(wait_for([&] { return window.dialog_open(); }));
-  window.type("broken.impasto");
-  window.click(kAcceptX, kAcceptY);
+  file_menu(window, kMenuOpenY);
+  ASSERT_TRUE(wait_for([&] { return dialog_open(window); }));
+  window.type("broken.impasto", 15);
+  window.tap(kAcceptX, kAcceptY);
   EXPECT_TRUE(wait_for([&] { return red_pixels() > 3000; })) << "no error notification";
   EXPECT_EQ(window.title(), "Untitled \u2014 Impasto");  // nothing was opened
   fs::remove_all(home);

@@ -17,9 +17,16 @@
 #include <string>
 #include <thread>
 
+#include "../common/short_session.hpp"
+#include "window_driver.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
+using namespace std::chrono_literals;
+using impasto::window_test::run_output;
+using impasto::window_test::test_dir;
+using impasto::window_test::wait_for;
 
 struct CommandRun {
   int status = -1;
@@ -28,11 +35,7 @@ struct CommandRun {
 
 CommandRun run(const std::string& command) {
   CommandRun result;
-  FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  if (!pipe) return result;
-  char buffer[4096];
-  while (std::fgets(buffer, sizeof buffer, pipe)) result.output += buffer;
-  result.status = pclose(pipe);
+  result.output = run_output(command, &result.status);
   return result;
 }
 
@@ -47,44 +50,13 @@ std::string replay_hash(const fs::path& strokes) {
   return nlohmann::json::parse(r.output.substr(r.output.find('{'))).at("state_hash");
 }
 
-// A short session on a small canvas: three loaded strokes.
 fs::path write_session(const fs::path& dir) {
-  const fs::path path = dir / "short.strokes";
-  std::ofstream out(path);
-  out << "impasto-strokes 2\ncanvas 240 160 254\nbrush round size=4 stiffness=0.5\n";
-  const char* pigments[] = {"Ultramarine Blue", "Pyrrole Red", "Titanium White"};
-  double t = 0;
-  for (int k = 0; k < 3; ++k) {
-    out << "wipe\nload 30 \"" << pigments[k] << "\" 1\n";
-    for (int i = 0; i <= 40; ++i, t += 0.01) {
-      const bool down = i < 40;
-      out << "pen " << t << " " << 2 + 0.45 * i << " " << 4 + 4 * k << " " << (down ? 0.7 : 0)
-          << " 0 0 0 " << (down ? 17 : 16) << "\n";
-    }
-  }
-  return path;
-}
-
-fs::path fresh_dir(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / (name + "_" + std::to_string(getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-template <typename Ready>
-bool wait_for(Ready ready, double seconds) {
-  const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-  while (std::chrono::steady_clock::now() < end) {
-    if (ready()) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-  }
-  return false;
+  return impasto::test::write_short_session(dir / "short.strokes");
 }
 
 TEST(WindowRecovery, AKilledSessionIsRebuiltByRecoverApply) {
   ASSERT_NE(std::getenv("DISPLAY"), nullptr) << "run under xvfb-run -a";
-  const fs::path dir = fresh_dir("impasto_window_recovery");
+  const fs::path dir = test_dir("impasto_window_recovery");
   const fs::path strokes = write_session(dir);
   const fs::path state = dir / "state";
   setenv("XDG_STATE_HOME", state.c_str(), 1);
@@ -103,7 +75,7 @@ TEST(WindowRecovery, AKilledSessionIsRebuiltByRecoverApply) {
     }
     return false;
   };
-  const bool saved = wait_for(autosaved, 60.0);
+  const bool saved = wait_for(autosaved, 60s);
   kill(window, SIGKILL);
   waitpid(window, nullptr, 0);
   ASSERT_TRUE(saved) << "no autosave within 60 s";
@@ -128,7 +100,7 @@ TEST(WindowRecovery, AKilledSessionIsRebuiltByRecoverApply) {
 
 TEST(WindowRecovery, AFullDiskFailsTheCommandAndLeavesWholeLines) {
   ASSERT_NE(std::getenv("DISPLAY"), nullptr) << "run under xvfb-run -a";
-  const fs::path dir = fresh_dir("impasto_window_full_disk");
+  const fs::path dir = test_dir("impasto_window_full_disk");
   const fs::path strokes = write_session(dir);
   const fs::path recording = dir / "session.strokes";
   setenv("XDG_STATE_HOME", (dir / "state").c_str(), 1);
