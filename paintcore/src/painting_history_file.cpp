@@ -52,7 +52,9 @@ std::unique_ptr<Tile> read_tile(Reader& r, const Canvas& frame_canvas, int index
 }
 
 void write_brush(W& w, const Brush& brush) {
-  w.put(static_cast<std::uint8_t>(brush.empty() ? 0 : 1));
+  // 2: the paint on it has a medium, written last (painting_surface_file.hpp).
+  const bool medium = brush.medium() != PaintMedium{};
+  w.put(static_cast<std::uint8_t>(brush.empty() ? 0 : medium ? 2 : 1));
   if (brush.empty()) return;
   write_brush_head(w, brush.head());
   write_bristles(w, brush.head());
@@ -62,10 +64,12 @@ void write_brush(W& w, const Brush& brush) {
   w.put(static_cast<std::uint8_t>(brush.slot_count()));
   w.put_floats(brush.volume_mm().data(), brush.cell_count());
   w.put_floats(brush.pigment_mm().data(), brush.pigment_mm().size());
+  if (medium) write_brush_medium(w, brush);
 }
 
 Brush read_brush(Reader& r, double cell_mm, const std::string& field) {
-  if (r.get<std::uint8_t>(field + ".present") == 0) return Brush();
+  const auto present = r.get<std::uint8_t>(field + ".present");
+  if (present == 0) return Brush();
   BrushHead head = read_brush_head(r, field + ".head");
   read_bristles(r, field + ".head", head);
   const BrushSettings settings = read_brush_settings(r, field + ".settings");
@@ -86,6 +90,7 @@ Brush read_brush(Reader& r, double cell_mm, const std::string& field) {
   r.get_amounts(brush.pigment_mm().data(), brush.pigment_mm().size(), field + ".pigment");
   repair_pigment(brush.volume_mm().data(), brush.pigment_mm().data(), slots, brush.cell_count());
   brush.set_body(static_cast<PaintBody>(body));
+  if (present == 2) read_brush_medium(r, brush, field + ".medium");
   return brush;
 }
 

@@ -29,6 +29,26 @@ void write_surface_planes(W& w, const Tile& tile) {
 inline constexpr int kHistorySurfaceShift = 6;
 
 template <typename W>
+void write_brush_medium(W& w, const Brush& brush) {
+  w.put(brush.medium().share);
+  w.put(brush.medium().log_rms);
+}
+
+// Reads what write_brush_medium wrote, checked.
+inline void read_brush_medium(Reader& r, Brush& brush, const std::string& field) {
+  const auto lo = static_cast<float>(kMinLogRms), hi = static_cast<float>(kMaxLogRms);
+  PaintMedium medium;
+  medium.share = r.get<float>(field + ".share");
+  medium.log_rms = r.get<float>(field + ".log_rms");
+  if (!(medium.share >= 0.0f && medium.share <= 1.0f))
+    r.fail(field + ".share", "must be in [0, 1]");
+  if (!(medium.log_rms >= lo && medium.log_rms <= hi))
+    r.fail(field + ".log_rms",
+           "is outside [" + std::to_string(kMinLogRms) + ", " + std::to_string(kMaxLogRms) + "]");
+  brush.set_medium(medium);
+}
+
+template <typename W>
 void write_surfaces(W& w, const Canvas& canvas, const Brush& brush) {
   std::uint32_t count = 0;
   for (int index = 0; index < canvas.tile_count(); ++index)
@@ -41,8 +61,7 @@ void write_surfaces(W& w, const Canvas& canvas, const Brush& brush) {
     w.put(surface_planes(*tile));
     write_surface_planes(w, *tile);
   }
-  w.put(brush.medium().share);
-  w.put(brush.medium().log_rms);
+  write_brush_medium(w, brush);
 }
 
 // Floats of one plane, each finite and in [lo, hi].
@@ -81,7 +100,6 @@ inline void read_surface_planes(Reader& r, Tile& tile, std::uint8_t planes,
 
 inline void read_surfaces(Reader& r, Canvas& canvas, Brush& brush) {
   const int tile_count = canvas.tile_count();
-  const auto lo = static_cast<float>(kMinLogRms), hi = static_cast<float>(kMaxLogRms);
   const auto count = r.get_count("surfaces.count", static_cast<std::uint32_t>(tile_count),
                                  5 + kMediumPlanes * kTileCells * sizeof(float));
   int previous = -1;
@@ -97,15 +115,7 @@ inline void read_surfaces(Reader& r, Canvas& canvas, Brush& brush) {
     if (planes == 0) r.fail(field + ".planes", "no planes");
     read_surface_planes(r, *tile, planes, field);
   }
-  PaintMedium medium;
-  medium.share = r.get<float>("brush.medium.share");
-  medium.log_rms = r.get<float>("brush.medium.log_rms");
-  if (!(medium.share >= 0.0f && medium.share <= 1.0f))
-    r.fail("brush.medium.share", "must be in [0, 1]");
-  if (!(medium.log_rms >= lo && medium.log_rms <= hi))
-    r.fail("brush.medium.log_rms",
-           "is outside [" + std::to_string(kMinLogRms) + ", " + std::to_string(kMaxLogRms) + "]");
-  brush.set_medium(medium);
+  read_brush_medium(r, brush, "brush.medium");
 }
 
 }  // namespace impasto::paintcore::file_io

@@ -194,6 +194,23 @@ TEST(PaintSurface, UndoAfterReopeningStillTakesTheVarnishAway) {
   EXPECT_FLOAT_EQ(surface_at(back, 30, 20).medium.share, 0.0f);
 }
 
+TEST(PaintSurface, UndoingALoadAfterReopeningGivesTheBrushItsMediumBack) {
+  Painting p = brushed();
+  p.load_brush({{"red", 1.0}}, 5.0, kDefaultPaintBody, Medium{Finish::matte, 0.5});
+  const PaintMedium matte = p.brush().medium();
+  p.load_brush({{"red", 1.0}}, 5.0);  // half the paint on the brush now has no medium
+  ASSERT_FLOAT_EQ(p.brush().medium().share, 0.5f);
+  const auto file = temp_file("brush_history");
+  p.save(file);
+  Painting back = Painting::load(file, 1);
+  std::filesystem::remove(file);
+  EXPECT_EQ(back.state_hash(), p.state_hash());
+  ASSERT_TRUE(back.undo());
+  EXPECT_EQ(back.brush().medium(), matte);
+  ASSERT_TRUE(p.undo());
+  EXPECT_EQ(back.state_hash(), p.state_hash());
+}
+
 TEST(PaintSurface, CropAndTheFinerCanvasKeepTheSurfaceWithThePaint) {
   Painting p = brushed();
   p.load_brush({{"red", 1.0}}, 5.0, kDefaultPaintBody, Medium{Finish::matte, 1.0});
