@@ -2,20 +2,20 @@
 // program does, a shared option means the same in every command, and each choice's names
 // are the ones its parser takes.
 #include <gtest/gtest.h>
-#include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <fstream>
 #include <functional>
 #include <map>
 #include <sstream>
 #include <string>
+#include <vector>
 
-#include "command.hpp"
+#include "command_catalogue.hpp"
 #include "impasto/cracks/cavity.hpp"
 #include "impasto/paintcore/paint_body.hpp"
 #include "impasto/render/render_settings.hpp"
-#include "pigment_folder_option.hpp"
-#include "vocabulary.hpp"
+#include "vocabulary_words.hpp"
 
 namespace impasto::app {
 namespace {
@@ -35,14 +35,6 @@ std::string docs_section() {
 TEST(CommandLineDocs, ListTheProgramsVocabulary) {
   // On a difference: build/release/app/impasto help vocabulary, pasted between the markers.
   EXPECT_EQ(docs_section(), vocabulary_markdown());
-}
-
-// Every option of every command, with the command's path ("bench sim").
-void for_each_option(CLI::App& app, const std::string& path,
-                     const std::function<void(const std::string&, const CLI::Option&)>& visit) {
-  for (const CLI::Option* option : app.get_options()) visit(path, *option);
-  for (CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; }))
-    for_each_option(*sub, path.empty() ? sub->get_name() : path + " " + sub->get_name(), visit);
 }
 
 // What a shared option's help must say, in any words, wherever it appears: the mark of its
@@ -83,18 +75,15 @@ TEST(CommandLineVocabulary, EveryWordHasItsMark) {
 }
 
 TEST(CommandLineVocabulary, ASharedOptionMeansTheSameInEveryCommand) {
-  CLI::App root{"impasto"};
-  add_registered_commands(root);
-  setup_pigment_library(root);
-  add_quiet_option(root);
   int checked = 0;
-  for_each_option(root, "", [&](const std::string& path, const CLI::Option& option) {
-    if (option.get_group().empty()) return;  // an old spelling, hidden
-    for (const std::string& name : option.get_lnames()) {
+  for (const CommandOption& option : command_options()) {
+    const std::string& path = option.command;
+    if (option.group.empty()) continue;  // an old spelling, hidden
+    for (const std::string& name : option.long_names) {
       const auto meaning = shared_meanings().find("--" + name);
       if (meaning == shared_meanings().end()) continue;
       ++checked;
-      const std::string& help = option.get_description();
+      const std::string& help = option.description;
       bool says = false;
       for (const std::string& mark : meaning->second.says_one_of)
         says |= help.find(mark) != std::string::npos;
@@ -104,11 +93,13 @@ TEST(CommandLineVocabulary, ASharedOptionMeansTheSameInEveryCommand) {
             << path << " --" << name << ": '" << help << "'";
       }
     }
-    for (const std::string& name : option.get_snames())
+    for (const std::string& name : option.short_names)
       if (name == "o") {
-        EXPECT_TRUE(option.check_lname("out")) << path << " -o";
+        EXPECT_NE(std::find(option.long_names.begin(), option.long_names.end(), "out"),
+                  option.long_names.end())
+            << path << " -o";
       }
-  });
+  }
   EXPECT_GT(checked, 40);  // --pigments and --quiet alone are on every command
 }
 
