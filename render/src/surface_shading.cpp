@@ -113,7 +113,8 @@ SurfaceShading::SurfaceShading(const RenderSettings& settings, const SpectralPal
 
 int SurfaceShading::level_of(double log_rms) {
   const double k = std::round((log_rms - paintcore::kMinLogRms) / kLevelStep);
-  return static_cast<int>(std::clamp(k, 0.0, static_cast<double>(kLevels - 1)));  // NaN: 0
+  if (!(k >= 0.0)) return 0;  // NaN too (a cast of NaN to int is undefined)
+  return static_cast<int>(std::min(k, static_cast<double>(kLevels - 1)));
 }
 
 double SurfaceShading::level_log_rms(int level) {
