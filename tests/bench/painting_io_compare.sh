@@ -31,6 +31,7 @@ def median(op, side, key):
     return statistics.median(r["row"][key] for r in rows if r["side"] == side and r["row"]["op"] == op)
 for op in ("load", "save"):
     b, a = median(op, "before", "ms"), median(op, "after", "ms")
+    cb, ca = median(op, "before", "cpu_ms"), median(op, "after", "cpu_ms")
     mb, ma = median(op, "before", "peak_extra_mb"), median(op, "after", "peak_extra_mb")
-    print("%s: before %.0f ms, after %.0f ms (%.2fx); peak memory added %.0f MB, %.0f MB" % (op, b, a, b / a, mb, ma))
+    print("%s: wall %.0f -> %.0f ms (%.2fx), CPU %.0f -> %.0f ms (%.2fx), peak memory added %.0f -> %.0f MB" % (op, b, a, b / a, cb, ca, cb / ca, mb, ma))
 '
