@@ -77,8 +77,7 @@ void run_show(const std::string& name, bool json) {
     const double nm = p.K.wavelengths_nm[i];
     const double k = p.K.values[i], s = p.S.at(nm);
     const double ks = s > 0 ? k / s : HUGE_VAL;
-    std::printf("%8.1f %12.6g %12.6g %12.6g %10.6f\n", nm, k, s, ks,
-                s > 0 ? reflectance_from_ks(ks) : 0.0);
+    std::printf("%8.1f %12.6g %12.6g %12.6g %10.6f\n", nm, k, s, ks, reflectance_infinite(k, s));
   }
 }
 

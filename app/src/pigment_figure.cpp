@@ -93,7 +93,7 @@ Figure pigment_figure(const data::Pigment& pigment, const std::string& subtitle,
     const double kv = pigment.K.at(w), sv = pigment.S.at(w);
     s.y.push_back(sv);
     ratio.y.push_back(sv > 0 ? kv / sv : HUGE_VAL);
-    r.y.push_back(sv > 0 ? data::reflectance_from_ks(kv / sv) : 0.0);
+    r.y.push_back(data::reflectance_infinite(kv, sv));
   }
   add_plot(f, 8, 32, 395, 290, "K and S (S of white = 1)", {k, s});
   add_plot(f, 403, 32, 395, 290, "K/S", {ratio});

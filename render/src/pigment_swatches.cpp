@@ -24,7 +24,7 @@ data::Spectrum tint_reflectance(const data::Pigment& pigment, const data::Pigmen
   for (double nm : out.wavelengths_nm) {
     const double k = share * pigment.K.at(nm) + (1 - share) * white.K.at(nm);
     const double s = share * pigment.S.at(nm) + (1 - share) * white.S.at(nm);
-    out.values.push_back(s > 0 ? data::reflectance_from_ks(k / s) : 0.0);
+    out.values.push_back(data::reflectance_infinite(k, s));
   }
   return out;
 }

@@ -59,7 +59,7 @@ Curves curves_of(const data::Pigment& p, const std::string& suffix, bool dashed 
     const double k = p.K.at(nm), s = p.S.at(nm);
     c.s.y.push_back(s);
     c.ratio.y.push_back(s > 0 ? k / s : HUGE_VAL);
-    c.r.y.push_back(s > 0 ? data::reflectance_from_ks(k / s) : 0.0);
+    c.r.y.push_back(data::reflectance_infinite(k, s));
   }
   return c;
 }
