@@ -322,7 +322,14 @@ SpectralSampling make_palette_sampling(const data::Spectrum& light,
     return make_spectral_sampling(light, cmf, nodes, range,
                                   trained ? NodeWeights::interpolatory : weights);
   };
-  if (!trained || nodes == 0 || pigments.empty()) return stand_in();
+  // Too few training paints for the readout's 3(N − 1) free weights: a rule fitted to them
+  // would fit those paints and little else (a single pigment's four glazes), so the Gaussian
+  // rule, which needs no paints, serves.
+  if (!trained || nodes == 0 ||
+      training_paints(pigments).size() <
+          kMinTrainingPaintsPerNode * static_cast<std::size_t>(nodes)) {
+    return stand_in();
+  }
   const NodeRuleKey key = palette_rule_key(light, cmf, nodes, range, weights, pigments, ground);
 
   Registry& r = registry();

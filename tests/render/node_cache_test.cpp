@@ -202,6 +202,18 @@ TEST_F(NodeCache, InTheBackgroundTheInterpolatoryRuleStandsIn) {
     EXPECT_FALSE(background.stood_in());
   }
 }
+TEST_F(NodeCache, APaletteTooSmallToTrainOnGetsTheGaussianRule) {
+  const auto& db = data::PigmentDatabase::defaults();
+  const std::vector<data::Pigment> one{db.get("Burnt Sienna")};  // four training paints
+  const data::Spectrum light = data::light_from_spec("D65");
+  const SpectralSampling rule =
+      make_palette_sampling(light, data::cie1931_2deg(), 8, kCoarse, NodeWeights::optimised, one,
+                            hiding_reflectance(db.get("Titanium White")));
+  expect_same(rule, make_spectral_sampling(light, data::cie1931_2deg(), 8, kCoarse,
+                                           NodeWeights::interpolatory));
+  EXPECT_LT(training_paints(one).size(), 8 * kMinTrainingPaintsPerNode);
+}
+
 TEST(RenderDefaults, TheOptimisedRuleIsTheDefault) {
   EXPECT_EQ(RenderSettings{}.node_weights, NodeWeights::optimised);
 }
