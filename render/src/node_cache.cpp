@@ -280,6 +280,8 @@ void store_node_rule(const NodeRuleKey& key, const SpectralSampling& sampling) {
   const std::filesystem::path path = node_rule_file(key);
   try {
     std::filesystem::create_directories(path.parent_path());
+    // A link planted where the rule goes is replaced, never followed to the file it names.
+    if (std::filesystem::is_symlink(path)) std::filesystem::remove(path);
     files::write_file_atomically(path, format_node_rule(key, sampling));
   } catch (const std::exception& error) {
     std::cerr << "impasto: warning: cannot keep the node rule in " << path.string() << ": "

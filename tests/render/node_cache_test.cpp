@@ -168,6 +168,26 @@ TEST_F(NodeCache, ADamagedFileIsIgnoredAndRebuilt) {
   EXPECT_EQ(read(file), good);  // written again
 }
 
+TEST_F(NodeCache, ALinkWhereTheRuleGoesIsReplacedNotFollowed) {
+  const SpectralSampling built = rule("D65");
+  const std::filesystem::path file = only_rule_file();
+  const std::filesystem::path victim = folder_ / "victim.txt";
+  { std::ofstream(victim) << "keep me\n"; }
+  std::filesystem::remove(file);
+  std::filesystem::create_symlink(victim, file);
+  forget_palette_rules_in_memory();
+  testing::internal::CaptureStderr();
+  expect_same(rule("D65"), built);  // the link's target is no rule: ignored, rebuilt
+  testing::internal::GetCapturedStderr();
+  EXPECT_EQ(read(victim), "keep me\n");
+  EXPECT_FALSE(std::filesystem::is_symlink(file));
+  EXPECT_EQ(read(file),
+            format_node_rule(palette_rule_key(data::light_from_spec("D65"), data::cie1931_2deg(), 4,
+                                              kCoarse, NodeWeights::optimised, three_pigments(),
+                                              hiding_reflectance(three_pigments()[0])),
+                             built));
+}
+
 TEST_F(NodeCache, KeysByLightAndNodeCount) {
   const SpectralSampling d65 = rule("D65");
   const SpectralSampling a = rule("A");
