@@ -412,6 +412,16 @@ TEST_F(Cli, CracksCommandsPrintOneJsonObject) {
   EXPECT_GT(nlohmann::json::parse(r.out).at("crack_cells").get<int>(), 0);
 }
 
+TEST_F(Cli, RenderAndReplayDefaultToTheOptimisedRule) {
+  for (const char* command : {"render", "replay"}) {
+    const CommandRun r = impasto(std::string(command) + " --help");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("{impasto,interpolatory,fitted,optimised}=optimised"), std::string::npos)
+        << command << ":\n"
+        << r.out;
+  }
+}
+
 TEST_F(Cli, BenchColorPrintsOneJsonRowPerRule) {
   const CommandRun r = impasto(
       "bench color --nodes 3 --lights D65 --cells 0 --no-half --weights interpolatory --json");
