@@ -29,22 +29,6 @@ namespace {
 
 using namespace impasto::render;
 
-// The GLSL ghs surface has the settings' medium and varnish only (docs/surface.md, "6. On the
-// GPU"): a painting's own media and varnish render on the CPU alone.
-[[maybe_unused]] void warn_if_cell_surfaces_ignored(const paintcore::Canvas& canvas,
-                                                    const RenderSettings& settings) {
-  if (settings.surface.model != SurfaceModel::ghs) return;
-  for (int index = 0; index < canvas.tile_count(); ++index) {
-    const paintcore::Tile* tile = canvas.tile(index);
-    if (tile != nullptr && (!tile->medium.empty() || !tile->varnish.empty())) {
-      warn(
-          "--gpu: the painting's own media and varnish are CPU only so far; the GPU renders "
-          "every cell with --medium and --varnish (render without --gpu for them)");
-      return;
-    }
-  }
-}
-
 struct RenderArgs {
   std::string painting;
   std::string out;
@@ -147,7 +131,6 @@ void run(const RenderArgs& args) {
     height = region.h * args.zoom;
   } else if (args.gpu) {
 #ifdef IMPASTO_RENDER_GPU
-    warn_if_cell_surfaces_ignored(painting.canvas(), settings);
     render_gl::render_painting_gpu_to_file(painting, settings, args.out);
 #else
     throw std::runtime_error("--gpu: this impasto was built without the OpenGL path");

@@ -121,8 +121,8 @@ double SurfaceShading::level_log_rms(int level) {
   return paintcore::kMinLogRms + level * kLevelStep;
 }
 
-const SurfaceShading::Brdfs& SurfaceShading::level(bool varnish, double log_rms) const {
-  const int k = level_of(log_rms);
+const SurfaceShading::Brdfs& SurfaceShading::level_brdfs(bool varnish, int level) const {
+  const int k = std::clamp(level, 0, kLevels - 1);
   const auto slot = static_cast<std::size_t>((varnish ? kLevels : 0) + k);
   std::call_once(level_made_[slot], [&] {
     Brdfs made(wavelengths_.size());
@@ -151,17 +151,27 @@ void SurfaceShading::shade(shade::Vec3 normal, shade::Vec3 to_light, shade::Visi
 void SurfaceShading::shade(shade::Vec3 normal, shade::Vec3 to_light, shade::Visibility visibility,
                            float wetness, const paintcore::CellSurface& cell,
                            const float* reflectance, float xyz[3]) const {
+  const CellDry dry = cell_dry(cell);
+  if (dry.level < 0) {
+    shade_on(dry_, normal, to_light, visibility, wetness, reflectance, xyz);
+  } else {
+    const float w = std::max(wetness > 0.0f ? wetness : 0.0f, dry.min_wetness);
+    shade_on(level_brdfs(dry.varnish, dry.level), normal, to_light, visibility, w, reflectance,
+             xyz);
+  }
+}
+
+SurfaceShading::CellDry SurfaceShading::cell_dry(const paintcore::CellSurface& cell) const {
   if (cell.varnished()) {
     // A varnish is a liquid when it goes on: glossy (the wet surface) until it dries.
-    const float w = std::max(wetness > 0.0f ? wetness : 0.0f, cell.varnish_wetness());
-    shade_on(level(true, cell.varnish_log_rms), normal, to_light, visibility, w, reflectance, xyz);
-  } else if (cell.medium.share > 0.0f && !settings_varnish_) {
+    return {true, level_of(cell.varnish_log_rms), cell.varnish_wetness()};
+  }
+  if (cell.medium.share > 0.0f && !settings_varnish_) {
     const double share = std::min(cell.medium.share, 1.0f);
     const double log_rms = share * cell.medium.log_rms + (1.0 - share) * default_log_rms_;
-    shade_on(level(false, log_rms), normal, to_light, visibility, wetness, reflectance, xyz);
-  } else {
-    shade_on(dry_, normal, to_light, visibility, wetness, reflectance, xyz);
+    return {false, level_of(log_rms), 0.0f};
   }
+  return {};
 }
 
 void SurfaceShading::shade_on(const Brdfs& dry_brdfs, shade::Vec3 normal, shade::Vec3 to_light,

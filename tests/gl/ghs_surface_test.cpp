@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "impasto/paintcore/canvas.hpp"
+#include "impasto/paintcore/paint_surface.hpp"
 #include "impasto/render/surface_brdf.hpp"
 #include "impasto/render/tile_renderer.hpp"
 #include "impasto/render_gl/canvas_renderer.hpp"
@@ -57,14 +58,17 @@ float rho_of(int x) {
   return 0.004f * static_cast<float>(x * x) / 4.0f;
 }
 
-// GHS_TABLE_SIZE and GHS_SURFACES come from the C++ (ghs_surface_tables.cpp), never by hand.
+// GHS_TABLE_SIZE, GHS_BLOCKS and GHS_WET_BLOCK come from the C++ (ghs_surface_tables.cpp), never by
+// hand.
 TEST(GhsGlsl, TableSizesAreInjectedFromTheCpp) {
   const std::string source = surface_ghs_glsl();
   EXPECT_NE(source.find("#define GHS_TABLE_SIZE " +
                         std::to_string(render::surface::GhsBrdf::kTableSize) + "\n"),
             std::string::npos);
+  EXPECT_NE(source.find("#define GHS_BLOCKS " + std::to_string(GhsSurfaceTables::kBlocks) + "\n"),
+            std::string::npos);
   EXPECT_NE(
-      source.find("#define GHS_SURFACES " + std::to_string(GhsSurfaceTables::kSurfaces) + "\n"),
+      source.find("#define GHS_WET_BLOCK " + std::to_string(GhsSurfaceTables::kWetBlock) + "\n"),
       std::string::npos);
   std::ifstream file(std::filesystem::path(IMPASTO_SOURCE_DIR) /
                      "render/gl/shaders/surface_ghs_lib.glsl");
@@ -295,6 +299,60 @@ TEST(GhsCanvasSettings, SetSettingsAndTheLightSwitchTheModelBothWays) {
   settings.surface.model = render::SurfaceModel::blinn;
   gpu.set_settings(settings, render::SpectralPalette(settings, kSlots));
   draw_against_cpu(settings, "back to blinn");
+}
+
+// The painting's own media and varnish (paintcore::cell_surface): bands of a gloss medium, a
+// matte medium at half share, a satin varnish half dry and a matte varnish dry, each cell on
+// its own surface level on both sides.
+TEST(GhsCanvasCells, MediaAndVarnishOfEachCellMatchTheCpu) {
+  paintcore::Canvas canvas = make_ridged_canvas();
+  for (int index : {0, 1, 4}) {
+    paintcore::Tile& tile = canvas.ensure_tile(index, static_cast<int>(kSlots.size()));
+    tile.medium.assign(static_cast<std::size_t>(paintcore::kMediumPlanes) * kTileCells, 0.0f);
+    tile.varnish.assign(static_cast<std::size_t>(paintcore::kVarnishPlanes) * kTileCells, 0.0f);
+    for (int cell = 0; cell < kTileCells; ++cell) {
+      const int band = (cell / kTileSize) / 16;  // four bands of 16 rows a tile
+      const auto c = static_cast<std::size_t>(cell);
+      const auto log_rms = [](surface::Finish f) {
+        return static_cast<float>(std::log10(surface::finish_roughness(f).rms_um));
+      };
+      if (band == 0) {
+        tile.medium[c] = 1.0f;
+        tile.medium[kTileCells + c] = log_rms(surface::Finish::gloss);
+      } else if (band == 1) {
+        tile.medium[c] = 0.5f;
+        tile.medium[kTileCells + c] = log_rms(surface::Finish::matte);
+      } else {
+        tile.varnish[c] = 0.03f;
+        tile.varnish[kTileCells + c] = band == 2 ? 0.015f : 0.0f;
+        tile.varnish[2 * kTileCells + c] =
+            log_rms(band == 2 ? surface::Finish::satin : surface::Finish::matte);
+      }
+    }
+  }
+  render::RenderSettings settings;
+  settings.surface.model = render::SurfaceModel::ghs;
+  settings.surface.subsurface = false;
+  settings.light_elevation_deg = 25.0;
+  settings.light_azimuth_deg = 200.0;
+  render::TileRenderer cpu(settings, kSlots);
+  cpu.render_all(canvas);
+  const render::Image expected = cpu.image();
+  const render::Image actual = render_painting_gpu(canvas, kSlots, settings);
+  double worst = 0.0;
+  for (std::size_t i = 0; i < expected.rgb.size(); ++i)
+    worst = std::max(worst, std::abs(double(actual.rgb[i]) - expected.rgb[i]));
+  std::cout << "[ cells ] GPU vs CPU: max " << worst * 255 << "/255\n";
+  EXPECT_LE(worst, 0.5 / 255.0);
+  // Not vacuous: without the cells' surfaces the CPU renders otherwise.
+  paintcore::Canvas plain = make_ridged_canvas();
+  render::TileRenderer cpu_plain(settings, kSlots);
+  cpu_plain.render_all(plain);
+  const render::Image plain_image = cpu_plain.image();
+  double changed = 0.0;
+  for (std::size_t i = 0; i < expected.rgb.size(); ++i)
+    changed = std::max(changed, std::abs(double(plain_image.rgb[i]) - expected.rgb[i]));
+  EXPECT_GT(changed, 10.0 / 255.0);
 }
 
 }  // namespace

@@ -186,7 +186,8 @@ vec3 interpolated_colour(vec2 cell_position, ivec2 cell) {
 // averaged in linear XYZ (no speckle from one cell standing for many). n x n samples for
 // about n cells a pixel each way, so a view near one pixel a cell (the window's fit) still
 // costs one cell a pixel.
-vec3 footprint_colour(vec2 cell_position, float cells_per_pixel, out bool any_inside) {
+vec3 footprint_colour(vec2 cell_position, float cells_per_pixel, bool allow_close_up,
+                      out bool any_inside) {
   int n = int(clamp(floor(cells_per_pixel + 0.5), 1.0, 4.0));
   mat2 to_cells = mat2(screen_to_cell[0].xy, screen_to_cell[1].xy);
   vec3 sum = vec3(0.0);
@@ -197,7 +198,7 @@ vec3 footprint_colour(vec2 cell_position, float cells_per_pixel, out bool any_in
       vec2 at = cell_position + to_cells * offset;
       ivec2 c = ivec2(floor(at));
       if (any(lessThan(c, ivec2(0))) || any(greaterThanEqual(c, canvas_cells))) continue;
-      sum += cell_colour(c, at, false);
+      sum += cell_colour(c, at, allow_close_up);
       ++inside;
     }
   }
@@ -213,22 +214,21 @@ void main() {
   bool zoomed_out = smooth_zoom && cells_per_pixel > 1.0 + 1e-4;
   bool zoomed_in = smooth_zoom && cells_per_pixel < 1.0 - 1e-4;
   vec3 shaded;
-  if (zoomed_out) {
+  if (!zoomed_out && !outside && zoomed_in && !ghs_enabled &&
+      !(crack_at(cell).x > 0.0 && close_up_zoomed(screen_to_cell))) {
+    // (The ghs model shades per node after the colour: zoomed in, its cells are magnified.)
+    shaded = interpolated_colour(cell_position, cell);
+  } else {
+    // Zoomed out, the cells under the pixel's footprint; else the pixel's own cell (a
+    // footprint of one, exactly at cell_position), with a crack's close-up. One call of
+    // cell_colour in the whole shader: the compiled shader holds one copy of it.
     bool any_inside;
-    shaded = footprint_colour(cell_position, cells_per_pixel, any_inside);
+    shaded = footprint_colour(cell_position, zoomed_out ? cells_per_pixel : 1.0, !zoomed_out,
+                              any_inside);
     if (!any_inside) {
       frag_color = vec4(background, 1.0);
       return;
     }
-  } else if (outside) {
-    frag_color = vec4(background, 1.0);
-    return;
-  } else if (zoomed_in && !ghs_enabled &&
-             !(crack_at(cell).x > 0.0 && close_up_zoomed(screen_to_cell))) {
-    // (The ghs model shades per node after the colour: zoomed in, its cells are magnified.)
-    shaded = interpolated_colour(cell_position, cell);
-  } else {
-    shaded = cell_colour(cell, cell_position, true);
   }
   frag_color = vec4(ocio_display(vec4(shaded, 1.0)).rgb, 1.0);
 }

@@ -3,17 +3,20 @@
 // the CPU reference it is tested against (tests/gl/ghs_surface_test.cpp). docs/surface.md
 // derives the terms.
 // Needs MAX_NODES, SHADE_OCCLUSION_DIRECT_SHARE (shading_lib), and from the C++
-// (GhsSurfaceTables): GHS_TABLE_SIZE (surface::GhsBrdf::kTableSize), GHS_SURFACES (the table
-// rows per node: the dry surface, then the wet one).
+// (GhsSurfaceTables): GHS_TABLE_SIZE (surface::GhsBrdf::kTableSize), GHS_BLOCKS (the
+// surfaces: the settings' dry one, the wet one, the levels of paint and varnish) and
+// GHS_WET_BLOCK.
 
 uniform bool ghs_enabled;     // SurfaceSettings::model == ghs; else Blinn-Phong
 uniform bool ghs_reflection;  // SurfaceSettings::reflection
-// Per surface and node (row surface * MAX_NODES + node), at cos θ = i / (GHS_TABLE_SIZE - 1):
-// r the renormalisation, g the directional albedo, as GhsBrdf tabulates them.
-uniform sampler2D ghs_tables;
-uniform vec2 ghs_roughness[GHS_SURFACES];               // (RMS height, correlation length) µm
-uniform float ghs_index[GHS_SURFACES * MAX_NODES];      // the film's index at the node
-uniform float ghs_hemispherical[GHS_SURFACES * MAX_NODES];
+// Row = a surface (block), layer = a node. Columns 0..GHS_TABLE_SIZE-1 at cos θ =
+// i / (GHS_TABLE_SIZE - 1): (renormalisation, directional albedo), as GhsBrdf tabulates them;
+// then (index, hemispherical albedo); then (RMS height, correlation length) in µm.
+uniform sampler2DArray ghs_tables;
+// Per cell: (the block of its dry surface, its least wetness: a varnish not yet dry); absent
+// (ghs_cells_present false) while the painting has no media or varnish of its own.
+uniform sampler2D ghs_cells;
+uniform bool ghs_cells_present;
 uniform float ghs_wavelength_nm[MAX_NODES];
 uniform vec2 ghs_reference[MAX_NODES];  // (t0(flat light)·t0(view), t̄0·t0(view)): the body's divisors
 uniform float ghs_source_sigma;         // the light's disc in direction cosines
@@ -30,10 +33,10 @@ const float GHS_HERMITE_WEIGHTS[5] = float[5](0.7202352156060510, 0.432651559002
                                               0.08847452739437657, 0.004943624275536947,
                                               0.00003960697726326438);
 
-// The dry surface's row of a cell. One painting-wide surface today (the render settings'
-// medium or varnish); a medium stored per mix would read its surface index from a texture here.
-int ghs_dry_surface(ivec2 cell) { return 0; }
-const int GHS_WET = GHS_SURFACES - 1;
+// A cell's dry surface (SurfaceShading::cell_dry): its block and least wetness.
+vec2 ghs_cell_dry(ivec2 cell) {
+  return ghs_cells_present ? texelFetch(ghs_cells, cell, 0).rg : vec2(0.0);
+}
 
 float ghs_gaussian_2d(float rho2, float variance) {
   return exp(-rho2 / (2.0 * variance)) / (2.0 * GHS_PI * variance);
@@ -89,23 +92,28 @@ float ghs_fresnel(float cos_i, float n) {
 }
 
 // GhsBrdf's tables at cos_i, interpolated as table_lookup does: (renormalisation, albedo).
-vec2 ghs_table(int row, float cos_i) {
+vec2 ghs_table(int block, int node, float cos_i) {
   float u = clamp(cos_i, 0.0, 1.0) * float(GHS_TABLE_SIZE - 1);
   int k = min(int(u), GHS_TABLE_SIZE - 2);
   float f = u - float(k);
-  vec2 a = texelFetch(ghs_tables, ivec2(k, row), 0).rg;
-  vec2 b = texelFetch(ghs_tables, ivec2(k + 1, row), 0).rg;
+  vec2 a = texelFetch(ghs_tables, ivec3(k, block, node), 0).rg;
+  vec2 b = texelFetch(ghs_tables, ivec3(k + 1, block, node), 0).rg;
   return a * (1.0 - f) + b * f;
 }
 
+// (index, hemispherical albedo) of a surface at a node.
+vec2 ghs_optics(int block, int node) {
+  return texelFetch(ghs_tables, ivec3(GHS_TABLE_SIZE, block, node), 0).rg;
+}
+
 // GhsBrdf::eval of one surface at one node.
-float ghs_brdf(int surface, int node, float cos_i, float cos_o, float rho, float cos_half) {
+float ghs_brdf(int block, int node, float cos_i, float cos_o, float rho, float cos_half) {
   if (cos_i <= 0.0 || cos_o <= 0.0) return 0.0;
-  int row = surface * MAX_NODES + node;
-  float renorm = min(ghs_table(row, cos_i).x, ghs_table(row, cos_o).x);
-  return ghs_fresnel(cos_half, ghs_index[row]) * renorm *
-         ghs_kernel(ghs_roughness[surface], ghs_wavelength_nm[node], ghs_source_sigma,
-                    ghs_subcell_slope, cos_i, cos_o, rho);
+  float renorm = min(ghs_table(block, node, cos_i).x, ghs_table(block, node, cos_o).x);
+  vec2 roughness = texelFetch(ghs_tables, ivec3(GHS_TABLE_SIZE + 1, block, node), 0).rg;
+  return ghs_fresnel(cos_half, ghs_optics(block, node).x) * renorm *
+         ghs_kernel(roughness, ghs_wavelength_nm[node], ghs_source_sigma, ghs_subcell_slope,
+                    cos_i, cos_o, rho);
 }
 
 float ghs_mix(float dry, float wet, float w) { return dry + w * (wet - dry); }
@@ -116,8 +124,9 @@ float ghs_mix(float dry, float wet, float w) { return dry + w * (wet - dry); }
 // visibility = (shadow, occlusion).
 void ghs_shade(ivec2 cell, int nodes, vec3 normal, vec3 to_light, float ambient, vec2 visibility,
                float wetness, out float body[MAX_NODES], out float surface_light[MAX_NODES]) {
-  float w = wetness > 0.0 ? min(wetness, 1.0) : 0.0;  // NaN: dry
-  int dry = ghs_dry_surface(cell);
+  vec2 cell_dry = ghs_cell_dry(cell);
+  int dry = int(cell_dry.x + 0.5);
+  float w = min(max(wetness > 0.0 ? wetness : 0.0, cell_dry.y), 1.0);  // NaN: dry
   float mu_i = dot(normal, to_light);
   float mu_v = normal.z;
   float flat_lambert = max(to_light.z, 0.05);
@@ -132,12 +141,13 @@ void ghs_shade(ivec2 cell, int nodes, vec3 normal, vec3 to_light, float ambient,
   float sky = ambient * visibility.y;
   float sun = 1.0 - ambient;
   for (int node = 0; node < nodes; ++node) {
-    int dry_row = dry * MAX_NODES + node;
-    int wet_row = GHS_WET * MAX_NODES + node;
-    float albedo_in =
-        mu_i > 0.0 ? ghs_mix(ghs_table(dry_row, mu_i).y, ghs_table(wet_row, mu_i).y, w) : 0.0;
-    float albedo_view = ghs_mix(ghs_table(dry_row, mu_v).y, ghs_table(wet_row, mu_v).y, w);
-    float albedo_sky = ghs_mix(ghs_hemispherical[dry_row], ghs_hemispherical[wet_row], w);
+    float albedo_in = mu_i > 0.0 ? ghs_mix(ghs_table(dry, node, mu_i).y,
+                                           ghs_table(GHS_WET_BLOCK, node, mu_i).y, w)
+                                 : 0.0;
+    float albedo_view =
+        ghs_mix(ghs_table(dry, node, mu_v).y, ghs_table(GHS_WET_BLOCK, node, mu_v).y, w);
+    float albedo_sky =
+        ghs_mix(ghs_optics(dry, node).y, ghs_optics(GHS_WET_BLOCK, node).y, w);
     float exit_share = 1.0 - albedo_view;
     body[node] = sky * (1.0 - albedo_sky) * exit_share / ghs_reference[node].y +
                  sun * (lit / flat_lambert) * direct * (1.0 - albedo_in) * exit_share /
@@ -149,7 +159,7 @@ void ghs_shade(ivec2 cell, int nodes, vec3 normal, vec3 to_light, float ambient,
       float f_surface[2] = float[2](0.0, 0.0);
       for (int s = 0; mu_i > 0.0 && s < 2; ++s) {
         if (s == 0 ? w < 1.0 : w > 0.0) {
-          f_surface[s] = ghs_brdf(s == 0 ? dry : GHS_WET, node, mu_i, mu_v, rho, cos_half);
+          f_surface[s] = ghs_brdf(s == 0 ? dry : GHS_WET_BLOCK, node, mu_i, mu_v, rho, cos_half);
         }
       }
       float f = ghs_mix(f_surface[0], f_surface[1], w);

@@ -63,7 +63,7 @@ CanvasRenderer::CanvasRenderer(int width_cells, int height_cells,
   build_program();
   flakes_ = std::make_unique<FlakeTextures>(width_, height_, settings_, palette_);
   cracks_ = std::make_unique<CrackTexture>(width_, height_);
-  ghs_ = std::make_unique<GhsSurfaceTables>(settings_, palette_);
+  ghs_ = std::make_unique<GhsSurfaceTables>(width_, height_, settings_, palette_);
 }
 
 CanvasRenderer::~CanvasRenderer() = default;
@@ -108,7 +108,7 @@ void CanvasRenderer::set_settings(const render::RenderSettings& settings,
   allocate_textures();
   if (encoding_changed) build_program();
   flakes_ = std::make_unique<FlakeTextures>(width_, height_, settings_, palette_);
-  ghs_ = std::make_unique<GhsSurfaceTables>(settings_, palette_);
+  ghs_ = std::make_unique<GhsSurfaceTables>(width_, height_, settings_, palette_);
 }
 
 void CanvasRenderer::set_shading(const render::RenderSettings& settings) {
@@ -133,7 +133,7 @@ void CanvasRenderer::set_shading(const render::RenderSettings& settings) {
   settings_.shadow_reach_mm = settings.shadow_reach_mm;
   settings_.occlusion_radius_mm = settings.occlusion_radius_mm;
   render::validate(settings_);
-  if (ghs_light_changed) ghs_ = std::make_unique<GhsSurfaceTables>(settings_, palette_);
+  if (ghs_light_changed) ghs_->set_light(settings_, palette_);  // the cells keep their surfaces
 }
 
 render::relief::Reach CanvasRenderer::relief_reach() const {
@@ -201,6 +201,7 @@ void CanvasRenderer::upload_tile(const paintcore::Canvas& canvas, int tile_index
   }
   flakes_->upload_tile(canvas, tile_index);
   cracks_->upload_tile(canvas, tile_index);
+  ghs_->upload_tile(canvas, tile_index);
 }
 
 void CanvasRenderer::upload_all(const paintcore::Canvas& canvas) {

@@ -44,6 +44,20 @@ class SurfaceShading {
   static int level_of(double log_rms);
   static double level_log_rms(int level);
 
+  // Which dry surface a cell shades on (the choice shade(..., cell, ...) makes; the GPU port
+  // makes it per cell the same way): the settings' own (level -1: dry_brdf), or a level of
+  // paint or of varnish; and the least wetness the cell has (a varnish not yet dry).
+  struct CellDry {
+    bool varnish = false;
+    int level = -1;
+    float min_wetness = 0.0f;
+  };
+  CellDry cell_dry(const paintcore::CellSurface& cell) const;
+  // The tables of a level, one a node: for the paint (binder index) or a varnish (varnish
+  // index); made the first time they are asked for.
+  using Brdfs = std::vector<std::shared_ptr<const surface::GhsBrdf>>;
+  const Brdfs& level_brdfs(bool varnish, int level) const;
+
   // The surface of one node (dry: the varnish's when varnished, else the medium's; wet).
   const surface::GhsBrdf& dry_brdf(int node) const { return *dry_[static_cast<std::size_t>(node)]; }
   const surface::GhsBrdf& wet_brdf(int node) const { return *wet_[static_cast<std::size_t>(node)]; }
@@ -64,12 +78,9 @@ class SurfaceShading {
   std::vector<float> reference_;      // t0(flat light) · t0(view)
   std::vector<float> reference_sky_;  // t̄0 · t0(view)
 
-  using Brdfs = std::vector<std::shared_ptr<const surface::GhsBrdf>>;  // one a node
   void shade_on(const Brdfs& dry, shade::Vec3 normal, shade::Vec3 to_light,
                 shade::Visibility visibility, float wetness, const float* reflectance,
                 float xyz[3]) const;
-  // The tables of a level, for the paint (binder index) or a varnish (varnish index).
-  const Brdfs& level(bool varnish, double log_rms) const;
   std::vector<double> wavelengths_;
   double source_sigma_ = 0.0;
   double subcell_slope_rms_ = 0.0;
