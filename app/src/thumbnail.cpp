@@ -46,7 +46,12 @@ void write_thumbnail(const std::filesystem::path& painting_path, const std::file
   const paintcore::Painting painting =
       paintcore::Painting::load(painting_path, 0, false);  // no undo history: not drawn
   render::check_render_memory(painting.canvas(), painting_path.string());
-  render::write_png(png, shrink_to_fit(render::render_painting(painting, {}), size));
+  // The Gaussian rule: a file manager's thumbnailer runs once per file, often where no cache
+  // can be kept, and a palette's trained rule (up to a second to build) shows no difference
+  // at thumbnail size.
+  render::RenderSettings settings;
+  settings.node_weights = render::NodeWeights::interpolatory;
+  render::write_png(png, shrink_to_fit(render::render_painting(painting, settings), size));
 }
 
 }  // namespace impasto::app
