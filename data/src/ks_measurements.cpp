@@ -79,9 +79,9 @@ KsFitProblem read_ks_measurements(const std::filesystem::path& path) {
         space == std::string_view::npos ? std::nullopt : parse_double(both.substr(0, space));
     const auto k2 =
         space == std::string_view::npos ? std::nullopt : parse_double(both.substr(space));
-    if (!k1 || !k2 || *k1 < 0 || *k1 >= 1 || *k2 < 0 || *k2 >= 1) {
-      throw std::runtime_error(at_line("saunderson") +
-                               "expected '# saunderson: K1 K2' with both in [0, 1)");
+    if (!k1 || !k2 || !saunderson_coefficient_valid(*k1) || !saunderson_coefficient_valid(*k2)) {
+      throw std::runtime_error(at_line("saunderson") + "expected '# saunderson: K1 K2' with both " +
+                               kSaundersonCoefficientRange);
     }
     problem.saunderson = Saunderson{*k1, *k2};
   }

@@ -28,10 +28,10 @@ void validate(const RenderSettings& s) {
   require(s.ambient >= 0.0 && s.ambient <= 1.0, "ambient", s.ambient, "in [0, 1]");
   require(s.wet_gloss_mm > 0.0 && std::isfinite(s.wet_gloss_mm), "wet_gloss_mm", s.wet_gloss_mm,
           "> 0");
-  require(s.saunderson_k1 >= 0.0 && s.saunderson_k1 < 1.0, "saunderson_k1", s.saunderson_k1,
-          "in [0, 1)");
-  require(s.saunderson_k2 >= 0.0 && s.saunderson_k2 < 1.0, "saunderson_k2", s.saunderson_k2,
-          "in [0, 1)");
+  require(data::saunderson_coefficient_valid(s.saunderson_k1), "saunderson_k1", s.saunderson_k1,
+          data::kSaundersonCoefficientRange);
+  require(data::saunderson_coefficient_valid(s.saunderson_k2), "saunderson_k2", s.saunderson_k2,
+          data::kSaundersonCoefficientRange);
   for (const auto* m : {&s.dry_material, &s.wet_material}) {
     require(m->specular >= 0.0f && m->specular <= 1.0f, "material specular", m->specular,
             "in [0, 1]");

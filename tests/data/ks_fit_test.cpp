@@ -172,6 +172,18 @@ TEST_F(KsMeasurementsFile, ReadsMixesReferenceAndSaunderson) {
   EXPECT_EQ(p.samples[2].reflectance.values, (std::vector<double>{0.5, 0.6}));
 }
 
+// The one range of a Saunderson coefficient, which the measurements file and the render
+// settings both check.
+TEST(SaundersonCoefficient, IsInZeroToOneOpen) {
+  EXPECT_TRUE(saunderson_coefficient_valid(0.0));
+  EXPECT_TRUE(saunderson_coefficient_valid(kSaundersonK1));
+  EXPECT_TRUE(saunderson_coefficient_valid(kSaundersonK2));
+  EXPECT_TRUE(saunderson_coefficient_valid(0.999));
+  EXPECT_FALSE(saunderson_coefficient_valid(1.0));
+  EXPECT_FALSE(saunderson_coefficient_valid(-0.01));
+  EXPECT_FALSE(saunderson_coefficient_valid(std::nan("")));
+}
+
 TEST_F(KsMeasurementsFile, ErrorsNameFileAndLine) {
   const std::string file = path_.string();
   write("# quantity: reflectance\n# reference: W\n# mix a: W=x\nwavelength_nm,a\n400,0.5\n");
@@ -184,6 +196,11 @@ TEST_F(KsMeasurementsFile, ErrorsNameFileAndLine) {
       "# quantity: reflectance\n# reference: W\n# saunderson: 2\n# mix a: "
       "W=1\nwavelength_nm,a\n400,0.5\n");
   EXPECT_EQ(error().rfind(file + ":3:", 0), 0u) << error();
+  write(
+      "# quantity: reflectance\n# reference: W\n# saunderson: 0.04 1\n# mix a: "
+      "W=1\nwavelength_nm,a\n400,0.5\n");
+  EXPECT_EQ(error().rfind(file + ":3:", 0), 0u) << error();
+  EXPECT_NE(error().find("in [0, 1)"), std::string::npos) << error();
   write("# quantity: reflectance\n# reference: W\nwavelength_nm,a\n400,0.5\n");
   EXPECT_NE(error().find("column 'a' has no '# mix a"), std::string::npos) << error();
   write("# quantity: reflectance\n# mix a: W=1\nwavelength_nm,a\n400,0.5\n");

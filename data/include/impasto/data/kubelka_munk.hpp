@@ -54,6 +54,13 @@ constexpr Real saunderson_to_internal(Real measured, Real k1, Real k2) {
 inline constexpr double kSaundersonK1 = 0.03;
 inline constexpr double kSaundersonK2 = 0.65;
 
+// The one range check of a Saunderson coefficient, k1 or k2: [0, 1) (k2 = 1 divides by zero in
+// saunderson_to_measured at R = 1; k1 = 1 leaves no light to enter the paint). NaN fails.
+constexpr bool saunderson_coefficient_valid(double k) {
+  return k >= 0.0 && k < 1.0;
+}
+inline constexpr const char* kSaundersonCoefficientRange = "in [0, 1)";
+
 // One interface's coefficients, measured → body reflectance and back.
 struct Saunderson {
   double k1 = kSaundersonK1, k2 = kSaundersonK2;

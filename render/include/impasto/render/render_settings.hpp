@@ -63,8 +63,8 @@ struct RenderSettings {
   // Saunderson surface correction of the top reflectance (off: the data are interface-
   // corrected K-M values, and the specular term already shows the surface).
   bool saunderson = false;
-  double saunderson_k1 = data::Saunderson{}.k1;  // the paint-air interface's defaults, as
-  double saunderson_k2 = data::Saunderson{}.k2;  // the K/S fit takes them
+  double saunderson_k1 = data::kSaundersonK1;  // the paint-air interface's defaults, as
+  double saunderson_k2 = data::kSaundersonK2;  // the K/S fit takes them
 
   // --- shading ---
   double light_azimuth_deg = 225.0;   // from +x (right) toward +y (down the rows): upper left
