@@ -76,6 +76,44 @@ TEST(ShadingKey, TheColourSettingsLeaveIt) {
   }
 }
 
+std::vector<double> both_keys(const RenderSettings& settings) {
+  std::vector<double> key = shading_settings_key(settings);
+  const std::vector<double> colour = shader_colour_settings_key(settings);
+  key.insert(key.end(), colour.begin(), colour.end());
+  return key;
+}
+
+// The window's renderer takes a light or material change by copy_shading_settings: each
+// shading setting and each shader colour uniform arrives, the palette's settings stay.
+TEST(ShadingKey, TheCopyTakesEachShadingAndUniformSettingAndLeavesTheRest) {
+  std::vector<Change> changes = shading_changes();
+  changes.push_back({"saunderson_k2", [](RenderSettings& s) { s.saunderson_k2 -= 0.1; }});
+  changes.push_back({"cracks", [](RenderSettings& s) { s.cracks = !s.cracks; }});
+  changes.push_back({"crack_model", [](RenderSettings& s) {
+                       s.crack_model = s.crack_model == CrackModel::Corrected
+                                           ? CrackModel::Gouffe
+                                           : CrackModel::Corrected;
+                     }});
+  for (const Change& change : colour_changes()) {
+    if (change.name.starts_with("saunderson")) changes.push_back(change);
+  }
+  for (const Change& change : changes) {
+    RenderSettings changed;
+    change.apply(changed);
+    RenderSettings copy;
+    copy_shading_settings(changed, copy);
+    EXPECT_EQ(both_keys(copy), both_keys(changed)) << change.name;
+    EXPECT_NE(both_keys(copy), both_keys(RenderSettings{})) << change.name;
+  }
+  RenderSettings other;
+  other.light = "A";
+  other.thickness_scale_mm *= 2.0;
+  RenderSettings copy;
+  copy_shading_settings(other, copy);
+  EXPECT_EQ(copy.light, RenderSettings{}.light);
+  EXPECT_EQ(copy.thickness_scale_mm, RenderSettings{}.thickness_scale_mm);
+}
+
 std::vector<data::Pigment> test_pigments() {
   const auto& db = data::PigmentDatabase::defaults();
   return {db.get("Titanium White"), db.get("Phthalo Blue (Green Shade)")};

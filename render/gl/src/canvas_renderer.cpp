@@ -8,6 +8,7 @@
 
 #include "embedded_shaders.hpp"
 #include "impasto/render/shading.hpp"
+#include "impasto/render/shading_key.hpp"
 #include "impasto/render_gl/dry_reflectance.hpp"
 #include "impasto/render_gl/ghs_surface_tables.hpp"
 #include "impasto/render_gl/shader_library.hpp"
@@ -116,22 +117,9 @@ void CanvasRenderer::set_shading(const render::RenderSettings& settings) {
   const bool ghs_light_changed =
       ghs_->active() && (settings.light_elevation_deg != settings_.light_elevation_deg ||
                          settings.shadow_light_diameter_deg != settings_.shadow_light_diameter_deg);
-  settings_.light_azimuth_deg = settings.light_azimuth_deg;
-  settings_.light_elevation_deg = settings.light_elevation_deg;
-  settings_.ambient = settings.ambient;
-  settings_.dry_material = settings.dry_material;
-  settings_.wet_material = settings.wet_material;
-  settings_.wet_gloss_mm = settings.wet_gloss_mm;
-  settings_.saunderson = settings.saunderson;
-  settings_.saunderson_k1 = settings.saunderson_k1;
-  settings_.saunderson_k2 = settings.saunderson_k2;
-  settings_.cracks = settings.cracks;  // the crack correction follows the light in draw()
-  settings_.crack_model = settings.crack_model;
-  settings_.shadows = settings.shadows;
-  settings_.occlusion = settings.occlusion;
-  settings_.shadow_light_diameter_deg = settings.shadow_light_diameter_deg;
-  settings_.shadow_reach_mm = settings.shadow_reach_mm;
-  settings_.occlusion_radius_mm = settings.occlusion_radius_mm;
+  // The shading and the shader's colour uniforms (Saunderson; the crack correction, which
+  // follows the light in draw()), listed once in render/shading_key.hpp.
+  render::copy_shading_settings(settings, settings_);
   render::validate(settings_);
   if (ghs_light_changed) ghs_->set_light(settings_, palette_);  // the cells keep their surfaces
 }

@@ -58,12 +58,12 @@ std::vector<double> ShadedViewCache::look_of(const CanvasRenderer& renderer,
   // The shading (render/shading_key.hpp, as the CPU renderer's relight), then the rest of
   // what the shader reads as uniforms (CanvasRenderer::set_shading) and the view.
   std::vector<double> look = render::shading_settings_key(s);
-  look.insert(
-      look.end(),
-      {s.saunderson ? 1.0 : 0.0, s.saunderson_k1, s.saunderson_k2, s.cracks ? 1.0 : 0.0,
-       static_cast<double>(s.crack_model), o.light_intensity, o.background_rgb[0],
-       o.background_rgb[1], o.background_rgb[2], o.crack_close_up_min_pixels,
-       o.smooth_zoom ? 1.0 : 0.0, view.pixels_per_cell, view.rotation_rad, renderer.cell_mm()});
+  const std::vector<double> colour = render::shader_colour_settings_key(s);
+  look.insert(look.end(), colour.begin(), colour.end());
+  look.insert(look.end(),
+              {o.light_intensity, o.background_rgb[0], o.background_rgb[1], o.background_rgb[2],
+               o.crack_close_up_min_pixels, o.smooth_zoom ? 1.0 : 0.0, view.pixels_per_cell,
+               view.rotation_rad, renderer.cell_mm()});
   return look;
 }
 
