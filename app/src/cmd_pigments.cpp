@@ -2,7 +2,6 @@
 #include <impasto/data/colorimetry.hpp>
 #include <impasto/data/data_dir.hpp>
 #include <impasto/data/ks_fit.hpp>
-#include <impasto/data/kubelka_munk.hpp>
 #include <impasto/data/lights.hpp>
 #include <impasto/data/pigment_library.hpp>
 #include <impasto/data/pigment_user_layer.hpp>
@@ -18,6 +17,7 @@
 #include <string>
 
 #include "command.hpp"
+#include "pigment_curves.hpp"
 #include "vocabulary.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).
@@ -73,11 +73,10 @@ void run_show(const std::string& name, bool json) {
     if (key != "name") std::printf("%s: %s\n", key.c_str(), value.c_str());
   }
   std::printf("%8s %12s %12s %12s %10s\n", "nm", "K", "S", "K/S", "R_inf");
-  for (std::size_t i = 0; i < p.K.wavelengths_nm.size(); ++i) {
-    const double nm = p.K.wavelengths_nm[i];
-    const double k = p.K.values[i], s = p.S.at(nm);
-    const double ks = s > 0 ? k / s : HUGE_VAL;
-    std::printf("%8.1f %12.6g %12.6g %12.6g %10.6f\n", nm, k, s, ks, reflectance_infinite(k, s));
+  const PigmentCurves c = pigment_curves(p);
+  for (std::size_t i = 0; i < c.nm.size(); ++i) {
+    std::printf("%8.1f %12.6g %12.6g %12.6g %10.6f\n", c.nm[i], c.k[i], c.s[i], c.k_over_s[i],
+                c.r_infinite[i]);
   }
 }
 

@@ -1,6 +1,5 @@
 #include "pigment_figure.hpp"
 
-#include <impasto/data/kubelka_munk.hpp>
 #include <impasto/files/atomic_file.hpp>
 #include <impasto/render/image.hpp>
 #include <impasto/render/pigment_swatches.hpp>
@@ -10,6 +9,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "pigment_curves.hpp"
 #include "plot_ticks.hpp"
 
 #if __has_include(<imgui.h>)  // the window build links ImGui
@@ -86,15 +86,9 @@ Figure pigment_figure(const data::Pigment& pigment, const std::string& subtitle,
   f.boxes.push_back({0, 0, double(f.width), double(f.height), kWhite, false});
   f.texts.push_back(
       {16, 22, pigment.name + (subtitle.empty() ? "" : "  -  " + subtitle), kInk, false});
-  const auto& nm = pigment.K.wavelengths_nm;
-  Series k{"K", nm, pigment.K.values, kKColour}, s{"S", nm, {}, kSColour};
-  Series ratio{"K/S", nm, {}, kRatioColour}, r{"R", nm, {}, kRColour};
-  for (double w : nm) {
-    const double kv = pigment.K.at(w), sv = pigment.S.at(w);
-    s.y.push_back(sv);
-    ratio.y.push_back(sv > 0 ? kv / sv : HUGE_VAL);
-    r.y.push_back(data::reflectance_infinite(kv, sv));
-  }
+  const PigmentCurves c = pigment_curves(pigment);
+  const Series k{"K", c.nm, c.k, kKColour}, s{"S", c.nm, c.s, kSColour};
+  const Series ratio{"K/S", c.nm, c.k_over_s, kRatioColour}, r{"R", c.nm, c.r_infinite, kRColour};
   add_plot(f, 8, 32, 395, 290, "K and S (S of white = 1)", {k, s});
   add_plot(f, 403, 32, 395, 290, "K/S", {ratio});
   add_plot(f, 798, 32, 395, 290, "R (opaque layer, R-infinity)", {r});

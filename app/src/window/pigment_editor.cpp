@@ -1,7 +1,6 @@
 #include "window/pigment_editor.hpp"
 
 #include <impasto/data/colorimetry.hpp>
-#include <impasto/data/kubelka_munk.hpp>
 #include <impasto/data/lights.hpp>
 #include <impasto/data/pigment_text.hpp>
 #include <impasto/data/pigment_user_layer.hpp>
@@ -16,6 +15,7 @@
 #include <cstdio>
 #include <exception>
 
+#include "pigment_curves.hpp"
 #include "window/plot.hpp"
 
 namespace impasto::app::window {
@@ -51,17 +51,11 @@ struct Curves {
   PlotSeries k, s, ratio, r;
 };
 Curves curves_of(const data::Pigment& p, const std::string& suffix, bool dashed = false) {
-  Curves c{{"K" + suffix, p.K.wavelengths_nm, p.K.values, kK, dashed},
-           {"S" + suffix, p.K.wavelengths_nm, {}, kS, dashed},
-           {"K/S" + suffix, p.K.wavelengths_nm, {}, kRatio, dashed},
-           {"R" + suffix, p.K.wavelengths_nm, {}, kR, dashed}};
-  for (double nm : p.K.wavelengths_nm) {
-    const double k = p.K.at(nm), s = p.S.at(nm);
-    c.s.y.push_back(s);
-    c.ratio.y.push_back(s > 0 ? k / s : HUGE_VAL);
-    c.r.y.push_back(data::reflectance_infinite(k, s));
-  }
-  return c;
+  const PigmentCurves c = pigment_curves(p);
+  return {{"K" + suffix, c.nm, c.k, kK, dashed},
+          {"S" + suffix, c.nm, c.s, kS, dashed},
+          {"K/S" + suffix, c.nm, c.k_over_s, kRatio, dashed},
+          {"R" + suffix, c.nm, c.r_infinite, kR, dashed}};
 }
 
 // The user layer's pigment files and their contents.
