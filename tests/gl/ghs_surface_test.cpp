@@ -355,5 +355,50 @@ TEST(GhsCanvasCells, MediaAndVarnishOfEachCellMatchTheCpu) {
   EXPECT_GT(changed, 10.0 / 255.0);
 }
 
+// Zoomed in (the window's smooth zoom), a ghs pixel is the bilinear blend of the four nearest
+// cells' shaded colours (the CPU image's, linear sRGB), not a block of its cell.
+TEST(GhsCanvasZoom, ZoomedInPixelsBlendTheFourNearestCellsShading) {
+  auto context = create_headless_context();
+  const paintcore::Canvas canvas = make_ridged_canvas();
+  render::RenderSettings settings;
+  settings.surface.model = render::SurfaceModel::ghs;
+  settings.surface.subsurface = false;
+  settings.display = render::DisplayEncoding::linear_srgb;  // blending is linear on both sides
+  render::TileRenderer cpu(settings, kSlots);
+  cpu.render_all(canvas);
+  const render::Image cells = cpu.image();
+  CanvasRenderer gpu(canvas.width_cells(), canvas.height_cells(), settings,
+                     render::SpectralPalette(settings, kSlots));
+  gpu.upload_all(canvas);
+  constexpr int kPixelsPerCell = 4, kSide = 64;  // around the canvas centre
+  Framebuffer target(kSide, kSide, TexelFormat::kRGBA32F);
+  target.bind();
+  const CanvasView view{75.0, 50.0, static_cast<double>(kPixelsPerCell), 0.0};
+  gpu.draw(view, kSide, kSide);
+  const std::vector<float> rgba = target.read_rgba_float();
+  double worst = 0.0, step = 0.0;
+  for (int y = 0; y < kSide; ++y) {
+    for (int x = 0; x < kSide; ++x) {
+      // The pixel's centre in cells (rows down), and its four nearest cell centres.
+      const double px = 75.0 + (x + 0.5 - 0.5 * kSide) / kPixelsPerCell - 0.5;
+      const double py = 50.0 + (y + 0.5 - 0.5 * kSide) / kPixelsPerCell - 0.5;
+      const int cx = static_cast<int>(std::floor(px)), cy = static_cast<int>(std::floor(py));
+      const double fx = px - cx, fy = py - cy;
+      const float* p = &rgba[static_cast<std::size_t>(((kSide - 1 - y) * kSide + x) * 4)];
+      for (int ch = 0; ch < 3; ++ch) {
+        const double expected = (1 - fx) * (1 - fy) * cells.pixel(cx, cy)[ch] +
+                                fx * (1 - fy) * cells.pixel(cx + 1, cy)[ch] +
+                                (1 - fx) * fy * cells.pixel(cx, cy + 1)[ch] +
+                                fx * fy * cells.pixel(cx + 1, cy + 1)[ch];
+        worst = std::max(worst, std::abs(p[ch] - expected));
+        if (x > 0) step = std::max(step, double(std::abs(p[ch] - p[ch - 4])));
+      }
+    }
+  }
+  std::cout << "[ zoom ] GPU vs bilinear CPU: max " << worst << "\n";
+  EXPECT_LE(worst, 0.5 / 255.0);
+  EXPECT_GT(step, 0.0);  // not flat: the view shows the canvas
+}
+
 }  // namespace
 }  // namespace impasto::render_gl

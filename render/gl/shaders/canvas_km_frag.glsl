@@ -185,25 +185,41 @@ vec3 interpolated_colour(vec2 cell_position, ivec2 cell) {
 // Zoomed out: the shaded colours of up to 4 x 4 cells spread over the pixel's footprint,
 // averaged in linear XYZ (no speckle from one cell standing for many). n x n samples for
 // about n cells a pixel each way, so a view near one pixel a cell (the window's fit) still
-// costs one cell a pixel.
+// costs one cell a pixel. With bilinear (the ghs model zoomed in: it shades per node, after
+// the colour, so it cannot blend colour and normal first), the shaded colours of the four
+// nearest cell centres, blended bilinearly.
 vec3 footprint_colour(vec2 cell_position, float cells_per_pixel, bool allow_close_up,
-                      out bool any_inside) {
-  int n = int(clamp(floor(cells_per_pixel + 0.5), 1.0, 4.0));
+                      bool bilinear, out bool any_inside) {
+  int n = bilinear ? 2 : int(clamp(floor(cells_per_pixel + 0.5), 1.0, 4.0));
   mat2 to_cells = mat2(screen_to_cell[0].xy, screen_to_cell[1].xy);
+  vec2 corner = cell_position - 0.5;
+  ivec2 c0 = ivec2(floor(corner));
+  vec2 f = corner - vec2(c0);
   vec3 sum = vec3(0.0);
   int inside = 0;
   for (int j = 0; j < n; ++j) {
     for (int i = 0; i < n; ++i) {
-      vec2 offset = (vec2(i, j) + 0.5) / float(n) - 0.5;  // within the pixel
-      vec2 at = cell_position + to_cells * offset;
-      ivec2 c = ivec2(floor(at));
-      if (any(lessThan(c, ivec2(0))) || any(greaterThanEqual(c, canvas_cells))) continue;
-      sum += cell_colour(c, at, allow_close_up);
+      ivec2 c;
+      vec2 at;
+      float weight = 1.0;
+      if (bilinear) {
+        c = clamp(c0 + ivec2(i, j), ivec2(0), canvas_cells - 1);
+        at = vec2(c) + 0.5;
+        weight = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y);
+      } else {
+        vec2 offset = (vec2(i, j) + 0.5) / float(n) - 0.5;  // within the pixel
+        at = cell_position + to_cells * offset;
+        c = ivec2(floor(at));
+        if (any(lessThan(c, ivec2(0))) || any(greaterThanEqual(c, canvas_cells))) continue;
+      }
+      // One call of cell_colour in the whole shader: the compiled shader holds one copy.
+      vec3 colour = cell_colour(c, at, allow_close_up);
+      sum += bilinear ? weight * colour : colour;
       ++inside;
     }
   }
   any_inside = inside > 0;
-  return inside > 0 ? sum / float(inside) : vec3(0.0);
+  return inside == 0 ? vec3(0.0) : bilinear ? sum : sum / float(inside);
 }
 
 void main() {
@@ -213,18 +229,22 @@ void main() {
   float cells_per_pixel = length(screen_to_cell[0].xy);
   bool zoomed_out = smooth_zoom && cells_per_pixel > 1.0 + 1e-4;
   bool zoomed_in = smooth_zoom && cells_per_pixel < 1.0 - 1e-4;
+  if (!zoomed_out && outside) {
+    frag_color = vec4(background, 1.0);
+    return;
+  }
+  bool close_up = !outside && crack_at(cell).x > 0.0 && close_up_zoomed(screen_to_cell);
   vec3 shaded;
-  if (!zoomed_out && !outside && zoomed_in && !ghs_enabled &&
-      !(crack_at(cell).x > 0.0 && close_up_zoomed(screen_to_cell))) {
-    // (The ghs model shades per node after the colour: zoomed in, its cells are magnified.)
+  if (zoomed_in && !ghs_enabled && !close_up) {
     shaded = interpolated_colour(cell_position, cell);
   } else {
-    // Zoomed out, the cells under the pixel's footprint; else the pixel's own cell (a
-    // footprint of one, exactly at cell_position), with a crack's close-up. One call of
-    // cell_colour in the whole shader: the compiled shader holds one copy of it.
+    // Zoomed out, the cells under the pixel's footprint; zoomed in with ghs, the four nearest
+    // cells; else the pixel's own cell (a footprint of one, exactly at cell_position), with a
+    // crack's close-up.
+    bool bilinear = zoomed_in && !close_up;
     bool any_inside;
-    shaded = footprint_colour(cell_position, zoomed_out ? cells_per_pixel : 1.0, !zoomed_out,
-                              any_inside);
+    shaded = footprint_colour(cell_position, zoomed_out ? cells_per_pixel : 1.0,
+                              !zoomed_out && !bilinear, bilinear, any_inside);
     if (!any_inside) {
       frag_color = vec4(background, 1.0);
       return;
