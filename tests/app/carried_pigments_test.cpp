@@ -10,6 +10,8 @@
 #include <sstream>
 #include <string>
 
+#include "../common/straight_stroke.hpp"
+#include "../common/user_pigment_folder.hpp"
 #include "impasto/data/data_dir.hpp"
 #include "impasto/data/pigment_library.hpp"
 #include "impasto/paintcore/painting.hpp"
@@ -25,27 +27,14 @@ namespace fs = std::filesystem;
 class CarriedPigments : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("impasto_carried_pigments_" + std::to_string(getpid()));
-    fs::remove_all(dir_);
     fs::create_directories(user());
-    if (const char* old = std::getenv("XDG_DATA_HOME")) saved_ = old;
-    setenv("XDG_DATA_HOME", (dir_ / "xdg").c_str(), 1);
-    setenv("XDG_CACHE_HOME", (dir_ / "cache").c_str(), 1);  // carried flake files go there
+    setenv("XDG_CACHE_HOME", (folder_.dir() / "cache").c_str(), 1);  // carried flake files go there
     write_my_red(1.0);
     data::reload_active_pigment_library();
     render::install_pigment_records();
   }
-  void TearDown() override {
-    paintcore::Painting::set_pigment_record_source({});
-    if (saved_.empty()) {
-      unsetenv("XDG_DATA_HOME");
-    } else {
-      setenv("XDG_DATA_HOME", saved_.c_str(), 1);
-    }
-    data::reload_active_pigment_library();
-    fs::remove_all(dir_);
-  }
-  fs::path user() const { return dir_ / "xdg" / "impasto" / "pigments"; }
+  void TearDown() override { paintcore::Painting::set_pigment_record_source({}); }
+  fs::path user() const { return folder_.user(); }
   // Pyrrole Red's file as "My Red", its K scaled.
   void write_my_red(double k_scale) {
     std::ifstream in(data::data_dir() / "pigments" / "pyrrole_red.csv");
@@ -67,30 +56,19 @@ class CarriedPigments : public ::testing::Test {
     std::ofstream(user() / "my_red.csv") << out.str();
   }
 
-  fs::path dir_;
-  std::string saved_;
+  test::UserPigmentFolder folder_{"impasto_carried_pigments"};
 };
 
 paintcore::Painting painted_with(const std::string& pigment) {
   paintcore::Painting p({64, 48, 254.0, 3}, 1);
   p.set_brush(paintcore::BrushSettings{"flat", 3.0, 0.5});
   p.load_brush({{pigment, 1.0}, {"Titanium White", 0.2}}, 6.0);
-  p.begin_stroke();
-  for (int i = 0; i <= 20; ++i) {
-    paintcore::PenSample s;
-    s.time_s = 0.01 * i;
-    s.x_mm = 0.6 + 0.2 * i;
-    s.y_mm = 2.4;
-    s.pressure = 0.8f;
-    s.buttons = paintcore::kPenTip;
-    p.stroke_to(s);
-  }
-  p.end_stroke();
+  test::paint_straight_stroke(p, {0.6, 0.2, 2.4, 20, 0.8f, paintcore::kPenTip});
   return p;
 }
 
 TEST_F(CarriedPigments, ARenderIsBitIdenticalAfterThePigmentIsRemovedOrEdited) {
-  const fs::path file = dir_ / "my_red.impasto";
+  const fs::path file = folder_.dir() / "my_red.impasto";
   painted_with("My Red").save(file);
   render::RenderSettings settings;
   const render::Image before =
@@ -121,7 +99,7 @@ TEST_F(CarriedPigments, ARenderIsBitIdenticalAfterThePigmentIsRemovedOrEdited) {
 }
 
 TEST_F(CarriedPigments, ASessionReplaysOntoAPaintingThatCarriesAPigmentTheLibraryLacks) {
-  const fs::path file = dir_ / "carrier.impasto";
+  const fs::path file = folder_.dir() / "carrier.impasto";
   painted_with("My Red").save(file);
   fs::remove(user() / "my_red.csv");
   data::reload_active_pigment_library();
@@ -150,7 +128,7 @@ TEST_F(CarriedPigments, AFlakePigmentCarriesItsFlakeFiles) {
 
 TEST_F(CarriedPigments, OlderPaintingsWithoutRecordsRenderWithTheLibrary) {
   paintcore::Painting::set_pigment_record_source({});  // as before version 4
-  const fs::path file = dir_ / "old.impasto";
+  const fs::path file = folder_.dir() / "old.impasto";
   painted_with("My Red").save(file);
   const paintcore::Painting loaded = paintcore::Painting::load(file, 1);
   EXPECT_TRUE(loaded.pigment_records().empty());

@@ -11,6 +11,7 @@
 #include <fstream>
 #include <string>
 
+#include "../common/user_pigment_folder.hpp"
 #include "impasto/data/data_dir.hpp"
 #include "impasto/data/pigment_library.hpp"
 #include "plot_ticks.hpp"
@@ -25,12 +26,6 @@ namespace fs = std::filesystem;
 class PigmentEditorTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("impasto_pigment_editor_" + std::to_string(getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-    if (const char* old = std::getenv("XDG_DATA_HOME")) saved_ = old;
-    setenv("XDG_DATA_HOME", (dir_ / "xdg").c_str(), 1);
-    data::reload_active_pigment_library();
     ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
     io.DisplaySize = ImVec2(1600, 1000);
@@ -40,25 +35,15 @@ class PigmentEditorTest : public ::testing::Test {
     int w = 0, h = 0;
     io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
   }
-  void TearDown() override {
-    ImGui::DestroyContext();
-    if (saved_.empty()) {
-      unsetenv("XDG_DATA_HOME");
-    } else {
-      setenv("XDG_DATA_HOME", saved_.c_str(), 1);
-    }
-    data::reload_active_pigment_library();
-    fs::remove_all(dir_);
-  }
+  void TearDown() override { ImGui::DestroyContext(); }
   void frame(PigmentEditor& editor) {
     ImGui::NewFrame();
     editor.draw(state_, palette_);
     ImGui::Render();
   }
-  fs::path user() const { return dir_ / "xdg" / "impasto" / "pigments"; }
+  fs::path user() const { return folder_.user(); }
 
-  fs::path dir_;
-  std::string saved_;
+  test::UserPigmentFolder folder_{"impasto_pigment_editor"};
   WindowState state_;
   render::SpectralPalette palette_{state_.settings, std::vector<std::string>{}};
 };
@@ -85,19 +70,19 @@ TEST_F(PigmentEditorTest, EveryTabDrawsAndTheFitMatchesTheExample) {
 
 TEST_F(PigmentEditorTest, AnImportGoesToTheUserLayerAndUndoTakesItBack) {
   std::ifstream in(data::data_dir() / "pigments" / "cobalt_blue.csv");
-  std::ofstream out(dir_ / "mine.csv");
+  std::ofstream out(folder_.dir() / "mine.csv");
   for (std::string line; std::getline(in, line);)
     out << (line.rfind("# name:", 0) == 0 ? "# name: My Blue" : line) << '\n';
   out.close();
   PigmentEditor editor;
   editor.open("Cobalt Blue");
   frame(editor);
-  editor.import_file(dir_ / "mine.csv");
+  editor.import_file(folder_.dir() / "mine.csv");
   EXPECT_EQ(editor.message(), "imported mine.csv");
   ASSERT_TRUE(fs::exists(user() / "my_blue.csv"));
   EXPECT_EQ(data::active_pigment_library().origin("My Blue")->layer, "user");
   frame(editor);
-  editor.import_file(dir_ / "mine.csv");  // a second time: refused, nothing to undo for it
+  editor.import_file(folder_.dir() / "mine.csv");  // a second time: refused, nothing to undo for it
   EXPECT_NE(editor.message().find("exists"), std::string::npos) << editor.message();
   editor.undo();
   EXPECT_FALSE(fs::exists(user() / "my_blue.csv"));

@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 
+#include "../common/user_pigment_folder.hpp"
 #include "command_line.hpp"
 #include "impasto/data/data_dir.hpp"
 #include "impasto/data/pigment_library.hpp"
@@ -28,23 +29,6 @@ std::string read_text(const fs::path& path) {
 
 class PigmentsCommand : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("impasto_pigments_command_" + std::to_string(getpid()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-    if (const char* old = std::getenv("XDG_DATA_HOME")) saved_ = old;
-    setenv("XDG_DATA_HOME", (dir_ / "xdg").c_str(), 1);
-    data::reload_active_pigment_library();
-  }
-  void TearDown() override {
-    if (saved_.empty()) {
-      unsetenv("XDG_DATA_HOME");
-    } else {
-      setenv("XDG_DATA_HOME", saved_.c_str(), 1);
-    }
-    data::reload_active_pigment_library();
-    fs::remove_all(dir_);
-  }
   // Runs `impasto ARGS` through the registered commands (the library read again first, as a
   // new process would).
   static void run(const std::string& args) {
@@ -52,36 +36,35 @@ class PigmentsCommand : public ::testing::Test {
     run_command_in_process(args);
     data::reload_active_pigment_library();  // what the command changed
   }
-  fs::path user() const { return dir_ / "xdg" / "impasto" / "pigments"; }
+  fs::path user() const { return folder_.user(); }
 
-  fs::path dir_;
-  std::string saved_;
+  test::UserPigmentFolder folder_{"impasto_pigments_command"};
 };
 
 TEST_F(PigmentsCommand, ImportThenExportLeavesNumbersAndMetadataUnchanged) {
   const fs::path bundled = data::data_dir() / "pigments" / "quinacridone_magenta.csv";
   std::string text = read_text(bundled);
   text.replace(text.find("# name: Quinacridone Magenta"), 28, "# name: My Magenta");
-  std::ofstream(dir_ / "mine.csv") << text;
-  run("pigments import " + (dir_ / "mine.csv").string());
+  std::ofstream(folder_.dir() / "mine.csv") << text;
+  run("pigments import " + (folder_.dir() / "mine.csv").string());
   ASSERT_TRUE(fs::is_regular_file(user() / "my_magenta.csv"));
   const data::LibraryPigment* origin = data::active_pigment_library().origin("My Magenta");
   ASSERT_NE(origin, nullptr);
   EXPECT_EQ(origin->layer, "user");
-  run("pigments export \"My Magenta\" --out " + (dir_ / "back.csv").string());
+  run("pigments export \"My Magenta\" --out " + (folder_.dir() / "back.csv").string());
 
-  const data::SpectralTable in = data::read_spectral_csv(dir_ / "mine.csv");
-  const data::SpectralTable out = data::read_spectral_csv(dir_ / "back.csv");
+  const data::SpectralTable in = data::read_spectral_csv(folder_.dir() / "mine.csv");
+  const data::SpectralTable out = data::read_spectral_csv(folder_.dir() / "back.csv");
   EXPECT_EQ(in.metadata, out.metadata);
   EXPECT_EQ(in.wavelengths_nm, out.wavelengths_nm);
   ASSERT_EQ(in.columns.size(), out.columns.size());
   for (std::size_t i = 0; i < in.columns.size(); ++i)
     EXPECT_EQ(in.columns[i].values, out.columns[i].values) << in.columns[i].name;
   // And a second round trip is byte for byte the first.
-  run("pigments import --force " + (dir_ / "back.csv").string());
-  run("pigments export \"My Magenta\" --out " + (dir_ / "again.csv").string());
-  EXPECT_EQ(read_text(dir_ / "back.csv"), read_text(dir_ / "again.csv"));
-  EXPECT_THROW(run("pigments import " + (dir_ / "back.csv").string()), std::runtime_error)
+  run("pigments import --force " + (folder_.dir() / "back.csv").string());
+  run("pigments export \"My Magenta\" --out " + (folder_.dir() / "again.csv").string());
+  EXPECT_EQ(read_text(folder_.dir() / "back.csv"), read_text(folder_.dir() / "again.csv"));
+  EXPECT_THROW(run("pigments import " + (folder_.dir() / "back.csv").string()), std::runtime_error)
       << "an existing user pigment is not replaced without --force";
 }
 
@@ -100,7 +83,7 @@ TEST_F(PigmentsCommand, AddRenameRemoveTouchOnlyTheUserLayer) {
 }
 
 TEST_F(PigmentsCommand, CheckReportsEveryBadFile) {
-  const fs::path folder = dir_ / "check";
+  const fs::path folder = folder_.dir() / "check";
   fs::create_directories(folder);
   fs::copy_file(data::data_dir() / "pigments" / "red_oxide.csv", folder / "a.csv");
   fs::copy_file(data::data_dir() / "pigments" / "red_oxide.csv", folder / "b.csv");
@@ -121,9 +104,9 @@ TEST_F(PigmentsCommand, FitRefusesToOverwriteAndKeepsMetadata) {
   const std::string fit =
       "pigments fit " +
       (data::data_dir() / "measurements" / "golden_synthetic_mixtures.csv").string() + " --out " +
-      (dir_ / "fit").string();
+      (folder_.dir() / "fit").string();
   run(fit);
-  const fs::path white = dir_ / "fit" / "titanium_white.csv";
+  const fs::path white = folder_.dir() / "fit" / "titanium_white.csv";
   const std::string first = read_text(white);
   EXPECT_NE(first.find("# fitted_from: golden_synthetic_mixtures.csv"), std::string::npos);
   EXPECT_NE(first.find("# licence: CC BY-NC-SA"), std::string::npos) << "kept from the library";
@@ -137,11 +120,11 @@ TEST_F(PigmentsCommand, FitRefusesToOverwriteAndKeepsMetadata) {
 }
 
 TEST_F(PigmentsCommand, PlotWritesSvgAndPng) {
-  run("pigments plot \"Cobalt Blue\" --out " + (dir_ / "p.svg").string());
-  run("pigments plot \"Cobalt Blue\" --out " + (dir_ / "p.png").string());
-  EXPECT_NE(read_text(dir_ / "p.svg").find("Cobalt Blue"), std::string::npos);
-  EXPECT_GT(fs::file_size(dir_ / "p.png"), 1000u);
-  EXPECT_THROW(run("pigments plot \"Cobalt Blue\" --out " + (dir_ / "p.gif").string()),
+  run("pigments plot \"Cobalt Blue\" --out " + (folder_.dir() / "p.svg").string());
+  run("pigments plot \"Cobalt Blue\" --out " + (folder_.dir() / "p.png").string());
+  EXPECT_NE(read_text(folder_.dir() / "p.svg").find("Cobalt Blue"), std::string::npos);
+  EXPECT_GT(fs::file_size(folder_.dir() / "p.png"), 1000u);
+  EXPECT_THROW(run("pigments plot \"Cobalt Blue\" --out " + (folder_.dir() / "p.gif").string()),
                std::runtime_error);
 }
 

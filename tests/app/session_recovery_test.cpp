@@ -15,6 +15,7 @@
 #include <set>
 #include <string>
 
+#include "../common/short_session.hpp"
 #include "session/rebuild.hpp"
 #include "session/recovery_folder.hpp"
 #include "session/session_registry.hpp"
@@ -250,14 +251,15 @@ TEST(Rebuild, FromTheLatestMarkedSaveAndEarlierOnesWhenItIsGone) {
   EXPECT_NE(rebuilt.warnings[0].find("start.impasto"), std::string::npos) << rebuilt.warnings[0];
 }
 
-TEST(Rebuild, AnUndoReachingBackPastASaveUsesAnEarlierBase) {
-  // A save without its undo history (saved_history_bytes 0): the undos after it cannot be
-  // replayed from it, so the rebuild starts from the painting the session opened.
-  TempDir dir("impasto_rebuild_undo");
+// A session that opens start.impasto, paints a stroke, saves it as saved.impasto (with its
+// undo history or without), undoes the stroke and its load and paints another: the rebuild
+// gives the live painting's hash; returns the painting it started from.
+std::string base_of_an_undo_past_a_save(const std::string& folder, bool keep_history) {
+  TempDir dir(folder);
   LiveRun live;
   live.save(dir.path() / "start.impasto", true);
   live.play(stroke(3.0));
-  live.painting.set_saved_history_bytes(0);
+  if (!keep_history) live.painting.set_saved_history_bytes(0);
   live.save(dir.path() / "saved.impasto");
   live.play({input::UndoEvent{}, input::UndoEvent{}});  // the stroke and its load
   live.play(stroke(5.0));
@@ -265,23 +267,20 @@ TEST(Rebuild, AnUndoReachingBackPastASaveUsesAnEarlierBase) {
   options.threads = 1;
   const RebuiltSession rebuilt = rebuild_session(live.recording, options);
   EXPECT_EQ(rebuilt.painting.state_hash(), live.painting.state_hash());
-  EXPECT_NE(rebuilt.base.find("start.impasto"), std::string::npos) << rebuilt.base;
+  return rebuilt.base;
+}
+
+TEST(Rebuild, AnUndoReachingBackPastASaveUsesAnEarlierBase) {
+  // A save without its undo history (saved_history_bytes 0): the undos after it cannot be
+  // replayed from it, so the rebuild starts from the painting the session opened.
+  const std::string base = base_of_an_undo_past_a_save("impasto_rebuild_undo", false);
+  EXPECT_NE(base.find("start.impasto"), std::string::npos) << base;
 }
 
 TEST(Rebuild, AnUndoReachingBackPastASaveUndoesIntoItsSavedHistory) {
   // By default a save keeps its undo history: the undos after it replay from it.
-  TempDir dir("impasto_rebuild_undo_history");
-  LiveRun live;
-  live.save(dir.path() / "start.impasto", true);
-  live.play(stroke(3.0));
-  live.save(dir.path() / "saved.impasto");
-  live.play({input::UndoEvent{}, input::UndoEvent{}});  // the stroke and its load
-  live.play(stroke(5.0));
-  ReplayOptions options;
-  options.threads = 1;
-  const RebuiltSession rebuilt = rebuild_session(live.recording, options);
-  EXPECT_EQ(rebuilt.painting.state_hash(), live.painting.state_hash());
-  EXPECT_NE(rebuilt.base.find("saved.impasto"), std::string::npos) << rebuilt.base;
+  const std::string base = base_of_an_undo_past_a_save("impasto_rebuild_undo_history", true);
+  EXPECT_NE(base.find("saved.impasto"), std::string::npos) << base;
 }
 
 // A save mark is only as good as the round trip: the file must load with the hash the mark
@@ -290,15 +289,15 @@ TEST(Rebuild, AnUndoReachingBackPastASaveUndoesIntoItsSavedHistory) {
 // paint and 2.60703e-06 mm of pigment (float rounding), which the loader keeps exactly.
 TEST(Rebuild, ASavedPaintingLoadsWithTheHashItsMarkNames) {
   TempDir dir("impasto_rebuild_hash");
-  LiveRun live(paintcore::CanvasSpec{240, 160, 254.0, 1});
-  live.play({input::BrushEvent{"round", 4.0, 0.5, {}}});
-  const char* pigments[] = {"Ultramarine Blue", "Pyrrole Red", "Titanium White"};
-  double t = 0.0;
-  for (int k = 0; k < 3; ++k) {
-    std::vector<input::StrokeEvent> events = {input::WipeEvent{},
-                                              input::LoadEvent{30.0, {{pigments[k], 1.0}}, {}}};
-    for (int i = 0; i <= 40; ++i, t += 0.01)
-      events.push_back(pen(t, 2 + 0.45 * i, 4 + 4 * k, i < 40, 0.7f));
+  using S = test::ShortSession;  // the session the command-line tests replay from a file
+  LiveRun live(paintcore::CanvasSpec{S::kWidthCells, S::kHeightCells, S::kDpi, 1});
+  live.play({input::BrushEvent{S::kBrush, S::kBrushSizeMm, S::kBrushStiffness, {}}});
+  const auto strokes = S::strokes();
+  for (std::size_t k = 0; k < strokes.size(); ++k) {
+    std::vector<input::StrokeEvent> events = {
+        input::WipeEvent{}, input::LoadEvent{S::kLoadMm3, {{S::kPigments[k], 1.0}}, {}}};
+    for (const S::Pen& p : strokes[k])
+      events.push_back(pen(p.time_s, p.x_mm, p.y_mm, p.down, static_cast<float>(S::kPressure)));
     live.play(events);
   }
   live.save(dir.path() / "p.impasto");

@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <string>
 
+#include "../common/straight_stroke.hpp"
+
 namespace impasto::cracks {
 namespace {
 
@@ -19,17 +21,7 @@ paintcore::Painting half_painted() {
   painting.set_brush({"round", 4.0, 0.5});
   for (int row = 0; row < 4; ++row) {
     painting.load_brush({{"Titanium White", 1.0}}, 40.0);
-    painting.begin_stroke();
-    for (int i = 0; i <= 20; ++i) {
-      paintcore::PenSample sample;
-      sample.time_s = 0.01 * i;
-      sample.x_mm = 1.0 + 0.4 * i;
-      sample.y_mm = 2.0 + 3.5 * row;
-      sample.pressure = 0.9f;
-      sample.buttons = paintcore::kPenTip | paintcore::kPenInRange;
-      painting.stroke_to(sample);
-    }
-    painting.end_stroke();
+    test::paint_straight_stroke(painting, {1.0, 0.4, 2.0 + 3.5 * row, 20, 0.9f});
   }
   painting.dry(1.0);
   return painting;

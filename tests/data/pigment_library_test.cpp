@@ -7,17 +7,14 @@
 #include <stdexcept>
 #include <string>
 
+#include "../common/scratch_folder.hpp"
+
 namespace impasto::data {
 namespace {
 
 namespace fs = std::filesystem;
 
-fs::path scratch_folder(const std::string& name) {
-  const fs::path dir = fs::path(testing::TempDir()) / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+using test::scratch_folder;
 
 void write_pigment(const fs::path& file, const std::string& name, double k) {
   std::ofstream(file) << "# quantity: kubelka_munk\n# name: " << name

@@ -7,18 +7,14 @@
 #include <fstream>
 #include <stdexcept>
 
+#include "../common/scratch_folder.hpp"
+
 namespace impasto::data {
 namespace {
 
 namespace fs = std::filesystem;
 
-// A fresh, empty folder under the test's temporary directory.
-fs::path scratch_folder(const std::string& name) {
-  const fs::path dir = fs::path(testing::TempDir()) / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
+using test::scratch_folder;
 
 TEST(PigmentDatabase, DefaultsHoldTheGoldenAcrylics) {
   const PigmentDatabase& db = PigmentDatabase::defaults();

@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "../common/straight_stroke.hpp"
+
 #include "impasto/paintcore/painting.hpp"
 #include "impasto/render/crack_close_up.hpp"
 #include "impasto/render_gl/canvas_renderer.hpp"
@@ -29,17 +31,7 @@ paintcore::Painting cracked_painting() {
   painting.set_brush({"round", 3.0, 0.5});
   for (int row = 0; row < 2; ++row) {
     painting.load_brush({{row == 0 ? "Pyrrole Red" : "Titanium White", 1.0}}, 40.0);
-    painting.begin_stroke();
-    for (int i = 0; i <= 16; ++i) {
-      paintcore::PenSample sample;
-      sample.time_s = 0.01 * i;
-      sample.x_mm = 0.3 + 0.2 * i;
-      sample.y_mm = 0.8 + 1.2 * row;
-      sample.pressure = 0.9f;
-      sample.buttons = paintcore::kPenTip | paintcore::kPenInRange;
-      painting.stroke_to(sample);
-    }
-    painting.end_stroke();
+    test::paint_straight_stroke(painting, {0.3, 0.2, 0.8 + 1.2 * row, 16, 0.9f});
     if (row == 0) painting.dry(1.0);
   }
   paintcore::CrackLayer cracks;

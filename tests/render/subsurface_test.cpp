@@ -11,6 +11,7 @@
 #include "impasto/data/lights.hpp"
 #include "impasto/data/pigments.hpp"
 #include "impasto/render/tile_renderer.hpp"
+#include "three_pigment_palette.hpp"
 
 using namespace impasto;
 using namespace impasto::render;
@@ -23,17 +24,6 @@ constexpr double kCellMm = 0.1;
 
 double kernel_sum(const SpreadKernel& k) {
   return std::accumulate(k.weights.begin(), k.weights.end(), 0.0);
-}
-
-std::vector<data::Pigment> test_pigments() {
-  const auto& db = data::PigmentDatabase::defaults();
-  return {db.get("Titanium White"), db.get("Carbon Black"), db.get("Phthalo Blue (Green Shade)")};
-}
-
-SpectralPalette make_palette(const RenderSettings& settings) {
-  const auto pigments = test_pigments();
-  return SpectralPalette(settings, data::light_from_spec("D65"), pigments,
-                         hiding_reflectance(pigments[0]));
 }
 
 RenderSettings ghs_linear() {

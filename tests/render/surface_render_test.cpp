@@ -12,6 +12,7 @@
 #include "impasto/render/paint_layer.hpp"
 #include "impasto/render/tile_renderer.hpp"
 #include "impasto/util/fnv1a.hpp"
+#include "three_pigment_palette.hpp"
 
 using namespace impasto;
 using namespace impasto::render;
@@ -19,17 +20,6 @@ using paintcore::kTileCells;
 using paintcore::kTileSize;
 
 namespace {
-
-std::vector<data::Pigment> test_pigments() {
-  const auto& db = data::PigmentDatabase::defaults();
-  return {db.get("Titanium White"), db.get("Carbon Black"), db.get("Phthalo Blue (Green Shade)")};
-}
-
-SpectralPalette make_palette(const RenderSettings& settings) {
-  const auto pigments = test_pigments();
-  return SpectralPalette(settings, data::light_from_spec("D65"), pigments,
-                         hiding_reflectance(pigments[0]));
-}
 
 // Two tiles: a woven canvas, a wet ridge of blue-white paint and a dry black glaze, so
 // that normals, wetness, shadows, occlusion and the dry stack all take part.

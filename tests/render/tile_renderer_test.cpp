@@ -10,6 +10,7 @@
 #include "impasto/data/lights.hpp"
 #include "impasto/data/pigments.hpp"
 #include "impasto/render/paint_layer.hpp"
+#include "three_pigment_palette.hpp"
 
 using namespace impasto;
 using namespace impasto::render;
@@ -17,17 +18,6 @@ using paintcore::kTileCells;
 using paintcore::kTileSize;
 
 namespace {
-
-std::vector<data::Pigment> test_pigments() {
-  const auto& db = data::PigmentDatabase::defaults();
-  return {db.get("Titanium White"), db.get("Carbon Black"), db.get("Phthalo Blue (Green Shade)")};
-}
-
-SpectralPalette make_palette(const RenderSettings& settings, const char* light = "D65") {
-  const auto pigments = test_pigments();
-  return SpectralPalette(settings, data::light_from_spec(light), pigments,
-                         hiding_reflectance(pigments[0]));
-}
 
 // Matte, flat lighting: the image is the K-M colour itself.
 RenderSettings matte_settings() {

@@ -1,0 +1,25 @@
+#pragma once
+// The palette the tile renderer's tests paint with: Titanium White (its R∞ the ground, the
+// painting's pigment 0), Carbon Black (1) and Phthalo Blue (Green Shade) (2), under a named
+// light (data::light_from_spec).
+#include <string>
+#include <vector>
+
+#include "impasto/data/lights.hpp"
+#include "impasto/data/pigments.hpp"
+#include "impasto/render/tile_renderer.hpp"
+
+namespace impasto::render {
+
+inline std::vector<data::Pigment> test_pigments() {
+  const auto& db = data::PigmentDatabase::defaults();
+  return {db.get("Titanium White"), db.get("Carbon Black"), db.get("Phthalo Blue (Green Shade)")};
+}
+
+inline SpectralPalette make_palette(const RenderSettings& settings, const char* light = "D65") {
+  const auto pigments = test_pigments();
+  return SpectralPalette(settings, data::light_from_spec(light), pigments,
+                         hiding_reflectance(pigments[0]));
+}
+
+}  // namespace impasto::render
