@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -40,11 +41,23 @@ render::Image shrink_to_fit(const render::Image& image, int max_side) {
   return out;
 }
 
+int thumbnail_coarsening(const paintcore::CanvasSpec& spec, int size) {
+  const int longer = std::max(spec.width_cells, spec.height_cells);
+  const int by_size = longer / (2 * std::max(size, 1));
+  return std::max(1, std::min(by_size, static_cast<int>(spec.dpi)));  // dpi stays >= 1
+}
+
 void write_thumbnail(const std::filesystem::path& painting_path, const std::filesystem::path& png,
                      int size) {
   if (size < 1) throw std::runtime_error("thumbnail size must be at least 1 pixel");
-  const paintcore::Painting painting =
+  const paintcore::Painting full =
       paintcore::Painting::load(painting_path, 0, false);  // no undo history: not drawn
+  // Rendered at about twice the thumbnail's size, not the canvas's: a 16384-cell painting
+  // took minutes and gigabytes at full size for a picture of 256 pixels.
+  const int factor = thumbnail_coarsening(full.canvas().spec(), size);
+  const std::optional<paintcore::Painting> coarse =
+      factor > 1 ? std::optional(full.coarsened(factor)) : std::nullopt;
+  const paintcore::Painting& painting = coarse ? *coarse : full;
   render::check_render_memory(painting.canvas(), painting_path.string());
   // The Gaussian rule: a file manager's thumbnailer runs once per file, often where no cache
   // can be kept, and a palette's trained rule (up to a second to build) shows no difference

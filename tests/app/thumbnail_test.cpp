@@ -53,5 +53,39 @@ TEST(Thumbnail, APaintingBecomesAPngWithinTheSize) {
   fs::remove_all(dir);
 }
 
+TEST(Thumbnail, RendersAboutTwoCellsAPixelNeverUnderOneDpi) {
+  EXPECT_EQ(thumbnail_coarsening({16384, 8192, 300.0, 1}, 256), 32);
+  EXPECT_EQ(thumbnail_coarsening({96, 48, 254.0, 1}, 32), 1);  // small: rendered as it is
+  EXPECT_EQ(thumbnail_coarsening({16384, 16384, 10.0, 1}, 64), 10);
+}
+
+TEST(Thumbnail, ABigPaintingIsRenderedCoarseAndShowsItsPaint) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("impasto_thumbnail_big_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  // 1200 x 400 cells (0.254 mm) with a band of red along the middle: 9 times coarser for 64
+  // pixels, the band about two pixels high.
+  paintcore::Painting painting({1200, 400, 100.0, 1}, 1);
+  painting.set_brush(paintcore::BrushSettings{.head = "round", .size_mm = 10.0, .stiffness = 0.5});
+  painting.load_brush({{"Pyrrole Red", 1.0}}, 3000.0);
+  painting.begin_stroke();
+  for (int i = 0; i <= 40; ++i)
+    painting.stroke_to({.time_s = 0.05 * i,
+                        .x_mm = 20.0 + 6.0 * i,
+                        .y_mm = 50.8,
+                        .pressure = 1.0f,
+                        .buttons = paintcore::kPenTip});
+  painting.end_stroke();
+  painting.save(dir / "big.impasto");
+  write_thumbnail(dir / "big.impasto", dir / "big.png", 64);
+  const render::Image png = render::read_png(dir / "big.png");
+  ASSERT_EQ(png.width, 64);
+  ASSERT_EQ(png.height, 21);
+  const float* canvas = png.pixel(32, 3);
+  const float* paint = png.pixel(32, 10);
+  EXPECT_GT(paint[0] - paint[2], canvas[0] - canvas[2] + 0.2f) << "the band is red";
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace impasto::app

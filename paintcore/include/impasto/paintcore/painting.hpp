@@ -118,6 +118,12 @@ class Painting {
   // zero, so that its render shades a smooth relief. Slots, records and parameters are kept;
   // the brush, ledger, history and cracks are not. Throws when the canvas would be too large.
   Painting refined(int scale) const;
+  // The painting on a canvas `factor` times coarser (dpi / factor, flat cloth), for a small
+  // picture of it: each cell the mean of the factor x factor block it covers (heights and
+  // pigment amounts; a block's medium and varnish from its centre cell). Slots, records and
+  // parameters are kept; the brush, ledger, history and cracks are not. Throws when the dpi
+  // would fall under 1.
+  Painting coarsened(int factor) const;
 
   // Undo/redo of whole operations (stroke, dry, load, wipe, brush change, reframe).
   bool undo();
