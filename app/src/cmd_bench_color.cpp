@@ -156,7 +156,7 @@ void run(const BenchColorArgs& args) {
 }
 
 const CommandRegistrar registrar("bench color", [](CLI::App& root) {
-  CLI::App* bench = command_group(root, "bench", "Measure accuracy and speed");
+  CLI::App* bench = bench_group(root);
   CLI::App* cmd = bench->add_subcommand(
       "color", "CIEDE2000 of N-wavelength rendering vs the 1-nm spectrum, and ns per cell");
   auto args = std::make_shared<BenchColorArgs>();

@@ -178,7 +178,7 @@ void run(const BenchCracksArgs& args) {
 }
 
 const CommandRegistrar registrar("bench cracks", [](CLI::App& root) {
-  CLI::App* bench = command_group(root, "bench", "Measure accuracy and speed");
+  CLI::App* bench = bench_group(root);
   CLI::App* cmd = bench->add_subcommand(
       "cracks", "Gouffé cavity formula vs the Monte Carlo radiosity reference, per crack shape");
   auto args = std::make_shared<BenchCracksArgs>();

@@ -218,7 +218,7 @@ void run(const BenchFrontierArgs& args) {
 }
 
 const CommandRegistrar registrar("bench frontier", [](CLI::App& root) {
-  CLI::App* bench = command_group(root, "bench", "Measure accuracy and speed");
+  CLI::App* bench = bench_group(root);
   CLI::App* cmd = bench->add_subcommand(
       "frontier", "Colour error against cost for every node count, rule and storage");
   auto args = std::make_shared<BenchFrontierArgs>();

@@ -231,7 +231,7 @@ void run(const BenchGpuArgs& args) {
 
 void setup(CLI::App& root) {
   auto args = std::make_shared<BenchGpuArgs>();
-  CLI::App* bench = command_group(root, "bench", "Measure performance");
+  CLI::App* bench = bench_group(root);
   CLI::App* cmd = bench->add_subcommand("gpu", "Frame time and pen-to-frame latency on OpenGL");
   add_size_option(*cmd, args->size, "of the frame time's canvas (default 4096x4096)", true)
       ->check(CLI::Validator(

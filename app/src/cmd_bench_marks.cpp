@@ -100,7 +100,7 @@ void run(BenchMarksArgs args) {
 }
 
 const CommandRegistrar registrar("bench marks", [](CLI::App& root) {
-  CLI::App* bench = command_group(root, "bench", "Measure accuracy and speed");
+  CLI::App* bench = bench_group(root);
   auto args = std::make_shared<BenchMarksArgs>();
   CLI::App* cmd = bench->add_subcommand(
       "marks", "What the standard stroke leaves for each head and paint body (docs/marks.md)");

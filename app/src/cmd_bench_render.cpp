@@ -251,7 +251,7 @@ void run(const BenchRenderArgs& args) {
 }
 
 const CommandRegistrar registrar("bench render", [](CLI::App& root) {
-  CLI::App* bench = command_group(root, "bench", "Measure accuracy and speed");
+  CLI::App* bench = bench_group(root);
   auto args = std::make_shared<BenchRenderArgs>();
   CLI::App* cmd = bench->add_subcommand(
       "render", "Whole-canvas render: first render, relight with 1 and all threads, PNG encode");

@@ -61,7 +61,7 @@ void run(const BenchSimArgs& args) {
 }
 
 const CommandRegistrar registrar("bench sim", [](CLI::App& root) {
-  CLI::App* bench = command_group(root, "bench", "Measure accuracy and speed");
+  CLI::App* bench = bench_group(root);
   auto args = std::make_shared<BenchSimArgs>();
   CLI::App* cmd = bench->add_subcommand(
       "sim", "Paint simulation speed: cell-steps and steps per second (median of runs)");

@@ -260,7 +260,7 @@ void run(const BenchSurfaceArgs& args) {
 }
 
 const CommandRegistrar registrar("bench surface", [](CLI::App& root) {
-  CLI::App* bench = command_group(root, "bench", "Measure accuracy and speed");
+  CLI::App* bench = bench_group(root);
   CLI::App* cmd = bench->add_subcommand(
       "surface",
       "Cost per cell of the surface models and their error against brute-force references "

@@ -192,7 +192,7 @@ void run(const BenchWindowArgs& args) {
 
 void setup(CLI::App& root) {
   auto args = std::make_shared<BenchWindowArgs>();
-  CLI::App* bench = command_group(root, "bench", "Measure performance");
+  CLI::App* bench = bench_group(root);
   CLI::App* cmd = bench->add_subcommand(
       "window", "Input latency of the painting window, scripted mouse circles (xdotool)");
   cmd->add_option("--canvas", args->canvases, "Canvas sizes in cells, WIDTHxHEIGHT")

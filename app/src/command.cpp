@@ -36,6 +36,10 @@ CLI::App* command_group(CLI::App& root, const std::string& name, const std::stri
   return group;
 }
 
+CLI::App* bench_group(CLI::App& root) {
+  return command_group(root, "bench", "Measure accuracy and speed");
+}
+
 void add_registered_commands(CLI::App& root) {
   for (auto& [name, setup] : registry()) setup(root);
 }

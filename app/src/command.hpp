@@ -19,6 +19,9 @@ struct CommandRegistrar {
 // The sub-command group NAME of root (e.g. "bench"), created on first use, so that several
 // files can add sub-commands to it ("bench sim", "bench color").
 CLI::App* command_group(CLI::App& root, const std::string& name, const std::string& description);
+// The group "bench" (its description written once here), which each `impasto bench ...`
+// command's file adds its sub-command to.
+CLI::App* bench_group(CLI::App& root);
 
 // "impasto bench sim": the command's names from the top.
 std::string command_path(const CLI::App& app);

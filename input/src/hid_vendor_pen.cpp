@@ -60,32 +60,43 @@ double UcLogicParams::height_mm() const {
   return lines_per_inch == 0 ? 0.0 : max_y * kMmPerInch / lines_per_inch;
 }
 
-// String 0x64: little-endian 16-bit words after the header: max x, max y, (unknown), max
-// pressure, lines per inch.
-std::optional<UcLogicParams> parse_uclogic_params_v1(std::span<const std::uint8_t> d) {
-  if (d.size() < 12 || d[1] != 3 || all_text(d)) return std::nullopt;
+namespace {
+
+// Where a version's parameter string holds its numbers: a string descriptor (type 3) of at
+// least `min_size` bytes, max x and max y at bytes `x_at` and `y_at` (16- or 24-bit, little-
+// endian), max pressure (16-bit) at byte 8 and lines per inch at 10 in both.
+struct UcLogicLayout {
+  int version;
+  std::size_t min_size, x_at, y_at;
+  bool wide;  // 24-bit maxima
+};
+
+std::optional<UcLogicParams> parse_uclogic_params(std::span<const std::uint8_t> d,
+                                                  const UcLogicLayout& layout) {
+  if (d.size() < layout.min_size || d[1] != 3 || all_text(d)) return std::nullopt;
+  const auto word = layout.wide ? le24 : le16;
   UcLogicParams p;
-  p.version = 1;
-  p.max_x = le16(d, 2);
-  p.max_y = le16(d, 4);
+  p.version = layout.version;
+  p.max_x = word(d, layout.x_at);
+  p.max_y = word(d, layout.y_at);
   p.max_pressure = le16(d, 8);
   p.lines_per_inch = le16(d, 10);
   if (p.max_x == 0 || p.max_y == 0 || p.max_pressure == 0) return std::nullopt;
   return p;
 }
 
+}  // namespace
+
+// String 0x64: little-endian 16-bit words after the header: max x, max y, (unknown), max
+// pressure, lines per inch.
+std::optional<UcLogicParams> parse_uclogic_params_v1(std::span<const std::uint8_t> d) {
+  return parse_uclogic_params(d, {1, 12, 2, 4, false});
+}
+
 // String 0xC8: max x and max y 24-bit at bytes 2 and 5, max pressure 16-bit at 8, lines per
 // inch at 10.
 std::optional<UcLogicParams> parse_uclogic_params_v2(std::span<const std::uint8_t> d) {
-  if (d.size() < 18 || d[1] != 3 || all_text(d)) return std::nullopt;
-  UcLogicParams p;
-  p.version = 2;
-  p.max_x = le24(d, 2);
-  p.max_y = le24(d, 5);
-  p.max_pressure = le16(d, 8);
-  p.lines_per_inch = le16(d, 10);
-  if (p.max_x == 0 || p.max_y == 0 || p.max_pressure == 0) return std::nullopt;
-  return p;
+  return parse_uclogic_params(d, {2, 18, 2, 5, true});
 }
 
 std::optional<UcLogicParams> uclogic_params(const InitExchange& init) {

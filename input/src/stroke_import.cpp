@@ -25,6 +25,25 @@ void check_time_order(double time_s, double previous_s, bool first,
   if (!first && time_s < previous_s) where.fail("time", "time goes backwards");
 }
 
+// Calls visit(fields, where) for each non-blank line of `in` after line `line_number` (which it
+// advances), each line's fields numbering `columns`: the rows of the importers' column files.
+template <class Visit>
+void for_each_row(std::istream& in, const std::string& source_name, int& line_number,
+                  std::size_t columns, const std::string& column_names, Visit&& visit) {
+  std::string line;
+  while (std::getline(in, line)) {
+    ++line_number;
+    const detail::LineContext where{source_name, line_number};
+    const auto fields = detail::split_fields(line, where);
+    if (fields.empty()) continue;
+    if (fields.size() != columns) {
+      where.fail("", "expected " + std::to_string(columns) + " columns (" + column_names +
+                         "), found " + std::to_string(fields.size()));
+    }
+    visit(fields, where);
+  }
+}
+
 }  // namespace
 
 StrokeFile parse_mypaint_dat(std::istream& in, const std::string& source_name,
@@ -34,30 +53,22 @@ StrokeFile parse_mypaint_dat(std::istream& in, const std::string& source_name,
   }
   const double mm_per_px = kMmPerInch / options.source_dpi;
   StrokeFile file;
-  std::string line;
   int line_number = 0;
   double previous_time_s = 0.0;
-  while (std::getline(in, line)) {
-    ++line_number;
-    const detail::LineContext where{source_name, line_number};
-    const auto fields = detail::split_fields(line, where);
-    if (fields.empty()) continue;
-    if (fields.size() != 4) {
-      where.fail("",
-                 "expected 4 columns (time x y pressure), found " + std::to_string(fields.size()));
-    }
-    PenSample s;
-    s.time_s = detail::parse_double(fields[0], where, "time");
-    s.x_mm = detail::parse_double(fields[1], where, "x") * mm_per_px;
-    s.y_mm = detail::parse_double(fields[2], where, "y") * mm_per_px;
-    const double pressure = detail::parse_double(fields[3], where, "pressure");
-    if (pressure < 0.0 || pressure > 1.0) where.fail("pressure", "outside 0..1");
-    check_time_order(s.time_s, previous_time_s, file.events.empty(), where);
-    previous_time_s = s.time_s;
-    s.pressure = static_cast<float>(pressure);
-    s.buttons = paintcore::kPenInRange | (pressure > 0.0 ? paintcore::kPenTip : 0u);
-    file.events.push_back(SampleEvent{s});
-  }
+  for_each_row(in, source_name, line_number, 4, "time x y pressure",
+               [&](const std::vector<std::string_view>& fields, const detail::LineContext& where) {
+                 PenSample s;
+                 s.time_s = detail::parse_double(fields[0], where, "time");
+                 s.x_mm = detail::parse_double(fields[1], where, "x") * mm_per_px;
+                 s.y_mm = detail::parse_double(fields[2], where, "y") * mm_per_px;
+                 const double pressure = detail::parse_double(fields[3], where, "pressure");
+                 if (pressure < 0.0 || pressure > 1.0) where.fail("pressure", "outside 0..1");
+                 check_time_order(s.time_s, previous_time_s, file.events.empty(), where);
+                 previous_time_s = s.time_s;
+                 s.pressure = static_cast<float>(pressure);
+                 s.buttons = paintcore::kPenInRange | (pressure > 0.0 ? paintcore::kPenTip : 0u);
+                 file.events.push_back(SampleEvent{s});
+               });
   if (file.events.empty()) throw InputFormatError(source_name, 0, "", "no samples");
   return file;
 }
@@ -96,35 +107,29 @@ StrokeFile parse_bdalab_svc(std::istream& in, const std::string& source_name,
   };
   std::vector<Raw> raw;
   double previous_time_s = 0.0;
-  while (std::getline(in, line)) {
-    ++line_number;
-    const detail::LineContext where{source_name, line_number};
-    const auto fields = detail::split_fields(line, where);
-    if (fields.empty()) continue;
-    if (fields.size() != 7) {
-      where.fail("", "expected 7 columns (x y time pen_down azimuth altitude pressure), found " +
-                         std::to_string(fields.size()));
-    }
-    Raw r;
-    PenSample& s = r.sample;
-    s.x_mm = detail::parse_double(fields[0], where, "x");
-    s.y_mm = detail::parse_double(fields[1], where, "y");
-    s.time_s = detail::parse_double(fields[2], where, "time");
-    check_time_order(s.time_s, previous_time_s, raw.empty(), where);
-    previous_time_s = s.time_s;
-    const double pen_down = detail::parse_double(fields[3], where, "pen_down");
-    if (pen_down != 0.0 && pen_down != 1.0) where.fail("pen_down", "must be 0 or 1");
-    const double azimuth_deg = detail::parse_double(fields[4], where, "azimuth") / 10.0;
-    const double altitude_deg = detail::parse_double(fields[5], where, "altitude") / 10.0;
-    if (altitude_deg < 0.0 || altitude_deg > 90.0) where.fail("altitude", "outside 0..900");
-    const Tilt tilt = tilt_from_azimuth_altitude(azimuth_deg, altitude_deg);
-    s.tilt_x_deg = static_cast<float>(tilt.x_deg);
-    s.tilt_y_deg = static_cast<float>(tilt.y_deg);
-    r.pressure_units = detail::parse_double(fields[6], where, "pressure");
-    if (r.pressure_units < 0.0) where.fail("pressure", "negative pressure");
-    s.buttons = paintcore::kPenInRange | (pen_down == 1.0 ? paintcore::kPenTip : 0u);
-    raw.push_back(r);
-  }
+  for_each_row(
+      in, source_name, line_number, 7, "x y time pen_down azimuth altitude pressure",
+      [&](const std::vector<std::string_view>& fields, const detail::LineContext& where) {
+        Raw r;
+        PenSample& s = r.sample;
+        s.x_mm = detail::parse_double(fields[0], where, "x");
+        s.y_mm = detail::parse_double(fields[1], where, "y");
+        s.time_s = detail::parse_double(fields[2], where, "time");
+        check_time_order(s.time_s, previous_time_s, raw.empty(), where);
+        previous_time_s = s.time_s;
+        const double pen_down = detail::parse_double(fields[3], where, "pen_down");
+        if (pen_down != 0.0 && pen_down != 1.0) where.fail("pen_down", "must be 0 or 1");
+        const double azimuth_deg = detail::parse_double(fields[4], where, "azimuth") / 10.0;
+        const double altitude_deg = detail::parse_double(fields[5], where, "altitude") / 10.0;
+        if (altitude_deg < 0.0 || altitude_deg > 90.0) where.fail("altitude", "outside 0..900");
+        const Tilt tilt = tilt_from_azimuth_altitude(azimuth_deg, altitude_deg);
+        s.tilt_x_deg = static_cast<float>(tilt.x_deg);
+        s.tilt_y_deg = static_cast<float>(tilt.y_deg);
+        r.pressure_units = detail::parse_double(fields[6], where, "pressure");
+        if (r.pressure_units < 0.0) where.fail("pressure", "negative pressure");
+        s.buttons = paintcore::kPenInRange | (pen_down == 1.0 ? paintcore::kPenTip : 0u);
+        raw.push_back(r);
+      });
   // Public datasets hold files whose count is off by one from their lines (a header counted,
   // a last line lost): the lines present are read, with a warning. More is an error.
   const std::int64_t present = static_cast<std::int64_t>(raw.size());

@@ -10,6 +10,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -56,6 +57,16 @@ Curves curves_of(const data::Pigment& p, const std::string& suffix, bool dashed 
           {"S" + suffix, c.nm, c.s, kS, dashed},
           {"K/S" + suffix, c.nm, c.k_over_s, kRatio, dashed},
           {"R" + suffix, c.nm, c.r_infinite, kR, dashed}};
+}
+
+// Below two plots of `half_width` side by side: R-infinity across both, on 0..1.
+void draw_r_infinity_plot(PlotOptions o, const char* id, const char* title, float half_width,
+                          std::span<const PlotSeries> series) {
+  o.id = id;
+  o.title = title;
+  o.y_max = 1.0;
+  o.size = ImVec2(2 * half_width + 8, 140);
+  draw_plot(o, series);
 }
 
 // The user layer's pigment files and their contents.
@@ -173,11 +184,7 @@ void PigmentEditor::curves_tab(const data::Pigment& pigment, const std::vector<d
   o.id = "##ratio";
   o.title = "K/S";
   draw_plot(o, std::span(&c.ratio, 1));
-  o.id = "##r";
-  o.title = "R-infinity (opaque layer)";
-  o.y_max = 1.0;
-  o.size = ImVec2(2 * w + 8, 140);
-  draw_plot(o, std::span(&c.r, 1));
+  draw_r_infinity_plot(o, "##r", "R-infinity (opaque layer)", w, std::span(&c.r, 1));
   ImGui::Text("Swatches under %s (sRGB; hover for L*a*b*)", light_.c_str());
   for (const auto& colour : swatches_of(pigment)) {
     ImGui::BeginGroup();
@@ -310,27 +317,19 @@ void PigmentEditor::compare_tab(const data::Pigment& pigment, const std::vector<
   PlotOptions o;
   o.markers_x = nodes;
   o.size = ImVec2(w, 160);
+  // One curve of each pigment, the other's in kSecond.
+  const auto pair = [](const PlotSeries& first, PlotSeries second) {
+    second.colour = kSecond;
+    return std::array<PlotSeries, 2>{first, std::move(second)};
+  };
   o.id = "##cmp_k";
   o.title = "K";
-  PlotSeries bk = b.k;
-  bk.colour = kSecond;
-  const PlotSeries k[] = {a.k, bk};
-  draw_plot(o, k);
+  draw_plot(o, pair(a.k, b.k));
   ImGui::SameLine();
   o.id = "##cmp_s";
   o.title = "S";
-  PlotSeries bs = b.s;
-  bs.colour = kSecond;
-  const PlotSeries s[] = {a.s, bs};
-  draw_plot(o, s);
-  o.id = "##cmp_r";
-  o.title = "R-infinity";
-  o.y_max = 1.0;
-  o.size = ImVec2(2 * w + 8, 140);
-  PlotSeries br = b.r;
-  br.colour = kSecond;
-  const PlotSeries r[] = {a.r, br};
-  draw_plot(o, r);
+  draw_plot(o, pair(a.s, b.s));
+  draw_r_infinity_plot(o, "##cmp_r", "R-infinity", w, pair(a.r, b.r));
   const auto& ca = swatches_of(pigment);
   const auto& cb = swatches_of(*other);
   if (ImGui::BeginTable("##cmp", 4, ImGuiTableFlags_Borders)) {
