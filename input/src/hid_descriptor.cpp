@@ -18,17 +18,16 @@ constexpr std::size_t kMaxCollectionDepth = 64;
 
 enum class ItemType : std::uint8_t { kMain = 0, kGlobal = 1, kLocal = 2, kReserved = 3 };
 
+// An extent item's data as written, read signed or not once its field is known.
+struct RawValue {
+  std::uint32_t raw = 0;
+  int size = 0;  // bytes
+};
+
 // The state the Global items set, saved and restored by Push and Pop.
 struct GlobalState {
   std::uint16_t usage_page = 0;
-  std::uint32_t logical_min_raw = 0;
-  int logical_min_size = 0;
-  std::uint32_t logical_max_raw = 0;
-  int logical_max_size = 0;
-  std::uint32_t physical_min_raw = 0;
-  int physical_min_size = 0;
-  std::uint32_t physical_max_raw = 0;
-  int physical_max_size = 0;
+  RawValue logical_min, logical_max, physical_min, physical_max;
   int unit_exponent = 0;
   std::uint32_t unit = 0;
   std::uint32_t report_size = 0;
@@ -174,10 +173,10 @@ class Parser {
     field.count = g.report_count;
     field.flags = flags;
     field.usages = std::move(local_.usages);
-    field.logical_min = as_signed(g.logical_min_raw, g.logical_min_size);
-    field.logical_max = extent_max(field.logical_min, g.logical_max_raw, g.logical_max_size);
-    field.physical_min = as_signed(g.physical_min_raw, g.physical_min_size);
-    field.physical_max = extent_max(field.physical_min, g.physical_max_raw, g.physical_max_size);
+    field.logical_min = as_signed(g.logical_min.raw, g.logical_min.size);
+    field.logical_max = extent_max(field.logical_min, g.logical_max.raw, g.logical_max.size);
+    field.physical_min = as_signed(g.physical_min.raw, g.physical_min.size);
+    field.physical_max = extent_max(field.physical_min, g.physical_max.raw, g.physical_max.size);
     if (field.physical_min == 0 && field.physical_max == 0) {  // none given: as logical
       field.physical_min = field.logical_min;
       field.physical_max = field.logical_max;
@@ -203,20 +202,16 @@ class Parser {
         g.usage_page = static_cast<std::uint16_t>(data);
         break;
       case 0x1:
-        g.logical_min_raw = data;
-        g.logical_min_size = size;
+        g.logical_min = {data, size};
         break;
       case 0x2:
-        g.logical_max_raw = data;
-        g.logical_max_size = size;
+        g.logical_max = {data, size};
         break;
       case 0x3:
-        g.physical_min_raw = data;
-        g.physical_min_size = size;
+        g.physical_min = {data, size};
         break;
       case 0x4:
-        g.physical_max_raw = data;
-        g.physical_max_size = size;
+        g.physical_max = {data, size};
         break;
       case 0x5:
         // Normally a 4-bit two's complement nibble; some devices write a signed byte.
