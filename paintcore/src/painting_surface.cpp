@@ -21,20 +21,28 @@ void lay_stroke_medium(Canvas& canvas, const UndoHistory& history, const PaintMe
   for (const int index : tiles) {
     Tile* tile = canvas.tile_slot(index).get();
     if (tile == nullptr) continue;
-    // Paint without a medium over cells that never had one changes nothing: no data is made.
-    if (brush.share == 0.0f && tile->medium.empty()) continue;
+    // Paint without a medium over cells that never had one or a varnish changes nothing: no
+    // data is made.
+    const bool lays_medium = brush.share != 0.0f || !tile->medium.empty();
+    if (!lays_medium && tile->varnish.empty()) continue;
     const std::optional<const Tile*> saved = history.saved_tile(index);
     if (!saved) continue;  // the stroke did not change this tile
     const Tile* before = *saved;
-    if (tile->medium.empty()) {
+    if (lays_medium && tile->medium.empty()) {
       tile->medium.assign(static_cast<std::size_t>(kMediumPlanes) * kTileCells, 0.0f);
     }
-    float* share = tile->medium.data();
-    float* log_rms = share + kTileCells;
+    float* share = lays_medium ? tile->medium.data() : nullptr;
+    float* log_rms = lays_medium ? share + kTileCells : nullptr;
+    float* varnish = tile->varnish.empty() ? nullptr : tile->varnish.data();
     for (int c = 0; c < kTileCells; ++c) {
       const float had = before != nullptr ? before->wet_volume_mm[c] : 0.0f;
       const double gained = static_cast<double>(tile->wet_volume_mm[c]) - had;
       if (!(gained > 0.0)) continue;  // paint taken or moved away leaves the surface's finish
+      // More than a film of paint over a varnish buries it: the paint's surface is on top.
+      if (varnish != nullptr && gained > kSurfaceFilmMm) {
+        for (int plane = 0; plane < kVarnishPlanes; ++plane) varnish[plane * kTileCells + c] = 0.0f;
+      }
+      if (!lays_medium) continue;
       // The surface there: the wet paint, over at most a film's depth of dry paint (none on
       // the bare ground, where the first paint makes the surface).
       const double under = had + std::min<double>(kSurfaceFilmMm, tile->dry_height_mm[c]);

@@ -15,7 +15,8 @@ void mix_brush_medium(Brush& brush, double before_mm3, double added_mm3,
                       const std::optional<Medium>& medium);
 
 // After a stroke (its undo step still recording): the paint each cell of `tiles` gained
-// carries the brush's medium into the cell's surface.
+// carries the brush's medium into the cell's surface; more than a film of it (kSurfaceFilmMm)
+// over a varnish buries the varnish there (the cell's varnish is cleared: paint is on top).
 void lay_stroke_medium(Canvas& canvas, const UndoHistory& history, const PaintMedium& brush,
                        const std::vector<int>& tiles);
 

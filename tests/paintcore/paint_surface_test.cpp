@@ -152,6 +152,23 @@ TEST(PaintSurface, VarnishDriesWithThePaintAndUndoWetsItAgain) {
   EXPECT_FLOAT_EQ(surface_at(p, 10, 10).varnish_wetness(), 1.0f);
 }
 
+TEST(PaintSurface, PaintLaidOverAVarnishBuriesItThereAndUndoUncoversIt) {
+  Painting p = brushed();
+  p.apply_varnish(Finish::gloss, 0.03);
+  p.dry(1.0);
+  // A matte stroke across the middle (cells 10..50 along y = 20; 0.1 mm cells).
+  p.load_brush({{"red", 1.0}}, 20.0, kDefaultPaintBody, Medium{Finish::matte, 1.0});
+  const std::uint64_t varnished = p.state_hash();
+  test::stroke_line(p, 1.0, 2.0, 5.0, 2.0, 0.9f);
+  const CellSurface under_paint = surface_at(p, 30, 20);
+  EXPECT_FALSE(under_paint.varnished()) << "the paint is on top";
+  EXPECT_GT(under_paint.medium.share, 0.5f);
+  EXPECT_TRUE(surface_at(p, 100, 50).varnished()) << "away from the stroke the varnish stays";
+  ASSERT_TRUE(p.undo());
+  EXPECT_EQ(p.state_hash(), varnished);
+  EXPECT_TRUE(surface_at(p, 30, 20).varnished());
+}
+
 TEST(PaintSurface, MediumAndVarnishRoundTripThroughTheFile) {
   Painting p = brushed();
   p.load_brush({{"red", 1.0}}, 5.0, kDefaultPaintBody, Medium{Finish::matte, 0.6});
