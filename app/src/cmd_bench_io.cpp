@@ -213,7 +213,7 @@ void print_table(const paintcore::Painting& painting, double painting_mb, double
 }
 
 const CommandRegistrar registrar("bench io", [](CLI::App& root) {
-  CLI::App* bench = command_group(root, "bench", "Measure accuracy and speed");
+  CLI::App* bench = bench_group(root);
   auto args = std::make_shared<BenchIoArgs>();
   CLI::App* cmd = bench->add_subcommand(
       "io", "Painting file save and load: ms, MB/s and peak memory against the painting's");
