@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <cstring>
 
+#include <impasto/render/surface_brdf.hpp>
+#include "window/enum_combo.hpp"
+
 namespace impasto::app::window {
 namespace {
 
@@ -13,6 +16,17 @@ constexpr std::array<const char*, 9> kAnchorLabels = {"##tl", "##t",  "##tr", "#
 constexpr std::array<int, 3> kScales = {1, 2, 4};
 
 }  // namespace
+
+VarnishRequest varnish_request(paintcore::Finish finish, float thickness_mm, bool whole,
+                               const std::array<int, 4>& region) {
+  VarnishRequest request;
+  request.finish = finish;
+  request.thickness_mm = thickness_mm;
+  if (!whole)
+    request.region =
+        paintcore::CellRect{region[0], region[1], region[0] + region[2], region[1] + region[3]};
+  return request;
+}
 
 CanvasMenuRequest CanvasMenu::draw(int canvas_width, int canvas_height,
                                    const std::optional<std::filesystem::path>& painting_file) {
@@ -25,6 +39,7 @@ CanvasMenuRequest CanvasMenu::draw(int canvas_width, int canvas_height,
         width_ = canvas_width;
         height_ = canvas_height;
         crop_ = {0, 0, canvas_width, canvas_height};
+        if (varnish_region_[2] <= 0) varnish_region_ = crop_;  // kept from the last coat
         const std::string stem =
             painting_file ? (painting_file->parent_path() / painting_file->stem()).string()
                           : std::string("painting");
@@ -32,6 +47,7 @@ CanvasMenuRequest CanvasMenu::draw(int canvas_width, int canvas_height,
       };
       if (ImGui::MenuItem("Resize canvas...")) open(Dialog::kResize);
       if (ImGui::MenuItem("Crop...")) open(Dialog::kCrop);
+      if (ImGui::MenuItem("Varnish...")) open(Dialog::kVarnish);
       ImGui::Separator();
       if (ImGui::MenuItem("Export at scale and maps...")) open(Dialog::kExport);
       ImGui::EndMenu();
@@ -43,6 +59,8 @@ CanvasMenuRequest CanvasMenu::draw(int canvas_width, int canvas_height,
       return draw_resize();
     case Dialog::kCrop:
       return draw_crop();
+    case Dialog::kVarnish:
+      return draw_varnish();
     case Dialog::kExport:
       return draw_export();
     case Dialog::kNone:
@@ -107,6 +125,34 @@ CanvasMenuRequest CanvasMenu::draw_crop() {
     return true;
   });
   if (crop) request.frame = paintcore::crop_frame(crop_[0], crop_[1], crop_[2], crop_[3]);
+  return request;
+}
+
+CanvasMenuRequest CanvasMenu::draw_varnish() {
+  CanvasMenuRequest request;
+  const bool apply = dialog("Varnish", "Varnish", [&] {
+    enum_combo("finish", varnish_finish_, render::surface::kFinishNames);
+    ImGui::SliderFloat("thickness (mm)", &varnish_mm_, 0.005f,
+                       static_cast<float>(paintcore::kMaxVarnishMm), "%.3f",
+                       ImGuiSliderFlags_Logarithmic);
+    varnish_mm_ = std::clamp(varnish_mm_, 0.005f, static_cast<float>(paintcore::kMaxVarnishMm));
+    ImGui::Checkbox("the whole painting", &varnish_whole_);
+    // Shown either way, so that the dialog keeps the height it opened with.
+    ImGui::BeginDisabled(varnish_whole_);
+    ImGui::InputInt4("x, y, w, h (cells)", varnish_region_.data());
+    ImGui::EndDisabled();
+    varnish_region_[0] = std::clamp(varnish_region_[0], 0, canvas_w_ - 1);
+    varnish_region_[1] = std::clamp(varnish_region_[1], 0, canvas_h_ - 1);
+    varnish_region_[2] = std::clamp(varnish_region_[2], 1, canvas_w_ - varnish_region_[0]);
+    varnish_region_[3] = std::clamp(varnish_region_[3], 1, canvas_h_ - varnish_region_[1]);
+    ImGui::TextWrapped(
+        "A coat over the paint: it goes on wet (glossy) and dries as paint does (Dry now); its "
+        "finish replaces an older coat's. Edit > Undo takes it off.");
+    return true;
+  });
+  if (apply)
+    request.varnish =
+        varnish_request(varnish_finish_, varnish_mm_, varnish_whole_, varnish_region_);
   return request;
 }
 

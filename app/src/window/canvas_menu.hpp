@@ -1,7 +1,7 @@
 #pragma once
-// The Image menu: Resize canvas..., Crop... and Export at scale and maps..., each with a small
-// dialog. The menu only asks; the window applies a reframe (a new session from the reframed
-// painting, paint_window.cpp) and runs the export (canvas_edit.hpp).
+// The Image menu: Resize canvas..., Crop..., Varnish... and Export at scale and maps..., each
+// with a small dialog. The menu only asks; the window applies a reframe or a varnish (a new
+// session from the changed painting, paint_window.cpp) and runs the export (canvas_edit.hpp).
 #include <array>
 #include <filesystem>
 #include <functional>
@@ -9,12 +9,28 @@
 #include <string>
 
 #include "canvas_edit.hpp"
+#include "impasto/paintcore/canvas.hpp"
 #include "impasto/paintcore/canvas_reframe.hpp"
+#include "impasto/paintcore/paint_surface.hpp"
 
 namespace impasto::app::window {
 
+// A coat of varnish (Painting::apply_varnish): its finish and thickness over the region's
+// cells, or the whole painting.
+struct VarnishRequest {
+  paintcore::Finish finish = paintcore::Finish::satin;
+  double thickness_mm = 0.03;
+  std::optional<paintcore::CellRect> region;
+};
+
+// The Varnish dialog's fields as the user left them: `whole`, or the region typed as x, y,
+// width and height in cells. Clipped to the canvas when applied (apply_varnish).
+VarnishRequest varnish_request(paintcore::Finish finish, float thickness_mm, bool whole,
+                               const std::array<int, 4>& region);
+
 struct CanvasMenuRequest {
   std::optional<paintcore::CanvasFrame> frame;  // resize or crop: apply this frame
+  std::optional<VarnishRequest> varnish;        // coat the painting
   std::optional<ExportRequest> exports;         // write these files
 };
 
@@ -26,9 +42,10 @@ class CanvasMenu {
                          const std::optional<std::filesystem::path>& painting_file);
 
  private:
-  enum class Dialog { kNone, kResize, kCrop, kExport };
+  enum class Dialog { kNone, kResize, kCrop, kVarnish, kExport };
   CanvasMenuRequest draw_resize();
   CanvasMenuRequest draw_crop();
+  CanvasMenuRequest draw_varnish();
   CanvasMenuRequest draw_export();
   // The open dialog `title`: `body` draws its fields and says whether `action` may be taken
   // now; then the `action` and Cancel buttons. True in the frame `action` is pressed; the
@@ -40,7 +57,11 @@ class CanvasMenu {
   int width_ = 0, height_ = 0;
   int anchor_ = 4;             // CanvasAnchor's order: centre
   std::array<int, 4> crop_{};  // x, y, w, h
-  int scale_index_ = 1;        // 1x, 2x, 4x
+  paintcore::Finish varnish_finish_ = paintcore::Finish::satin;
+  float varnish_mm_ = 0.03f;
+  bool varnish_whole_ = true;
+  std::array<int, 4> varnish_region_{};  // x, y, w, h
+  int scale_index_ = 1;                  // 1x, 2x, 4x
   std::array<char, 512> stem_{};
   bool image_ = true, normal_ = true;
   int height_format_ = 1;  // 0 none, 1 16-bit PNG, 2 float EXR

@@ -1086,11 +1086,14 @@ void PaintWindow::apply_canvas_request(const CanvasMenuRequest& request) {
       worker_->with_painting([&](const paintcore::Painting& p) { export_painting(p, exports); });
       state_.notifications.info("Exported at " + std::to_string(request.exports->scale) + "x");
     }
-    if (!request.frame) return;
+    if (!request.frame && !request.varnish) return;
     worker_->wait_idle();
     paintcore::PaintTotals cut;
+    // (The stroke format has no record of either: the session starts again from the changed
+    // painting, its undo history whole.)
     worker_->edit_painting([&](paintcore::Painting& p) {
-      cut = p.reframe_canvas(*request.frame);
+      if (request.frame) cut = p.reframe_canvas(*request.frame);
+      if (const auto& v = request.varnish) p.apply_varnish(v->finish, v->thickness_mm, v->region);
       p.set_saved_history_bytes(std::numeric_limits<std::size_t>::max());
     });
     end_session();
@@ -1107,8 +1110,13 @@ void PaintWindow::apply_canvas_request(const CanvasMenuRequest& request) {
       std::filesystem::remove(through);
     worker_->replace_painting(std::move(reframed), std::move(recording), true);
     char text[96];
-    std::snprintf(text, sizeof text, "Canvas %d x %d cells; %.3g mm^3 of paint cut away",
-                  request.frame->width_cells, request.frame->height_cells, cut.volume);
+    if (request.frame)
+      std::snprintf(text, sizeof text, "Canvas %d x %d cells; %.3g mm^3 of paint cut away",
+                    request.frame->width_cells, request.frame->height_cells, cut.volume);
+    else
+      std::snprintf(text, sizeof text, "Varnished %s, %.3g mm (wet until dried)",
+                    std::string(paintcore::finish_name(request.varnish->finish)).c_str(),
+                    request.varnish->thickness_mm);
     state_.notifications.info(text);
   } catch (const std::exception& e) {
     state_.notifications.error(std::string("Image: ") + e.what());

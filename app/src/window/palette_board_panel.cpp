@@ -125,8 +125,11 @@ void PaletteBoardPanel::draw(WindowState& s, SimWorker& worker) {
   const auto load = board_.pick_up();
   ImGui::BeginDisabled(!load);
   if (ImGui::Button("Pick up onto brush") && load) {
-    // The canvas brush gets exactly what the board brush holds; the board brush is wiped.
-    load_onto_brush(worker, *load);
+    // The canvas brush gets exactly what the board brush holds, mixed with the Palette
+    // panel's medium (as its Load is); the board brush is wiped.
+    input::LoadEvent picked = *load;
+    picked.medium = load_event(s).medium;
+    load_onto_brush(worker, std::move(picked));
     board_.wipe_brush();
   }
   ImGui::EndDisabled();

@@ -1,6 +1,7 @@
 #include "window/panels.hpp"
 #include "window/edit_help_menus.hpp"
 #include "window/enum_combo.hpp"
+#include "window/palette_medium.hpp"
 #include "window/plot.hpp"
 #include "window/shortcuts.hpp"
 #include "window/surface_panel.hpp"
@@ -304,6 +305,8 @@ void palette_panel(PanelContext& c) {
     s.mix_changed = true;
   }
   ImGui::Text("on brush: %.1f mm³", c.painting.brush_volume_mm3);
+  ImGui::SameLine();  // on this line: a row more would move every control below
+  medium_choice(s);
   if (!s.swatch_error.empty()) ImGui::TextWrapped("swatch: %s", s.swatch_error.c_str());
   // Each pigment: its masstone and a layer as thick as the swatch's deposit, then its parts.
   char layer_tip[96];

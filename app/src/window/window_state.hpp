@@ -6,11 +6,13 @@
 #include <impasto/input/stroke_events.hpp>
 #include <impasto/paintcore/brush.hpp>
 #include <impasto/paintcore/paint_body.hpp>
+#include <impasto/paintcore/paint_surface.hpp>
 #include <impasto/render/render_settings.hpp>
 #include <impasto/render_gl/canvas_view.hpp>
 #include <impasto/render_gl/gpu_view_options.hpp>
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -51,6 +53,10 @@ struct WindowState {
   float load_volume_mm3 = 40.0f;
   std::string paint_body{paintcore::body_info(paintcore::kDefaultPaintBody).name};
   bool wipe_before_load = true;  // "wipe first": Load sends a wipe, then the load
+  // The medium the paint is mixed with (none: the Surface panel's medium decides, as for
+  // paintings made before media) and its amount, 0 (tube paint) to 1 (the medium's finish).
+  std::optional<paintcore::Finish> paint_medium;
+  float paint_medium_amount = 1.0f;
   // The swatch (session/swatch.hpp), display RGB: the standard stroke with this brush and
   // load as rendered, the mix's masstone, and the stroke's median wet thickness.
   std::array<float, 3> swatch_on_canvas_rgb{0.5f, 0.5f, 0.5f};
@@ -135,6 +141,9 @@ inline input::LoadEvent load_event(const WindowState& s) {
   input::LoadEvent event;
   event.volume_mm3 = s.load_volume_mm3;
   event.body = s.paint_body;
+  if (s.paint_medium)
+    event.medium = paintcore::medium_spelling(  // to the slider's 2 decimals: "matte:0.3"
+        {*s.paint_medium, std::round(100.0 * s.paint_medium_amount) / 100.0});
   for (std::size_t i = 0; i < pigments.size() && i < s.mix_parts.size(); ++i) {
     if (s.mix_parts[i] > 0.0f) event.mix.push_back({pigments[i].name, s.mix_parts[i]});
   }

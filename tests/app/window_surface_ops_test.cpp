@@ -1,0 +1,119 @@
+// The window's medium and varnish (docs/window.md), without a window: the Palette panel's
+// medium goes into every load the window submits (load_event), the session's recording keeps
+// it as `medium=` and the paint laid with it carries it; the Image > Varnish dialog's fields
+// become the coat apply_varnish puts on exactly the cells typed, as one undo step.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <impasto/input/stroke_file.hpp>
+#include <impasto/paintcore/paint_surface.hpp>
+#include <string>
+#include <variant>
+
+#include "window/canvas_menu.hpp"
+#include "window/sim_worker.hpp"
+#include "window/window_state.hpp"
+
+namespace impasto::app::window {
+namespace {
+
+namespace fs = std::filesystem;
+using paintcore::Finish;
+
+paintcore::CellSurface surface_at(const paintcore::Painting& p, int x, int y) {
+  const paintcore::Canvas& c = p.canvas();
+  const int index = c.tile_index(x / paintcore::kTileSize, y / paintcore::kTileSize);
+  return paintcore::cell_surface(
+      c.tile(index), (y % paintcore::kTileSize) * paintcore::kTileSize + x % paintcore::kTileSize);
+}
+
+WindowState burnt_umber_state() {
+  WindowState s;
+  const auto& pigments = data::PigmentDatabase::defaults().all();
+  s.mix_parts.assign(pigments.size(), 0.0f);
+  for (std::size_t i = 0; i < pigments.size(); ++i)
+    if (pigments[i].name == "Burnt Umber") s.mix_parts[i] = 1.0f;
+  return s;
+}
+
+TEST(WindowSurfaceOps, TheLoadCarriesThePaletteMediumAsAStrokeFileSpellsIt) {
+  WindowState s = burnt_umber_state();
+  EXPECT_EQ(load_event(s).medium, "") << "no medium chosen: the render settings' decides";
+  s.paint_medium = Finish::matte;
+  s.paint_medium_amount = 0.3f;  // a float: spelled to the slider's two decimals
+  const input::LoadEvent load = load_event(s);
+  EXPECT_EQ(load.medium, "matte:0.3");
+  const paintcore::Medium medium = paintcore::parse_medium(load.medium);
+  EXPECT_EQ(medium.finish, Finish::matte);
+  EXPECT_DOUBLE_EQ(medium.amount, 0.3);
+  s.paint_medium_amount = 1.0f;
+  EXPECT_EQ(load_event(s).medium, "matte") << "the whole medium: its finish alone";
+}
+
+TEST(WindowSurfaceOps, PaintLoadedWithAMediumIsRecordedAndLaidWithIt) {
+  const fs::path dir =
+      fs::temp_directory_path() / ("impasto_window_medium_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const fs::path record = dir / "session.strokes";
+  WindowState s = burnt_umber_state();
+  s.paint_medium = Finish::matte;
+  s.paint_medium_amount = 0.5f;
+  {
+    paintcore::Painting canvas({64, 48, 100.0, 1}, 1);
+    canvas.set_brush({"round", 4.0, 0.5});
+    SessionRecording recording;
+    recording.recorder = std::make_unique<input::StrokeRecorder>(record);
+    SimWorker worker(std::move(canvas), std::move(recording));
+    worker.submit(load_event(s));  // what the Palette panel's Load brush submits
+    for (int i = 0; i <= 20; ++i) {
+      paintcore::PenSample sample;
+      sample.time_s = 0.01 * i;
+      sample.x_mm = 2.0 + 0.5 * i;
+      sample.y_mm = 6.0;
+      sample.pressure = i < 20 ? 0.8f : 0.0f;
+      sample.buttons = paintcore::kPenInRange | (i < 20 ? paintcore::kPenTip : 0u);
+      worker.submit(input::SampleEvent{sample});
+    }
+    worker.finish_stroke();
+    worker.wait_idle();
+    worker.with_painting([&](const paintcore::Painting& p) {
+      const int x = static_cast<int>(std::lround(6.0 / 25.4 * 100.0));  // 6 mm in
+      const int y = static_cast<int>(std::lround(6.0 / 25.4 * 100.0));
+      ASSERT_GT(p.canvas().wet_volume_mm(x, y), 0.0f) << "the stroke laid no paint there";
+      const paintcore::CellSurface cell = surface_at(p, x, y);
+      EXPECT_GT(cell.medium.share, 0.5f);
+      EXPECT_NEAR(cell.medium.log_rms, paintcore::medium_log_rms({Finish::matte, 0.5}), 1e-4);
+    });
+  }
+  bool recorded = false;
+  for (const auto& event : input::read_stroke_file(record).events)
+    if (const auto* load = std::get_if<input::LoadEvent>(&event))
+      recorded = recorded || load->medium == "matte:0.5";
+  EXPECT_TRUE(recorded) << "a recovery replays the load without its medium";
+  fs::remove_all(dir);
+}
+
+TEST(WindowSurfaceOps, TheVarnishDialogCoatsTheTypedCellsAsOneUndoStep) {
+  const VarnishRequest whole = varnish_request(Finish::satin, 0.03f, true, {4, 5, 10, 6});
+  EXPECT_FALSE(whole.region.has_value()) << "'the whole painting' ignores the typed region";
+  const VarnishRequest part = varnish_request(Finish::gloss, 0.05f, false, {4, 5, 10, 6});
+  ASSERT_TRUE(part.region.has_value());
+  EXPECT_EQ(*part.region, (paintcore::CellRect{4, 5, 14, 11}));  // x, y, w, h
+
+  paintcore::Painting p({40, 30, 100.0, 1}, 1);
+  const std::uint64_t bare = p.state_hash();
+  p.apply_varnish(part.finish, part.thickness_mm, part.region);  // as the window applies it
+  EXPECT_TRUE(surface_at(p, 4, 5).varnished());
+  EXPECT_TRUE(surface_at(p, 13, 10).varnished());
+  EXPECT_FALSE(surface_at(p, 14, 10).varnished()) << "w cells wide, no more";
+  EXPECT_FALSE(surface_at(p, 13, 11).varnished()) << "h cells high, no more";
+  EXPECT_FALSE(surface_at(p, 3, 5).varnished());
+  EXPECT_NEAR(surface_at(p, 8, 8).varnish_mm, 0.05f, 1e-6f);
+  ASSERT_TRUE(p.undo());
+  EXPECT_EQ(p.state_hash(), bare);
+}
+
+}  // namespace
+}  // namespace impasto::app::window
