@@ -15,7 +15,7 @@ bool medium_choice(WindowState& s) {
   const std::vector<std::string> names = varnish_names();
   const int current = varnish_index(s.paint_medium);
   const std::string shown = "medium: " + names[static_cast<std::size_t>(current)];
-  ImGui::SetNextItemWidth(122.0f);
+  ImGui::SetNextItemWidth(118.0f);
   if (ImGui::BeginCombo("##paint_medium", shown.c_str())) {
     for (int index = 0; index < static_cast<int>(names.size()); ++index) {
       if (ImGui::Selectable(names[static_cast<std::size_t>(index)].c_str(), index == current) &&
@@ -32,7 +32,7 @@ bool medium_choice(WindowState& s) {
         "(none: the Surface panel's medium decides)");
   if (s.paint_medium) {
     ImGui::SameLine();
-    ImGui::SetNextItemWidth(48.0f);
+    ImGui::SetNextItemWidth(42.0f);
     changed |=
         ImGui::SliderFloat("##paint_medium_amount", &s.paint_medium_amount, 0.0f, 1.0f, "%.2f");
     if (ImGui::IsItemHovered())
