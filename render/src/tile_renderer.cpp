@@ -304,11 +304,10 @@ std::vector<double> TileRenderer::shading_key() const {
   // the relief's marches were derived for: the cell size and the height range.
   std::vector<double> key = shading_settings_key(settings_);
   const auto& r = relief_;
-  key.insert(key.end(), {r.step_x, r.step_y, r.step_mm, static_cast<double>(r.shadow_steps),
-                         r.elevation, r.angular_radius, r.tan_low, r.tan_high,
-                         static_cast<double>(r.occlusion_steps_axis),
-                         static_cast<double>(r.occlusion_steps_diagonal), r.cell_mm, max_height_,
-                         cell_mm_});
+  key.insert(key.end(),
+             {r.step_x, r.step_y, r.step_mm, static_cast<double>(r.shadow_steps), r.elevation,
+              r.angular_radius, r.tan_low, r.tan_high, static_cast<double>(r.occlusion_steps_axis),
+              static_cast<double>(r.occlusion_steps_diagonal), r.cell_mm, max_height_, cell_mm_});
   return key;
 }
 
