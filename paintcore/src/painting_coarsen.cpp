@@ -36,12 +36,8 @@ Painting Painting::coarsened(int factor) const {
   // noise, and their mean is flat.
   spec.weave_seed = 0;
   validate(spec);  // a dpi under 1 is refused here, naming the field
-  auto coarse_impl = std::make_unique<Impl>(spec, p.threads);
-  Impl& c = *coarse_impl;
-  c.slots = p.slots;
-  c.pigment_records = p.pigment_records;
-  c.params = p.params;
-  Canvas& coarse = c.canvas;
+  std::unique_ptr<Impl> coarse_impl = p.resampled(spec);
+  Canvas& coarse = coarse_impl->canvas;
   const int slots = slot_count();
   // The share of a coarse cell's mean that one fine cell carries. A block the canvas's edge
   // cuts counts its cells beyond the edge as bare, as the coarse canvas reaches past the edge:

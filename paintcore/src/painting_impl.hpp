@@ -3,6 +3,7 @@
 #include <tbb/task_arena.h>
 
 #include <array>
+#include <memory>
 #include <optional>
 
 #include "impasto/paintcore/brush_pose.hpp"
@@ -21,6 +22,17 @@ struct Painting::Impl {
       : canvas(spec),
         threads(thread_count > 0 ? thread_count : tbb::this_task_arena::max_concurrency()),
         arena(threads) {}
+
+  // A painting of this one's slots, pigment records and parameters on an empty canvas of
+  // `spec` (the brush, ledger, history and cracks are not carried): what the finer canvas of
+  // an export and the coarser one of a thumbnail start from.
+  std::unique_ptr<Impl> resampled(CanvasSpec spec) const {
+    auto copy = std::make_unique<Impl>(spec, threads);
+    copy->slots = slots;
+    copy->pigment_records = pigment_records;
+    copy->params = params;
+    return copy;
+  }
 
   Canvas canvas;
   int threads;

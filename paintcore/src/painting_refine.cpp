@@ -109,12 +109,8 @@ Painting Painting::refined(int scale) const {
                           static_cast<std::uint64_t>(coarse.allocated_tiles()) * (scale + 1) *
                               (scale + 1) * (3 + static_cast<std::uint64_t>(slot_count())) *
                               kTileCells * sizeof(float));
-  auto fine_impl = std::make_unique<Impl>(spec, p.threads);
-  Impl& f = *fine_impl;
-  f.slots = p.slots;
-  f.pigment_records = p.pigment_records;
-  f.params = p.params;
-  Canvas& fine = f.canvas;
+  std::unique_ptr<Impl> fine_impl = p.resampled(spec);
+  Canvas& fine = fine_impl->canvas;
   const int cw = coarse.width_cells(), ch = coarse.height_cells();
   const int slots = slot_count();
   // Whether any coarse tile in the cell range holds something (here: per `held`).
