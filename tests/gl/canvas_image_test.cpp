@@ -116,22 +116,7 @@ TEST_P(CanvasImage, GpuMatchesCpuWithinTwoLevelsOf255) {
 
   ASSERT_EQ(actual.width, expected.width);
   ASSERT_EQ(actual.height, expected.height);
-  double max_difference = 0.0, sum = 0.0;
-  int worst_x = 0, worst_y = 0;
-  for (int y = 0; y < expected.height; ++y) {
-    for (int x = 0; x < expected.width; ++x) {
-      for (int ch = 0; ch < 3; ++ch) {
-        const double d = std::abs(double(actual.pixel(x, y)[ch]) - expected.pixel(x, y)[ch]);
-        sum += d;
-        if (d > max_difference) {
-          max_difference = d;
-          worst_x = x;
-          worst_y = y;
-        }
-      }
-    }
-  }
-  const double mean = sum / (3.0 * expected.width * expected.height);
+  const auto [max_difference, mean, worst_x, worst_y] = test::compare_images(actual, expected);
   std::cout << "[ " << c.name << " ] GPU vs CPU: max " << max_difference * 255 << "/255 at ("
             << worst_x << "," << worst_y << "), mean " << mean * 255 << "/255\n";
   RecordProperty("max_difference_255", std::to_string(max_difference * 255));

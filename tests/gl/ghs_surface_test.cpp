@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "image_difference.hpp"
 #include "impasto/paintcore/canvas.hpp"
 #include "impasto/paintcore/paint_surface.hpp"
 #include "impasto/render/surface_brdf.hpp"
@@ -218,22 +219,7 @@ TEST_P(GhsCanvas, GpuMatchesCpuWithinHalfALevelOf255) {
   const render::Image actual = render_painting_gpu(canvas, kSlots, settings);
   ASSERT_EQ(actual.width, expected.width);
   ASSERT_EQ(actual.height, expected.height);
-  double worst = 0.0, sum = 0.0;
-  int worst_x = 0, worst_y = 0;
-  for (int y = 0; y < expected.height; ++y) {
-    for (int x = 0; x < expected.width; ++x) {
-      for (int ch = 0; ch < 3; ++ch) {
-        const double d = std::abs(double(actual.pixel(x, y)[ch]) - expected.pixel(x, y)[ch]);
-        sum += d;
-        if (d > worst) {
-          worst = d;
-          worst_x = x;
-          worst_y = y;
-        }
-      }
-    }
-  }
-  const double mean = sum / (3.0 * expected.width * expected.height);
+  const auto [worst, mean, worst_x, worst_y] = test::compare_images(actual, expected);
   std::cout << "[ " << c.name << " ] GPU vs CPU: max " << worst * 255 << "/255 at (" << worst_x
             << "," << worst_y << "), mean " << mean * 255 << "/255\n";
   RecordProperty("max_difference_255", std::to_string(worst * 255));
