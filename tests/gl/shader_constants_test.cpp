@@ -3,11 +3,13 @@
 // writes one of them again by hand, or when an injected value differs from its C++ twin.
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <filesystem>
 #include <fstream>
-#include <regex>
+#include <set>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "impasto/flakes/flake_tables.hpp"
 #include "impasto/paintcore/crack_layer.hpp"
@@ -22,9 +24,36 @@ namespace fs = std::filesystem;
 
 // The value of `#define NAME VALUE` in an assembled source; "" when it is not there.
 std::string defined_value(const std::string& source, const std::string& name) {
-  const std::regex define("#define " + name + " ([^\\n]+)\\n");
-  std::smatch match;
-  return std::regex_search(source, match, define) ? match[1].str() : "";
+  const std::string key = "#define " + name + " ";
+  std::istringstream lines(source);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.rfind(key, 0) == 0) return line.substr(key.size());
+  }
+  return "";
+}
+
+// The code's words (letters, digits, '_', '.' and a leading '#') and its other characters,
+// one token each; blanks separate tokens and are dropped.
+std::vector<std::string> tokens_of(const std::string& code) {
+  const auto word_char = [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.';
+  };
+  std::vector<std::string> tokens;
+  for (std::size_t i = 0; i < code.size();) {
+    const char c = code[i];
+    if (std::isspace(static_cast<unsigned char>(c))) {
+      ++i;
+    } else if (word_char(c) || c == '#') {
+      std::size_t end = i + 1;
+      while (end < code.size() && word_char(code[end])) ++end;
+      tokens.push_back(code.substr(i, end - i));
+      i = end;
+    } else {
+      tokens.emplace_back(1, c);
+      ++i;
+    }
+  }
+  return tokens;
 }
 
 // A shader file without its // comments.
@@ -51,22 +80,28 @@ TEST(ShaderConstants, TheInjectedValuesAreTheCppOnes) {
 TEST(ShaderConstants, NoShaderWritesAnInjectedConstantByHand) {
   const fs::path folder = fs::path(IMPASTO_SOURCE_DIR) / "render/gl/shaders";
   // Names the C++ defines; a shader that defines one again would hide a disagreement.
-  const std::regex redefined(
-      "(#define|const\\s+\\w+)\\s+(MAX_NODES|MAX_SLOTS|MAX_FLAKES|FLAKE_ORIENTATION_SAMPLES|"
-      "FLAKE_ANGLE_SAMPLES|CRACK_SHAPES|RELIEF_DIRECTIONS|SHADE_OCCLUSION_DIRECT_SHARE)\\b");
+  const std::set<std::string> injected{
+      "MAX_NODES",           "MAX_SLOTS",    "MAX_FLAKES",        "FLAKE_ORIENTATION_SAMPLES",
+      "FLAKE_ANGLE_SAMPLES", "CRACK_SHAPES", "RELIEF_DIRECTIONS", "SHADE_OCCLUSION_DIRECT_SHARE"};
   // The values of the table sizes and the shape count, written as numbers.
-  const std::string sizes = std::to_string(flakes::FlakeTables::kOrientationSamples) + "|" +
-                            std::to_string(flakes::FlakeTables::kAngleSamples);
-  const std::regex literal_size("[^.\\w](" + sizes + ")[^.\\w]");
-  const std::regex literal_shapes("\\[" + std::to_string(paintcore::kCrackShapeCount) + "\\]");
+  const std::set<std::string> sizes{std::to_string(flakes::FlakeTables::kOrientationSamples),
+                                    std::to_string(flakes::FlakeTables::kAngleSamples)};
+  const std::string shapes = std::to_string(paintcore::kCrackShapeCount);
   int files = 0;
   for (const auto& entry : fs::directory_iterator(folder)) {
     if (entry.path().extension() != ".glsl") continue;
     ++files;
-    const std::string code = code_of(entry.path());
-    EXPECT_FALSE(std::regex_search(code, redefined)) << entry.path();
-    EXPECT_FALSE(std::regex_search(code, literal_size)) << entry.path();
-    EXPECT_FALSE(std::regex_search(code, literal_shapes)) << entry.path();
+    const std::vector<std::string> t = tokens_of(code_of(entry.path()));
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      const bool defines = t[i] == "#define" && i + 1 < t.size() && injected.count(t[i + 1]);
+      const bool declares = t[i] == "const" && i + 2 < t.size() && injected.count(t[i + 2]);
+      EXPECT_FALSE(defines || declares)
+          << entry.path() << ": " << t[i] << " " << (declares ? t[i + 2] : t[i + 1]);
+      EXPECT_FALSE(sizes.count(t[i])) << entry.path() << ": the number " << t[i];
+      const bool shape_array =
+          t[i] == "[" && i + 2 < t.size() && t[i + 1] == shapes && t[i + 2] == "]";
+      EXPECT_FALSE(shape_array) << entry.path() << ": [" << shapes << "]";
+    }
   }
   EXPECT_GT(files, 5);
 }
