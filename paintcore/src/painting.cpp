@@ -231,8 +231,9 @@ void Painting::end_stroke() {
   if (p.last_contact) {
     const auto before_change = [&p](int index) { p.before_stroke_tile_change(index); };
     p.arena.execute([&] {
-      p.stepper.step(p.canvas, p.brush, slot_count(), p.params, *p.last_contact, 0.0, 0.0, 0.0,
-                     before_change, true);
+      if (p.stepper.step(p.canvas, p.brush, slot_count(), p.params, *p.last_contact, 0.0, 0.0, 0.0,
+                         before_change, true))
+        pick_up_medium(p.canvas, p.brush, p.stepper);
     });
     p.last_contact.reset();
   }
@@ -375,6 +376,7 @@ void Painting::stroke_to(const PenSample& sample) {
         p.last_contact = pose;
         ++p.steps;
         p.cells_updated += p.stepper.last_window_cells();
+        pick_up_medium(p.canvas, p.brush, p.stepper);
       }
     }
   });

@@ -6,6 +6,7 @@
 
 #include "impasto/paintcore/brush.hpp"
 #include "impasto/paintcore/canvas.hpp"
+#include "stepper.hpp"
 #include "undo_history.hpp"
 
 namespace impasto::paintcore {
@@ -13,6 +14,11 @@ namespace impasto::paintcore {
 // The brush held before_mm3 of paint and was given added_mm3 more, with `medium` (or none).
 void mix_brush_medium(Brush& brush, double before_mm3, double added_mm3,
                       const std::optional<Medium>& medium);
+
+// After a step: the paint the brush picked up from each cell (Stepper::for_each_pick_up)
+// brings that cell's medium into the brush's, by volume (mix), so a gloss brush dragged
+// through matte paint carries a mix of the two onward.
+void pick_up_medium(const Canvas& canvas, Brush& brush, const Stepper& stepper);
 
 // After a stroke (its undo step still recording): the paint each cell of `tiles` gained
 // carries the brush's medium into the cell's surface; more than a film of it (kSurfaceFilmMm)

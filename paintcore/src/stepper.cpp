@@ -616,6 +616,7 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
     to_.push_back(new_pigment_.data() + static_cast<std::size_t>(s) * win_.padded());
   }
   const bool transfers = in.relax > 0.0f;  // a brush neither moving nor pressing moves nothing
+  last_transferred_ = transfers;
   // Paint changes only within a cell of a touching cell (the drag, the transfer and the
   // squeeze all reach one cell): each row's active span. Beyond it every pass would give back
   // its input bit for bit, so the passes skip it and the scatter leaves it alone.

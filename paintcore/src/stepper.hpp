@@ -37,6 +37,22 @@ class Stepper {
 
   std::size_t last_window_cells() const { return last_window_cells_; }
 
+  // Calls take(x_cells, y_cells, height_mm) for each canvas cell the last step that returned
+  // true moved paint from onto the brush (height_mm > 0: what the brush took there), in a
+  // fixed order: what travels with the paint (its medium, painting_surface.hpp) follows it.
+  template <class Take>
+  void for_each_pick_up(Take&& take) const {
+    if (!last_transferred_) return;
+    for (int y = 0; y < win_.height; ++y) {
+      const std::size_t first = static_cast<std::size_t>(y) * win_.width;
+      for (int x = contact_lo_[static_cast<std::size_t>(y)];
+           x < contact_hi_[static_cast<std::size_t>(y)]; ++x) {
+        const std::size_t c = first + static_cast<std::size_t>(x);
+        if (brush_cell_[c] >= 0 && xfer_[c] < 0.0f) take(win_.x0 + x, win_.y0 + y, -xfer_[c]);
+      }
+    }
+  }
+
   // Applies what is still pending of the bristles' evening out; call when a stroke ends (and
   // so before anything else touches the brush).
   void finish_stroke(Brush& brush, int slot_count, const SimulationParams& params);
@@ -92,6 +108,7 @@ class Stepper {
   Window win_;
   double brush_flow_pending_mm_ = 0.0;  // distance travelled since the bristles last evened out
   std::size_t last_window_cells_ = 0;
+  bool last_transferred_ = false;  // the last step's xfer_ holds its transfer
   // Padded window grids (see advection.hpp for the layout).
   std::vector<float> ground_, wet_, pen_, vx_, vy_, new_wet_;
   std::vector<float> pigment_, new_pigment_;  // slot-major, padded grids

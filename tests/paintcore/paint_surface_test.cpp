@@ -246,5 +246,64 @@ TEST(PaintSurface, CropAndTheFinerCanvasKeepTheSurfaceWithThePaint) {
   EXPECT_EQ(surface_at(p, 80, 20).varnish_mm, varnished.varnish_mm);
 }
 
+// The brush picks up paint with its medium. An empty brush holds only what it picked up, so
+// after dragging through paint of one medium it carries exactly that medium.
+TEST(PaintSurface, AnEmptyBrushPicksUpExactlyTheMediumOfThePaintItDragsThrough) {
+  Painting p = brushed();
+  const Medium half_matte{Finish::matte, 0.5};
+  p.load_brush({{"red", 1.0}}, 8.0, kDefaultPaintBody, half_matte);
+  test::stroke_line(p, 1.0, 3.0, 11.0, 3.0, 0.8f);
+  p.wipe_brush();
+  p.load_brush({{"red", 1.0}}, 0.0, kDefaultPaintBody, Medium{Finish::gloss, 1.0});
+  ASSERT_NEAR(p.brush().medium().log_rms, finish_log_rms(Finish::gloss), 1e-6);
+  test::stroke_line(p, 3.0, 3.0, 9.0, 3.0, 0.9f);
+  ASSERT_GT(p.brush_totals().volume, 0.01);  // it took paint
+  // (Paint the drag moved onto bare cells within the same step reads their surface, no
+  // medium yet: a trace.)
+  EXPECT_NEAR(p.brush().medium().share, 1.0f, 0.01);
+  EXPECT_NEAR(p.brush().medium().log_rms, medium_log_rms(half_matte), 1e-5);
+}
+
+// By volume: a brush half gloss paint, half paint without a medium, has half the share.
+// Picking up paint without a medium dilutes a gloss brush's share by the volume taken.
+TEST(PaintSurface, PickingUpPaintWithoutAMediumDilutesTheBrushsShareByVolume) {
+  Painting p = brushed();
+  p.load_brush({{"red", 1.0}}, 8.0);  // no medium
+  test::stroke_line(p, 1.0, 3.0, 11.0, 3.0, 0.8f);
+  p.wipe_brush();
+  p.load_brush({{"red", 1.0}}, 0.0, kDefaultPaintBody, Medium{Finish::gloss, 1.0});
+  test::stroke_line(p, 3.0, 3.0, 9.0, 3.0, 0.9f);
+  ASSERT_GT(p.brush_totals().volume, 0.01);
+  EXPECT_NEAR(p.brush().medium().share, 0.0f, 1e-6);  // all it holds came from the canvas
+  // Now gloss paint on the brush as well: share = its volume / all the brush holds.
+  const double picked = p.brush_totals().volume;
+  p.load_brush({{"red", 1.0}}, picked, kDefaultPaintBody, Medium{Finish::gloss, 1.0});
+  EXPECT_NEAR(p.brush().medium().share, picked / p.brush_totals().volume, 1e-5);
+  EXPECT_NEAR(p.brush().medium().share, 0.5, 1e-3);
+}
+
+// Dragging a gloss brush through matte paint and on over clean canvas lays down a mix.
+TEST(PaintSurface, AGlossBrushDraggedThroughMattePaintLaysAMixBeyondIt) {
+  const auto lay = [](bool matte_first) {
+    Painting p = brushed();
+    if (matte_first) {
+      p.load_brush({{"red", 1.0}}, 8.0, kDefaultPaintBody, Medium{Finish::matte, 1.0});
+      test::stroke_line(p, 3.0, 3.0, 6.0, 3.0, 0.8f);
+      p.wipe_brush();
+    }
+    p.load_brush({{"red", 1.0}}, 5.0, kDefaultPaintBody, Medium{Finish::gloss, 1.0});
+    test::stroke_line(p, 1.0, 3.0, 11.0, 3.0, 0.8f);
+    EXPECT_GT(p.canvas().wet_volume_mm(100, 30), 0.01f);
+    return surface_at(p, 100, 30).medium;
+  };
+  const double gloss = finish_log_rms(Finish::gloss), matte = finish_log_rms(Finish::matte);
+  const PaintMedium clean = lay(false);
+  EXPECT_NEAR(clean.log_rms, gloss, 1e-5);
+  const PaintMedium mixed = lay(true);
+  EXPECT_NEAR(mixed.share, 1.0f, 0.01);
+  EXPECT_GT(mixed.log_rms, gloss + 0.05 * (matte - gloss));
+  EXPECT_LT(mixed.log_rms, matte - 0.05 * (matte - gloss));
+}
+
 }  // namespace
 }  // namespace impasto::paintcore
