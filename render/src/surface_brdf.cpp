@@ -42,6 +42,17 @@ double fresnel_dielectric(double cos_i, double n) {
   return 0.5 * (rs * rs + rp * rp);
 }
 
+double smith_shadowing(double cos_theta, double slope_rms) {
+  const double mu = std::clamp(cos_theta, 0.0, 1.0);
+  if (!(slope_rms > 0.0)) return 1.0;
+  if (mu <= 0.0) return 0.0;
+  // Beckmann's α = √2 × the RMS slope per axis; a = 1 / (α tan θ).
+  const double a = mu / (std::sqrt(2.0) * slope_rms * std::sqrt(std::max(1e-300, 1.0 - mu * mu)));
+  if (a > 8.0) return 1.0;  // Λ below 1e-28
+  const double lambda = 0.5 * (std::exp(-a * a) / (a * std::sqrt(kPi)) - std::erfc(a));
+  return 1.0 / (1.0 + lambda);
+}
+
 double ghs_kernel(const GhsParams& p, double cos_i, double cos_o, double rho) {
   const double lambda_um = p.wavelength_nm * 1e-3;
   const double phase = 2.0 * kPi * p.roughness.rms_um / lambda_um * (cos_i + cos_o);
@@ -101,7 +112,58 @@ GhsBrdf::GhsBrdf(const GhsParams& params) : params_(params) {
     });
     renormalisation_[static_cast<std::size_t>(k)] = kept > 1e-12 ? 1.0 / kept : 1.0;
   }
-  // Pass 2: the directional albedo of the finished BRDF (dα dβ = cos θ_o dω_o).
+  for (int k = 0; k < kTableSize; ++k) {
+    const double mu = static_cast<double>(k) / (kTableSize - 1);
+    shadowing_[static_cast<std::size_t>(k)] = smith_shadowing(mu, slope_rms());
+  }
+  // Pass 2: what single scattering returns of a perfect reflector's light (F = 1), E₁; the
+  // rest is scattered again (multiple_, surface_brdf.hpp).
+  const auto trapezoid = [](const std::array<double, kTableSize>& table) {  // 2 ∫ t(μ) μ dμ
+    double sum = 0.0;
+    for (int k = 1; k < kTableSize; ++k) {
+      const double a = static_cast<double>(k - 1) / (kTableSize - 1);
+      const double b = static_cast<double>(k) / (kTableSize - 1);
+      sum += (table[static_cast<std::size_t>(k - 1)] * a + table[static_cast<std::size_t>(k)] * b) *
+             (b - a);
+    }
+    return sum;
+  };
+  std::array<double, kTableSize> single{};
+  for (int k = 0; k < kTableSize; ++k) {
+    const double mu = static_cast<double>(k) / (kTableSize - 1);
+    const double sin_i = std::sqrt(1.0 - mu * mu);
+    single[static_cast<std::size_t>(k)] =
+        std::min(1.0, integrate_disc(mu, inner, [&](double x, double y) {
+                   const double cos_o = std::sqrt(std::max(0.0, 1.0 - x * x - y * y));
+                   return single_scattering(mu, cos_o, std::hypot(x + sin_i, y), 1.0, false);
+                 }));
+  }
+  // 1 − Ē₁ by the quadrature that integrates the lobe in pass 3 (over the interpolated
+  // table), so that with F = 1 the two add up to 1 at every incidence.
+  const double missed = std::max(0.0, integrate_disc(1.0, inner, [&](double x, double y) {
+                                        const double cos_o =
+                                            std::sqrt(std::max(0.0, 1.0 - x * x - y * y));
+                                        return 1.0 - table_lookup(single, cos_o);
+                                      }) / kPi);
+  const double single_hemispherical = 1.0 - missed;
+  double fresnel_mean = 1.0;  // F̄ = 2 ∫ F(μ) μ dμ
+  if (params_.fresnel) {
+    constexpr int kSteps = 512;
+    fresnel_mean = 0.0;
+    for (int k = 0; k < kSteps; ++k) {
+      const double mu = (k + 0.5) / kSteps;
+      fresnel_mean += 2.0 * fresnel_dielectric(mu, params_.index) * mu / kSteps;
+    }
+  }
+  if (missed > 1e-9) {
+    const double fresnel_multiple = fresnel_mean * fresnel_mean * single_hemispherical /
+                                    std::max(1e-12, 1.0 - fresnel_mean * missed);
+    const double scale = std::sqrt((params_.fresnel ? fresnel_multiple : 1.0) / (kPi * missed));
+    for (int k = 0; k < kTableSize; ++k) {
+      multiple_[static_cast<std::size_t>(k)] = (1.0 - single[static_cast<std::size_t>(k)]) * scale;
+    }
+  }
+  // Pass 3: the directional albedo of the finished BRDF (dα dβ = cos θ_o dω_o).
   for (int k = 0; k < kTableSize; ++k) {
     const double mu = static_cast<double>(k) / (kTableSize - 1);
     const double sin_i = std::sqrt(1.0 - mu * mu);
@@ -110,15 +172,7 @@ GhsBrdf::GhsBrdf(const GhsParams& params) : params_(params) {
       return eval({sin_i, 0.0, mu}, {x, y, cos_o});
     });
   }
-  double sum = 0.0;  // trapezoid of 2 ∫ E(μ) μ dμ
-  for (int k = 1; k < kTableSize; ++k) {
-    const double a = static_cast<double>(k - 1) / (kTableSize - 1);
-    const double b = static_cast<double>(k) / (kTableSize - 1);
-    sum +=
-        (albedo_[static_cast<std::size_t>(k - 1)] * a + albedo_[static_cast<std::size_t>(k)] * b) *
-        (b - a);
-  }
-  hemispherical_albedo_ = sum;
+  hemispherical_albedo_ = trapezoid(albedo_);
 }
 
 double GhsBrdf::table_lookup(const std::array<double, kTableSize>& table, double cos_i) const {
@@ -137,11 +191,31 @@ double GhsBrdf::albedo(double cos_i) const {
   return table_lookup(albedo_, cos_i);
 }
 
+double GhsBrdf::shadowing(double cos_i) const {
+  return table_lookup(shadowing_, cos_i);
+}
+
+double GhsBrdf::multiple(double cos_i) const {
+  return table_lookup(multiple_, cos_i);
+}
+
+double GhsBrdf::slope_rms() const {
+  const double own = std::sqrt(2.0) * params_.roughness.rms_um / params_.roughness.correlation_um;
+  return std::hypot(own, params_.subcell_slope_rms);
+}
+
+double GhsBrdf::single_scattering(double cos_i, double cos_o, double rho, double cos_half,
+                                  bool fresnel) const {
+  if (cos_i <= 0.0 || cos_o <= 0.0) return 0.0;
+  const double f = fresnel ? fresnel_dielectric(cos_half, params_.index) : 1.0;
+  const double renorm = std::min(renormalisation(cos_i), renormalisation(cos_o));
+  return f * renorm * shadowing(cos_i) * shadowing(cos_o) * ghs_kernel(params_, cos_i, cos_o, rho);
+}
+
 double GhsBrdf::eval(double cos_i, double cos_o, double rho, double cos_half) const {
   if (cos_i <= 0.0 || cos_o <= 0.0) return 0.0;
-  const double fresnel = params_.fresnel ? fresnel_dielectric(cos_half, params_.index) : 1.0;
-  const double renorm = std::min(renormalisation(cos_i), renormalisation(cos_o));
-  return fresnel * renorm * ghs_kernel(params_, cos_i, cos_o, rho);
+  return single_scattering(cos_i, cos_o, rho, cos_half, params_.fresnel) +
+         multiple(cos_i) * multiple(cos_o);
 }
 
 double GhsBrdf::eval(const std::array<double, 3>& l, const std::array<double, 3>& v) const {

@@ -59,8 +59,8 @@ float rho_of(int x) {
   return 0.004f * static_cast<float>(x * x) / 4.0f;
 }
 
-// GHS_TABLE_SIZE, GHS_BLOCKS and GHS_WET_BLOCK come from the C++ (ghs_surface_tables.cpp), never by
-// hand.
+// GHS_TABLE_SIZE, GHS_BLOCKS, GHS_WET_BLOCK and GHS_SECOND_TABLE come from the C++
+// (ghs_surface_tables.cpp), never by hand.
 TEST(GhsGlsl, TableSizesAreInjectedFromTheCpp) {
   const std::string source = surface_ghs_glsl();
   EXPECT_NE(source.find("#define GHS_TABLE_SIZE " +
@@ -71,6 +71,9 @@ TEST(GhsGlsl, TableSizesAreInjectedFromTheCpp) {
   EXPECT_NE(
       source.find("#define GHS_WET_BLOCK " + std::to_string(GhsSurfaceTables::kWetBlock) + "\n"),
       std::string::npos);
+  EXPECT_NE(source.find("#define GHS_SECOND_TABLE " +
+                        std::to_string(GhsSurfaceTables::kSecondTable) + "\n"),
+            std::string::npos);
   std::ifstream file(std::filesystem::path(IMPASTO_SOURCE_DIR) /
                      "render/gl/shaders/surface_ghs_lib.glsl");
   std::stringstream text;

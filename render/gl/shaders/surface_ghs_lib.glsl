@@ -1,17 +1,19 @@
 // The ghs surface model: a port of render/src/surface_brdf.cpp (the GHS kernel, Fresnel, the
-// renormalised BRDF) and of render::SurfaceShading::shade (render/src/surface_shading.cpp),
+// renormalised, shadowed BRDF and its multiply scattered lobe) and of render::SurfaceShading::shade (render/src/surface_shading.cpp),
 // the CPU reference it is tested against (tests/gl/ghs_surface_test.cpp). docs/surface.md
 // derives the terms.
 // Needs MAX_NODES, SHADE_OCCLUSION_DIRECT_SHARE (shading_lib), and from the C++
 // (GhsSurfaceTables): GHS_TABLE_SIZE (surface::GhsBrdf::kTableSize), GHS_BLOCKS (the
 // surfaces: the settings' dry one, the wet one, the levels of paint and varnish) and
-// GHS_WET_BLOCK.
+// GHS_WET_BLOCK, GHS_SECOND_TABLE (the column of the second table).
 
 uniform bool ghs_enabled;     // SurfaceSettings::model == ghs; else Blinn-Phong
 uniform bool ghs_reflection;  // SurfaceSettings::reflection
 // Row = a surface (block), layer = a node. Columns 0..GHS_TABLE_SIZE-1 at cos θ =
 // i / (GHS_TABLE_SIZE - 1): (renormalisation, directional albedo), as GhsBrdf tabulates them;
-// then (index, hemispherical albedo); then (RMS height, correlation length) in µm.
+// then (index, hemispherical albedo); then (RMS height, correlation length) in µm; then from
+// GHS_SECOND_TABLE, at the same cosines: (Smith's shadowing, the multiply scattered lobe's
+// factor).
 uniform sampler2DArray ghs_tables;
 // Per cell: (the block of its dry surface, its least wetness: a varnish not yet dry); absent
 // (ghs_cells_present false) while the painting has no media or varnish of its own.
@@ -92,14 +94,15 @@ float ghs_fresnel(float cos_i, float n) {
 }
 
 // GhsBrdf's tables at cos_i, interpolated as table_lookup does: (renormalisation, albedo).
-vec2 ghs_table(int block, int node, float cos_i) {
+vec2 ghs_table_at(int column, int block, int node, float cos_i) {
   float u = clamp(cos_i, 0.0, 1.0) * float(GHS_TABLE_SIZE - 1);
   int k = min(int(u), GHS_TABLE_SIZE - 2);
   float f = u - float(k);
-  vec2 a = texelFetch(ghs_tables, ivec3(k, block, node), 0).rg;
-  vec2 b = texelFetch(ghs_tables, ivec3(k + 1, block, node), 0).rg;
+  vec2 a = texelFetch(ghs_tables, ivec3(column + k, block, node), 0).rg;
+  vec2 b = texelFetch(ghs_tables, ivec3(column + k + 1, block, node), 0).rg;
   return a * (1.0 - f) + b * f;
 }
+vec2 ghs_table(int block, int node, float cos_i) { return ghs_table_at(0, block, node, cos_i); }
 
 // (index, hemispherical albedo) of a surface at a node.
 vec2 ghs_optics(int block, int node) {
@@ -110,10 +113,15 @@ vec2 ghs_optics(int block, int node) {
 float ghs_brdf(int block, int node, float cos_i, float cos_o, float rho, float cos_half) {
   if (cos_i <= 0.0 || cos_o <= 0.0) return 0.0;
   float renorm = min(ghs_table(block, node, cos_i).x, ghs_table(block, node, cos_o).x);
+  // (shadowing, multiply scattered factor) of each direction.
+  vec2 in_second = ghs_table_at(GHS_SECOND_TABLE, block, node, cos_i);
+  vec2 out_second = ghs_table_at(GHS_SECOND_TABLE, block, node, cos_o);
   vec2 roughness = texelFetch(ghs_tables, ivec3(GHS_TABLE_SIZE + 1, block, node), 0).rg;
-  return ghs_fresnel(cos_half, ghs_optics(block, node).x) * renorm *
-         ghs_kernel(roughness, ghs_wavelength_nm[node], ghs_source_sigma, ghs_subcell_slope,
-                    cos_i, cos_o, rho);
+  return ghs_fresnel(cos_half, ghs_optics(block, node).x) * renorm * in_second.x *
+             out_second.x *
+             ghs_kernel(roughness, ghs_wavelength_nm[node], ghs_source_sigma, ghs_subcell_slope,
+                        cos_i, cos_o, rho) +
+         in_second.y * out_second.y;
 }
 
 float ghs_mix(float dry, float wet, float w) { return dry + w * (wet - dry); }

@@ -75,6 +75,10 @@ void GhsSurfaceTables::fill_block(int block) {
       const double mu = static_cast<double>(k) / (kTableSize - 1);
       row[static_cast<std::size_t>(2 * k)] = static_cast<float>(brdf.renormalisation(mu));
       row[static_cast<std::size_t>(2 * k + 1)] = static_cast<float>(brdf.albedo(mu));
+      row[static_cast<std::size_t>(2 * (kSecondTable + k))] =
+          static_cast<float>(brdf.shadowing(mu));
+      row[static_cast<std::size_t>(2 * (kSecondTable + k) + 1)] =
+          static_cast<float>(brdf.multiple(mu));
     }
     row[2 * kTableSize] = static_cast<float>(brdf.params().index);
     row[2 * kTableSize + 1] = static_cast<float>(brdf.hemispherical_albedo());
@@ -134,7 +138,8 @@ const char* surface_ghs_glsl() {
   static const std::string source =
       "#define GHS_TABLE_SIZE " + std::to_string(GhsSurfaceTables::kTableSize) +
       "\n#define GHS_BLOCKS " + std::to_string(GhsSurfaceTables::kBlocks) +
-      "\n#define GHS_WET_BLOCK " + std::to_string(GhsSurfaceTables::kWetBlock) + "\n" +
+      "\n#define GHS_WET_BLOCK " + std::to_string(GhsSurfaceTables::kWetBlock) +
+      "\n#define GHS_SECOND_TABLE " + std::to_string(GhsSurfaceTables::kSecondTable) + "\n" +
       shaders::surface_ghs_lib;
   return source.c_str();
 }

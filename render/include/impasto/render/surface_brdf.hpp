@@ -50,6 +50,10 @@ struct GhsParams {
   double subcell_slope_rms = 0.0;
 };
 
+// Smith's shadowing–masking function G₁ = 1 / (1 + Λ) of a Gaussian (Beckmann) surface of
+// RMS slope `slope_rms` per axis, for a direction at cos θ: 1 head on, 0 at grazing.
+double smith_shadowing(double cos_theta, double slope_rms);
+
 // The scatter kernel before Fresnel and renormalisation, in direction-cosine space: the
 // Poisson mixture Σ_m e^(−g) g^m/m! N(ρ; s_m² + source² + sub-cell slopes), with
 //   g   = (2πσ/λ)² (cos θ_i + cos θ_o)²        (the GHS phase variance)
@@ -59,10 +63,19 @@ struct GhsParams {
 double ghs_kernel(const GhsParams& p, double cos_i, double cos_o, double rho);
 
 // The BRDF of one wavelength, with its energy renormalisation tabulated once:
-//   f(ω_i, ω_o) = F(ω_i·h) · min(r(θ_i), r(θ_o)) · ghs_kernel(...)
+//   f(ω_i, ω_o) = F(ω_i·h) · min(r(θ_i), r(θ_o)) · G(θ_i) G(θ_o) · ghs_kernel(...)
+//               + q(θ_i) q(θ_o)
 // where r(θ) = 1 / ∫_disc kernel: the share the GHS loses to evanescent directions
 // (α² + β² > 1) is handed back (Krywonos' renormalisation), symmetrised by the min so that
-// f stays reciprocal and ∫ f cos θ_o dω_o <= max F <= 1. h is the half vector.
+// f stays reciprocal. G is Smith's shadowing–masking of the surface's Gaussian slopes (its
+// own and the sub-cell ones): light a facet sends into a neighbouring facet. What single
+// scattering does not return (1 − E₁, E₁ its albedo with F = 1) is scattered again; after
+// its second bounce its direction is random, a reciprocal diffuse lobe
+//   q(θ_i) q(θ_o) = F_ms (1 − E₁(θ_i)) (1 − E₁(θ_o)) / (π (1 − Ē₁)),
+//   F_ms = F̄² Ē₁ / (1 − F̄ (1 − Ē₁))      (F̄ the hemispherical Fresnel: each bounce
+//                                          reflects F̄, the rest enters the paint)
+// after Kulla & Conty (2017). With F = 1 it conserves the light exactly (white furnace), and
+// as the slopes grow G → 0 and f → 1/π: Lambert. h is the half vector.
 class GhsBrdf {
  public:
   static constexpr int kTableSize = 33;  // incidence cosines 0..1
@@ -81,6 +94,13 @@ class GhsBrdf {
   double hemispherical_albedo() const { return hemispherical_albedo_; }
   // The renormalisation r(θ) (mostly >= 1), interpolated.
   double renormalisation(double cos_i) const;
+  // Smith's shadowing–masking G(θ) of the surface's slopes, interpolated (1 head on).
+  double shadowing(double cos_i) const;
+  // The multiply scattered lobe's factor q(θ) (f_ms = q(θ_i) q(θ_o)), interpolated.
+  double multiple(double cos_i) const;
+  // The RMS slope (radians, per axis) of the surface: √2 σ/ℓ of its Gaussian heights and the
+  // sub-cell slopes.
+  double slope_rms() const;
 
   // Numerical ∫_disc of integrand(t_o) dα dβ around the mirror point of incidence cos_i:
   // log-spaced rings about the lobe centre, clipped to the unit disc (the tables and tests).
@@ -89,9 +109,14 @@ class GhsBrdf {
 
  private:
   double table_lookup(const std::array<double, kTableSize>& table, double cos_i) const;
+  // The first bounce alone: F (or 1) · min(r_i, r_o) · G_i G_o · kernel.
+  double single_scattering(double cos_i, double cos_o, double rho, double cos_half,
+                           bool fresnel) const;
   GhsParams params_;
   std::array<double, kTableSize> renormalisation_{};
   std::array<double, kTableSize> albedo_{};
+  std::array<double, kTableSize> shadowing_{};
+  std::array<double, kTableSize> multiple_{};
   double hemispherical_albedo_ = 0.0;
 };
 

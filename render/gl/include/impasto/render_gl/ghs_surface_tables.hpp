@@ -26,8 +26,10 @@ class GhsSurfaceTables {
  public:
   static constexpr int kTableSize = render::surface::GhsBrdf::kTableSize;
   // A block's row: kTableSize texels (renormalisation, directional albedo) at cos θ =
-  // i / (kTableSize − 1), then (index, hemispherical albedo), then (RMS, correlation) µm.
-  static constexpr int kColumns = kTableSize + 2;
+  // i / (kTableSize − 1), then (index, hemispherical albedo), then (RMS, correlation) µm,
+  // then kTableSize texels (shadowing, multiply scattered lobe's factor) at the same cosines.
+  static constexpr int kColumns = 2 * kTableSize + 2;
+  static constexpr int kSecondTable = kTableSize + 2;
   static constexpr int kDryBlock = 0, kWetBlock = 1;
   static constexpr int kBlocks = 2 + 2 * render::SurfaceShading::kLevels;
   static constexpr int kTablesUnit = 10, kCellsUnit = 9;  // texture units (below the cracks')
