@@ -75,10 +75,27 @@ function(impasto_test name)
   endif()
   target_precompile_headers(${name} REUSE_FROM impasto_gtest_pch)
   # No $IMPASTO_DATA_DIR: the tests find data/ as any build-tree program does (files::data_dir).
-  if(ARG_GPU AND IMPASTO_SANITIZE)
-    gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60
-                         PROPERTIES ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0:abort_on_error=1")
+  if(IMPASTO_SANITIZE)
+    impasto_sharded_test(${name} ${ARG_GPU})
   else()
     gtest_discover_tests(${name} DISCOVERY_TIMEOUT 60)
   endif()
+endfunction()
+
+# Under the sanitizers a test process costs about 0.1 s to start and to leak-check at its exit,
+# more than most tests take, so there a test program runs as IMPASTO_SANITIZER_SHARDS CTest
+# entries, each a GoogleTest shard (every test runs in exactly one), instead of one process a
+# test. The Release build keeps one CTest entry a test.
+set(IMPASTO_SANITIZER_SHARDS 3 CACHE STRING "CTest entries a test program runs as under the sanitizers")
+function(impasto_sharded_test name gpu)
+  set(leak_check "")
+  if(gpu)
+    set(leak_check ";ASAN_OPTIONS=detect_leaks=0:abort_on_error=1")
+  endif()
+  math(EXPR last "${IMPASTO_SANITIZER_SHARDS} - 1")
+  foreach(shard RANGE ${last})
+    add_test(NAME ${name}.shard${shard} COMMAND ${name})
+    set_tests_properties(${name}.shard${shard} PROPERTIES ENVIRONMENT
+      "GTEST_TOTAL_SHARDS=${IMPASTO_SANITIZER_SHARDS};GTEST_SHARD_INDEX=${shard}${leak_check}")
+  endforeach()
 endfunction()

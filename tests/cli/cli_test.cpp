@@ -148,7 +148,13 @@ TEST_F(Cli, ReplayWithNothingToWriteSaysWhatItDidAndWhatWouldWrite) {
   EXPECT_NE(r.out.find("nothing written"), std::string::npos) << r.out;
   for (const char* hint : {"-o FILE.png", "--save FILE.impasto", "--json"})
     EXPECT_NE(r.out.find(hint), std::string::npos) << hint;
-  EXPECT_EQ(r.err, "");  // a short job in a log: no progress
+  // A job under a second in a log shows no progress; on a loaded machine (the sanitizers, other
+  // builds) the same replay can pass a second, and then only progress lines may appear.
+  std::istringstream err(r.err);
+  for (std::string line; std::getline(err, line);) {
+    EXPECT_EQ(line.rfind("replay: ", 0), 0u) << line;
+    EXPECT_NE(line.find(" records"), std::string::npos) << line;
+  }
 }
 
 TEST_F(Cli, ReplayWritesTheImageToOutAndThePaintingToSave) {
