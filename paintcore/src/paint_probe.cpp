@@ -8,8 +8,8 @@ namespace impasto::paintcore {
 namespace {
 
 // Adds the pigments of the topmost dry layer holding paint at cell (x, y) to `pigment`;
-// returns whether one does.
-bool add_top_dry_paint(const Canvas& canvas, int x, int y, std::vector<double>& pigment) {
+// returns its paint height there (0: none holds paint).
+float add_top_dry_paint(const Canvas& canvas, int x, int y, std::vector<double>& pigment) {
   const int index = canvas.tile_index(x / kTileSize, y / kTileSize);
   const std::size_t cell = static_cast<std::size_t>((y % kTileSize) * kTileSize + x % kTileSize);
   const auto& layers = canvas.dry_layers();
@@ -18,9 +18,9 @@ bool add_top_dry_paint(const Canvas& canvas, int x, int y, std::vector<double>& 
     if (!tile || !(tile->volume_mm[cell] > kProbeBareBelowMm)) continue;
     for (std::size_t s = 0; s < pigment.size(); ++s)
       if (const float* amounts = tile->pigment(static_cast<int>(s))) pigment[s] += amounts[cell];
-    return true;
+    return tile->volume_mm[cell];
   }
-  return false;
+  return 0.0f;
 }
 
 }  // namespace
@@ -52,6 +52,8 @@ PaintProbe probe_paint(const Painting& painting, double x_cells, double y_cells,
   // A disc smaller than a cell still takes the cell it lies in.
   const double r2 = std::max(r * r, 0.5);
   double wet_sum = 0.0, dry_sum = 0.0;
+  // The visible paint's volume, its volume of medium, and that times its log10 RMS.
+  double visible = 0.0, medium = 0.0, medium_log_rms = 0.0;
   for (int y = y0; y <= y1; ++y) {
     for (int x = x0; x <= x1; ++x) {
       const double dx = x + 0.5 - x_cells, dy = y + 0.5 - y_cells;
@@ -60,15 +62,29 @@ PaintProbe probe_paint(const Painting& painting, double x_cells, double y_cells,
       const float wet = canvas.wet_volume_mm(x, y);
       wet_sum += wet;
       dry_sum += canvas.dry_height_mm(x, y);
+      float seen = 0.0f;  // the height of the visible paint
       if (wet > kProbeBareBelowMm) {
         ++probe.wet_cells;
+        seen = wet;
         for (std::size_t s = 0; s < probe.pigment.size(); ++s)
           probe.pigment[s] += canvas.pigment_mm(x, y, static_cast<int>(s));
-      } else if (add_top_dry_paint(canvas, x, y, probe.pigment)) {
+      } else if ((seen = add_top_dry_paint(canvas, x, y, probe.pigment)) > 0.0f) {
         ++probe.dry_cells;
+      }
+      if (seen > 0.0f) {
+        // The cell's surface medium is its top paint's, wet or dried.
+        const Tile* tile = canvas.tile(canvas.tile_index(x / kTileSize, y / kTileSize));
+        const PaintMedium there =
+            cell_surface(tile, (y % kTileSize) * kTileSize + x % kTileSize).medium;
+        visible += seen;
+        medium += static_cast<double>(seen) * there.share;
+        medium_log_rms += static_cast<double>(seen) * there.share * there.log_rms;
       }
     }
   }
+  if (visible > 0.0 && medium > 0.0)
+    probe.medium = {static_cast<float>(std::min(medium / visible, 1.0)),
+                    static_cast<float>(medium_log_rms / medium)};
   if (probe.cells > 0) {
     probe.wet_mm = wet_sum / static_cast<double>(probe.cells);
     probe.dry_mm = dry_sum / static_cast<double>(probe.cells);

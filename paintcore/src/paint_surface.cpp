@@ -74,6 +74,16 @@ PaintMedium paint_medium(const Medium& medium) {
   return {1.0f, static_cast<float>(medium_log_rms(medium))};
 }
 
+std::optional<Medium> loadable_medium(const PaintMedium& paint) {
+  if (!(paint.share >= 0.5f)) return std::nullopt;
+  const double tube = finish_log_rms(Finish::satin);
+  const double offset = paint.log_rms - tube;
+  // Tube paint itself, to float precision: satin.
+  if (std::abs(offset) < 1e-6) return Medium{Finish::satin, 1.0};
+  const Finish finish = offset < 0.0 ? Finish::gloss : Finish::matte;
+  return Medium{finish, std::clamp(offset / (finish_log_rms(finish) - tube), 0.0, 1.0)};
+}
+
 PaintMedium mix(const PaintMedium& a, double a_volume, const PaintMedium& b, double b_volume) {
   const double va = std::max(a_volume, 0.0), vb = std::max(b_volume, 0.0);
   const double volume = va + vb;

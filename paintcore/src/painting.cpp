@@ -233,7 +233,7 @@ void Painting::end_stroke() {
     p.arena.execute([&] {
       if (p.stepper.step(p.canvas, p.brush, slot_count(), p.params, *p.last_contact, 0.0, 0.0, 0.0,
                          before_change, true))
-        pick_up_medium(p.canvas, p.brush, p.stepper);
+        pick_up_medium(p.canvas, p.history, p.brush, p.stepper);
     });
     p.last_contact.reset();
   }
@@ -376,7 +376,7 @@ void Painting::stroke_to(const PenSample& sample) {
         p.last_contact = pose;
         ++p.steps;
         p.cells_updated += p.stepper.last_window_cells();
-        pick_up_medium(p.canvas, p.brush, p.stepper);
+        pick_up_medium(p.canvas, p.history, p.brush, p.stepper);
       }
     }
   });

@@ -16,22 +16,33 @@ void mix_brush_medium(Brush& brush, double before_mm3, double added_mm3,
   brush.set_medium(before_mm3 > 0.0 ? mix(brush.medium(), before_mm3, loaded, added_mm3) : loaded);
 }
 
-void pick_up_medium(const Canvas& canvas, Brush& brush, const Stepper& stepper) {
+void pick_up_medium(const Canvas& canvas, const UndoHistory& history, Brush& brush,
+                    const Stepper& stepper) {
+  const PaintMedium on_brush_medium = brush.medium();
   double picked = 0.0, medium = 0.0, medium_log_rms = 0.0;  // heights (mm): one cell's area
   stepper.for_each_pick_up([&](int x, int y, float height_mm) {
+    const int index = canvas.tile_index(x / kTileSize, y / kTileSize);
+    const int cell = (y % kTileSize) * kTileSize + x % kTileSize;
+    const Tile* tile = canvas.tile(index);
+    // The cell held `had` before the stroke and `held` before the brush took its share now.
+    const double held = (tile != nullptr ? tile->wet_volume_mm[cell] : 0.0f) + height_mm;
+    double had = held;
+    if (const std::optional<const Tile*> saved = history.saved_tile(index))
+      had = *saved != nullptr ? (*saved)->wet_volume_mm[cell] : 0.0f;
+    const double laid = held > 0.0 ? std::clamp((held - had) / held, 0.0, 1.0) : 0.0;
+    const PaintMedium there =
+        mix(cell_surface(tile, cell).medium, 1.0 - laid, on_brush_medium, laid);
     picked += height_mm;
-    const Tile* tile = canvas.tile(canvas.tile_index(x / kTileSize, y / kTileSize));
-    const CellSurface there = cell_surface(tile, (y % kTileSize) * kTileSize + x % kTileSize);
-    medium += static_cast<double>(height_mm) * there.medium.share;
-    medium_log_rms += static_cast<double>(height_mm) * there.medium.share * there.medium.log_rms;
+    medium += static_cast<double>(height_mm) * there.share;
+    medium_log_rms += static_cast<double>(height_mm) * there.share * there.log_rms;
   });
-  if (!(picked > 0.0) || (brush.medium().share == 0.0f && medium == 0.0)) return;
+  if (!(picked > 0.0) || (on_brush_medium.share == 0.0f && medium == 0.0)) return;
   const PaintMedium taken{static_cast<float>(medium / picked),
                           medium > 0.0 ? static_cast<float>(medium_log_rms / medium) : 0.0f};
   // What the brush holds now includes what it took (the same cell area throughout).
   double on_brush = 0.0;
   for (const float height : brush.volume_mm()) on_brush += height;
-  brush.set_medium(mix(brush.medium(), std::max(on_brush - picked, 0.0), taken, picked));
+  brush.set_medium(mix(on_brush_medium, std::max(on_brush - picked, 0.0), taken, picked));
 }
 
 void lay_stroke_medium(Canvas& canvas, const UndoHistory& history, const PaintMedium& brush,

@@ -15,10 +15,13 @@ namespace impasto::paintcore {
 void mix_brush_medium(Brush& brush, double before_mm3, double added_mm3,
                       const std::optional<Medium>& medium);
 
-// After a step: the paint the brush picked up from each cell (Stepper::for_each_pick_up)
-// brings that cell's medium into the brush's, by volume (mix), so a gloss brush dragged
-// through matte paint carries a mix of the two onward.
-void pick_up_medium(const Canvas& canvas, Brush& brush, const Stepper& stepper);
+// After a step (its stroke's undo step recording): the paint the brush picked up from each
+// cell (Stepper::for_each_pick_up) brings that cell's medium into the brush's, by volume
+// (mix), so a gloss brush dragged through matte paint carries a mix of the two onward. The
+// part of a cell's paint laid by this stroke carries the brush's medium (the surface takes it
+// only when the stroke ends: lay_stroke_medium).
+void pick_up_medium(const Canvas& canvas, const UndoHistory& history, Brush& brush,
+                    const Stepper& stepper);
 
 // After a stroke (its undo step still recording): the paint each cell of `tiles` gained
 // carries the brush's medium into the cell's surface; more than a film of it (kSurfaceFilmMm)

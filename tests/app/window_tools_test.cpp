@@ -109,6 +109,49 @@ TEST(Eyedropper, PicksThePigmentsByNameLargestFirstAndLoadsThem) {
             std::vector<std::string>{"Unobtainium"});
 }
 
+TEST(Eyedropper, PicksTheMediumOfThePaintAndLoadsAndShowsIt) {
+  const paintcore::Painting plain = painted_mix();
+  const auto without = pick_paint(plain, 60.5, 60.5);
+  ASSERT_TRUE(without);
+  EXPECT_FALSE(without->medium);
+  EXPECT_TRUE(picked_load(*without, 40.0, "").medium.empty());
+  EXPECT_EQ(picked_medium_text(*without), "none");
+
+  paintcore::Painting p(paintcore::CanvasSpec{128, 128, 254.0, 0});
+  p.set_brush({"round", 3.0, 0.5});
+  const paintcore::Medium gloss{paintcore::Finish::gloss, 0.5};
+  p.load_brush({{kWhite, 1.0}}, 20.0, paintcore::kDefaultPaintBody, gloss);
+  p.begin_stroke();
+  for (int i = 0; i < 20; ++i) {
+    paintcore::PenSample s;
+    s.x_mm = 2.0 + 0.4 * i;
+    s.y_mm = 6.0;
+    s.pressure = 0.8f;
+    s.buttons = paintcore::kPenTip;
+    p.stroke_to(s);
+  }
+  p.end_stroke();
+  const auto picked = pick_paint(p, 60.5, 60.5);
+  ASSERT_TRUE(picked);
+  ASSERT_TRUE(picked->medium);
+  EXPECT_EQ(picked->medium->finish, paintcore::Finish::gloss);
+  EXPECT_NEAR(picked->medium->amount, 0.5, 1e-4);
+  EXPECT_EQ(picked_medium_text(*picked), "gloss:0.50");
+  // The load carries it as a stroke file spells it, and reads back the same.
+  const input::LoadEvent load = picked_load(*picked, 40.0, "");
+  const paintcore::Medium loaded = paintcore::parse_medium(load.medium);
+  EXPECT_EQ(loaded.finish, paintcore::Finish::gloss);
+  EXPECT_NEAR(loaded.amount, 0.5, 1e-4);
+  // The Palette's medium follows the pick, and "none" clears it.
+  std::optional<paintcore::Finish> finish;
+  float amount = 1.0f;
+  set_palette_medium(*picked, finish, amount);
+  EXPECT_EQ(finish, paintcore::Finish::gloss);
+  EXPECT_NEAR(amount, 0.5f, 1e-4f);
+  set_palette_medium(*without, finish, amount);
+  EXPECT_FALSE(finish);
+}
+
 TEST(Eyedropper, TheChipsAreRenderedFromTheMix) {
   const paintcore::Painting p = painted_mix();
   auto picked = pick_paint(p, 60.5, 60.5);

@@ -89,5 +89,42 @@ TEST(PaintProbe, WhereTheWetPaintIsGoneTheTopDryLayerIsSeen) {
   EXPECT_NEAR(dry_green.shares()[1], wet_green.shares()[1], 1e-4);
 }
 
+// The probe reads the medium of the visible paint: wet, and after it has dried.
+TEST(PaintProbe, ReadsTheMediumOfTheVisiblePaintWetAndDry) {
+  Painting p(flat_spec());
+  p.set_brush(round_brush());
+  const Medium matte{Finish::matte, 0.4};
+  p.load_brush({{"red", 1.0}}, 5.0, kDefaultPaintBody, matte);
+  test::stroke_line(p, 2.0, 6.0, 10.0, 6.0, 0.8f);
+  p.wipe_brush();
+  p.load_brush({{"blue", 1.0}}, 5.0);  // no medium
+  test::stroke_line(p, 2.0, 9.0, 10.0, 9.0, 0.8f);
+  const PaintProbe wet = probe_paint(p, 60.5, 60.5, 2.0);
+  EXPECT_FLOAT_EQ(wet.medium.share, 1.0f);
+  EXPECT_NEAR(wet.medium.log_rms, medium_log_rms(matte), 1e-5);
+  EXPECT_FLOAT_EQ(probe_paint(p, 60.5, 90.5, 1.0).medium.share, 0.0f);
+  p.dry(1.0);
+  const PaintProbe dry = probe_paint(p, 60.5, 60.5, 2.0);
+  ASSERT_EQ(dry.dry_cells, dry.cells);
+  EXPECT_NEAR(dry.medium.log_rms, medium_log_rms(matte), 1e-5);
+  // What a brush loads to lay the same paint again.
+  const std::optional<Medium> again = loadable_medium(dry.medium);
+  ASSERT_TRUE(again.has_value());
+  EXPECT_EQ(again->finish, Finish::matte);
+  EXPECT_NEAR(again->amount, 0.4, 1e-4);
+}
+
+TEST(PaintProbe, LoadableMediumInvertsTheMediumsRoughnessAndNeedsHalfTheShare) {
+  for (const Medium m : {Medium{Finish::gloss, 1.0}, Medium{Finish::gloss, 0.25},
+                         Medium{Finish::matte, 0.7}, Medium{Finish::satin, 1.0}}) {
+    const std::optional<Medium> back = loadable_medium(paint_medium(m));
+    ASSERT_TRUE(back.has_value());
+    EXPECT_EQ(back->finish, m.finish);
+    EXPECT_NEAR(back->amount, m.amount, 1e-5);
+  }
+  EXPECT_FALSE(loadable_medium(PaintMedium{}).has_value());
+  EXPECT_FALSE(loadable_medium(PaintMedium{0.4f, 0.0f}).has_value());
+}
+
 }  // namespace
 }  // namespace impasto::paintcore

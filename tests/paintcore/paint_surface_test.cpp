@@ -247,8 +247,10 @@ TEST(PaintSurface, CropAndTheFinerCanvasKeepTheSurfaceWithThePaint) {
 }
 
 // The brush picks up paint with its medium. An empty brush holds only what it picked up, so
-// after dragging through paint of one medium it carries exactly that medium.
-TEST(PaintSurface, AnEmptyBrushPicksUpExactlyTheMediumOfThePaintItDragsThrough) {
+// after dragging through paint of one medium it carries that medium. (Paint its drag moved
+// onto a neighbour within the stroke counts as laid by the brush there: a trace of the
+// brush's own medium, hence the tolerances.)
+TEST(PaintSurface, AnEmptyBrushPicksUpTheMediumOfThePaintItDragsThrough) {
   Painting p = brushed();
   const Medium half_matte{Finish::matte, 0.5};
   p.load_brush({{"red", 1.0}}, 8.0, kDefaultPaintBody, half_matte);
@@ -258,10 +260,8 @@ TEST(PaintSurface, AnEmptyBrushPicksUpExactlyTheMediumOfThePaintItDragsThrough) 
   ASSERT_NEAR(p.brush().medium().log_rms, finish_log_rms(Finish::gloss), 1e-6);
   test::stroke_line(p, 3.0, 3.0, 9.0, 3.0, 0.9f);
   ASSERT_GT(p.brush_totals().volume, 0.01);  // it took paint
-  // (Paint the drag moved onto bare cells within the same step reads their surface, no
-  // medium yet: a trace.)
-  EXPECT_NEAR(p.brush().medium().share, 1.0f, 0.01);
-  EXPECT_NEAR(p.brush().medium().log_rms, medium_log_rms(half_matte), 1e-5);
+  EXPECT_NEAR(p.brush().medium().share, 1.0f, 1e-3);
+  EXPECT_NEAR(p.brush().medium().log_rms, medium_log_rms(half_matte), 1e-3);
 }
 
 // By volume: a brush half gloss paint, half paint without a medium, has half the share.
@@ -274,11 +274,11 @@ TEST(PaintSurface, PickingUpPaintWithoutAMediumDilutesTheBrushsShareByVolume) {
   p.load_brush({{"red", 1.0}}, 0.0, kDefaultPaintBody, Medium{Finish::gloss, 1.0});
   test::stroke_line(p, 3.0, 3.0, 9.0, 3.0, 0.9f);
   ASSERT_GT(p.brush_totals().volume, 0.01);
-  EXPECT_NEAR(p.brush().medium().share, 0.0f, 1e-6);  // all it holds came from the canvas
+  EXPECT_NEAR(p.brush().medium().share, 0.0f, 1e-3);  // all it holds came from the canvas
   // Now gloss paint on the brush as well: share = its volume / all the brush holds.
   const double picked = p.brush_totals().volume;
   p.load_brush({{"red", 1.0}}, picked, kDefaultPaintBody, Medium{Finish::gloss, 1.0});
-  EXPECT_NEAR(p.brush().medium().share, picked / p.brush_totals().volume, 1e-5);
+  EXPECT_NEAR(p.brush().medium().share, picked / p.brush_totals().volume, 1e-3);
   EXPECT_NEAR(p.brush().medium().share, 0.5, 1e-3);
 }
 
@@ -300,7 +300,7 @@ TEST(PaintSurface, AGlossBrushDraggedThroughMattePaintLaysAMixBeyondIt) {
   const PaintMedium clean = lay(false);
   EXPECT_NEAR(clean.log_rms, gloss, 1e-5);
   const PaintMedium mixed = lay(true);
-  EXPECT_NEAR(mixed.share, 1.0f, 0.01);
+  EXPECT_NEAR(mixed.share, 1.0f, 1e-3);
   EXPECT_GT(mixed.log_rms, gloss + 0.05 * (matte - gloss));
   EXPECT_LT(mixed.log_rms, matte - 0.05 * (matte - gloss));
 }

@@ -152,6 +152,7 @@ void eyedropper_panel(WindowState& s, SimWorker& worker) {
     ImGui::BeginGroup();
     ImGui::Text("%s paint at cell %.0f, %.0f", p.dry ? "dry" : "wet", p.cell[0], p.cell[1]);
     ImGui::Text("wet %.2f mm, dry %.2f mm", p.wet_mm, p.dry_mm);
+    ImGui::Text("medium %s", picked_medium_text(p).c_str());
     ImGui::EndGroup();
     for (const auto& part : p.mix) {
       if (part.parts >= 0.05) {

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "session/swatch.hpp"
 
@@ -31,6 +32,7 @@ std::optional<PickedPaint> pick_paint(const paintcore::Painting& painting, doubl
   picked.wet_mm = probe.wet_mm;
   picked.dry_mm = probe.dry_mm;
   picked.dry = probe.dry_cells > probe.wet_cells;
+  picked.medium = paintcore::loadable_medium(probe.medium);
   const std::vector<double> shares = probe.shares();
   const auto& slots = painting.pigment_slots();
   for (std::size_t s = 0; s < shares.size() && s < slots.size(); ++s)
@@ -58,7 +60,23 @@ input::LoadEvent picked_load(const PickedPaint& picked, double volume_mm3,
   load.volume_mm3 = volume_mm3;
   load.mix = picked.mix;
   load.body = body;
+  if (picked.medium) load.medium = paintcore::medium_spelling(*picked.medium);
   return load;
+}
+
+void set_palette_medium(const PickedPaint& picked, std::optional<paintcore::Finish>& finish,
+                        float& amount) {
+  finish.reset();
+  if (!picked.medium) return;
+  finish = picked.medium->finish;
+  amount = static_cast<float>(picked.medium->amount);
+}
+
+std::string picked_medium_text(const PickedPaint& picked) {
+  if (!picked.medium) return "none";
+  char amount[16];
+  std::snprintf(amount, sizeof amount, ":%.2f", picked.medium->amount);
+  return std::string(paintcore::finish_name(picked.medium->finish)) + amount;
 }
 
 void load_onto_brush(SimWorker& worker, input::LoadEvent load) {

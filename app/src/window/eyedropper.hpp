@@ -5,6 +5,7 @@
 // chips are, and the brush can be loaded with it the way the palette board's pick-up loads it
 // (load_onto_brush). The tool is I (shortcuts.hpp) or Alt held over the canvas.
 #include <impasto/input/stroke_events.hpp>
+#include <impasto/paintcore/paint_surface.hpp>
 #include <impasto/paintcore/painting.hpp>
 #include <impasto/render/render_settings.hpp>
 
@@ -28,6 +29,9 @@ struct PickedPaint {
   std::vector<input::PigmentPart> mix;  // by pigment name; parts are percent, largest first
   double wet_mm = 0.0, dry_mm = 0.0;    // mean heights over the disc
   bool dry = false;  // most of the visible paint there is dry (the wet paint is gone)
+  // The medium to load for paint that dries as the picked paint does (paintcore::
+  // loadable_medium: none where less than half of it holds a medium).
+  std::optional<paintcore::Medium> medium;
   // Display RGB: the mix opaque, and as thick a layer of it as was picked over the ground.
   std::array<float, 3> masstone_rgb{0.5f, 0.5f, 0.5f}, layer_rgb{0.5f, 0.5f, 0.5f};
   bool rendered = false;
@@ -39,8 +43,14 @@ std::optional<PickedPaint> pick_paint(const paintcore::Painting& painting, doubl
 // Renders the chips (session/swatch.hpp's flat layers). Throws std::runtime_error for a
 // pigment the library does not know (a painting's carried pigment that was removed).
 void render_picked_colours(PickedPaint& picked, const render::RenderSettings& settings);
-// What the brush takes: the picked mix, volume_mm3 of it, in `body`.
+// What the brush takes: the picked mix with its medium, volume_mm3 of it, in `body`.
 input::LoadEvent picked_load(const PickedPaint& picked, double volume_mm3, const std::string& body);
+// The Palette panel's medium for the picked paint (palette_medium.hpp): its finish (none:
+// nullopt) and amount.
+void set_palette_medium(const PickedPaint& picked, std::optional<paintcore::Finish>& finish,
+                        float& amount);
+// "matte:0.40", or "none" (the panel's line).
+std::string picked_medium_text(const PickedPaint& picked);
 // The canvas brush takes exactly `load`: wiped first, then loaded, both through the session
 // (so a replay does the same). The palette board's pick-up and the eyedropper both use it.
 void load_onto_brush(SimWorker& worker, input::LoadEvent load);

@@ -835,6 +835,7 @@ void PaintWindow::pick_at(const PointerEvent& at, bool released) {
     e.message = error.what();
   }
   const std::vector<std::string> unknown = set_palette_mix(e.picked->mix, state_.mix_parts);
+  set_palette_medium(*e.picked, state_.paint_medium, state_.paint_medium_amount);
   state_.mix_changed = true;
   if (!unknown.empty())
     e.message = "not in the pigment library, left out of the palette: " + unknown.front();

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "impasto/paintcore/paint_surface.hpp"
 #include "impasto/paintcore/painting.hpp"
 
 namespace impasto::paintcore {
@@ -21,6 +22,9 @@ struct PaintProbe {
   double wet_mm = 0.0;          // mean wet paint height over the disc
   double dry_mm = 0.0;          // mean height of all dry layers over the disc
   std::vector<double> pigment;  // per slot: the visible paint's amounts (mm, summed over cells)
+  // The visible paint's medium (paint_surface.hpp): each cell's surface medium, mixed by the
+  // height of its visible paint (share 0: none of it was mixed with a medium).
+  PaintMedium medium;
 
   bool bare() const { return wet_cells + dry_cells == 0; }
   // Per slot, the share (0..1) of the visible paint's pigment; all zero when bare.

@@ -96,6 +96,10 @@ struct PaintMedium {
   bool operator==(const PaintMedium&) const = default;
 };
 PaintMedium paint_medium(const Medium& medium);  // share 1
+// The medium to load so that new paint dries as `paint` does (the eyedropper's pick): none
+// where less than half the paint holds a medium; else the finish on the side of tube paint
+// (satin) its roughness lies, and the amount that gives that roughness (medium_log_rms).
+std::optional<Medium> loadable_medium(const PaintMedium& paint);
 // Two volumes of paint mixed: shares by volume, roughness by the volume of medium in log
 // space (amount-weighted geometric mean of the RMS heights).
 PaintMedium mix(const PaintMedium& a, double a_volume, const PaintMedium& b, double b_volume);
