@@ -104,7 +104,7 @@ void run(const RenderArgs& args) {
   settings.occlusion = !args.no_occlusion;
   settings.crack_model = parse_crack_model(args.crack_model);
   settings.ambient = args.ambient;
-  apply_surface_options(args.surface, settings, args.gpu);
+  apply_surface_options(args.surface, settings);
   validate(settings);
   image_file_type(args.out);  // a bad extension fails now, not after the render
   const auto start = Clock::now();
@@ -132,6 +132,7 @@ void run(const RenderArgs& args) {
   } else if (args.gpu) {
 #ifdef IMPASTO_RENDER_GPU
     render_gl::render_painting_gpu_to_file(painting, settings, args.out);
+    write_subsurface_map_if_asked(args.surface, painting, settings);
 #else
     throw std::runtime_error("--gpu: this impasto was built without the OpenGL path");
 #endif

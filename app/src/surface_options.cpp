@@ -38,26 +38,12 @@ void add_surface_options(CLI::App& command, SurfaceArgs& args) {
                      "scale) to this PNG");
 }
 
-void apply_surface_options(const SurfaceArgs& args, render::RenderSettings& settings, bool gpu) {
+void apply_surface_options(const SurfaceArgs& args, render::RenderSettings& settings) {
   settings.surface.model = render::parse_surface_model(args.model);
   settings.surface.medium = render::parse_finish(args.medium);
   settings.surface.medium_amount = args.medium_amount;
   settings.surface.varnish = render::parse_varnish(args.varnish);
   settings.surface.subsurface = !args.no_subsurface;
-  if (gpu && settings.surface.model == render::SurfaceModel::ghs) {
-    // The OpenGL path has the ghs surface (surface_ghs_lib.glsl) but not the subsurface
-    // spread, a whole-painting pass on the CPU (docs/surface.md).
-    if (!args.subsurface_map.empty()) {
-      throw std::runtime_error(
-          "--subsurface-map: the subsurface spread is CPU only so far (render without --gpu)");
-    }
-    if (settings.surface.subsurface) {
-      note(
-          "--gpu: the ghs surface without the subsurface spread (CPU only so far), as "
-          "--no-subsurface renders it");
-      settings.surface.subsurface = false;
-    }
-  }
   if (!args.subsurface_map.empty() && settings.surface.model != render::SurfaceModel::ghs) {
     throw std::runtime_error(
         "--subsurface-map: only the ghs surface spreads light (--surface ghs)");

@@ -20,11 +20,9 @@ struct SurfaceArgs {
 };
 
 void add_surface_options(CLI::App& command, SurfaceArgs& args);
-// Writes the parsed choices into settings.surface. gpu: the GL path has the ghs surface but
-// not its subsurface spread, so there ghs renders without it (said in a note) and
-// --subsurface-map is an error rather than a silent no-op.
-void apply_surface_options(const SurfaceArgs& args, render::RenderSettings& settings,
-                           bool gpu = false);
+// Writes the parsed choices into settings.surface (the CPU and the GL paths alike: both
+// render the ghs surface with its subsurface spread).
+void apply_surface_options(const SurfaceArgs& args, render::RenderSettings& settings);
 // When --subsurface-map was given: the map of where light spreads sideways, as a PNG.
 void write_subsurface_map_if_asked(const SurfaceArgs& args, const paintcore::Painting& painting,
                                    const render::RenderSettings& settings);

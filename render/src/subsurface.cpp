@@ -113,6 +113,12 @@ double cumulative(const dipole::Medium& m, double r) {
 
 SubsurfaceMap subsurface_map(const paintcore::Canvas& canvas, const SpectralPalette& palette,
                              const RenderSettings& settings) {
+  return subsurface_map(canvas, palette, settings,
+                        {0, 0, canvas.width_cells(), canvas.height_cells()});
+}
+
+SubsurfaceMap subsurface_map(const paintcore::Canvas& canvas, const SpectralPalette& palette,
+                             const RenderSettings& settings, const paintcore::CellRect& region) {
   SubsurfaceMap map;
   map.width = canvas.width_cells();
   map.height = canvas.height_cells();
@@ -123,8 +129,8 @@ SubsurfaceMap subsurface_map(const paintcore::Canvas& canvas, const SpectralPale
   const int nodes = palette.nodes();
   const int pigments = std::min(palette.pigment_count(), paintcore::kMaxPigmentSlots);
   const double threshold_mm = s.subsurface_min_cells * map.cell_mm;
-  for (int y = 0; y < map.height; ++y) {
-    for (int x = 0; x < map.width; ++x) {
+  for (int y = std::max(region.y0, 0); y < std::min(region.y1, map.height); ++y) {
+    for (int x = std::max(region.x0, 0); x < std::min(region.x1, map.width); ++x) {
       const int tile_index = (y / kTileSize) * canvas.tiles_x() + x / kTileSize;
       const int cell = (y % kTileSize) * kTileSize + x % kTileSize;
       const TopLayer top = top_layer(canvas, tile_index, cell, pigments);
@@ -276,8 +282,8 @@ Image subsurface_map_image(const SubsurfaceMap& map) {
                    0.0f);
   for (const SpreadingCell& cell : map.cells) {
     for (int c = 0; c < 3; ++c) {
-      image.pixel(cell.x, cell.y)[c] =
-          std::min(1.0f, cell.length_cells[static_cast<std::size_t>(c)] / 4.0f);
+      image.pixel(cell.x, cell.y)[c] = std::min(
+          1.0f, cell.length_cells[static_cast<std::size_t>(c)] / kSubsurfaceMapFullScaleCells);
     }
   }
   return image;

@@ -78,21 +78,18 @@ TEST_F(SurfaceCommand, RefusesWhatItCannotDo) {
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("--subsurface-map"), std::string::npos) << e.what();
   }
-#if __has_include(<impasto/render_gl/render_painting_gpu.hpp>)
-  // The OpenGL path has no subsurface spread (CPU only): no map from it.
-  EXPECT_THROW(
-      render_with("d.png", "--surface ghs --gpu --subsurface-map " + out("m.png").string()),
-      std::runtime_error);
-#endif
 }
 
 #if __has_include(<impasto/render_gl/render_painting_gpu.hpp>)
-// --gpu renders the ghs surface as the CPU does without the spread, within a level of 255
-// (tests/gl/ghs_surface_test.cpp compares the float images; here the PNGs round each).
-TEST_F(SurfaceCommand, GpuRendersGhsAsTheCpuDoesWithoutTheSpread) {
+// --gpu renders the ghs surface with its spread as the CPU does, within a level of 255
+// (tests/gl/ghs_surface_test.cpp and subsurface_spread_test.cpp compare the float images;
+// here the PNGs round each), and writes the spread's map as the CPU path does.
+TEST_F(SurfaceCommand, GpuRendersGhsAsTheCpuDoes) {
   const std::string options = "--surface ghs --medium matte --varnish satin";
-  const render::Image gpu = render_with("gpu.png", options + " --gpu");
-  const render::Image cpu = render_with("cpu.png", options + " --no-subsurface");
+  const render::Image gpu =
+      render_with("gpu.png", options + " --gpu --subsurface-map " + out("m.png").string());
+  EXPECT_EQ(render::read_png(out("m.png")).width, 40);
+  const render::Image cpu = render_with("cpu.png", options);
   ASSERT_EQ(gpu.rgb.size(), cpu.rgb.size());
   for (std::size_t i = 0; i < gpu.rgb.size(); ++i) ASSERT_NEAR(gpu.rgb[i], cpu.rgb[i], 1.01 / 255);
   EXPECT_NE(gpu.rgb, render_with("blinn.png", "--gpu").rgb);

@@ -211,7 +211,7 @@ TEST_P(GhsCanvas, GpuMatchesCpuWithinHalfALevelOf255) {
   settings.surface.model = render::SurfaceModel::ghs;
   settings.surface.medium = c.medium;
   settings.surface.varnish = c.varnish;
-  settings.surface.subsurface = false;  // CPU only (docs/surface.md); not in TileRenderer
+  settings.surface.subsurface = false;  // not in TileRenderer (subsurface_spread_test.cpp)
   settings.light_elevation_deg = c.elevation_deg;
   settings.light_azimuth_deg = 200.0;
   const paintcore::Canvas canvas = make_ridged_canvas();

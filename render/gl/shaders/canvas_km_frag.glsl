@@ -8,8 +8,9 @@
 // Blinn-Phong: the K-M reflectance of each node is weighted by the light the surface lets
 // through, and the surface's own light is added per node.
 // Assembled after #version, MAX_NODES/MAX_SLOTS defines, km_lib, shading_lib, surface_ghs_lib,
-// relief_lib, flakes_lib, cracks_lib, crack_close_up_lib, crack_close_up_canvas_lib and the
-// OpenColorIO display function `vec4 ocio_display(vec4 xyz)`.
+// relief_lib, flakes_lib, cracks_lib, crack_close_up_lib, crack_close_up_canvas_lib, the
+// OpenColorIO display function `vec4 ocio_display(vec4 xyz)` and subsurface_canvas_lib
+// (each cell's light with the subsurface spread; the output's encoding).
 
 in vec2 uv;
 out vec4 frag_color;
@@ -152,7 +153,7 @@ vec3 cell_colour(ivec2 cell, vec2 cell_position, bool allow_close_up) {
                                         white_xyz, light_intensity);
     shaded = inside.w > 0.0 ? inside.xyz : uncracked;
   }
-  return shaded;
+  return subsurface_light(cell, shaded);
 }
 
 // Zoomed in: colour, wetness, normal and relief light of the four nearest cell centres
@@ -250,5 +251,5 @@ void main() {
       return;
     }
   }
-  frag_color = vec4(ocio_display(vec4(shaded, 1.0)).rgb, 1.0);
+  frag_color = canvas_output(shaded);
 }

@@ -9,6 +9,7 @@
 #include "embedded_shaders.hpp"
 #include "impasto/render/shading.hpp"
 #include "impasto/render/shading_key.hpp"
+#include "impasto/render/subsurface.hpp"
 #include "impasto/render_gl/dry_reflectance.hpp"
 #include "impasto/render_gl/ghs_surface_tables.hpp"
 #include "impasto/render_gl/shader_library.hpp"
@@ -21,6 +22,22 @@ using paintcore::kTileSize;
 namespace {
 
 constexpr double kRadiansPerDegree = 3.14159265358979323846 / 180.0;
+
+paintcore::CellRect grown(const paintcore::CellRect& r, int by) {
+  return {r.x0 - by, r.y0 - by, r.x1 + by, r.y1 + by};
+}
+
+paintcore::CellRect united(const paintcore::CellRect& a, const paintcore::CellRect& b) {
+  if (a.empty()) return b;
+  if (b.empty()) return a;
+  return {std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
+}
+
+paintcore::CellRect intersected(const paintcore::CellRect& a, const paintcore::CellRect& b) {
+  const paintcore::CellRect r{std::max(a.x0, b.x0), std::max(a.y0, b.y0), std::min(a.x1, b.x1),
+                              std::min(a.y1, b.y1)};
+  return r.empty() ? paintcore::CellRect{} : r;
+}
 
 int layers_for(int count) {
   return std::max(1, (count + 3) / 4);
@@ -65,6 +82,7 @@ CanvasRenderer::CanvasRenderer(int width_cells, int height_cells,
   flakes_ = std::make_unique<FlakeTextures>(width_, height_, settings_, palette_);
   cracks_ = std::make_unique<CrackTexture>(width_, height_);
   ghs_ = std::make_unique<GhsSurfaceTables>(width_, height_, settings_, palette_);
+  spread_ = std::make_unique<GpuSubsurfaceSpread>(width_, height_);
 }
 
 CanvasRenderer::~CanvasRenderer() = default;
@@ -95,6 +113,7 @@ void CanvasRenderer::build_program() {
   source += shaders::crack_close_up_lib;
   source += shaders::crack_close_up_canvas_lib;
   source += display_->glsl();
+  source += GpuSubsurfaceSpread::canvas_glsl();
   source += shaders::canvas_km_frag;
   pass_ = std::make_unique<FullscreenPass>("canvas_km_frag.glsl", std::move(source));
 }
@@ -110,6 +129,18 @@ void CanvasRenderer::set_settings(const render::RenderSettings& settings,
   if (encoding_changed) build_program();
   flakes_ = std::make_unique<FlakeTextures>(width_, height_, settings_, palette_);
   ghs_ = std::make_unique<GhsSurfaceTables>(width_, height_, settings_, palette_);
+  spread_->clear();  // the map and kernels come with upload_all
+  spread_stale_ = spread_written_;
+}
+
+void CanvasRenderer::set_view_options(const GpuViewOptions& options) {
+  // The body's light scales with the exposure: the spread's change with it.
+  if (options.light_intensity != options_.light_intensity) spread_stale_ = spread_written_;
+  options_ = options;
+}
+
+bool CanvasRenderer::spread_on() const {
+  return settings_.surface.model == render::SurfaceModel::ghs && settings_.surface.subsurface;
 }
 
 void CanvasRenderer::set_shading(const render::RenderSettings& settings) {
@@ -121,11 +152,20 @@ void CanvasRenderer::set_shading(const render::RenderSettings& settings) {
   // follows the light in draw()), listed once in render/shading_key.hpp.
   render::copy_shading_settings(settings, settings_);
   render::validate(settings_);
-  if (ghs_light_changed) ghs_->set_light(settings_, palette_);  // the cells keep their surfaces
+  if (ghs_light_changed) ghs_->set_light(settings_, palette_);     // the cells keep their surfaces
+  spread_stale_ = united(spread_written_, spread_->mapped_box());  // the body's light changed
 }
 
 render::relief::Reach CanvasRenderer::relief_reach() const {
-  return render::relief::reach(render::relief::relief_params(settings_, cell_mm_, height_range_));
+  render::relief::Reach reach =
+      render::relief::reach(render::relief::relief_params(settings_, cell_mm_, height_range_));
+  // A cell's light spreads up to the radius: a change reaches that much further.
+  if (spread_on()) {
+    for (int* side : {&reach.left, &reach.top, &reach.right, &reach.bottom}) {
+      *side += spread_->radius();
+    }
+  }
+  return reach;
 }
 
 void CanvasRenderer::upload_tile(const paintcore::Canvas& canvas, int tile_index,
@@ -190,6 +230,11 @@ void CanvasRenderer::upload_tile(const paintcore::Canvas& canvas, int tile_index
   flakes_->upload_tile(canvas, tile_index);
   cracks_->upload_tile(canvas, tile_index);
   ghs_->upload_tile(canvas, tile_index);
+  if (spread_on()) {
+    const paintcore::CellRect cells{x0, y0, x0 + w, y0 + h};
+    spread_->set_cells(cells, render::subsurface_map(canvas, palette_, settings_, cells));
+    spread_stale_ = united(spread_stale_, cells);
+  }
 }
 
 void CanvasRenderer::upload_all(const paintcore::Canvas& canvas) {
@@ -226,16 +271,83 @@ void CanvasRenderer::upload_tiles(const paintcore::Canvas& canvas,
 }
 
 void CanvasRenderer::draw(const CanvasView& view, int viewport_w, int viewport_h) {
+  update_spread();
   cracks_->prepare(settings_);  // uploads first: an upload binds to the active unit
+  pass_->program().use();
+  set_uniforms(view, viewport_w, viewport_h);
+  pass_->draw();
+  check_gl_error("canvas K-M pass");
+}
+
+void CanvasRenderer::update_spread() {
+  if (!spread_on() || spread_stale_.empty()) return;
+  const paintcore::CellRect canvas{0, 0, width_, height_};
+  const int radius = spread_->radius();
+  const render::relief::Reach reach =
+      render::relief::reach(render::relief::relief_params(settings_, cell_mm_, height_range_));
+  const int reach_cells = std::max({reach.left, reach.top, reach.right, reach.bottom});
+  const paintcore::CellRect mapped = spread_->mapped_box();
+  // The change is recomputed within the radius of every cell whose body (the changed cells
+  // and the rim their relief reaches) or map changed, where it may be non-zero: near a
+  // mapped cell, or where it was written before (a glaze undone).
+  const paintcore::CellRect out =
+      intersected(intersected(grown(spread_stale_, reach_cells + radius), canvas),
+                  united(grown(mapped, radius), spread_written_));
+  spread_stale_ = {};
+  if (out.empty()) return;
+  // The body is needed at the mapped cells within the radius of those.
+  const paintcore::CellRect body = intersected(grown(out, radius), mapped);
+
+  GLint framebuffer = 0, viewport[4] = {0, 0, 0, 0}, scissor[4] = {0, 0, 0, 0};
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
+  glGetIntegerv(GL_VIEWPORT, viewport);
+  glGetIntegerv(GL_SCISSOR_BOX, scissor);
+  const GLboolean scissor_on = glIsEnabled(GL_SCISSOR_TEST);
+
+  if (!body.empty()) {
+    // The body's light, one pixel a cell, linear sRGB: the surface's reflection and the
+    // sparkles apart, as render_canvas_with_subsurface renders it.
+    spread_->body().bind();
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(body.x0, height_ - body.y1, body.x1 - body.x0, body.y1 - body.y0);  // GL rows up
+    cracks_->prepare(settings_);
+    const ShaderProgram& program = pass_->program();
+    program.use();
+    set_uniforms(one_pixel_per_cell(width_, height_), width_, height_);
+    glUniform1i(program.uniform("ghs_reflection"), 0);
+    glUniform1i(program.uniform("flake_count"), 0);
+    glUniform1i(program.uniform("spread_enabled"), 0);
+    glUniform1i(program.uniform("spread_map_view"), 0);
+    glUniform1i(program.uniform("linear_srgb_output"), 1);
+    pass_->draw();
+    check_gl_error("subsurface body pass");
+  }
+  spread_->spread(out);
+  spread_written_ = united(spread_written_, out);
+
+  glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(framebuffer));
+  glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+  glScissor(scissor[0], scissor[1], scissor[2], scissor[3]);
+  if (scissor_on == GL_TRUE) {
+    glEnable(GL_SCISSOR_TEST);
+  } else {
+    glDisable(GL_SCISSOR_TEST);
+  }
+}
+
+void CanvasRenderer::set_uniforms(const CanvasView& view, int viewport_w, int viewport_h) {
   const ShaderProgram& program = pass_->program();
-  program.use();
   pigments_.bind(0);
   surface_.bind(1);
   dry_reflectance_.bind(2);
   glUniform1i(program.uniform("pigments"), 0);
   glUniform1i(program.uniform("surface"), 1);
   glUniform1i(program.uniform("dry_reflectance"), 2);
-  display_->bind(program, 3);
+  if (display_->bind(program, 3) > GpuSubsurfaceSpread::kDeltaUnit) {
+    throw std::runtime_error(
+        "GPU renderer: the display transform's lookup tables overlap the "
+        "subsurface spread's texture units");
+  }
 
   glUniform2i(program.uniform("canvas_cells"), width_, height_);
   const auto matrix = view.screen_to_cell(viewport_w, viewport_h);
@@ -303,9 +415,8 @@ void CanvasRenderer::draw(const CanvasView& view, int viewport_w, int viewport_h
   cracks_->bind(program, palette_, settings_);
   cracks_->bind_close_up(program, settings_, options_.crack_close_up_min_pixels);
   ghs_->bind(program);
-
-  pass_->draw();
-  check_gl_error("canvas K-M pass");
+  spread_->bind(program, spread_on(), subsurface_map_view_);
+  glUniform1i(program.uniform("linear_srgb_output"), 0);
 }
 
 }  // namespace impasto::render_gl

@@ -18,6 +18,8 @@ namespace impasto::render {
 
 // The farthest a cell's light is spread, in cells (the kernel is (2R+1)² cells).
 inline constexpr int kSubsurfaceMaxRadius = 8;
+// The debug view's full scale: a spread length of this many cells shows at full intensity.
+inline constexpr float kSubsurfaceMapFullScaleCells = 4.0f;
 
 // A cell whose light spreads: its top layer per channel, and how far (cells).
 struct SpreadingCell {
@@ -36,6 +38,10 @@ struct SubsurfaceMap {
 // Where the spread applies for these settings (empty unless the ghs model with subsurface).
 SubsurfaceMap subsurface_map(const paintcore::Canvas& canvas, const SpectralPalette& palette,
                              const RenderSettings& settings);
+// The same for the cells of `region` only (clipped to the canvas): a tile the window's
+// renderer uploads again.
+SubsurfaceMap subsurface_map(const paintcore::Canvas& canvas, const SpectralPalette& palette,
+                             const RenderSettings& settings, const paintcore::CellRect& region);
 
 // How far light spreads in a top layer `layer_mm` thick. A layer that scatters little
 // (its K-M scattering (4/3) S d < 1, a glaze) is clear: light crosses it to what lies beneath and
@@ -64,7 +70,8 @@ SpreadKernel spread_kernel(const dipole::Medium& medium, double layer_mm, double
 // cells. Light that would leave the canvas is kept in its edge cell (nothing is lost).
 void apply_spread(const SubsurfaceMap& map, const Image& body, Image& out);
 
-// The debug view: each channel's spread length, 4 cells to full scale, black where none.
+// The debug view: each channel's spread length, kSubsurfaceMapFullScaleCells to full scale,
+// black where none.
 Image subsurface_map_image(const SubsurfaceMap& map);
 
 // The whole painting with the spread (render_painting's path for the ghs model with

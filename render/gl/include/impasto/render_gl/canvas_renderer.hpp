@@ -16,6 +16,7 @@
 #include "impasto/render_gl/ghs_surface_tables.hpp"
 #include "impasto/render_gl/gpu_display_transform.hpp"
 #include "impasto/render_gl/gpu_view_options.hpp"
+#include "impasto/render_gl/subsurface_spread.hpp"
 #include "impasto/render_gl/texture.hpp"
 
 namespace impasto::render_gl {
@@ -43,7 +44,14 @@ class CanvasRenderer {
   // upload_all afterwards.
   void set_hidden_dry_layers(std::vector<bool> hidden) { hidden_dry_layers_ = std::move(hidden); }
   // Exposure and background only: nothing to upload.
-  void set_view_options(const GpuViewOptions& options) { options_ = options; }
+  void set_view_options(const GpuViewOptions& options);
+  // Shows the subsurface spread's map (where light spreads sideways: each channel's length,
+  // render::kSubsurfaceMapFullScaleCells to full scale, over the painting dimmed) in place of
+  // the painting. Nothing to upload.
+  void set_subsurface_map_view(bool on) { subsurface_map_view_ = on; }
+  bool subsurface_map_view() const { return subsurface_map_view_; }
+  // How many cells spread light sideways now (the ghs surface with its subsurface spread).
+  int subsurface_cells() const { return spread_->mapped_count(); }
   const render::RenderSettings& settings() const { return settings_; }
   const render::SpectralPalette& palette() const { return palette_; }
   const GpuViewOptions& view_options() const { return options_; }
@@ -60,7 +68,8 @@ class CanvasRenderer {
   int height_cells() const { return height_; }
   double cell_mm() const { return cell_mm_; }
   // How far beyond a changed tile the shading of cells reads its heights (normals,
-  // occlusion, shadows), for the current settings and cell size.
+  // occlusion, shadows), for the current settings and cell size, and the subsurface
+  // spread's radius where it is on.
   render::relief::Reach relief_reach() const;
 
  private:
@@ -68,6 +77,12 @@ class CanvasRenderer {
   void build_program();
   void allocate_textures();
   void upload_tile(const paintcore::Canvas& canvas, int tile_index, TileScratch& scratch);
+  // The canvas pass's uniforms and textures for `view` (the program in use).
+  void set_uniforms(const CanvasView& view, int viewport_w, int viewport_h);
+  bool spread_on() const;
+  // Brings the spread's change up to date where cells changed (the body's light drawn there
+  // first); keeps the caller's framebuffer, viewport and scissor.
+  void update_spread();
 
   int width_, height_;
   double cell_mm_ = 0.1;
@@ -81,11 +96,15 @@ class CanvasRenderer {
   Texture surface_;          // wet volume, total height (mm)
   Texture dry_reflectance_;  // ceil(nodes / 4) layers of 4 node reflectances
   int pigment_layers_ = 0, node_layers_ = 0;
-  std::unique_ptr<FlakeTextures> flakes_;  // sparkles of flake pigments (nothing without)
-  std::unique_ptr<CrackTexture> cracks_;   // crack optics per cell (nothing without cracks)
-  std::unique_ptr<GhsSurfaceTables> ghs_;  // the ghs surface model (inactive for blinn)
-  std::vector<float> tile_min_height_;     // each tile's lowest total height (mm)
-  std::vector<float> tile_max_height_;     // each tile's highest total height (mm)
+  std::unique_ptr<FlakeTextures> flakes_;        // sparkles of flake pigments (nothing without)
+  std::unique_ptr<CrackTexture> cracks_;         // crack optics per cell (nothing without cracks)
+  std::unique_ptr<GhsSurfaceTables> ghs_;        // the ghs surface model (inactive for blinn)
+  std::unique_ptr<GpuSubsurfaceSpread> spread_;  // the ghs surface's subsurface spread
+  paintcore::CellRect spread_stale_;             // cells whose body or map changed
+  paintcore::CellRect spread_written_;           // where the spread's change may be non-zero
+  bool subsurface_map_view_ = false;
+  std::vector<float> tile_min_height_;  // each tile's lowest total height (mm)
+  std::vector<float> tile_max_height_;  // each tile's highest total height (mm)
   float max_height_ = 0.0f;
   // The largest height range since the last upload_all: bounds the shadows' length (as
   // render::TileRenderer keeps it), of the heights now and of those an upload replaced.
