@@ -38,9 +38,19 @@ enum class PendingAction { kNone, kNew, kOpen, kOpenRecent, kQuit };
 // carries it out at its next frame exactly as if its item had been chosen.
 enum class FileCommand { kNone, kNew, kOpen, kSave, kSaveAs, kExport, kQuit };
 
+// The light of a fresh window: 30° above the canvas, as galleries hang their lights (the
+// "30° rule"), where `impasto render` keeps 60°: low enough that a first stroke of heavy paint
+// shows its ridges, furrows and cast shadow (docs/window.md, "The first stroke").
+inline constexpr double kWindowLightElevationDeg = 30.0;
+inline render::RenderSettings window_render_settings() {
+  render::RenderSettings settings;
+  settings.light_elevation_deg = kWindowLightElevationDeg;
+  return settings;
+}
+
 struct WindowState {
   // --- look (shared with the CPU renderer's settings) ---
-  render::RenderSettings settings;
+  render::RenderSettings settings = window_render_settings();
   render_gl::GpuViewOptions view_options;
   bool settings_changed = true;  // palette and dry bake must be rebuilt
   bool use_blackbody = false;
@@ -50,7 +60,9 @@ struct WindowState {
 
   // --- paint on the brush ---
   std::vector<float> mix_parts;  // per pigment of the database
-  float load_volume_mm3 = 40.0f;
+  // Enough heavy paint for the default 6 mm round to lay a stroke about half a millimetre
+  // thick and a few centimetres long (6 × 40 × 0.5 mm³), as a loaded brush does.
+  float load_volume_mm3 = 120.0f;
   std::string paint_body{paintcore::body_info(paintcore::kDefaultPaintBody).name};
   bool wipe_before_load = true;  // "wipe first": Load sends a wipe, then the load
   // The medium the paint is mixed with (none: the Surface panel's medium decides, as for
