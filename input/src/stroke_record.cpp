@@ -156,6 +156,41 @@ LoadEvent parse_load(Fields f, const LineContext& where) {
   return load;
 }
 
+// varnish FINISH THICKNESS_MM [X Y W H]: the region in cells, as `impasto edit --region`.
+VarnishEvent parse_varnish(const Fields& f, const LineContext& where) {
+  if (f.size() != 3 && f.size() != 7)
+    where.fail("",
+               "'varnish' takes a finish and a thickness in mm, then optionally a region "
+               "x y width height in cells; found " +
+                   std::to_string(f.size() - 1) + " field(s)");
+  VarnishEvent varnish;
+  const std::optional<paintcore::Finish> finish = paintcore::finish_from_name(f[1]);
+  if (!finish) {
+    std::string shown;
+    for (char c : f[1].substr(0, 32)) shown += (c >= 0x20 && c < 0x7f) ? c : '?';
+    where.fail("finish", "unknown finish '" + shown + "' (known: gloss, satin, matte)");
+  }
+  varnish.finish = *finish;
+  varnish.thickness_mm = parse_double(f[2], where, "thickness");
+  if (!(varnish.thickness_mm > 0.0 && varnish.thickness_mm <= paintcore::kMaxVarnishMm))
+    where.fail("thickness", shortest(varnish.thickness_mm) + " mm is outside (0, " +
+                                shortest(paintcore::kMaxVarnishMm) + "]");
+  if (f.size() == 7) {
+    constexpr std::int64_t kMaxCells = 1 << 16;
+    const auto number = [&](std::size_t i, const char* field, std::int64_t lo) {
+      const std::int64_t n = parse_integer(f[i], where, field);
+      if (n < lo || n > kMaxCells)
+        where.fail(field, std::to_string(n) + " is outside " + std::to_string(lo) + ".." +
+                              std::to_string(kMaxCells));
+      return static_cast<int>(n);
+    };
+    const int x = number(3, "x", 0), y = number(4, "y", 0);
+    const int w = number(5, "width", 1), h = number(6, "height", 1);
+    varnish.region = paintcore::CellRect{x, y, x + w, y + h};
+  }
+  return varnish;
+}
+
 // A file path in a record: in double quotes, with '"', '%' and control characters written
 // as %XX, so that any path fits on one line and reads back the same.
 std::string quoted_path(const std::string& path) {
@@ -277,6 +312,17 @@ struct LineWriter {
   }
   std::string operator()(const WipeEvent&) const { return "wipe"; }
   std::string operator()(const DryEvent& e) const { return "dry " + shortest(e.fraction); }
+  std::string operator()(const VarnishEvent& e) const {
+    RecordLine line;
+    line.add("varnish");
+    line.add(std::string(paintcore::finish_name(e.finish)));
+    line.add(shortest(e.thickness_mm));
+    if (e.region) {
+      const paintcore::CellRect& r = *e.region;
+      for (const int n : {r.x0, r.y0, r.x1 - r.x0, r.y1 - r.y0}) line.add(std::to_string(n));
+    }
+    return line.text;
+  }
   std::string operator()(const UndoEvent&) const { return "undo"; }
   std::string operator()(const RedoEvent&) const { return "redo"; }
   std::string operator()(const OriginEvent& e) const {
@@ -308,6 +354,7 @@ StrokeEvent parse_record(const Fields& f, const LineContext& where) {
     expect_count(f, 2, where, "fraction");
     return DryEvent{in_range(parse_double(f[1], where, "fraction"), 0.0, 1.0, where, "fraction")};
   }
+  if (kind == "varnish") return parse_varnish(f, where);
   if (kind == "undo") {
     expect_count(f, 1, where, "none");
     return UndoEvent{};

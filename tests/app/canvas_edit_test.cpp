@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "command_line.hpp"
@@ -124,6 +125,48 @@ TEST_F(CanvasEditCommand, ExportWritesTheScaledImageAndTheMaps) {
   EXPECT_NEAR(heights.cell_mm, 0.05, 1e-12);
   EXPECT_EQ(render::read_png(file("n.png")).width, 160);
   EXPECT_THROW(run("export " + painting().string()), std::runtime_error);
+}
+
+// A stroke file's `varnish` record (the window's Image > Varnish records it) replays to the
+// same painting as `impasto edit --varnish` on the painting the strokes before it made.
+TEST_F(CanvasEditCommand, AVarnishRecordReplaysAsEditVarnishDoes) {
+  const auto write = [&](const std::string& name, const std::string& varnish) {
+    std::ofstream out(file(name));
+    out << "impasto-strokes 2\ncanvas 80 60 254\nbrush round size=2 stiffness=0.5\n"
+           "load 20 \"Burnt Sienna\" 1\n";
+    for (int i = 0; i < 12; ++i)
+      out << "pen " << 0.01 * i << " " << 0.5 + 0.5 * i << " 3 " << (i < 11 ? 0.8 : 0.0)
+          << " 0 0 0 " << (i < 11 ? 17 : 16) << "\n";
+    out << varnish;
+    return file(name).string();
+  };
+  run("replay " + write("plain.strokes", "") + " --save " + file("plain.impasto").string());
+  run("edit " + file("plain.impasto").string() +
+      " --varnish gloss --varnish-thickness 0.05 --region 40,10,20,30 --save " +
+      file("edited.impasto").string());
+  run("replay " + write("varnished.strokes", "varnish gloss 0.05 40 10 20 30\n") +
+      " --save " + file("replayed.impasto").string());
+  paintcore::Painting edited = paintcore::Painting::load(file("edited.impasto"), 1);
+  paintcore::Painting replayed = paintcore::Painting::load(file("replayed.impasto"), 1);
+  EXPECT_EQ(replayed.state_hash(), edited.state_hash());
+  EXPECT_NE(replayed.state_hash(),
+            paintcore::Painting::load(file("plain.impasto"), 1).state_hash());
+  EXPECT_TRUE(paintcore::cell_surface(replayed.canvas().tile(0), 20 * 64 + 45).varnished());
+  // Undone like a stroke.
+  ASSERT_TRUE(replayed.undo());
+  ASSERT_TRUE(edited.undo());
+  EXPECT_EQ(replayed.state_hash(), edited.state_hash());
+  EXPECT_FALSE(paintcore::cell_surface(replayed.canvas().tile(0), 20 * 64 + 45).varnished());
+
+  // A region off the canvas: the replay names the file and the line.
+  const std::string off = write("off.strokes", "varnish gloss 0.05 100 100 5 5\n");
+  try {
+    run("replay " + off);
+    ADD_FAILURE() << "expected an error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("off.strokes:17:"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("region"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

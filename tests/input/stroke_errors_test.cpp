@@ -74,6 +74,20 @@ INSTANTIATE_TEST_SUITE_P(
         ErrorCase{"UnknownBody", kHeader + "load 5 \"Titanium White\" 1 body=gel\n",
                   "bad.strokes:2: field 'body': unknown paint body 'gel' (known: fluid, soft, "
                   "heavy, paste)"},
+        ErrorCase{"VarnishUnknownFinish", kHeader + "varnish shiny 0.05\n",
+                  "bad.strokes:2: field 'finish': unknown finish 'shiny' (known: gloss, satin, "
+                  "matte)"},
+        ErrorCase{"VarnishTooThick", kHeader + "varnish gloss 2\n",
+                  "bad.strokes:2: field 'thickness': 2 mm is outside (0, 1]"},
+        ErrorCase{"VarnishNoThickness", kHeader + "varnish gloss 0\n",
+                  "bad.strokes:2: field 'thickness': 0 mm is outside (0, 1]"},
+        ErrorCase{"VarnishHalfARegion", kHeader + "varnish gloss 0.05 1 2\n",
+                  "bad.strokes:2: 'varnish' takes a finish and a thickness in mm, then "
+                  "optionally a region x y width height in cells; found 4 field(s)"},
+        ErrorCase{"VarnishEmptyRegion", kHeader + "varnish matte 0.05 1 2 0 4\n",
+                  "bad.strokes:2: field 'width': 0 is outside 1..65536"},
+        ErrorCase{"VarnishNegativeRegion", kHeader + "varnish matte 0.05 -1 2 3 4\n",
+                  "bad.strokes:2: field 'x': -1 is outside 0..65536"},
         ErrorCase{"UnknownMedium", kHeader + "load 5 \"Titanium White\" 1 medium=shiny\n",
                   "bad.strokes:2: field 'medium': unknown finish 'shiny' (known: gloss, satin, "
                   "matte)"},

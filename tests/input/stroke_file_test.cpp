@@ -46,6 +46,8 @@ StrokeFile session() {
       pen(0.2, 1e-300, 123456789.123456789, 1.0f, paintcore::kPenTip | paintcore::kPenBarrel1),
       WipeEvent{},
       DryEvent{0.25},
+      VarnishEvent{paintcore::Finish::matte, 0.05, std::nullopt},
+      VarnishEvent{paintcore::Finish::gloss, 1.0 / 30.0, paintcore::CellRect{3, 4, 13, 24}},
       UndoEvent{},
       RedoEvent{},
       ToolEvent{"eraser"},
@@ -111,6 +113,27 @@ TEST(StrokeFile, WriterRefusesWhatTheReaderWouldReject) {
   bad.events = {pen(0.0, std::numeric_limits<double>::quiet_NaN(), 0.0, 0.5f, 0)};
   EXPECT_THROW(format_strokes(out, bad), std::runtime_error);
   bad.events = {ToolEvent{"two words"}};
+  EXPECT_THROW(format_strokes(out, bad), std::runtime_error);
+}
+
+TEST(StrokeFile, VarnishRecordsReadAsWritten) {
+  std::istringstream text(
+      "impasto-strokes 2\n"
+      "varnish satin 0.03\n"
+      "varnish gloss 0.1 10 20 30 40  # x y width height\n");
+  const StrokeFile read = parse_strokes(text, "memory");
+  ASSERT_EQ(read.events.size(), 2u);
+  EXPECT_EQ(read.events[0], StrokeEvent(VarnishEvent{paintcore::Finish::satin, 0.03, {}}));
+  EXPECT_EQ(read.events[1], StrokeEvent(VarnishEvent{paintcore::Finish::gloss, 0.1,
+                                                     paintcore::CellRect{10, 20, 40, 60}}));
+  std::ostringstream out;
+  format_strokes(out, read);
+  EXPECT_NE(out.str().find("\nvarnish gloss 0.1 10 20 30 40\n"), std::string::npos) << out.str();
+  // A region the reader would refuse is not written.
+  StrokeFile bad;
+  bad.events = {VarnishEvent{paintcore::Finish::gloss, 0.1, paintcore::CellRect{5, 5, 5, 9}}};
+  EXPECT_THROW(format_strokes(out, bad), std::runtime_error);
+  bad.events = {VarnishEvent{paintcore::Finish::gloss, 0.0, std::nullopt}};
   EXPECT_THROW(format_strokes(out, bad), std::runtime_error);
 }
 

@@ -122,6 +122,9 @@ void SessionPlayer::apply(const input::StrokeEvent& event) {
           },
           [&](const input::WipeEvent&) { painting_.wipe_brush(); },
           [&](const input::DryEvent& e) { painting_.dry(e.fraction); },
+          [&](const input::VarnishEvent& e) {
+            painting_.apply_varnish(e.finish, e.thickness_mm, e.region);
+          },
           [&](const input::UndoEvent&) { painting_.undo(); },
           [&](const input::RedoEvent&) { painting_.redo(); },
           // Where the session began and was saved: used by rebuild_session (rebuild.hpp).

@@ -1,7 +1,8 @@
 #pragma once
 // The Image menu: Resize canvas..., Crop..., Varnish... and Export at scale and maps..., each
-// with a small dialog. The menu only asks; the window applies a reframe or a varnish (a new
-// session from the changed painting, paint_window.cpp) and runs the export (canvas_edit.hpp).
+// with a small dialog. The menu only asks; the window applies a reframe (a new session from
+// the changed painting, paint_window.cpp) or a varnish (a session event, recorded as a
+// stroke file's `varnish` record) and runs the export (canvas_edit.hpp).
 #include <array>
 #include <filesystem>
 #include <functional>
@@ -9,6 +10,7 @@
 #include <string>
 
 #include "canvas_edit.hpp"
+#include "impasto/input/stroke_events.hpp"
 #include "impasto/paintcore/canvas.hpp"
 #include "impasto/paintcore/canvas_reframe.hpp"
 #include "impasto/paintcore/paint_surface.hpp"
@@ -16,12 +18,8 @@
 namespace impasto::app::window {
 
 // A coat of varnish (Painting::apply_varnish): its finish and thickness over the region's
-// cells, or the whole painting.
-struct VarnishRequest {
-  paintcore::Finish finish = paintcore::Finish::satin;
-  double thickness_mm = 0.03;
-  std::optional<paintcore::CellRect> region;
-};
+// cells, or the whole painting; the session event the window submits.
+using VarnishRequest = input::VarnishEvent;
 
 // The Varnish dialog's fields as the user left them: `whole`, or the region typed as x, y,
 // width and height in cells. Clipped to the canvas when applied (apply_varnish).

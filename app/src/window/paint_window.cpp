@@ -1087,14 +1087,21 @@ void PaintWindow::apply_canvas_request(const CanvasMenuRequest& request) {
       worker_->with_painting([&](const paintcore::Painting& p) { export_painting(p, exports); });
       state_.notifications.info("Exported at " + std::to_string(request.exports->scale) + "x");
     }
-    if (!request.frame && !request.varnish) return;
+    if (const auto& v = request.varnish) {
+      // A session event like a stroke: recorded (a `varnish` record), replayed, undone.
+      worker_->submit(input::StrokeEvent{*v});
+      char text[96];
+      std::snprintf(text, sizeof text, "Varnished %s, %.3g mm (wet until dried)",
+                    std::string(paintcore::finish_name(v->finish)).c_str(), v->thickness_mm);
+      state_.notifications.info(text);
+    }
+    if (!request.frame) return;
     worker_->wait_idle();
     paintcore::PaintTotals cut;
-    // (The stroke format has no record of either: the session starts again from the changed
-    // painting, its undo history whole.)
+    // (The stroke format has no record of a reframe: the session starts again from the
+    // changed painting, its undo history whole.)
     worker_->edit_painting([&](paintcore::Painting& p) {
-      if (request.frame) cut = p.reframe_canvas(*request.frame);
-      if (const auto& v = request.varnish) p.apply_varnish(v->finish, v->thickness_mm, v->region);
+      cut = p.reframe_canvas(*request.frame);
       p.set_saved_history_bytes(std::numeric_limits<std::size_t>::max());
     });
     end_session();
@@ -1111,13 +1118,8 @@ void PaintWindow::apply_canvas_request(const CanvasMenuRequest& request) {
       std::filesystem::remove(through);
     worker_->replace_painting(std::move(reframed), std::move(recording), true);
     char text[96];
-    if (request.frame)
-      std::snprintf(text, sizeof text, "Canvas %d x %d cells; %.3g mm^3 of paint cut away",
-                    request.frame->width_cells, request.frame->height_cells, cut.volume);
-    else
-      std::snprintf(text, sizeof text, "Varnished %s, %.3g mm (wet until dried)",
-                    std::string(paintcore::finish_name(request.varnish->finish)).c_str(),
-                    request.varnish->thickness_mm);
+    std::snprintf(text, sizeof text, "Canvas %d x %d cells; %.3g mm^3 of paint cut away",
+                  request.frame->width_cells, request.frame->height_cells, cut.volume);
     state_.notifications.info(text);
   } catch (const std::exception& e) {
     state_.notifications.error(std::string("Image: ") + e.what());

@@ -1,9 +1,11 @@
 #pragma once
 // The records of a painting session: pen samples and the events between them, in the order
 // they happened, so that a whole session can be replayed. Files: docs/stroke-format.md.
+#include <impasto/paintcore/paint_surface.hpp>
 #include <impasto/paintcore/pen_sample.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <utility>
 #include <variant>
@@ -91,6 +93,16 @@ struct DryEvent {
   bool operator==(const DryEvent&) const = default;
 };
 
+// Coat the painting with varnish (Painting::apply_varnish): a finish, a thickness in mm
+// (0 < t <= paintcore::kMaxVarnishMm), over the whole painting or the cells of `region`
+// (clipped to the canvas).
+struct VarnishEvent {
+  paintcore::Finish finish = paintcore::Finish::satin;
+  double thickness_mm = 0.0;
+  std::optional<paintcore::CellRect> region;
+  bool operator==(const VarnishEvent&) const = default;
+};
+
 struct UndoEvent {
   bool operator==(const UndoEvent&) const = default;
 };
@@ -117,7 +129,7 @@ struct SavedEvent {
 
 using StrokeEvent =
     std::variant<SampleEvent, CanvasEvent, ToolEvent, BrushEvent, LoadEvent, WipeEvent, DryEvent,
-                 UndoEvent, RedoEvent, OriginEvent, SavedEvent>;
+                 UndoEvent, RedoEvent, OriginEvent, SavedEvent, VarnishEvent>;
 
 // A whole stroke file: its format version and its records in order. Two files are equal
 // when their versions and events are; where they were read from does not count.
