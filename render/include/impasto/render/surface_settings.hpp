@@ -30,9 +30,12 @@ struct SurfaceSettings {
   std::optional<surface::Finish> varnish;
   double binder_index = 1.48;   // n_d of the paint's binder (linseed oil)
   double varnish_index = 1.53;  // n_d of a resin varnish (dammar, MS2A)
-  // RMS slope (radians) of the relief finer than a cell: brush and bristle marks under the
-  // 0.1 mm grid tilt a highlight by a few degrees (docs/surface.md).
-  double subcell_slope_rms = 0.05;
+  // RMS slope (radians, per axis) of the relief finer than a cell: a cell's one normal stands
+  // for a patch whose own normals spread by the curvature of the ridges and furrows it lies on
+  // and by bristle marks under the 0.1 mm grid; on brushed heavy paint about 0.1 (measured in
+  // docs/surface.md, "Glints"). Smaller, a glint lights only the odd cell whose normal meets
+  // the half vector.
+  double subcell_slope_rms = 0.1;
   // Off: the K-M body alone, without the light the surface reflects (the subsurface pass
   // renders the two apart; tests).
   bool reflection = true;
