@@ -123,19 +123,44 @@ void run(const BenchGpuArgs& args) {
         render_gl::fit_canvas(width, height, args.viewport_w, args.viewport_h);
     render_gl::ShadedViewCache cache;
     std::vector<double> full_ms, coarse_ms, pan_ms, cached_ms;
+    // The coarse first frame's parts: its shading, and the rest (magnifying, the copy).
+    std::vector<double> coarse_shade_ms, coarse_rest_ms, coarse_factors;
     const auto timed_draw = [&](std::vector<double>& into,
                                 render_gl::ShadedViewCache::Detail detail) {
       const auto start = Clock::now();
-      cache.update(renderer, view, args.viewport_w, args.viewport_h, detail);
+      const render_gl::CachedDrawStats stats =
+          cache.update(renderer, view, args.viewport_w, args.viewport_h, detail);
       cache.copy_to(target.id(), {0, 0, args.viewport_w, args.viewport_h});
       glFinish();
       into.push_back(ms_since(start));
+      if (stats.coarse) {
+        coarse_shade_ms.push_back(stats.shade_ms);
+        coarse_rest_ms.push_back(into.back() - stats.shade_ms);
+        coarse_factors.push_back(stats.coarse_factor);
+      }
     };
     using Detail = render_gl::ShadedViewCache::Detail;
+    // The window's refinement once the motion stops: a band of rows a frame.
+    std::vector<double> band_ms, refine_frames;
+    cache.update(renderer, view, args.viewport_w, args.viewport_h);  // the window's first frame
     for (int f = 0; f < args.frames; ++f) {
-      view.pixels_per_cell *= f % 2 == 0 ? 1.01 : 1.0 / 1.01;  // a zoom step: every pixel
-      timed_draw(coarse_ms, Detail::kCoarse);              // the window's first frame of a motion
-      timed_draw(full_ms, Detail::kFull);                  // refined when the motion stops
+      view.pixels_per_cell *= 1.01;            // a zoom step: every pixel
+      timed_draw(coarse_ms, Detail::kCoarse);  // the window's first frame of a motion
+      for (int frame = 1;; ++frame) {          // refined when the motion stops
+        const auto start = Clock::now();
+        const render_gl::CachedDrawStats stats =
+            cache.update(renderer, view, args.viewport_w, args.viewport_h, Detail::kRefining);
+        for (const render_gl::PixelRect& r : stats.changed) cache.copy_to(target.id(), r);
+        glFinish();
+        band_ms.push_back(ms_since(start));
+        if (!stats.refining) {
+          refine_frames.push_back(frame);
+          break;
+        }
+      }
+      view.pixels_per_cell /= 1.01;  // the step back
+      timed_draw(coarse_ms, Detail::kCoarse);
+      timed_draw(full_ms, Detail::kFull);                  // refined whole, as a screenshot is
       view.center_x_cells += 10.0 / view.pixels_per_cell;  // a pan by 10 whole pixels
       timed_draw(pan_ms, Detail::kFull);
       timed_draw(cached_ms, Detail::kFull);  // nothing new
@@ -145,12 +170,22 @@ void run(const BenchGpuArgs& args) {
                       {"pixels_per_cell", view.pixels_per_cell},
                       {"zoom_ms", median(full_ms)},
                       {"zoom_coarse_ms", median(coarse_ms)},
+                      {"zoom_coarse_shading_ms", median(coarse_shade_ms)},
+                      {"zoom_coarse_magnify_copy_ms", median(coarse_rest_ms)},
+                      {"zoom_coarse_factor", median(coarse_factors)},
+                      {"refine_band_ms", median(band_ms)},
+                      {"refine_band_max_ms", *std::max_element(band_ms.begin(), band_ms.end())},
+                      {"refine_frames", median(refine_frames)},
                       {"pan_ms", median(pan_ms)},
                       {"unchanged_ms", median(cached_ms)}};
     text << "window view " << args.viewport_w << "x" << args.viewport_h << " of the " << width
          << "x" << height << " canvas, fitted (" << view.pixels_per_cell
          << " px/cell): after a zoom or light change median " << median(full_ms)
-         << " ms (first frame while moving, coarse: " << median(coarse_ms)
+         << " ms (first frame while moving, coarse: " << median(coarse_ms) << " ms = shading "
+         << median(coarse_shade_ms) << " at 1/" << median(coarse_factors)
+         << " resolution + magnifying and copy " << median(coarse_rest_ms)
+         << "; refined in bands over " << median(refine_frames) << " frames of median "
+         << median(band_ms) << " ms, at most " << *std::max_element(band_ms.begin(), band_ms.end())
          << " ms), after a 10-px pan " << median(pan_ms) << " ms, unchanged " << median(cached_ms)
          << " ms\n";
   }

@@ -1,7 +1,9 @@
 // impasto bench window: what a user waits for in the painting window — the time from each
 // mouse event's own timestamp to the buffer swap that shows it — measured with real X events
 // (xdotool) sent to `impasto paint` on the current DISPLAY (Xvfb with llvmpipe, or a desktop).
-// The window keeps the figures (InputLatency) and prints them when SIGTERM closes it.
+// The window keeps the figures (InputLatency) and prints them when SIGTERM closes it. With
+// --zoom, wheel clicks instead: from each click's own time to the swap of the first frame
+// showing its zoom step.
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
@@ -43,6 +45,8 @@ struct BenchWindowArgs {
   int circles = 3;
   int moves = 120;  // mouse moves a circle, 8 ms apart (a 125 Hz mouse)
   double radius_px = 150.0;
+  int zoom_clicks = 0;  // > 0: wheel clicks instead of circles, in and out by turns
+  double zoom_interval_s = 2.0;
   bool json = false;
 };
 
@@ -50,6 +54,7 @@ struct Latency {
   int width = 0, height = 0;
   double median_ms = 0, p95_ms = 0;
   int samples = 0;
+  int coarse_frames = 0, coarse_factor = 0;  // under --zoom
 };
 
 std::string run_output(const std::string& command) {
@@ -104,7 +109,22 @@ Latency measure(const BenchWindowArgs& args, int width, int height,
     std::this_thread::sleep_for(std::chrono::seconds(3));  // the replay applied, panels laid out
     // Circles about the middle of the canvas's part of the window (left of the panels).
     const double cx = (args.window_w - 360) / 2.0, cy = args.window_h / 2.0;
-    for (int c = 0; c < args.circles; ++c) {
+    if (args.zoom_clicks > 0) {
+      // Wheel clicks at the middle of the canvas (X buttons 4 and 5: in, out), each after
+      // the view has been still for the interval.
+      std::ostringstream cmd;
+      cmd << "xdotool mousemove --window " << window << " --sync " << std::lround(cx) << " "
+          << std::lround(cy);
+      for (int k = 0; k < args.zoom_clicks; ++k) {
+        cmd << " sleep " << args.zoom_interval_s << " click " << (k % 2 == 0 ? 4 : 5);
+      }
+      cmd << " sleep " << args.zoom_interval_s << " > /dev/null";
+      if (std::system(cmd.str().c_str()) != 0) {
+        throw std::runtime_error("xdotool could not click in window " + window +
+                                 " (did it close?)");
+      }
+    }
+    for (int c = 0; c < (args.zoom_clicks > 0 ? 0 : args.circles); ++c) {
       std::ostringstream cmd;
       cmd << "xdotool mousemove --window " << window << " --sync "
           << std::lround(cx + args.radius_px) << " " << std::lround(cy) << " mousedown 1";
@@ -133,8 +153,23 @@ Latency measure(const BenchWindowArgs& args, int width, int height,
   // "... median M ms, 95th percentile P ms over N samples; ..." (no std::regex: GCC 12's
   // regex trips -Wmaybe-uninitialized in the sanitizer build).
   double median = 0, p95 = 0;
-  int samples = 0;
-  const std::size_t at = printed.find("median ");
+  int samples = 0, coarse_frames = 0, coarse_factor = 0;
+  if (args.zoom_clicks > 0) {
+    // "zoom latency (...): median M ms, 95th percentile P ms over N clicks; C coarse frames,
+    // median factor F"
+    const std::size_t line = printed.find("zoom latency");
+    const std::size_t at = printed.find("median ", line);
+    if (line == std::string::npos || at == std::string::npos ||
+        std::sscanf(printed.c_str() + at,
+                    "median %lf ms, 95th percentile %lf ms over %d clicks; %d coarse frames, "
+                    "median factor %d",
+                    &median, &p95, &samples, &coarse_frames, &coarse_factor) != 5) {
+      throw std::runtime_error("impasto paint printed no zoom latency (exit status " +
+                               std::to_string(status) + "): " + printed);
+    }
+    return {width, height, median, p95, samples, coarse_frames, coarse_factor};
+  }
+  const std::size_t at = printed.find("median ", printed.find("input latency"));
   if (at == std::string::npos ||
       std::sscanf(printed.c_str() + at, "median %lf ms, 95th percentile %lf ms over %d samples",
                   &median, &p95, &samples) != 3) {
@@ -170,14 +205,30 @@ void run(const BenchWindowArgs& args) {
     j["window"] = {args.window_w, args.window_h};
     j["brush_cells"] = args.brush_cells;
     j["load_mm3"] = args.load_mm3;
+    if (args.zoom_clicks > 0) j["zoom_interval_s"] = args.zoom_interval_s;
     for (const Latency& r : results) {
       j["canvases"].push_back({{"width", r.width},
                                {"height", r.height},
                                {"median_ms", r.median_ms},
                                {"p95_ms", r.p95_ms},
                                {"samples", r.samples}});
+      if (args.zoom_clicks > 0) {
+        j["canvases"].back()["coarse_frames"] = r.coarse_frames;
+        j["canvases"].back()["coarse_factor"] = r.coarse_factor;
+      }
     }
     std::cout << j.dump(2) << "\n";
+    return;
+  }
+  if (args.zoom_clicks > 0) {
+    std::cout << "zoom latency, wheel click to the swap showing it (" << args.window_w << "x"
+              << args.window_h << " window, " << args.zoom_clicks << " clicks "
+              << args.zoom_interval_s << " s apart):\n";
+    for (const Latency& r : results) {
+      std::cout << "  " << r.width << "x" << r.height << " canvas: median " << r.median_ms
+                << " ms, 95th percentile " << r.p95_ms << " ms over " << r.samples << " clicks; "
+                << r.coarse_frames << " coarse frames, median factor " << r.coarse_factor << "\n";
+    }
     return;
   }
   std::cout << "input latency, mouse event to the swap showing it (" << args.window_w << "x"
@@ -205,6 +256,13 @@ void setup(CLI::App& root) {
       ->check(CLI::Range(0.0, 10000.0));
   cmd->add_option("--circles", args->circles, "Circles drawn")->check(CLI::Range(1, 100));
   cmd->add_option("--moves", args->moves, "Mouse moves a circle")->check(CLI::Range(8, 10000));
+  cmd->add_option("--zoom", args->zoom_clicks,
+                  "Wheel clicks instead of circles (in and out by turns): the latency of a "
+                  "zoom step's first frame")
+      ->check(CLI::Range(1, 1000));
+  cmd->add_option("--zoom-interval", args->zoom_interval_s, "Seconds between wheel clicks")
+      ->check(CLI::Range(0.0, 60.0))
+      ->capture_default_str();
   add_json_flag(*cmd, args->json, "the latencies of each canvas");
   cmd->callback([args] { run(*args); });
 }

@@ -323,5 +323,18 @@ TEST(ServerTime, CallbacksTakeTheTimesOfTheirOwnEventsInOrder) {
   EXPECT_EQ(matcher.size(), 0u);
 }
 
+TEST(ServerTime, AWheelClickTakesItsOwnTime) {
+  ServerTimeMatcher matcher;
+  matcher.add_move(10, 10, 1.000);
+  matcher.add_wheel(1.001);
+  matcher.add_button(kLeftButton, true, 1.002);
+  matcher.add_wheel(1.003);
+  EXPECT_EQ(matcher.move(10, 10), 1.000);
+  EXPECT_EQ(matcher.wheel(), 1.001);
+  EXPECT_EQ(matcher.wheel(), 1.003);  // past the press GLFW did not deliver
+  EXPECT_FALSE(matcher.wheel());
+  EXPECT_FALSE(matcher.button(kLeftButton, true));
+}
+
 }  // namespace
 }  // namespace impasto::app::window

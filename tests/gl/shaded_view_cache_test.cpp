@@ -1,6 +1,7 @@
 // The window's cached view: after strokes, a frame that re-shades only the changed tiles'
 // pixels must show exactly what re-shading the whole view shows, for any pan, zoom and
-// rotation; a frame with nothing new shades nothing; a change of light re-shades everything.
+// rotation; a frame with nothing new shades nothing; a change of light re-shades everything;
+// coarse frames while the view moves are refined to the same picture.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -175,7 +176,116 @@ TEST(CachedViewPan, WholePixelPansShadeOnlyTheUncoveredStrips) {
   EXPECT_TRUE(cache.draw(renderer, view, w, h, window.id()).full);
   EXPECT_EQ(window.read_rgba8(), full_redraw(renderer, view, w, h));
 }
-// in, turned
+// The coarse factor: the smallest whose predicted shading fits the budget.
+TEST(CoarseFactor, TheSmallestThatFitsTheBudget) {
+  using Cache = ShadedViewCache;
+  const int w = 1400, h = 900;
+  EXPECT_EQ(Cache::coarse_factor_for(0.0, w, h, 50.0), Cache::kMinCoarseFactor);  // unknown
+  EXPECT_EQ(Cache::coarse_factor_for(1e-9, w, h, 50.0), Cache::kMinCoarseFactor);
+  EXPECT_EQ(Cache::coarse_factor_for(1.0, w, h, 50.0), Cache::kMaxCoarseFactor);  // cannot fit
+  // 1 µs a pixel (llvmpipe's order): 1/4 is 79 000 px, 79 ms; 1/6 is 35 100 px, 35 ms.
+  const int factor = Cache::coarse_factor_for(1e-3, w, h, 50.0);
+  EXPECT_GT(factor, Cache::kMinCoarseFactor);
+  const auto cost = [&](int f) { return 1e-3 * ((w + f - 1) / f) * ((h + f - 1) / f); };
+  EXPECT_LE(cost(factor), 50.0);
+  EXPECT_GT(cost(factor - 1), 50.0);
+  // A dearer pixel or a smaller budget never gives a finer factor.
+  EXPECT_GE(Cache::coarse_factor_for(2e-3, w, h, 50.0), factor);
+  EXPECT_GE(Cache::coarse_factor_for(1e-3, w, h, 25.0), factor);
+}
+
+// Coarse frames while the view moves, at whatever factor the budget asks for; the refined
+// frame after them is exactly a whole redraw.
+TEST(CachedViewCoarse, RefinedAfterCoarseFramesMatchesAWholeRedraw) {
+  auto context = create_headless_context();
+  const int w = 240, h = 180;
+  paintcore::Painting painting = loaded_painting({{"Pyrrole Red", 1.0}, {"Titanium White", 1.0}});
+  stroke(painting, 14.0, 4.0, 30.0);
+  const auto uploaded = uploaded_renderer(painting, four_nodes());
+  CanvasRenderer& renderer = *uploaded;
+  Framebuffer window(w, h, TexelFormat::kRGBA8);
+  using Detail = ShadedViewCache::Detail;
+  for (const double budget_ms : {1e9, 1e-9}) {  // the finest factor, then the coarsest
+    ShadedViewCache cache;
+    cache.set_coarse_budget_ms(budget_ms);
+    CanvasView view{120.0, 90.0, 1.0, 0.0};
+    const CachedDrawStats first = cache.draw(renderer, view, w, h, window.id());
+    EXPECT_TRUE(first.full);
+    EXPECT_FALSE(first.coarse);
+    EXPECT_GT(first.shade_ms, 0.0);  // timed: the next coarse factor is chosen from it
+    for (int step = 0; step < 3; ++step) {
+      view.pixels_per_cell *= 1.15;  // a zoom step
+      view.rotation_rad += 0.1;
+      const CachedDrawStats moving = cache.update(renderer, view, w, h, Detail::kCoarse);
+      EXPECT_TRUE(moving.coarse);
+      EXPECT_EQ(moving.coarse_factor, budget_ms > 1.0 ? ShadedViewCache::kMinCoarseFactor
+                                                      : ShadedViewCache::kMaxCoarseFactor);
+      const int f = moving.coarse_factor;
+      EXPECT_EQ(moving.pixels_shaded, static_cast<long long>((w + f - 1) / f) * ((h + f - 1) / f));
+    }
+    const CachedDrawStats refined = cache.draw(renderer, view, w, h, window.id());
+    EXPECT_TRUE(refined.full);
+    EXPECT_FALSE(refined.coarse);
+    EXPECT_FALSE(refined.refining);
+    EXPECT_EQ(refined.pixels_shaded, static_cast<long long>(w) * h);
+    EXPECT_EQ(window.read_rgba8(), full_redraw(renderer, view, w, h)) << "budget " << budget_ms;
+  }
+}
+
+// The window's refinement: a block a frame in reading order from the top, each presented as
+// it is refined; once done, exactly a whole redraw. A pan by whole pixels meanwhile starts it
+// again.
+TEST(CachedViewCoarse, RefinedInBlocksMatchesAWholeRedraw) {
+  auto context = create_headless_context();
+  const int w = 240, h = 180;
+  paintcore::Painting painting = loaded_painting({{"Pyrrole Red", 1.0}, {"Titanium White", 1.0}});
+  stroke(painting, 14.0, 4.0, 30.0);
+  const auto uploaded = uploaded_renderer(painting, four_nodes());
+  CanvasRenderer& renderer = *uploaded;
+  Framebuffer window(w, h, TexelFormat::kRGBA8);
+  using Detail = ShadedViewCache::Detail;
+  ShadedViewCache cache;
+  cache.set_refine_band_ms(1e-9);  // one block a frame
+  CanvasView view{120.0, 90.0, 1.0, 0.0};
+  cache.draw(renderer, view, w, h, window.id());
+  view.pixels_per_cell = 1.3;
+  view.rotation_rad = 0.2;
+  const CachedDrawStats coarse = cache.update(renderer, view, w, h, Detail::kCoarse);
+  cache.copy_to(window.id(), {0, 0, w, h});
+  EXPECT_TRUE(coarse.refining);
+  constexpr int kBlock = ShadedViewCache::kRefineBlock;
+  const int blocks = (w + kBlock - 1) / kBlock * ((h + kBlock - 1) / kBlock);
+  // Half way, a pan by whole pixels: the refined blocks moved, so it starts again.
+  for (int frame = 0; frame < blocks / 2; ++frame)
+    EXPECT_TRUE(cache.update(renderer, view, w, h, Detail::kRefining).refining);
+  const auto from = view.window_to_cell(100.0, 100.0, w, h);
+  const auto to = view.window_to_cell(100.0, 95.0, w, h);  // 5 px up
+  view.center_x_cells -= to[0] - from[0];
+  view.center_y_cells -= to[1] - from[1];
+  const CachedDrawStats pan = cache.update(renderer, view, w, h, Detail::kCoarse);
+  cache.copy_to(window.id(), {0, 0, w, h});
+  EXPECT_TRUE(pan.shifted);
+  EXPECT_TRUE(pan.refining);
+  int frames = 0;
+  long long shaded = 0;
+  int top = h;  // the top of the row of blocks being refined
+  for (bool refining = true; refining && frames < 1000; ++frames) {
+    const CachedDrawStats block = cache.update(renderer, view, w, h, Detail::kRefining);
+    EXPECT_FALSE(block.full);
+    ASSERT_EQ(block.changed.size(), 1u);
+    const PixelRect& r = block.changed[0];
+    EXPECT_LE(r.x1 - r.x0, kBlock);
+    EXPECT_LE(r.y1 - r.y0, kBlock);
+    EXPECT_LE(r.y1, top);  // from the top down
+    top = r.y1;
+    shaded += block.pixels_shaded;
+    cache.copy_to(window.id(), r);
+    refining = block.refining;
+  }
+  EXPECT_EQ(frames, blocks);
+  EXPECT_EQ(shaded, static_cast<long long>(w) * h);  // every pixel once
+  EXPECT_EQ(window.read_rgba8(), full_redraw(renderer, view, w, h));
+}
 
 }  // namespace
 }  // namespace impasto::render_gl

@@ -214,6 +214,10 @@ class PaintWindow {
   // Every pen sample, mouse or tablet, goes to the simulation through this feed.
   PenFeed canvas_feed_{[this](input::StrokeEvent event) { submit_pen_event(std::move(event)); }};
   InputLatency latency_;                 // pen sample's own time -> the swap that shows it
+  InputLatency zoom_latency_;            // a wheel click's own time -> the swap that shows it
+  std::uint64_t wheel_clicks_ = 0;       // wheel clicks delivered, numbering zoom_latency_'s
+  std::optional<std::uint64_t> zoomed_;  // this frame zoomed, after that many clicks
+  std::vector<int> coarse_factors_;      // of each coarse frame, for the report
   std::uint64_t applied_at_upload_ = 0;  // simulation jobs applied before this frame's upload
   PaletteBoardPanel board_panel_;
   PigmentEditor pigment_editor_;
@@ -316,6 +320,11 @@ void PaintWindow::create_window() {
     const bool pressed = action == GLFW_PRESS;
     self->pointer_events_.button(button, pressed,
                                  self->server_times_->button_time(button, pressed));
+  });
+  glfwSetScrollCallback(window_, [](GLFWwindow* window, double, double) {
+    auto* self = static_cast<PaintWindow*>(glfwGetWindowUserPointer(window));
+    self->zoom_latency_.submitted(++self->wheel_clicks_,
+                                  self->server_times_->wheel_time() - self->session_start_s_);
   });
   double cursor_x = 0, cursor_y = 0;
   glfwGetCursorPos(window_, &cursor_x, &cursor_y);
@@ -724,6 +733,7 @@ void PaintWindow::handle_canvas_input() {
     const auto after = state_.view.window_to_cell(x, y, window_w_, window_h_);
     state_.view.center_x_cells += before[0] - after[0];
     state_.view.center_y_cells += before[1] - after[1];
+    zoomed_ = wheel_clicks_;
   }
 }
 
@@ -1050,7 +1060,7 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   fb_view.pixels_per_cell *= fb_scale;
   renderer_->set_shading(state_.settings);
   // While the view or the light moves, frames that re-shade everything do it coarsely; the
-  // view is refined once the motion has stopped for kRefineAfter_s.
+  // view is refined, a few blocks a frame, once the motion has stopped for kRefineAfter_s.
   const double now_s = glfwGetTime();
   const std::array<double, 6> motion = {fb_view.center_x_cells,
                                         fb_view.center_y_cells,
@@ -1060,15 +1070,19 @@ void PaintWindow::draw_frame(bool take_screenshot) {
                                         state_.settings.light_elevation_deg};
   if (motion != last_motion_) last_motion_s_ = now_s;
   last_motion_ = motion;
-  const auto detail = !take_screenshot && now_s - last_motion_s_ < kRefineAfter_s
-                          ? render_gl::ShadedViewCache::Detail::kCoarse
-                          : render_gl::ShadedViewCache::Detail::kFull;
+  using Detail = render_gl::ShadedViewCache::Detail;
+  const Detail detail = take_screenshot                           ? Detail::kFull
+                        : now_s - last_motion_s_ < kRefineAfter_s ? Detail::kCoarse
+                                                                  : Detail::kRefining;
   const render_gl::CachedDrawStats canvas =
       view_cache_.update(*renderer_, fb_view, fb_w, fb_h, detail);
   state_.pixels_shaded += canvas.pixels_shaded;
   frame_changed_ = !canvas.changed.empty();
   present_frame(canvas.changed, fb_w, fb_h, fb_scale, take_screenshot);
   latency_.shown(applied_at_upload_, glfwGetTime() - session_start_s_);
+  if (zoomed_)
+    zoom_latency_.shown(*std::exchange(zoomed_, std::nullopt), glfwGetTime() - session_start_s_);
+  if (canvas.coarse) coarse_factors_.push_back(canvas.coarse_factor);
   state_.input_latency_ms = latency_.recent_median_ms().value_or(-1.0);
   state_.frame_ms = ms_since(start);
   handle_recovery(recovery);
@@ -1190,6 +1204,15 @@ void PaintWindow::run() {
 
 // The session's input latency, for measuring it (docs/window.md).
 void PaintWindow::report_latency() const {
+  if (zoom_latency_.shown_count() > 0) {
+    std::vector<int> factors = coarse_factors_;
+    std::sort(factors.begin(), factors.end());
+    std::cout << "zoom latency (wheel click to the swap showing it): median "
+              << *zoom_latency_.percentile_ms(0.5) << " ms, 95th percentile "
+              << *zoom_latency_.percentile_ms(0.95) << " ms over " << zoom_latency_.shown_count()
+              << " clicks; " << factors.size() << " coarse frames, median factor "
+              << (factors.empty() ? 0 : factors[factors.size() / 2]) << "\n";
+  }
   if (latency_.shown_count() == 0) return;
   std::cout << "input latency (pen event to the swap showing it): median "
             << *latency_.percentile_ms(0.5) << " ms, 95th percentile "

@@ -47,6 +47,10 @@ std::optional<double> ServerTimeMatcher::button(int button, bool pressed) {
   return take([&](const Stamp& s) { return s.button == button && s.pressed == pressed; });
 }
 
+std::optional<double> ServerTimeMatcher::wheel() {
+  return take([](const Stamp& s) { return s.button == kWheel; });
+}
+
 PointerServerTimes::PointerServerTimes(GLFWwindow* window) : window_(window) {}
 
 #if IMPASTO_HAVE_X11
@@ -84,6 +88,7 @@ Bool record_event(Display*, XEvent* event, XPointer arg) {
     const int button = glfw_button_of(event->xbutton.button);
     const auto t = on_glfw_clock(event->xbutton.time);
     if (button >= 0 && t) scan.matcher->add_button(button, event->type == ButtonPress, *t);
+    if (button < 0 && event->type == ButtonPress && t) scan.matcher->add_wheel(*t);
   }
   return False;
 }
@@ -114,6 +119,12 @@ double PointerServerTimes::move_time(double x, double y) {
 
 double PointerServerTimes::button_time(int glfw_button, bool pressed) {
   const auto t = matcher_.button(glfw_button, pressed);
+  ++(t ? matched_ : unmatched_);
+  return t ? *t : glfwGetTime();
+}
+
+double PointerServerTimes::wheel_time() {
+  const auto t = matcher_.wheel();
   ++(t ? matched_ : unmatched_);
   return t ? *t : glfwGetTime();
 }

@@ -29,15 +29,19 @@ class ServerTimeMatcher {
   void add_button(int button, bool pressed, double time_s) {
     stamps_.push_back({button, pressed, 0, 0, time_s});
   }
+  // A wheel click (X11 buttons 4-7, which GLFW reports as scrolling).
+  void add_wheel(double time_s) { stamps_.push_back({kWheel, true, 0, 0, time_s}); }
   // The time of the first scanned event like this one, dropping it and the events before it
   // (which GLFW did not deliver); none if there is no such event (it came after the scan).
   std::optional<double> move(double x, double y);
   std::optional<double> button(int button, bool pressed);
+  std::optional<double> wheel();
   std::size_t size() const { return stamps_.size(); }
 
  private:
+  static constexpr int kWheel = -2;
   struct Stamp {
-    int button;  // -1: a move
+    int button;  // -1: a move, kWheel: a wheel click
     bool pressed;
     int x, y;
     double time_s;
@@ -56,6 +60,7 @@ class PointerServerTimes {
   // In a callback: the event's server time, or the time now when it has none.
   double move_time(double x, double y);
   double button_time(int glfw_button, bool pressed);
+  double wheel_time();
   // Events that had a server time, and events that did not, since construction.
   std::uint64_t matched() const { return matched_; }
   std::uint64_t unmatched() const { return unmatched_; }

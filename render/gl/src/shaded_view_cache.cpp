@@ -1,6 +1,7 @@
 #include "impasto/render_gl/shaded_view_cache.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -105,10 +106,43 @@ void ShadedViewCache::copy_to(GLuint target, const PixelRect& rect) const {
   glBindFramebuffer(GL_FRAMEBUFFER, target);
 }
 
+int ShadedViewCache::coarse_factor_for(double ms_per_pixel, int viewport_w, int viewport_h,
+                                       double budget_ms) {
+  if (!(ms_per_pixel > 0.0)) return kMinCoarseFactor;
+  for (int factor = kMinCoarseFactor; factor < kMaxCoarseFactor; ++factor) {
+    const double pixels = static_cast<double>((viewport_w + factor - 1) / factor) *
+                          ((viewport_h + factor - 1) / factor);
+    if (pixels * ms_per_pixel <= budget_ms) return factor;
+  }
+  return kMaxCoarseFactor;
+}
+
+int ShadedViewCache::next_coarse_factor(int viewport_w, int viewport_h) const {
+  const double ms_per_pixel =
+      coarse_ms_per_pixel_ > 0.0 ? coarse_ms_per_pixel_ : fine_ms_per_pixel_ * kCoarsePixelCost;
+  return coarse_factor_for(ms_per_pixel, viewport_w, viewport_h, coarse_budget_ms_);
+}
+
+namespace {
+
+// The time GL takes for `draw`: whatever was queued before is finished first.
+template <typename Draw>
+double timed_gl_ms(Draw&& draw) {
+  glFinish();
+  const auto start = std::chrono::steady_clock::now();
+  draw();
+  glFinish();
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+      .count();
+}
+
+}  // namespace
+
 long long ShadedViewCache::shade_coarse(CanvasRenderer& renderer, const CanvasView& view,
-                                        int viewport_w, int viewport_h) {
-  const int w = std::max(1, (viewport_w + kCoarseFactor - 1) / kCoarseFactor);
-  const int h = std::max(1, (viewport_h + kCoarseFactor - 1) / kCoarseFactor);
+                                        int viewport_w, int viewport_h, int factor,
+                                        double& shade_ms) {
+  const int w = std::max(1, (viewport_w + factor - 1) / factor);
+  const int h = std::max(1, (viewport_h + factor - 1) / factor);
   if (!coarse_image_ || coarse_image_->width() != w || coarse_image_->height() != h) {
     coarse_image_ = std::make_unique<Framebuffer>(w, h, TexelFormat::kRGBA8);
   }
@@ -120,13 +154,17 @@ long long ShadedViewCache::shade_coarse(CanvasRenderer& renderer, const CanvasVi
   GpuViewOptions sharp = options;
   sharp.smooth_zoom = false;
   renderer.set_view_options(sharp);
-  coarse_image_->bind();
-  renderer.draw(small, w, h);
+  const long long pixels = static_cast<long long>(w) * h;
+  shade_ms = timed_gl_ms([&] {
+    coarse_image_->bind();
+    renderer.draw(small, w, h);
+  });
+  coarse_ms_per_pixel_ = shade_ms / static_cast<double>(pixels);
   renderer.set_view_options(options);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, coarse_image_->id());
   glBindFramebuffer(GL_DRAW_FRAMEBUFFER, image_->id());
   glBlitFramebuffer(0, 0, w, h, 0, 0, viewport_w, viewport_h, GL_COLOR_BUFFER_BIT, GL_LINEAR);
-  return static_cast<long long>(w) * h;
+  return pixels;
 }
 
 CachedDrawStats ShadedViewCache::update(CanvasRenderer& renderer, const CanvasView& view,
@@ -143,6 +181,7 @@ CachedDrawStats ShadedViewCache::update(CanvasRenderer& renderer, const CanvasVi
 
   // A pan: where the view's centre moved by whole pixels, move the image instead.
   std::vector<PixelRect> regions;
+  bool refining_blocks = false;
   if (!all_invalid_ && (view.center_x_cells != view_.center_x_cells ||
                         view.center_y_cells != view_.center_y_cells)) {
     const auto before = view_.cell_to_window(0.0, 0.0, viewport_w, viewport_h);
@@ -160,10 +199,14 @@ CachedDrawStats ShadedViewCache::update(CanvasRenderer& renderer, const CanvasVi
   }
   view_ = view;
 
-  if (coarse_ && detail == Detail::kFull) all_invalid_ = true;  // refine
+  if (coarse_ && detail == Detail::kFull) all_invalid_ = true;  // refine at once
+  if (coarse_ && stats.shifted) refined_blocks_ = 0;  // the refined blocks moved: start again
   if (all_invalid_ && detail == Detail::kCoarse) {
-    stats.pixels_shaded = shade_coarse(renderer, view, viewport_w, viewport_h);
-    stats.full = stats.coarse = coarse_ = true;
+    stats.coarse_factor = next_coarse_factor(viewport_w, viewport_h);
+    stats.pixels_shaded =
+        shade_coarse(renderer, view, viewport_w, viewport_h, stats.coarse_factor, stats.shade_ms);
+    stats.full = stats.coarse = stats.refining = coarse_ = true;
+    refined_blocks_ = 0;
     stats.changed.assign(1, {0, 0, viewport_w, viewport_h});
     all_invalid_ = false;
     dirty_tiles_.clear();
@@ -195,6 +238,27 @@ CachedDrawStats ShadedViewCache::update(CanvasRenderer& renderer, const CanvasVi
       const PixelRect rect = cells_screen_rect(cells, view, viewport_w, viewport_h, reach);
       if (!rect.empty()) regions.push_back(rect);
     }
+    if (coarse_ && detail == Detail::kRefining) {
+      // The next blocks in reading order, as many as the refine budget allows, within one
+      // row of blocks: one scissored pass.
+      const double ms_per_pixel =
+          fine_ms_per_pixel_ > 0.0 ? fine_ms_per_pixel_ : coarse_ms_per_pixel_ / kCoarsePixelCost;
+      const int blocks_x = (viewport_w + kRefineBlock - 1) / kRefineBlock;
+      const int blocks_y = (viewport_h + kRefineBlock - 1) / kRefineBlock;
+      const int column = refined_blocks_ % blocks_x;
+      const int row = blocks_y - 1 - refined_blocks_ / blocks_x;  // GL rows count up
+      const int fit =
+          ms_per_pixel > 0.0
+              ? static_cast<int>(refine_band_ms_ / (ms_per_pixel * kRefineBlock * kRefineBlock))
+              : blocks_x;
+      const int blocks = std::clamp(fit, 1, blocks_x - column);
+      regions.push_back({column * kRefineBlock, row * kRefineBlock,
+                         std::min(viewport_w, (column + blocks) * kRefineBlock),
+                         std::min(viewport_h, (row + 1) * kRefineBlock)});
+      refined_blocks_ += blocks;
+      if (refined_blocks_ >= blocks_x * blocks_y) refined_blocks_ = -1;  // done
+      refining_blocks = true;
+    }
     // Many small passes cost more than one pass over their bounding box, and overlapping
     // ones shade pixels twice: one pass over the box when it is no larger than their sum.
     constexpr std::size_t kMaxPasses = 32;
@@ -213,7 +277,7 @@ CachedDrawStats ShadedViewCache::update(CanvasRenderer& renderer, const CanvasVi
   dirty_tiles_.clear();
   dirty_cells_.clear();
 
-  if (!regions.empty()) {
+  const auto shade_regions = [&] {
     image_->bind();
     glEnable(GL_SCISSOR_TEST);
     for (const PixelRect& r : regions) {
@@ -222,8 +286,18 @@ CachedDrawStats ShadedViewCache::update(CanvasRenderer& renderer, const CanvasVi
       stats.pixels_shaded += r.area();
     }
     glDisable(GL_SCISSOR_TEST);
-    stats.regions = static_cast<int>(regions.size());
+  };
+  if ((stats.full || refining_blocks) && !regions.front().empty()) {
+    // Timed: the cost of a pixel predicts the coarse factor of the next motion's first frame
+    // and the size of the next band of a refinement.
+    stats.shade_ms = timed_gl_ms(shade_regions);
+    fine_ms_per_pixel_ = stats.shade_ms / static_cast<double>(stats.pixels_shaded);
+  } else if (!regions.empty()) {
+    shade_regions();
   }
+  stats.regions = static_cast<int>(regions.size());
+  if (coarse_ && refined_blocks_ < 0) coarse_ = false;
+  stats.refining = coarse_;
   if (stats.shifted) {
     stats.changed.assign(1, {0, 0, viewport_w, viewport_h});
   } else {

@@ -5,7 +5,8 @@
 // and copies the rest from the previous frame. A pan by whole pixels moves the cached image
 // and shades only the strips it uncovers. What changes every pixel (zoom, rotation, a pan
 // by a fraction of a pixel, the viewport size, the light, the look) re-shades the viewport
-// once. The shading runs at
+// once: while the view moves, coarsely, refined a few blocks a frame once it stops (Detail).
+// The shading runs at
 // screen resolution, so a zoomed-out view of a large canvas costs its pixels, not its cells.
 #include <array>
 #include <memory>
@@ -32,6 +33,9 @@ struct CachedDrawStats {
   bool full = false;            // the whole viewport was re-shaded
   bool shifted = false;         // the cached image was moved (a pan by whole pixels)
   bool coarse = false;          // the whole viewport was shaded coarsely (Detail::kCoarse)
+  int coarse_factor = 0;        // its pixels' size in viewport pixels each way (0: not coarse)
+  double shade_ms = 0.0;        // a whole-viewport pass or a band: its shading's GL time
+  bool refining = false;        // the image still has coarse parts, which kRefining refines
   // The viewport pixels whose cached image changed: the shaded regions, or the whole
   // viewport after a shift. A window that keeps its last frame re-presents only these.
   std::vector<PixelRect> changed;
@@ -49,11 +53,42 @@ PixelRect cells_screen_rect(const paintcore::CellRect& cells, const CanvasView& 
 class ShadedViewCache {
  public:
   // How update() re-shades the whole viewport when it must (a zoom, rotation, light): kFull
-  // at every pixel, or kCoarse at a quarter of the resolution each way (a sixteenth of the
-  // pixels) magnified, for the first frames of a motion. The next kFull update() after a
-  // coarse one re-shades the viewport at every pixel.
-  enum class Detail { kFull, kCoarse };
-  static constexpr int kCoarseFactor = 4;
+  // at every pixel, or kCoarse at 1/factor of the resolution each way, magnified, for the
+  // first frames of a motion. The factor is the smallest from kMinCoarseFactor up whose
+  // shading the measured cost of the last whole-viewport pass predicts within the coarse
+  // budget, so a slow machine (llvmpipe, a loaded CPU) still shows a motion's first frame in
+  // time. The next kFull update() after a coarse one re-shades the viewport at every pixel.
+  //
+  // kRefining refines a coarse image a few kRefineBlock-square blocks a call, in reading
+  // order from the top, as many as the measured cost of a pixel fits in kRefineBandMs
+  // (set_refine_band_ms), so the window answers input between them (a wheel click waits for
+  // one call, not the whole re-shade); the image is the same as kFull's once `refining` is
+  // false. Otherwise it is kFull. Blocks, not thin bands of rows: llvmpipe shades in 64-pixel
+  // square tiles, and a band a few rows high cost it 2-5 times as much a pixel.
+  enum class Detail { kFull, kCoarse, kRefining };
+  static constexpr double kRefineBandMs = 25.0;
+  static constexpr int kRefineBlock = 64;
+  static constexpr int kMinCoarseFactor = 4;
+  static constexpr int kMaxCoarseFactor = 16;
+  // The coarse pass's shading budget, of the 100 ms a motion's first frame may take: in a
+  // 1400×900 window on llvmpipe the rest costs 35-50 ms (magnifying 10, the panels and the
+  // present 15, waiting for the refinement's pass under way up to 25), and the prediction
+  // misses by a third either way on a loaded machine.
+  static constexpr double kDefaultCoarseBudgetMs = 40.0;
+  // Zoomed out, a coarse pixel's neighbouring texel reads lie farther apart than a fine
+  // pixel's: until a coarse pass has been timed, its pixel is taken to cost this many fine
+  // ones (about 2 on llvmpipe: `impasto bench gpu`, its coarse frame's parts).
+  static constexpr double kCoarsePixelCost = 2.0;
+
+  // The factor (kMinCoarseFactor..kMaxCoarseFactor) for a viewport_w × viewport_h viewport
+  // whose pixels are predicted to cost ms_per_pixel each when shaded coarsely: the smallest
+  // whose shading fits budget_ms, or the largest. An unknown cost (≤ 0) takes the smallest.
+  static int coarse_factor_for(double ms_per_pixel, int viewport_w, int viewport_h,
+                               double budget_ms);
+  void set_coarse_budget_ms(double budget_ms) { coarse_budget_ms_ = budget_ms; }
+  void set_refine_band_ms(double band_ms) { refine_band_ms_ = band_ms; }
+  // The factor the next coarse pass on this viewport would take.
+  int next_coarse_factor(int viewport_w, int viewport_h) const;
 
   // The tiles changed on the GPU (after CanvasRenderer::upload_tiles with the same list).
   void invalidate_tiles(std::span<const int> tiles);
@@ -81,14 +116,21 @@ class ShadedViewCache {
   std::vector<double> look_of(const CanvasRenderer& renderer, const CanvasView& view) const;
   // Moves the cached image by (dx, dy) GL pixels; returns the strips left to shade.
   std::vector<PixelRect> shift_image(int dx, int dy);
-  // Shades the whole viewport at 1/kCoarseFactor resolution into image_.
+  // Shades the whole viewport at 1/factor resolution into image_; returns the pixels shaded
+  // and the shading's time in shade_ms.
   long long shade_coarse(CanvasRenderer& renderer, const CanvasView& view, int viewport_w,
-                         int viewport_h);
+                         int viewport_h, int factor, double& shade_ms);
 
   std::unique_ptr<Framebuffer> image_;
   std::unique_ptr<Framebuffer> spare_;  // the target of a shift, then swapped with image_
   std::unique_ptr<Framebuffer> coarse_image_;
-  bool coarse_ = false;  // image_ holds a coarse shading, to refine
+  bool coarse_ = false;     // image_ holds a coarse shading, to refine
+  int refined_blocks_ = 0;  // of it, the blocks refined since (kRefining); -1: all
+  double coarse_budget_ms_ = kDefaultCoarseBudgetMs;
+  double refine_band_ms_ = kRefineBandMs;
+  // The measured cost of a pixel of the last whole-viewport pass, fine and coarse (0: none).
+  double fine_ms_per_pixel_ = 0.0;
+  double coarse_ms_per_pixel_ = 0.0;
   const CanvasRenderer* renderer_ = nullptr;
   std::vector<double> look_;
   CanvasView view_;
