@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "bench_surface_gpu.hpp"
 #include "command.hpp"
 #include "vocabulary.hpp"
 
@@ -39,8 +40,9 @@ struct BenchSurfaceArgs {
 };
 
 // A test painting: ridged heavy paint (white, black) and a wet glaze band of crimson-blue
-// thinning from 0.3 mm to nothing across the canvas, over a woven ground.
-paintcore::Canvas test_canvas(int width, int height) {
+// thinning from 0.3 mm to nothing across the canvas, over a woven ground. Without
+// `spreading`, black impasto all over: nothing spreads light.
+paintcore::Canvas test_canvas(int width, int height, bool spreading = true) {
   paintcore::Canvas canvas({width, height, 254.0, 7});
   for (int ty = 0; ty < canvas.tiles_y(); ++ty) {
     for (int tx = 0; tx < canvas.tiles_x(); ++tx) {
@@ -51,10 +53,10 @@ paintcore::Canvas test_canvas(int width, int height) {
           const int gx = tx * kTileSize + x, gy = ty * kTileSize + y;
           const auto c = static_cast<std::size_t>(y * kTileSize + x);
           const float ridge = 0.25f + 0.15f * std::sin(0.4f * static_cast<float>(gy));
-          if (gy < height / 3) {  // white impasto
+          if (gy < height / 3 && spreading) {  // white impasto
             tile.wet_volume_mm[c] = ridge;
             tile.pigment(0)[c] = ridge;
-          } else if (gy < 2 * height / 3) {  // black impasto
+          } else if (gy < 2 * height / 3 || !spreading) {  // black impasto
             tile.wet_volume_mm[c] = ridge;
             tile.pigment(1)[c] = ridge;
           } else {  // a glaze thinning to the right
@@ -136,6 +138,23 @@ void run(const BenchSurfaceArgs& args) {
     std::printf("  ghs surface           %8.0f ns  (+%.0f)\n", ns_ghs, ns_ghs - ns_blinn);
     std::printf("  ghs + subsurface      %8.0f ns  (+%.0f; %zu of %d cells spread)\n", ns_sub,
                 ns_sub - ns_ghs, spreading, size.width * size.height);
+  }
+  // The same on the GPU (upload and one draw; llvmpipe where there is no GPU), and on black
+  // impasto all over, where nothing spreads.
+  if (const auto gpu =
+          gpu_spread_cost(canvas, test_canvas(size.width, size.height, false), ghs, palette)) {
+    out["gpu_cost"] = {{"spreading_cells", gpu->spreading_cells},
+                       {"ghs_ns_per_cell", gpu->spreading_off},
+                       {"ghs_subsurface_ns_per_cell", gpu->spreading_on},
+                       {"nothing_spreads_ghs_ns_per_cell", gpu->plain_off},
+                       {"nothing_spreads_ghs_subsurface_ns_per_cell", gpu->plain_on}};
+    if (!args.json) {
+      std::printf("  GPU ghs               %8.0f ns\n", gpu->spreading_off);
+      std::printf("  GPU ghs + subsurface  %8.0f ns  (+%.0f; %d cells spread)\n", gpu->spreading_on,
+                  gpu->spreading_on - gpu->spreading_off, gpu->spreading_cells);
+      std::printf("  GPU, nothing spreads  %8.0f ns  off, %.0f on (+%.0f)\n", gpu->plain_off,
+                  gpu->plain_on, gpu->plain_on - gpu->plain_off);
+    }
   }
 
   // --- 2. the GHS kernel against wave optics by Monte Carlo ---

@@ -129,6 +129,9 @@ SubsurfaceMap subsurface_map(const paintcore::Canvas& canvas, const SpectralPale
   const int nodes = palette.nodes();
   const int pigments = std::min(palette.pigment_count(), paintcore::kMaxPigmentSlots);
   const double threshold_mm = s.subsurface_min_cells * map.cell_mm;
+  bool have_last = false;
+  std::array<float, paintcore::kMaxPigmentSlots> last_concentration{};
+  std::array<dipole::Medium, 3> last_media{};
   for (int y = std::max(region.y0, 0); y < std::min(region.y1, map.height); ++y) {
     for (int x = std::max(region.x0, 0); x < std::min(region.x1, map.width); ++x) {
       const int tile_index = (y / kTileSize) * canvas.tiles_x() + x / kTileSize;
@@ -141,26 +144,35 @@ SubsurfaceMap subsurface_map(const paintcore::Canvas& canvas, const SpectralPale
       spreading.x = x;
       spreading.y = y;
       spreading.layer_mm = static_cast<float>(quantised(top.volume_mm));
+      // The cells of a stroke share their mix: its transport coefficients are made once.
+      if (!have_last || top.concentration != last_concentration) {
+        for (int c = 0; c < 3; ++c) {
+          double absorption = 0.0, scattering = 0.0;
+          for (int i = 0; i < nodes; ++i) {
+            float k = 0.0f, sc = 0.0f;
+            for (int p = 0; p < pigments; ++p) {
+              const float conc = top.concentration[static_cast<std::size_t>(p)];
+              if (conc > 0.0f) {
+                km::accumulate_pigment(conc, palette.absorption(p)[i], palette.scattering(p)[i], k,
+                                       sc);
+              }
+            }
+            const double w = weights[static_cast<std::size_t>(c)][static_cast<std::size_t>(i)];
+            absorption += w * k;
+            scattering += w * sc;
+          }
+          dipole::Medium medium = dipole::from_kubelka_munk(
+              absorption, scattering, settings.thickness_scale_mm, s.binder_index);
+          medium.absorption_per_mm = quantised(medium.absorption_per_mm);
+          medium.reduced_scattering_per_mm = quantised(medium.reduced_scattering_per_mm);
+          last_media[static_cast<std::size_t>(c)] = medium;
+        }
+        last_concentration = top.concentration;
+        have_last = true;
+      }
       bool spreads = false;
       for (int c = 0; c < 3; ++c) {
-        double absorption = 0.0, scattering = 0.0;
-        for (int i = 0; i < nodes; ++i) {
-          float k = 0.0f, sc = 0.0f;
-          for (int p = 0; p < pigments; ++p) {
-            const float conc = top.concentration[static_cast<std::size_t>(p)];
-            if (conc > 0.0f) {
-              km::accumulate_pigment(conc, palette.absorption(p)[i], palette.scattering(p)[i], k,
-                                     sc);
-            }
-          }
-          const double w = weights[static_cast<std::size_t>(c)][static_cast<std::size_t>(i)];
-          absorption += w * k;
-          scattering += w * sc;
-        }
-        dipole::Medium medium = dipole::from_kubelka_munk(
-            absorption, scattering, settings.thickness_scale_mm, s.binder_index);
-        medium.absorption_per_mm = quantised(medium.absorption_per_mm);
-        medium.reduced_scattering_per_mm = quantised(medium.reduced_scattering_per_mm);
+        const dipole::Medium& medium = last_media[static_cast<std::size_t>(c)];
         const double length = spread_length_mm(medium, spreading.layer_mm);
         spreading.medium[static_cast<std::size_t>(c)] = medium;
         spreading.length_cells[static_cast<std::size_t>(c)] =

@@ -226,7 +226,9 @@ TEST(SubsurfaceSpreadGpu, MapViewShowsTheCpuMapOverThePaintingDimmed) {
   CanvasRenderer gpu(kWidth, kHeight, settings, palette);
   gpu.upload_all(canvas);
   const render::Image painting = draw_cells(gpu);
-  gpu.set_subsurface_map_view(true);
+  GpuViewOptions options;
+  options.subsurface_map = true;
+  gpu.set_view_options(options);
   const render::Image shown = draw_cells(gpu);
   std::vector<bool> mapped(static_cast<std::size_t>(kWidth) * kHeight, false);
   for (const render::SpreadingCell& cell : map.cells) {

@@ -1,6 +1,7 @@
 #include "window/surface_panel.hpp"
 
 #include <imgui.h>
+#include <impasto/render/subsurface.hpp>
 
 #include <cstddef>
 
@@ -43,7 +44,7 @@ void surface_panel(WindowState& s) {
         "As impasto render --surface:\n"
         "blinn: Blinn-Phong highlights on the K-M colour (fast, every paint shines alike);\n"
         "ghs: the rough oil or varnish surface per wavelength; the paint gets the light\n"
-        "it lets through (the subsurface spread is in impasto render only).");
+        "it lets through, and spreads it sideways in glazes and thick light paint.");
   }
   if (surface.model == render::SurfaceModel::ghs) {
     changed |= enum_combo("medium", surface.medium, surface::kFinishNames);
@@ -75,6 +76,23 @@ void surface_panel(WindowState& s) {
     if (ImGui::IsItemHovered()) {
       ImGui::SetTooltip(
           "A dried varnish over the whole painting: its surface replaces the paint's");
+    }
+    changed |= ImGui::Checkbox("subsurface spread", &surface.subsurface);
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip(
+          "As impasto render without --no-subsurface: where a layer's light travels\n"
+          "farther than a quarter of a cell inside it (glazes, thick light paint), it\n"
+          "leaves the paint spread over its neighbours: a glaze softens the edge beneath.");
+    }
+    if (surface.subsurface) {
+      ImGui::SameLine();
+      changed |= ImGui::Checkbox("show where", &s.view_options.subsurface_map);
+      if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip(
+            "The map of the spread in place of the painting: each channel's spread length,\n"
+            "%.0f cells to full brightness; elsewhere the painting, dimmed.",
+            static_cast<double>(render::kSubsurfaceMapFullScaleCells));
+      }
     }
   }
   if (changed) s.settings_changed = true;  // new surface tables, the canvas re-shaded

@@ -1,9 +1,10 @@
 #pragma once
 // The Surface panel: how the paint's surface reflects (docs/surface.md): the model (blinn or
-// ghs), the medium's finish and its amount, and a varnish over the whole painting, by the
-// names of `impasto render --surface/--medium/--medium-amount/--varnish`. A change rebuilds
-// the surface's tables and re-shades the canvas (WindowState::settings_changed), so the view
-// is a live preview.
+// ghs), the medium's finish and its amount, a varnish over the whole painting and the
+// subsurface spread, by the names of `impasto render --surface/--medium/--medium-amount/
+// --varnish/--no-subsurface`, and the spread's map (GpuViewOptions::subsurface_map). A change
+// rebuilds the surface's tables and re-shades the canvas (WindowState::settings_changed), so the
+// view is a live preview.
 #include <impasto/render/surface_settings.hpp>
 
 #include <optional>

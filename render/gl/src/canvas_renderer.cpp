@@ -7,6 +7,7 @@
 #include <string>
 
 #include "embedded_shaders.hpp"
+#include "impasto/paintcore/paint_surface.hpp"
 #include "impasto/render/shading.hpp"
 #include "impasto/render/shading_key.hpp"
 #include "impasto/render/subsurface.hpp"
@@ -187,8 +188,7 @@ void CanvasRenderer::upload_tile(const paintcore::Canvas& canvas, int tile_index
       if (tile != nullptr) {
         const float wet = tile->wet_volume_mm[cell];
         scratch.surface[2 * cell] = wet;
-        scratch.surface[2 * cell + 1] =
-            tile->base_height_mm[cell] + tile->dry_height_mm[cell] + wet;
+        scratch.surface[2 * cell + 1] = paintcore::surface_height_mm(*tile, cell);
       } else {
         scratch.surface[2 * cell + 1] = canvas.base_height_mm(x0 + x, y0 + y);
       }
@@ -415,7 +415,7 @@ void CanvasRenderer::set_uniforms(const CanvasView& view, int viewport_w, int vi
   cracks_->bind(program, palette_, settings_);
   cracks_->bind_close_up(program, settings_, options_.crack_close_up_min_pixels);
   ghs_->bind(program);
-  spread_->bind(program, spread_on(), subsurface_map_view_);
+  spread_->bind(program, spread_on(), options_.subsurface_map);
   glUniform1i(program.uniform("linear_srgb_output"), 0);
 }
 

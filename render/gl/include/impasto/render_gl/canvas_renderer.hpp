@@ -43,13 +43,8 @@ class CanvasRenderer {
   // Dry layer i is not shown where hidden[i] (colour only; heights keep every layer). Call
   // upload_all afterwards.
   void set_hidden_dry_layers(std::vector<bool> hidden) { hidden_dry_layers_ = std::move(hidden); }
-  // Exposure and background only: nothing to upload.
+  // Exposure, background, the subsurface map's view: nothing to upload.
   void set_view_options(const GpuViewOptions& options);
-  // Shows the subsurface spread's map (where light spreads sideways: each channel's length,
-  // render::kSubsurfaceMapFullScaleCells to full scale, over the painting dimmed) in place of
-  // the painting. Nothing to upload.
-  void set_subsurface_map_view(bool on) { subsurface_map_view_ = on; }
-  bool subsurface_map_view() const { return subsurface_map_view_; }
   // How many cells spread light sideways now (the ghs surface with its subsurface spread).
   int subsurface_cells() const { return spread_->mapped_count(); }
   const render::RenderSettings& settings() const { return settings_; }
@@ -102,9 +97,8 @@ class CanvasRenderer {
   std::unique_ptr<GpuSubsurfaceSpread> spread_;  // the ghs surface's subsurface spread
   paintcore::CellRect spread_stale_;             // cells whose body or map changed
   paintcore::CellRect spread_written_;           // where the spread's change may be non-zero
-  bool subsurface_map_view_ = false;
-  std::vector<float> tile_min_height_;  // each tile's lowest total height (mm)
-  std::vector<float> tile_max_height_;  // each tile's highest total height (mm)
+  std::vector<float> tile_min_height_;           // each tile's lowest total height (mm)
+  std::vector<float> tile_max_height_;           // each tile's highest total height (mm)
   float max_height_ = 0.0f;
   // The largest height range since the last upload_all: bounds the shadows' length (as
   // render::TileRenderer keeps it), of the heights now and of those an upload replaced.

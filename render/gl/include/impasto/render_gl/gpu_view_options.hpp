@@ -16,6 +16,10 @@ struct GpuViewOptions {
   // blocks); zoomed out, the shaded colours of the cells under a pixel averaged (no speckle).
   // Off: every pixel shows its own cell, as the CPU's close-up magnifies cells.
   bool smooth_zoom = true;
+  // The subsurface spread's debug view (the ghs surface with its spread): where light spreads
+  // sideways, each channel's length to render::kSubsurfaceMapFullScaleCells at full scale, over
+  // the painting at a quarter of its light.
+  bool subsurface_map = false;
 };
 
 }  // namespace impasto::render_gl
