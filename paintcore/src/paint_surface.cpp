@@ -44,6 +44,11 @@ FinishRoughness roughness_at_log_rms(double log_rms) {
   return {rms, film_roughness(kOrder.back()).correlation_um};
 }
 
+double varnish_levelled_share(double thickness_mm) {
+  const double t3 = std::pow(std::max(thickness_mm, 0.0), 3.0);
+  return t3 / (t3 + std::pow(kVarnishHalfLevelledMm, 3.0));
+}
+
 std::string medium_spelling(const Medium& medium) {
   std::string out(finish_name(medium.finish));
   if (medium.amount != 1.0) {

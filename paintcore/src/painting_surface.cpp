@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "impasto/files/memory_budget.hpp"
 #include "painting_impl.hpp"
 
 namespace impasto::paintcore {
@@ -95,6 +96,52 @@ void dry_varnish(Canvas& canvas, UndoHistory& history, float fraction) {
   }
 }
 
+namespace {
+
+// The coat each cell of `r` (row-major) takes: the thickness, levelled toward the mean of the
+// surface under it within kVarnishLevellingMm (over the coat's own cells: the varnish flows
+// only where it lies), at least zero, and as much varnish in all as an even coat.
+std::vector<float> levelled_coat(const Canvas& canvas, const CellRect& r, double thickness_mm) {
+  const int w = r.x1 - r.x0, h = r.y1 - r.y0;
+  const std::size_t n = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
+  const auto at = [w](int x, int y) { return static_cast<std::size_t>(y) * w + x; };
+  files::check_allocation("apply_varnish", "the coat's levelling", 12ull * n);
+  std::vector<float> height(n), across(n), coat(n);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) height[at(x, y)] = surface_height_mm(canvas, r.x0 + x, r.y0 + y);
+  const int reach =
+      std::max(1, static_cast<int>(std::lround(kVarnishLevellingMm / canvas.cell_mm())));
+  // Box sums by prefix sums (double), along the rows, then down the columns.
+  std::vector<double> prefix(static_cast<std::size_t>(std::max(w, h)) + 1);
+  for (int y = 0; y < h; ++y) {
+    for (int x = 0; x < w; ++x) prefix[x + 1] = prefix[x] + height[at(x, y)];
+    for (int x = 0; x < w; ++x)
+      across[at(x, y)] =
+          static_cast<float>(prefix[std::min(x + reach + 1, w)] - prefix[std::max(x - reach, 0)]);
+  }
+  const double share = varnish_levelled_share(thickness_mm);
+  double total = 0.0;
+  for (int x = 0; x < w; ++x) {
+    for (int y = 0; y < h; ++y) prefix[y + 1] = prefix[y] + across[at(x, y)];
+    const int nx = std::min(x + reach + 1, w) - std::max(x - reach, 0);
+    for (int y = 0; y < h; ++y) {
+      const int y0 = std::max(y - reach, 0), y1 = std::min(y + reach + 1, h);
+      const double mean = (prefix[y1] - prefix[y0]) / (static_cast<double>(nx) * (y1 - y0));
+      const double here = height[at(x, y)];
+      const double c = std::max(thickness_mm + share * (mean - here), 0.0);
+      coat[at(x, y)] = static_cast<float>(c);
+      total += c;
+    }
+  }
+  // What the peaks could not give (a coat is never below zero) comes off the rest evenly.
+  const double scale = total > 0.0 ? thickness_mm * static_cast<double>(n) / total : 1.0;
+  if (scale != 1.0)
+    for (float& c : coat) c = static_cast<float>(c * scale);
+  return coat;
+}
+
+}  // namespace
+
 void Painting::apply_varnish(Finish finish, double thickness_mm, std::optional<CellRect> region) {
   Impl& p = *impl_;
   if (static_cast<int>(finish) >= kFinishCount)
@@ -116,7 +163,7 @@ void Painting::apply_varnish(Finish finish, double thickness_mm, std::optional<C
   }
   end_stroke();
   p.history.begin(p.brush, p.ledger, p.slots, p.canvas.dry_layers().size(), p.canvas.tile_count());
-  const auto coat = static_cast<float>(thickness_mm);
+  const std::vector<float> coat = levelled_coat(p.canvas, r, thickness_mm);
   const auto rough = static_cast<float>(finish_log_rms(finish));
   for (int ty = r.y0 / kTileSize; ty <= (r.y1 - 1) / kTileSize; ++ty) {
     for (int tx = r.x0 / kTileSize; tx <= (r.x1 - 1) / kTileSize; ++tx) {
@@ -134,8 +181,12 @@ void Painting::apply_varnish(Finish finish, double thickness_mm, std::optional<C
       for (int y = cells.y0; y < cells.y1; ++y) {
         for (int x = cells.x0; x < cells.x1; ++x) {
           const int c = y * kTileSize + x;
-          thickness[c] += coat;
-          wet[c] += coat;
+          const float here = coat[static_cast<std::size_t>(ty * kTileSize + y - r.y0) *
+                                      static_cast<std::size_t>(r.x1 - r.x0) +
+                                  static_cast<std::size_t>(tx * kTileSize + x - r.x0)];
+          if (!(here > 0.0f)) continue;  // a peak through the coat: no varnish there
+          thickness[c] += here;
+          wet[c] += here;
           log_rms[c] = rough;
         }
       }

@@ -22,6 +22,7 @@
 #include "impasto/files/atomic_file.hpp"
 #include "impasto/files/input_file.hpp"
 #include "impasto/files/memory_budget.hpp"
+#include "impasto/paintcore/paint_surface.hpp"
 
 namespace impasto::render {
 namespace {
@@ -271,8 +272,7 @@ HeightGrid surface_heights(const paintcore::Canvas& canvas) {
   h.mm.resize(static_cast<std::size_t>(h.width) * static_cast<std::size_t>(h.height));
   for (int y = 0; y < h.height; ++y)
     for (int x = 0; x < h.width; ++x)
-      h.mm[static_cast<std::size_t>(y) * h.width + x] =
-          canvas.base_height_mm(x, y) + canvas.dry_height_mm(x, y) + canvas.wet_volume_mm(x, y);
+      h.mm[static_cast<std::size_t>(y) * h.width + x] = paintcore::surface_height_mm(canvas, x, y);
   return h;
 }
 

@@ -14,6 +14,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "impasto/paintcore/paint_surface.hpp"
 #include "impasto/render/crack_shading.hpp"
 #include "impasto/render/dry_stack.hpp"
 #include "impasto/render/flake_shading.hpp"
@@ -284,11 +285,8 @@ bool TileRenderer::store_heights(const paintcore::Canvas& canvas, int tile_index
     for (int x = 0; x < columns; ++x) {
       const auto c = static_cast<std::size_t>(y * kTileSize + x);
       const float before = row[x];
-      row[x] = tile != nullptr
-                   ? tile->base_height_mm[c] + tile->dry_height_mm[c] + tile->wet_volume_mm[c]
-                   : canvas.base_height_mm(origin_x + x, origin_y + y) +
-                         canvas.dry_height_mm(origin_x + x, origin_y + y) +
-                         canvas.wet_volume_mm(origin_x + x, origin_y + y);
+      row[x] = tile != nullptr ? paintcore::surface_height_mm(*tile, static_cast<int>(c))
+                               : canvas.base_height_mm(origin_x + x, origin_y + y);
       changed |= std::bit_cast<std::uint32_t>(before) != std::bit_cast<std::uint32_t>(row[x]);
       lowest = std::min(lowest, row[x]);
       highest = std::max(highest, row[x]);

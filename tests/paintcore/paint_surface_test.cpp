@@ -305,5 +305,55 @@ TEST(PaintSurface, AGlossBrushDraggedThroughMattePaintLaysAMixBeyondIt) {
   EXPECT_LT(mixed.log_rms, matte - 0.05 * (matte - gloss));
 }
 
+// The relief under a varnish: the coat's top is what the light meets (surface_height_mm).
+double box_roughness(const Painting& p, int x0, int y0, int x1, int y1) {
+  // RMS of the surface about its 5x5 mean: the fine relief (bristle furrows, the weave).
+  double sum = 0.0;
+  int count = 0;
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x) {
+      double mean = 0.0;
+      for (int dy = -2; dy <= 2; ++dy)
+        for (int dx = -2; dx <= 2; ++dx) mean += surface_height_mm(p.canvas(), x + dx, y + dy);
+      const double d = surface_height_mm(p.canvas(), x, y) - mean / 25.0;
+      sum += d * d;
+      ++count;
+    }
+  return std::sqrt(sum / count);
+}
+
+TEST(PaintSurface, AnEvenVarnishOverAFlatCanvasChangesNoSlope) {
+  Painting p = brushed();
+  const float before = surface_height_mm(p.canvas(), 10, 10);
+  p.apply_varnish(Finish::gloss, 0.2, std::nullopt);
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 128; ++x) {
+      ASSERT_FLOAT_EQ(surface_at(p, x, y).varnish_mm, 0.2f) << x << "," << y;
+      ASSERT_NEAR(surface_height_mm(p.canvas(), x, y), before + 0.2f, 1e-6) << x << "," << y;
+    }
+}
+
+TEST(PaintSurface, AThickVarnishLevelsTheFineReliefPartlyAndKeepsItsVolume) {
+  const auto varnished = [](double thickness_mm) {
+    Painting p(test::flat_spec(96, 96), 1);
+    p.set_brush(test::round_brush(3.0));
+    p.load_brush({{"red", 1.0}}, 10.0);
+    for (int k = 0; k < 3; ++k) test::stroke_line(p, 1.0, 2.5 + 2.0 * k, 8.5, 2.5 + 2.0 * k, 0.9f);
+    const double rough = box_roughness(p, 20, 20, 76, 76);
+    p.apply_varnish(Finish::satin, thickness_mm, CellRect{10, 10, 86, 86});
+    double volume = 0.0;
+    for (int y = 10; y < 86; ++y)
+      for (int x = 10; x < 86; ++x) volume += surface_at(p, x, y).varnish_mm;
+    EXPECT_NEAR(volume / (76.0 * 76.0), thickness_mm, 1e-4 * thickness_mm);
+    return box_roughness(p, 20, 20, 76, 76) / rough;
+  };
+  EXPECT_GT(varnish_levelled_share(0.1), 0.8);
+  EXPECT_LT(varnish_levelled_share(0.01), 0.01);
+  const double thin = varnished(0.01), thick = varnished(0.1);
+  EXPECT_GT(thin, 0.97);   // a thin coat follows the brushwork
+  EXPECT_LT(thick, 0.6);   // a thick one levels the furrows...
+  EXPECT_GT(thick, 0.05);  // ... partly
+}
+
 }  // namespace
 }  // namespace impasto::paintcore

@@ -135,4 +135,25 @@ TEST(ReliefMaps, AnExportAtTwiceTheScaleShadesASmoothRelief) {
   EXPECT_NEAR(mean_two, mean_one, 0.02 * mean_one);
 }
 
+// A varnish is part of the relief: the height map (and every renderer, through
+// paintcore::surface_height_mm) is the coat's top where it lies.
+TEST(ReliefMaps, TheHeightMapIsTheVarnishsTopWhereItLies) {
+  paintcore::Painting p = painted();
+  const render::HeightGrid bare = render::surface_heights(p.canvas());
+  p.apply_varnish(paintcore::Finish::gloss, 0.05, paintcore::CellRect{30, 10, 60, 40});
+  const render::HeightGrid coated = render::surface_heights(p.canvas());
+  double added = 0.0;
+  for (int y = 0; y < 60; ++y)
+    for (int x = 0; x < 90; ++x) {
+      const bool inside = x >= 30 && x < 60 && y >= 10 && y < 40;
+      const double gained = coated.at(x, y) - bare.at(x, y);
+      if (!inside) {
+        ASSERT_EQ(gained, 0.0) << x << "," << y;
+      }
+      ASSERT_GE(gained, -1e-6) << x << "," << y;
+      added += gained;
+    }
+  EXPECT_NEAR(added / (30.0 * 30.0), 0.05, 1e-4);  // the coat's volume, levelled or not
+}
+
 }  // namespace

@@ -111,6 +111,14 @@ inline constexpr double kSurfaceFilmMm = 0.01;
 
 // Varnish coats: thickness in mm of paint height, at most this much a coat.
 inline constexpr double kMaxVarnishMm = 1.0;
+// A coat flows before it sets, from the peaks of the relief under it into its valleys
+// (docs/surface.md, "Varnish"): each cell's coat is the thickness plus levelled_share of the
+// way from the surface there to its mean within kVarnishLevellingMm, the share growing with
+// the cube of the thickness (a film's levelling rate goes as h^3, Orchard 1962) and half at
+// kVarnishHalfLevelledMm. The coat's volume is kept; a peak may poke through a thin coat.
+inline constexpr double kVarnishLevellingMm = 0.25;
+inline constexpr double kVarnishHalfLevelledMm = 0.05;
+double varnish_levelled_share(double thickness_mm);
 
 // The planes of a tile's surface data (plane-major, kTileCells values each).
 inline constexpr int kMediumPlanes = 2;   // share, log_rms
@@ -127,6 +135,20 @@ struct CellSurface {
   // 0 (dry) .. 1 (just applied).
   float varnish_wetness() const { return varnished() ? varnish_wet_mm / varnish_mm : 0.0f; }
 };
+
+// The height (mm) of the surface the light meets at cell `cell` of a tile: the ground, the
+// dry and wet paint, and a varnish over them. Every renderer's relief reads this.
+inline float surface_height_mm(const Tile& tile, int cell) {
+  const auto c = static_cast<std::size_t>(cell);
+  const float paint = tile.base_height_mm[c] + tile.dry_height_mm[c] + tile.wet_volume_mm[c];
+  return tile.varnish.empty() ? paint : paint + tile.varnish[c];
+}
+// The same at canvas cell (x, y) (inside the canvas; a tile never painted is its weave).
+inline float surface_height_mm(const Canvas& canvas, int x, int y) {
+  const Tile* tile = canvas.tile(x / kTileSize, y / kTileSize);
+  return tile != nullptr ? surface_height_mm(*tile, (y % kTileSize) * kTileSize + x % kTileSize)
+                         : canvas.base_height_mm(x, y);
+}
 
 // The surface of cell `cell` (local index) of a tile; a null tile or one without surface data
 // gives the default (no medium, no varnish).
