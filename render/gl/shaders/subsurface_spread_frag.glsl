@@ -3,16 +3,18 @@
 // by its kernel. A cell gathers from every mapped cell within `radius`, each channel by its
 // own kernel; light the CPU keeps in an edge cell (its offsets clamped to the canvas) is
 // gathered there as the kernel's sum over those offsets, from its prefix sums.
+// Each cell looks only as far as its block's radius: the largest kernel radius among the
+// mapped cells of its block and the eight around it (blocks as wide as the largest radius).
 // Assembled after #version and the C++'s defines of SPREAD_MAX_RADIUS
-// (render::kSubsurfaceMaxRadius) and SPREAD_ATLAS_COLUMNS (subsurface_spread.cpp).
+// (render::kSubsurfaceMaxRadius), SPREAD_ATLAS_COLUMNS and SPREAD_BLOCK (subsurface_spread.cpp).
 
 #define SPREAD_SIDE (2 * SPREAD_MAX_RADIUS + 1)
 
 uniform sampler2D body;        // the body's linear sRGB; GL rows bottom-up (row H-1-y: cell y)
 uniform sampler2D kernel_ids;  // per cell (texel row = cell row): kernel + 1 per channel, 0: none
 uniform sampler2D kernels;     // SIDE x SIDE blocks: r weight, g prefix sum over the block
+uniform sampler2D block_radius;  // per SPREAD_BLOCK x SPREAD_BLOCK cells: how far to gather
 uniform ivec2 canvas_cells;
-uniform int radius;  // the largest kernel radius in use, <= SPREAD_MAX_RADIUS
 
 out vec4 frag_color;
 
@@ -42,6 +44,7 @@ void main() {
   ivec2 p = ivec2(gl_FragCoord.xy);
   ivec2 last = canvas_cells - 1;
   vec3 delta = vec3(0.0);
+  int radius = int(texelFetch(block_radius, p / SPREAD_BLOCK, 0).r + 0.5);
   for (int sy = max(p.y - radius, 0); sy <= min(p.y + radius, last.y); ++sy) {
     for (int sx = max(p.x - radius, 0); sx <= min(p.x + radius, last.x); ++sx) {
       ivec2 s = ivec2(sx, sy);

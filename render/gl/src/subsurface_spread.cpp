@@ -12,6 +12,15 @@ namespace {
 constexpr int kMaxRadius = render::kSubsurfaceMaxRadius;
 constexpr int kSide = 2 * kMaxRadius + 1;  // a kernel's block in the atlas, padded to the most
 constexpr int kAtlasColumns = 64;          // blocks a row of the atlas
+// The gather's loop is bounded per square of kBlock cells by the largest radius of the mapped
+// cells in it and its eight neighbours: as wide as the largest radius, so those are all that
+// reach it.
+constexpr int kBlock = kMaxRadius;
+static_assert(kBlock >= kMaxRadius, "a block's neighbours must hold every cell that reaches it");
+
+int blocks(int cells) {
+  return (cells + kBlock - 1) / kBlock;
+}
 
 // Row-major 3x3 (as display.hpp gives it) to the column-major GLSL mat3.
 std::array<float, 9> column_major(const std::array<double, 9>& m) {
@@ -48,7 +57,11 @@ void GpuSubsurfaceSpread::clear() {
   radius_ = 0;
   mapped_count_ = 0;
   std::fill(mapped_.begin(), mapped_.end(), std::uint8_t{0});
+  std::fill(own_block_radius_.begin(), own_block_radius_.end(), std::uint8_t{0});
   if (ids_.id() != 0) {
+    const std::vector<float> no_radius(own_block_radius_.size(), 0.0f);
+    block_radius_.upload(0, 0, blocks(width_), blocks(height_), 0, no_radius.data(),
+                         blocks(width_));
     const std::vector<float> zeros(4 * static_cast<std::size_t>(width_) * height_, 0.0f);
     ids_.upload(0, 0, width_, height_, 0, zeros.data(), width_);
     lengths_.upload(0, 0, width_, height_, 0, zeros.data(), width_);
@@ -63,6 +76,10 @@ void GpuSubsurfaceSpread::allocate_cell_textures() {
   ids_.upload(0, 0, width_, height_, 0, zeros.data(), width_);
   lengths_.upload(0, 0, width_, height_, 0, zeros.data(), width_);
   mapped_.assign(static_cast<std::size_t>(width_) * height_, 0);
+  own_block_radius_.assign(static_cast<std::size_t>(blocks(width_)) * blocks(height_), 0);
+  block_radius_ = Texture(blocks(width_), blocks(height_), 0, TexelFormat::kR32F);
+  const std::vector<float> no_radius(own_block_radius_.size(), 0.0f);
+  block_radius_.upload(0, 0, blocks(width_), blocks(height_), 0, no_radius.data(), blocks(width_));
   delta_ = std::make_unique<Framebuffer>(width_, height_, TexelFormat::kRGBA32F);
   delta_->bind();
   glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
@@ -125,29 +142,62 @@ void GpuSubsurfaceSpread::set_cells(const paintcore::CellRect& region,
   for (int y = y0; y < y1; ++y) {
     for (int x = x0; x < x1; ++x) {
       std::uint8_t& m = mapped_[static_cast<std::size_t>(y) * width_ + x];
-      mapped_count_ -= m;
+      mapped_count_ -= m > 0 ? 1 : 0;
       m = 0;
     }
   }
   for (const render::SpreadingCell& cell : map.cells) {
     if (cell.x < x0 || cell.x >= x1 || cell.y < y0 || cell.y >= y1) continue;
     const std::size_t at = 4 * (static_cast<std::size_t>(cell.y - y0) * w + (cell.x - x0));
-    bool spreads = false;
+    int radius = 0;
     for (std::size_t c = 0; c < 3; ++c) {
       const int id = kernel_id(cell.medium[c], cell.layer_mm, map.cell_mm);
-      if (kernel_radius_[static_cast<std::size_t>(id)] > 0) {
-        ids[at + c] = static_cast<float>(id + 1);
-        spreads = true;
-      }
+      const int r = kernel_radius_[static_cast<std::size_t>(id)];
+      if (r > 0) ids[at + c] = static_cast<float>(id + 1);
+      radius = std::max(radius, r);
       lengths[at + c] = cell.length_cells[c];
     }
-    if (spreads) {
-      mapped_[static_cast<std::size_t>(cell.y) * width_ + cell.x] = 1;
+    if (radius > 0) {
+      mapped_[static_cast<std::size_t>(cell.y) * width_ + cell.x] =
+          static_cast<std::uint8_t>(radius);
       ++mapped_count_;
     }
   }
   ids_.upload(x0, y0, w, h, 0, ids.data(), w);
   lengths_.upload(x0, y0, w, h, 0, lengths.data(), w);
+  update_block_radius(x0 / kBlock, y0 / kBlock, (x1 - 1) / kBlock + 1, (y1 - 1) / kBlock + 1);
+}
+
+void GpuSubsurfaceSpread::update_block_radius(int bx0, int by0, int bx1, int by1) {
+  const int bw = blocks(width_), bh = blocks(height_);
+  // Each block's own largest radius, then the gather's: the largest of it and its neighbours.
+  for (int by = by0; by < by1; ++by) {
+    for (int bx = bx0; bx < bx1; ++bx) {
+      std::uint8_t largest = 0;
+      for (int y = by * kBlock; y < std::min((by + 1) * kBlock, height_); ++y) {
+        const std::uint8_t* row = mapped_.data() + static_cast<std::size_t>(y) * width_;
+        for (int x = bx * kBlock; x < std::min((bx + 1) * kBlock, width_); ++x) {
+          largest = std::max(largest, row[x]);
+        }
+      }
+      own_block_radius_[static_cast<std::size_t>(by) * bw + bx] = largest;
+    }
+  }
+  const int gx0 = std::max(bx0 - 1, 0), gy0 = std::max(by0 - 1, 0);
+  const int gx1 = std::min(bx1 + 1, bw), gy1 = std::min(by1 + 1, bh);
+  std::vector<float> gather(static_cast<std::size_t>(gx1 - gx0) * (gy1 - gy0), 0.0f);
+  for (int by = gy0; by < gy1; ++by) {
+    for (int bx = gx0; bx < gx1; ++bx) {
+      std::uint8_t largest = 0;
+      for (int ny = std::max(by - 1, 0); ny <= std::min(by + 1, bh - 1); ++ny) {
+        for (int nx = std::max(bx - 1, 0); nx <= std::min(bx + 1, bw - 1); ++nx) {
+          largest = std::max(largest, own_block_radius_[static_cast<std::size_t>(ny) * bw + nx]);
+        }
+      }
+      gather[static_cast<std::size_t>(by - gy0) * (gx1 - gx0) + (bx - gx0)] = largest;
+    }
+  }
+  block_radius_.upload(gx0, gy0, gx1 - gx0, gy1 - gy0, 0, gather.data(), gx1 - gx0);
 }
 
 paintcore::CellRect GpuSubsurfaceSpread::mapped_box() const {
@@ -155,7 +205,8 @@ paintcore::CellRect GpuSubsurfaceSpread::mapped_box() const {
   paintcore::CellRect box{width_, height_, 0, 0};
   for (int y = 0; y < height_; ++y) {
     const std::uint8_t* row = mapped_.data() + static_cast<std::size_t>(y) * width_;
-    const std::uint8_t* first = std::find(row, row + width_, std::uint8_t{1});
+    const std::uint8_t* first =
+        std::find_if(row, row + width_, [](std::uint8_t r) { return r > 0; });
     if (first == row + width_) continue;
     int last = width_ - 1;
     while (row[last] == 0) --last;
@@ -177,7 +228,8 @@ void GpuSubsurfaceSpread::spread(const paintcore::CellRect& cells) {
   if (!pass_) {
     std::string source = "#version 330 core\n#define SPREAD_MAX_RADIUS " +
                          std::to_string(kMaxRadius) + "\n#define SPREAD_ATLAS_COLUMNS " +
-                         std::to_string(kAtlasColumns) + "\n";
+                         std::to_string(kAtlasColumns) + "\n#define SPREAD_BLOCK " +
+                         std::to_string(kBlock) + "\n";
     source += shaders::subsurface_spread_frag;
     pass_ = std::make_unique<FullscreenPass>("subsurface_spread_frag.glsl", std::move(source));
   }
@@ -200,11 +252,12 @@ void GpuSubsurfaceSpread::spread(const paintcore::CellRect& cells) {
   body().color().bind(0);
   ids_.bind(1);
   (atlas_.id() != 0 ? atlas_ : blank_).bind(2);
+  block_radius_.bind(3);
   glUniform1i(program.uniform("body"), 0);
   glUniform1i(program.uniform("kernel_ids"), 1);
   glUniform1i(program.uniform("kernels"), 2);
+  glUniform1i(program.uniform("block_radius"), 3);
   glUniform2i(program.uniform("canvas_cells"), width_, height_);
-  glUniform1i(program.uniform("radius"), radius_);
   pass_->draw();
   check_gl_error("subsurface spread pass");
 }

@@ -58,6 +58,8 @@ class GpuSubsurfaceSpread {
   using KernelKey = std::tuple<double, double, double, float>;
   int kernel_id(const render::dipole::Medium& medium, float layer_mm, double cell_mm);
   void allocate_cell_textures();
+  // Remakes the gather's radius of the blocks [bx0, bx1) x [by0, by1) and their neighbours.
+  void update_block_radius(int bx0, int by0, int bx1, int by1);
 
   int width_, height_;
   double cell_mm_ = 0.0;
@@ -67,11 +69,13 @@ class GpuSubsurfaceSpread {
   int atlas_rows_ = 0;               // rows of blocks the atlas texture holds
   bool atlas_stale_ = false;
   int radius_ = 0;
-  std::vector<std::uint8_t> mapped_;  // per cell, once any cell spreads
+  std::vector<std::uint8_t> mapped_;  // per cell: its largest kernel radius, 0: not mapped
+  std::vector<std::uint8_t> own_block_radius_;  // per block: the largest radius in it
   int mapped_count_ = 0;
-  Texture ids_;      // RGBA32F: kernel + 1 per channel (0: none)
-  Texture lengths_;  // RGBA32F: spread lengths (cells), for the map's view
-  Texture atlas_;    // RG32F: kernel weights and their prefix sums
+  Texture ids_;           // RGBA32F: kernel + 1 per channel (0: none)
+  Texture lengths_;       // RGBA32F: spread lengths (cells), for the map's view
+  Texture atlas_;         // RG32F: kernel weights and their prefix sums
+  Texture block_radius_;  // R32F per block: the largest radius that reaches it
   std::unique_ptr<Framebuffer> body_;
   std::unique_ptr<Framebuffer> delta_;
   Texture blank_;  // one zero texel, bound while nothing spreads
