@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <impasto/input/stroke_file.hpp>
 #include <impasto/paintcore/paint_surface.hpp>
+#include <sstream>
 #include <string>
 #include <variant>
 
@@ -98,6 +99,15 @@ TEST(WindowSurfaceOps, PaintLoadedWithAMediumIsRecordedAndLaidWithIt) {
 TEST(WindowSurfaceOps, TheVarnishDialogCoatsTheTypedCellsAsOneUndoStep) {
   const VarnishRequest whole = varnish_request(Finish::satin, 0.03f, true, {4, 5, 10, 6});
   EXPECT_FALSE(whole.region.has_value()) << "'the whole painting' ignores the typed region";
+  // The session records the request as a stroke file's record, to the dialog's decimals.
+  EXPECT_EQ(whole.thickness_mm, 0.03);
+  {
+    input::StrokeFile recorded;
+    recorded.events = {input::StrokeEvent{whole}};
+    std::ostringstream text;
+    input::format_strokes(text, recorded);
+    EXPECT_NE(text.str().find("\nvarnish satin 0.03\n"), std::string::npos) << text.str();
+  }
   const VarnishRequest part = varnish_request(Finish::gloss, 0.05f, false, {4, 5, 10, 6});
   ASSERT_TRUE(part.region.has_value());
   EXPECT_EQ(*part.region, (paintcore::CellRect{4, 5, 14, 11}));  // x, y, w, h
@@ -110,7 +120,12 @@ TEST(WindowSurfaceOps, TheVarnishDialogCoatsTheTypedCellsAsOneUndoStep) {
   EXPECT_FALSE(surface_at(p, 14, 10).varnished()) << "w cells wide, no more";
   EXPECT_FALSE(surface_at(p, 13, 11).varnished()) << "h cells high, no more";
   EXPECT_FALSE(surface_at(p, 3, 5).varnished());
-  EXPECT_NEAR(surface_at(p, 8, 8).varnish_mm, 0.05f, 1e-6f);
+  // The coat levels the weave under it (docs/surface.md, "The varnish's relief"): its volume
+  // is the typed thickness over the typed cells.
+  double coat = 0.0;
+  for (int y = 5; y < 11; ++y)
+    for (int x = 4; x < 14; ++x) coat += surface_at(p, x, y).varnish_mm;
+  EXPECT_NEAR(coat / 60.0, 0.05, 1e-6);
   ASSERT_TRUE(p.undo());
   EXPECT_EQ(p.state_hash(), bare);
 }

@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 #include <impasto/render/surface_brdf.hpp>
@@ -21,7 +22,9 @@ VarnishRequest varnish_request(paintcore::Finish finish, float thickness_mm, boo
                                const std::array<int, 4>& region) {
   VarnishRequest request;
   request.finish = finish;
-  request.thickness_mm = thickness_mm;
+  // To the dialog's 3 decimals: the recording's `varnish` record reads "0.03", not the
+  // float's widening.
+  request.thickness_mm = std::round(1000.0 * thickness_mm) / 1000.0;
   if (!whole)
     request.region =
         paintcore::CellRect{region[0], region[1], region[0] + region[2], region[1] + region[3]};

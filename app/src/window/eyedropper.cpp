@@ -33,6 +33,8 @@ std::optional<PickedPaint> pick_paint(const paintcore::Painting& painting, doubl
   picked.dry_mm = probe.dry_mm;
   picked.dry = probe.dry_cells > probe.wet_cells;
   picked.medium = paintcore::loadable_medium(probe.medium);
+  // To the Palette slider's 2 decimals, as its own loads are (window_state.hpp, load_event).
+  if (picked.medium) picked.medium->amount = std::round(100.0 * picked.medium->amount) / 100.0;
   const std::vector<double> shares = probe.shares();
   const auto& slots = painting.pigment_slots();
   for (std::size_t s = 0; s < shares.size() && s < slots.size(); ++s)
