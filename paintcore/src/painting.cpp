@@ -336,11 +336,12 @@ void Painting::stroke_to(const PenSample& sample) {
             : std::hypot(target.x_cells - from.x_cells, target.y_cells - from.y_cells) * (t1 - t0);
   // CFL: the brush moves at most one cell per step (by the curve's fastest point: a straight
   // segment is cut into equal whole-cell steps, so a steady stroke leaves no step pattern),
-  // and the squeeze at most half a cell.
-  // (A hair under a whole cell counts as one: positions come from mm and carry rounding.)
+  // or a big brush's long step (Stepper::max_step_cells), and the squeeze at most half a cell.
+  // (A hair over a whole step counts as one: positions come from mm and carry rounding.)
   const double max_seconds = Stepper::max_step_seconds(p.params, p.canvas.cell_mm());
+  const double max_cells = Stepper::max_step_cells(p.params, p.brush.cells_across());
   const auto count = static_cast<std::int64_t>(
-      std::max({1.0, std::ceil(cells_per_t - 1e-9), std::ceil(seconds / max_seconds)}));
+      std::max({1.0, std::ceil(cells_per_t / max_cells - 1e-9), std::ceil(seconds / max_seconds)}));
   const double step_seconds = seconds / static_cast<double>(count);
   const double follow_cells = std::max(1.0, p.brush.settings().size_mm / p.canvas.cell_mm());
   const auto before_change = [&p](int index) { p.before_stroke_tile_change(index); };

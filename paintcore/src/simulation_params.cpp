@@ -22,11 +22,20 @@ constexpr NamedParam kNamedParams[] = {
     {"min_film_mm", &SimulationParams::min_film_mm},
     {"settle_time_s", &SimulationParams::settle_time_s},
     {"wet_support", &SimulationParams::wet_support},
+    // Not in painting files (simulation_param_fields ends before them).
+    {"long_step_share", &SimulationParams::long_step_share},
+    {"long_step_from_cells", &SimulationParams::long_step_from_cells},
+    {"long_step_drag_cells", &SimulationParams::long_step_drag_cells},
 };
+constexpr std::size_t kFileParams = 13;
 
 }  // namespace
 
 std::span<const NamedParam> simulation_param_fields() {
+  return std::span<const NamedParam>(kNamedParams).first(kFileParams);
+}
+
+std::span<const NamedParam> all_simulation_params() {
   return kNamedParams;
 }
 
@@ -86,6 +95,17 @@ void validate(const SimulationParams& p) {
   check(p.wet_support, "wet_support", false);
   if (p.wet_support > 1.0)
     throw std::runtime_error("simulation params: field 'wet_support' must be <= 1");
+  check(p.long_step_share, "long_step_share", false);
+  if (p.long_step_share > 0.5)
+    throw std::runtime_error(
+        "simulation params: field 'long_step_share' must be <= 0.5 (of the brush's width)");
+  check(p.long_step_from_cells, "long_step_from_cells", true);
+  if (p.long_step_from_cells > 1e6)
+    throw std::runtime_error("simulation params: field 'long_step_from_cells' must be <= 1e6");
+  check(p.long_step_drag_cells, "long_step_drag_cells", true);
+  if (p.long_step_drag_cells < 1.0 || p.long_step_drag_cells > 1e6)
+    throw std::runtime_error(
+        "simulation params: field 'long_step_drag_cells' must be in [1, 1e6] (cells)");
   if (p.plough > 100.0 || p.squeeze_mm_s > 1000.0 || p.settle_time_s > 3600.0)
     throw std::runtime_error(
         "simulation params: 'plough' must be <= 100, 'squeeze_mm_s' <= 1000 and "

@@ -35,7 +35,7 @@ IMPASTO_SIMD_CLONES void clamp_at_zero(float* __restrict amount, std::size_t cou
 
 }  // namespace
 
-void Stepper::resize(int slot_count, std::size_t brush_cells) {
+void Stepper::resize(int slot_count, std::size_t brush_cells, int substeps) {
   const Window& w = win_;
   const std::size_t n = w.padded();
   const std::size_t cells = static_cast<std::size_t>(w.width) * w.height;
@@ -44,6 +44,13 @@ void Stepper::resize(int slot_count, std::size_t brush_cells) {
     if (grid->size() < n) grid->resize(n);
   if (pigment_.size() < n * slots) pigment_.resize(n * slots);
   if (new_pigment_.size() < n * slots) new_pigment_.resize(n * slots);
+  if (substeps > 1) {
+    if (substep_wet_.size() < n) substep_wet_.resize(n);
+    if (substep_pigment_.size() < n * slots) substep_pigment_.resize(n * slots);
+    zero_border(substep_wet_.data(), w.width, w.height);
+    for (std::size_t s = 0; s < slots; ++s)
+      zero_border(substep_pigment_.data() + s * n, w.width, w.height);
+  }
   if (brush_cell_.size() < cells) brush_cell_.resize(cells);
   if (brush_paint_at_.size() < cells) brush_paint_at_.resize(cells);
   if (brush_share_cap_.size() < cells) brush_share_cap_.resize(cells);
@@ -197,6 +204,39 @@ IMPASTO_SIMD_CLONES void Stepper::velocity_rows(const StepInputs& in, int r0, in
     // v = drag * brush motion under the head, weighted by how fully it covers the cell
     // (branch-free: vectorises). The squeeze is a separate pass (squeeze_rows).
     for (int x = 0; x < w.width; ++x) {
+      vx[x] = weight[x] * in.brush_vx;
+      vy[x] = weight[x] * in.brush_vy;
+    }
+    // Cells beyond the canvas do not exist: paint at the edge cannot leave.
+    if (w.x0 == 0) vx[0] = std::max(vx[0], 0.0f);
+    if (w.x0 + w.width - 1 == last_x) vx[w.width - 1] = std::min(vx[w.width - 1], 0.0f);
+    if (w.y0 + y == 0)
+      for (int x = 0; x < w.width; ++x) vy[x] = std::max(vy[x], 0.0f);
+    if (w.y0 + y == last_y)
+      for (int x = 0; x < w.width; ++x) vy[x] = std::min(vy[x], 0.0f);
+  }
+}
+
+IMPASTO_SIMD_CLONES void Stepper::shifted_velocity_rows(const StepInputs& in, int shift_x,
+                                                        int shift_y, int r0, int r1) {
+  // velocity_rows with the contact where it was shift cells back along the move: cell
+  // (x, y) moves as the step's cell (x + shift_x, y + shift_y) does.
+  const Window& w = win_;
+  const std::ptrdiff_t s = w.stride();
+  const int last_x = in.canvas->width_cells() - 1, last_y = in.canvas->height_cells() - 1;
+  const int begin = std::clamp(-shift_x, 0, w.width),
+            end = std::clamp(w.width - shift_x, 0, w.width);
+  for (int y = r0; y < r1; ++y) {
+    const std::ptrdiff_t row = (y + 1) * s + 1;
+    float* __restrict vx = vx_.data() + row;
+    float* __restrict vy = vy_.data() + row;
+    std::fill_n(vx, w.width, 0.0f);
+    std::fill_n(vy, w.width, 0.0f);
+    const int from_y = y + shift_y;
+    if (from_y < 0 || from_y >= w.height) continue;
+    const float* __restrict weight =
+        contact_weight_.data() + static_cast<std::ptrdiff_t>(from_y) * w.width + shift_x;
+    for (int x = begin; x < end; ++x) {
       vx[x] = weight[x] * in.brush_vx;
       vy[x] = weight[x] * in.brush_vy;
     }
@@ -401,6 +441,11 @@ double Stepper::max_step_seconds(const SimulationParams& params, double cell_mm)
   return params.squeeze_mm_s > 0.0 ? 0.5 * cell_mm / params.squeeze_mm_s : 1e300;
 }
 
+double Stepper::max_step_cells(const SimulationParams& params, int brush_cells) {
+  if (brush_cells < params.long_step_from_cells) return 1.0;
+  return std::max(1.0, params.long_step_share * brush_cells);
+}
+
 void Stepper::copy_rows_to_tiles(Canvas& canvas, int slot_count, const float* wet,
                                  const float* pigment, int r0, int r1, int only_tile) const {
   const Window& w = win_;
@@ -525,8 +570,32 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   const int y0 = static_cast<int>(std::clamp(std::floor(min_y) - 1.0, 0.0, height));
   const int y1 = static_cast<int>(std::clamp(std::ceil(max_y) + 1.0, 0.0, height));
   if (x1 <= x0 || y1 <= y0) return false;  // the brush is off the canvas
-  win_ = Window{x0, y0, x1 - x0, y1 - y0};
-  resize(slot_count, brush.cell_count());
+  // A long step (more than a cell) drags the paint in sub-steps of at most
+  // long_step_drag_cells travelled, each with the contact where the brush was then (the
+  // step's own, shifted back along the move): the drag moves the paint nearly as one-cell
+  // steps would, and the contact's trailing edge sweeps the canvas instead of jumping (a jump
+  // left a ridge every step). The window reaches back over the cells swept.
+  const double travel = std::max(std::abs(move_x), std::abs(move_y));
+  const int substeps =
+      travel > 1.0 + 1e-6
+          ? static_cast<int>(std::ceil(
+                std::max(travel / params.long_step_drag_cells, params.drag * travel) - 1e-6))
+          : 1;
+  shifts_.clear();
+  for (int j = 1; j < substeps; ++j) {
+    const double back = static_cast<double>(substeps - j) / substeps;
+    shifts_.push_back({static_cast<int>(std::lround(back * move_x)),
+                       static_cast<int>(std::lround(back * move_y))});
+  }
+  const bool long_step = travel > 1.0 + 1e-6;
+  const int back_x = long_step ? static_cast<int>(std::ceil(std::abs(move_x))) : 0;
+  const int back_y = long_step ? static_cast<int>(std::ceil(std::abs(move_y))) : 0;
+  const int wx0 = move_x > 0.0 ? std::max(x0 - back_x, 0) : x0;
+  const int wx1 = move_x < 0.0 ? std::min(x1 + back_x, canvas.width_cells()) : x1;
+  const int wy0 = move_y > 0.0 ? std::max(y0 - back_y, 0) : y0;
+  const int wy1 = move_y < 0.0 ? std::min(y1 + back_y, canvas.height_cells()) : y1;
+  win_ = Window{wx0, wy0, wx1 - wx0, wy1 - wy0};
+  resize(slot_count, brush.cell_count(), substeps);
   find_bases(canvas);
 
   // The tip sinks depth_mm below the surface it rests on: the ground and dry paint, and the
@@ -556,8 +625,8 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   in.footing_mm = static_cast<float>(footing / rest_cells);
   in.ground_fill = static_cast<float>(params.ground_fill);
   in.tip_mm = static_cast<float>(rest / rest_cells - pose.depth_mm);
-  in.brush_vx = static_cast<float>(params.drag * move_x);
-  in.brush_vy = static_cast<float>(params.drag * move_y);
+  in.brush_vx = static_cast<float>(params.drag * move_x / substeps);
+  in.brush_vy = static_cast<float>(params.drag * move_y / substeps);
   // The squeeze moves paint down the penetration's slope (mm/mm) by plough mm per mm
   // travelled plus squeeze_mm_s per second: in cells this step, per unit slope, over the
   // central difference's two cells.
@@ -628,23 +697,66 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
       lo = std::min(lo, contact_lo_[k] - 1);
       hi = std::max(hi, contact_hi_[k] + 1);
     }
+    // A long step's earlier sub-steps drag where the contact was: shifted back.
+    for (const auto [sx, sy] : shifts_)
+      for (int near = std::max(y + sy - 1, 0); near <= std::min(y + sy + 1, rows - 1); ++near) {
+        const auto k = static_cast<std::size_t>(near);
+        if (contact_hi_[k] <= contact_lo_[k]) continue;
+        lo = std::min(lo, contact_lo_[k] - sx - 1);
+        hi = std::max(hi, contact_hi_[k] - sx + 1);
+      }
     span_lo_[static_cast<std::size_t>(y)] = std::clamp(lo, 0, cols);
     span_hi_[static_cast<std::size_t>(y)] = std::clamp(hi, 0, cols);
     if (span_hi_[static_cast<std::size_t>(y)] <= span_lo_[static_cast<std::size_t>(y)])
       span_lo_[static_cast<std::size_t>(y)] = span_hi_[static_cast<std::size_t>(y)] = 0;
   }
-  parallel_rows(rows, cols, [&](int r0, int r1) {
+  int pass = 1;  // of the advection's sub-steps
+  const auto advect_rows = [&](int r0, int r1) {
     for (int y = r0; y < r1; ++y) {
       const int lo = span_lo_[static_cast<std::size_t>(y)];
       const int hi = span_hi_[static_cast<std::size_t>(y)];
-      // Outside the span the step's grids hold the input (the squeeze reads neighbours).
+      // Outside the span the step's grids hold the input (the squeeze reads neighbours);
+      // from a third sub-step on, the grid written holds it already (two grids alternate).
       const std::size_t row = static_cast<std::size_t>(y + 1) * win_.stride() + 1;
-      for (std::size_t k = 0; k < from_.size(); ++k) {
+      for (std::size_t k = 0; k < from_.size() && pass <= 2; ++k) {
         std::copy_n(from_[k] + row, lo, to_[k] + row);
         std::copy_n(from_[k] + row + hi, cols - hi, to_[k] + row + hi);
       }
       advection_.apply_span(from_.data(), to_.data(), static_cast<int>(from_.size()), y, lo, hi);
     }
+  };
+  const auto prepare_rows = [&](int r0, int r1) {
+    advection_.prepare_quadrant_rows(r0, r1, in.brush_vx < 0.0f ? -1 : 1,
+                                     in.brush_vy < 0.0f ? -1 : 1, vx_.data(), vy_.data(), from_[0],
+                                     in.min_film_mm);
+  };
+  for (int substep = 1; substep < substeps; ++substep) {
+    // A long step's earlier sub-step, with the contact shifted back: from what the one before
+    // left (swapped out of the new_ grids) back into them. (The transfer reads the step's
+    // input, wet_, untouched.)
+    const auto [sx, sy] = shifts_[static_cast<std::size_t>(substep - 1)];
+    parallel_rows(rows, cols, [&](int r0, int r1) {
+      shifted_velocity_rows(in, sx, sy, r0, r1);
+      prepare_rows(r0, r1);
+    });
+    parallel_rows(rows, cols, advect_rows);
+    ++pass;
+    std::swap(new_wet_, substep_wet_);
+    std::swap(new_pigment_, substep_pigment_);
+    from_.assign({substep_wet_.data()});
+    to_.assign({new_wet_.data()});
+    for (int s = 0; s < slot_count; ++s) {
+      from_.push_back(substep_pigment_.data() + static_cast<std::size_t>(s) * win_.padded());
+      to_.push_back(new_pigment_.data() + static_cast<std::size_t>(s) * win_.padded());
+    }
+  }
+  if (substeps > 1)  // the last sub-step: the step's own contact, on what the others left
+    parallel_rows(rows, cols, [&](int r0, int r1) {
+      shifted_velocity_rows(in, 0, 0, r0, r1);
+      prepare_rows(r0, r1);
+    });
+  parallel_rows(rows, cols, [&](int r0, int r1) {
+    advect_rows(r0, r1);
     if (transfers) transfer_rows(in, r0, r1);
   });
   // 3. The brush gives what the canvas took, and the squeeze's faces. Canvas rows that share

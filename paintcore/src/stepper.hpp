@@ -23,10 +23,12 @@ class Stepper {
   using BeforeTileChange = std::function<void(int tile_index)>;
 
   // Runs one step with the brush at `pose`, having moved by (move_x, move_y) cells in
-  // `seconds` since the previous step (|move| <= 1 and the squeeze at most one cell: the CFL
-  // limits, see max_step_seconds). With lift_off the brush, still, leaves the paint: the
-  // film splits fully by SimulationParams::lift_share. Returns false, changing nothing, when the
-  // brush touches no paint surface. Call inside the painting's task arena.
+  // `seconds` since the previous step (|move| <= max_step_cells and the squeeze at most one
+  // cell: the CFL limits, see max_step_seconds; a long step's drag is advected in sub-steps
+  // of at most long_step_drag_cells travelled, and of at most a cell dragged). With lift_off the
+  // brush, still, leaves the paint: the film splits fully by SimulationParams::lift_share. Returns
+  // false, changing nothing, when the brush touches no paint surface. Call inside the painting's
+  // task arena.
   bool step(Canvas& canvas, Brush& brush, int slot_count, const SimulationParams& params,
             const BrushPose& pose, double move_x, double move_y, double seconds,
             const BeforeTileChange& before_change, bool lift_off = false);
@@ -34,6 +36,9 @@ class Stepper {
   // The longest time one step may take so that the squeeze moves paint at most half a cell
   // where the penetration's slope is 1.
   static double max_step_seconds(const SimulationParams& params, double cell_mm);
+  // The longest move of one step, in cells: 1, or for a brush at least long_step_from_cells
+  // across, long_step_share of its width (if that is more).
+  static double max_step_cells(const SimulationParams& params, int brush_cells);
 
   std::size_t last_window_cells() const { return last_window_cells_; }
 
@@ -87,12 +92,13 @@ class Stepper {
     bool sharing_binds;
   };
 
-  void resize(int slot_count, std::size_t brush_cells);
+  void resize(int slot_count, std::size_t brush_cells, int substeps);
   const float* base_heights(const Canvas& canvas, int tile_index);
   void find_bases(const Canvas& canvas);
   void gather_rows(const StepInputs& in, int r0, int r1);
   void penetrate_rows(const StepInputs& in, int r0, int r1);
   void velocity_rows(const StepInputs& in, int r0, int r1);
+  void shifted_velocity_rows(const StepInputs& in, int shift_x, int shift_y, int r0, int r1);
   void transfer_rows(const StepInputs& in, int r0, int r1);
   void squeeze_rows(const StepInputs& in, int r0, int r1);
   void apply_squeeze_rows(int slot_count, int r0, int r1);
@@ -112,6 +118,8 @@ class Stepper {
   // Padded window grids (see advection.hpp for the layout).
   std::vector<float> ground_, wet_, pen_, vx_, vy_, new_wet_;
   std::vector<float> pigment_, new_pigment_;  // slot-major, padded grids
+  // Advection's sub-steps after the first go from these to new_wet_, new_pigment_ (swapped).
+  std::vector<float> substep_wet_, substep_pigment_;
   // Unpadded per-cell data of the transfer.
   std::vector<std::int32_t> brush_cell_;       // brush cell touching each window cell, or -1
   std::vector<float> brush_paint_at_;          // its paint height (0 where none touches)
@@ -125,8 +133,12 @@ class Stepper {
   std::vector<int> row_contacts_;
   std::vector<int> contact_lo_, contact_hi_;  // each row's touching cells, [lo, hi)
   std::vector<int> span_lo_, span_hi_;        // and where paint can change (see step)
-  std::vector<const float*> from_;            // the quantities advection moves
-  std::vector<float*> to_;                    // and where they go
+  struct Shift {
+    int x, y;
+  };
+  std::vector<Shift> shifts_;       // a long step's earlier sub-steps' contact
+  std::vector<const float*> from_;  // the quantities advection moves
+  std::vector<float*> to_;          // and where they go
   Advection advection_;
   // Weave heights of the window's tiles; tiles never painted are cached here, so hovering
   // costs no tile memory.

@@ -3,6 +3,9 @@
 // Benchmark: a round brush of N x N cells, full of paint, strokes back and forth across a
 // painted canvas one cell per step, so every step does the whole pipeline.
 #include <cstdint>
+#include <vector>
+
+#include "impasto/paintcore/simulation_params.hpp"
 
 namespace impasto::paintcore {
 
@@ -17,5 +20,34 @@ struct SimBenchmarkResult {
 
 // Runs `steps` timed steps (after a short warm-up) with `threads` threads (0: all cores).
 SimBenchmarkResult run_sim_benchmark(int brush_cells, int steps, int threads = 0);
+
+// The cost and error of long steps (SimulationParams::long_step_share): on a 300-dpi canvas
+// with a band of blue across it, a round brush N cells across loaded with white (half its
+// area times 0.5 mm) draws an arc through the band, sampled like a mouse (8 ms, a quarter
+// of the brush apart); the same stroke with one-cell steps is the reference.
+struct LongStepResult {
+  int brush_cells = 0;
+  double share = 0;                 // long_step_share (0: the one-cell reference)
+  double step_cells = 0;            // the longest step it allows, cells
+  std::uint64_t steps = 0;          // simulation steps of the stroke
+  double seconds = 0;               // wall time of the stroke (median of runs)
+  double mean_height_mm = 0;        // the reference's mean wet height where it holds paint
+  double mean_height_error_mm = 0;  // |wet height - the reference's|, mean over those cells
+  double max_height_error_mm = 0;
+  // The same for the mean heights of 4 x 4 cell blocks (0.34 mm): the mark's shape without
+  // the bristles' furrows, which move with any change of path.
+  double mean_block_error_mm = 0;
+  double max_block_error_mm = 0;
+  double mean_white_error = 0;  // |white's share of the pigment - the reference's|, mean
+  double max_white_error = 0;   // (over cells holding at least 0.01 mm in both)
+  double volume_error_mm3 = 0;  // canvas + brush - (loaded - wiped): what was not conserved
+  double volume_mm3 = 0;        // loaded - wiped
+};
+// The one-cell reference first, then each share; `runs` timed repeats (the median is kept).
+// `params` holds the rest of the model (long_step_drag_cells, say).
+std::vector<LongStepResult> run_long_step_benchmark(int brush_cells,
+                                                    const std::vector<double>& shares, int runs,
+                                                    int threads = 0,
+                                                    const SimulationParams& params = {});
 
 }  // namespace impasto::paintcore

@@ -42,6 +42,15 @@ struct SimulationParams {
   // Levelling of the wet paint a stroke leaves: it flows for settle_time_s after the stroke
   // until its slopes are held by the paint body's yield stress (paint_body.hpp).
   double settle_time_s = 2.0;
+  // Long steps, an approximation measured in docs/simulation.md ("Long steps"): a brush at
+  // least long_step_from_cells across moves up to long_step_share of its width a step
+  // instead of one cell (a 128-cell brush: 8 cells, an eighth of the steps); narrower brushes,
+  // or a share of 0, keep the one-cell steps bit for bit. A long step's drag is advected in
+  // sub-steps of at most long_step_drag_cells of the brush's travel, each with the contact
+  // where the brush then was.
+  double long_step_share = 0.0625;
+  double long_step_from_cells = 64.0;
+  double long_step_drag_cells = 1.0;
 };
 
 // Throws std::runtime_error naming the field when a parameter is out of range or not finite.
@@ -52,7 +61,11 @@ struct NamedParam {
   const char* name;
   double SimulationParams::*field;
 };
+// The parameters a painting file holds (docs/painting-format.md).
 std::span<const NamedParam> simulation_param_fields();
+// Those and the long steps' settings, which painting files do not hold yet (a painting
+// reopened, and a session replayed, step with the defaults, as the window does).
+std::span<const NamedParam> all_simulation_params();
 
 // The parameters by name, for command lines and settings files: sets `name` from "NAME=VALUE"
 // text; throws naming the field (and listing the known names) when it can't. Does not validate.
