@@ -153,8 +153,12 @@ TEST(SurfaceMedium, MatteVarnishTakesTheHighlightAwayAndUndoGivesItBack) {
   p.dry(1.0);
   const Image varnished = shade_painting(s, p);
   EXPECT_LT(band(varnished, p, kTop0, kTop1).peak, 0.5f * highlight);
-  for (int y = kBottom0; y < kBottom1; ++y)  // the other stroke is untouched
-    for (int x = 50; x < 110; ++x) ASSERT_EQ(luminance(varnished, x, y), luminance(before, x, y));
+  // The other stroke keeps its surface; only the coat's raised relief reaches it, through the
+  // relief's occlusion and shadows (a 0.03 mm step a few cells away): a trace.
+  for (int y = kBottom0; y < kBottom1; ++y)
+    for (int x = 50; x < 110; ++x)
+      ASSERT_NEAR(luminance(varnished, x, y), luminance(before, x, y),
+                  1e-3f * luminance(before, x, y));
   ASSERT_TRUE(p.undo());
   ASSERT_TRUE(p.undo());
   EXPECT_EQ(shade_painting(s, p).rgb, before.rgb);
