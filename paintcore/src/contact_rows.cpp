@@ -20,13 +20,14 @@ constexpr float kBelowBound = 1.0f - 1e-5f;
 // row kernels. Returns 1 where the brush touches the cell.
 [[gnu::always_inline]] inline int write_contact(int x, float coverage, float underside,
                                                 bool covered, std::int32_t b, float paint,
-                                                float surface, float tip_mm, bool lift_off,
+                                                float ground, float wet, float tip_mm,
+                                                bool lift_off, float footing_mm, float ground_fill,
                                                 float* pen, std::int32_t* cell, float* weight,
                                                 float* on_brush) {
   // The head presses where its underside is below the paint surface; the paint hanging
   // under the bristles touches before that (a loaded brush lays a broad mark, a dry one
   // skips).
-  const float penetration = surface - (tip_mm + underside);
+  const float penetration = ground + wet - (tip_mm + underside);
   // Where the brush lifts, the film spans the whole head, bristle gaps and all.
   const bool touches = covered & (lift_off | (penetration + paint > 0.0f));
   // (Masks by multiplication, of finite values: selects here became branches.)
@@ -35,8 +36,12 @@ constexpr float kBelowBound = 1.0f - 1e-5f;
   pen[x] = mask * greater(penetration, 0.0f);
   cell[x] = (b + 1) * hit - 1;
   on_brush[x] = mask * paint;
-  // The head moves the paint in full from half a cell inside its edge.
-  weight[x] = mask * lesser(greater(2.0f * coverage - 1.0f, 0.0f), 1.0f);
+  // The head moves the paint in full from half a cell inside its edge, all but what lies in
+  // a valley of the ground below its footing: the threads around hold that (the drag used
+  // to carry it onto the crowns ahead, printing the weave back through thick paint).
+  const float trapped = lesser(ground_fill * greater(footing_mm - ground, 0.0f), wet);
+  const float mobile = wet > 0.0f ? (wet - trapped) / wet : 1.0f;
+  weight[x] = mask * mobile * lesser(greater(2.0f * coverage - 1.0f, 0.0f), 1.0f);
   return hit;
 }
 
@@ -54,6 +59,7 @@ IMPASTO_SIMD_CLONES int penetrate_row(int begin, int end, const HeadRow& head,
   const float u0 = head.u0, v0 = head.v0, step_u = head.step_u, step_v = head.step_v;
   const float tip_mm = head.tip_mm;
   const bool lift_off = head.lift_off;
+  const float footing_mm = head.footing_mm, ground_fill = head.ground_fill;
   int contacts = 0;
   for (int x = begin; x < end; ++x) {
     // The head between brush cell centres: coverage and underside interpolated bilinearly,
@@ -78,8 +84,9 @@ IMPASTO_SIMD_CLONES int penetrate_row(int begin, int end, const HeadRow& head,
     const int i_near = static_cast<int>(u + 0.5f), j_near = static_cast<int>(v + 0.5f);
     const bool covered = inside & (coverage_grid[j_near * padded + i_near] > 0.0f);
     const std::int32_t b = covered ? (j_near - 1) * n + (i_near - 1) : 0;
-    contacts += write_contact(x, coverage, underside, covered, b, brush_paint[b],
-                              ground[x] + wet[x], tip_mm, lift_off, pen, cell, weight, on_brush);
+    contacts +=
+        write_contact(x, coverage, underside, covered, b, brush_paint[b], ground[x], wet[x], tip_mm,
+                      lift_off, footing_mm, ground_fill, pen, cell, weight, on_brush);
   }
   return contacts;
 }
@@ -126,6 +133,7 @@ IMPASTO_SIMD_CLONES int penetrate_aligned_row(int width, const HeadRow& head, bo
   const float s = along_v ? head.u0 : head.v0;
   const float tip_mm = head.tip_mm;
   const bool lift_off = head.lift_off;
+  const float footing_mm = head.footing_mm, ground_fill = head.ground_fill;
   if (!(s >= 0.0f && s < limit)) {  // the row passes beside the head
     std::fill_n(pen, width, 0.0f);
     std::fill_n(cell, width, -1);
@@ -172,8 +180,9 @@ IMPASTO_SIMD_CLONES int penetrate_aligned_row(int width, const HeadRow& head, bo
     const float paint = paint_at[k_near];
     const bool covered = inside & (paint >= 0.0f);
     const std::int32_t b = covered ? first_cell + k_near * cell_step : 0;
-    contacts += write_contact(x, coverage, underside, covered, b, covered ? paint : 0.0f,
-                              ground[x] + wet[x], tip_mm, lift_off, pen, cell, weight, on_brush);
+    contacts +=
+        write_contact(x, coverage, underside, covered, b, covered ? paint : 0.0f, ground[x], wet[x],
+                      tip_mm, lift_off, footing_mm, ground_fill, pen, cell, weight, on_brush);
   }
   return contacts;
 }
@@ -205,9 +214,11 @@ IMPASTO_SIMD_CLONES void transfer_row(int width, const FilmSplit& split,
     // it holds; dividing the height by k instead printed the sharing pattern into the paint.
     // (A hair below the bound: float rounding must never let the brush cell go negative.)
     const float a_b = kBelowBound * lesser(lesser(on_brush[x], tip_film_mm), share_cap[x]);
-    // The film split (transfer.hpp); exactly 0 where nothing touches.
-    const float amount = brush_transfer_amount(a_c, a_b, relax, deposit_share,
-                                               ground_fill * (footing_mm - ground[x]));
+    // The film split (transfer.hpp), the ground's valleys filled as deep as the film
+    // allows; exactly 0 where nothing touches.
+    const float fill =
+        valley_fill(footing_mm - ground[x], deposit_share * (a_b + a_c), ground_fill);
+    const float amount = brush_transfer_amount(a_c, a_b, relax, deposit_share, fill);
     const float moved = touches ? amount : 0.0f;
     // Pigments go in the source's proportions (volume-weighted mixing).
     const float source = moved > 0.0f ? on_brush[x] : new_wet[x];

@@ -143,6 +143,8 @@ void Stepper::penetrate_rows(const StepInputs& in, int r0, int r1) {
   head.step_v = static_cast<float>(in.placement.to_brush[2]);
   head.tip_mm = in.tip_mm;
   head.lift_off = in.lift_off;
+  head.footing_mm = in.footing_mm;
+  head.ground_fill = in.ground_fill;
   head.coverage_transposed = in.brush->padded_coverage_transposed().data();
   head.footprint_transposed = in.brush->padded_footprint_mm_transposed().data();
   // A head square to the canvas rows, to a thousandth of a cell across the window (a head

@@ -21,11 +21,25 @@ inline double transfer_relaxation(double distance_mm, double seconds,
   return -std::expm1(-(distance_mm / params.transfer_length_mm + seconds / params.transfer_time_s));
 }
 
+// How much more paint than its even share the canvas keeps in a cell whose ground lies
+// valley_mm below the brush's footing (< 0 on a crown above it), where the split leaves a film
+// of film_mm: paint pressed into a valley of the weave or of dry paint stays there. A film
+// much thicker than the valley is deep fills it level, so that its top follows the brush, not
+// the ground; a thinner one (a scumble, dry-brush) can fill it only by about its own
+// thickness, so the weave reads through: v * film / (film + |v|), by ground_fill.
+template <typename T>
+T valley_fill(T valley_mm, T film_mm, T ground_fill) {
+  const T depth = valley_mm < T(0) ? -valley_mm : valley_mm;
+  const T film = film_mm > T(0) ? film_mm : T(0);
+  const T sum = film + depth;
+  return sum > T(0) ? ground_fill * valley_mm * film / sum : T(0);
+}
+
 // The signed paint height moved from brush to canvas (> 0 deposits, < 0 picks up) for
-// canvas paint a_c, brush paint a_b and a relaxation `relax` in [0, 1]. `fill` (mm) raises
-// the canvas's part where its ground lies below the brush's footing: paint pressed into a
-// valley of the weave or of dry paint stays there, so thick paint buries the texture under
-// it. A deposit never exceeds deposit_share * a_b, a pick-up never (1 - deposit_share) * a_c.
+// canvas paint a_c, brush paint a_b and a relaxation `relax` in [0, 1]. `fill` (mm,
+// valley_fill) raises the canvas's part where its ground lies below the brush's footing and
+// lowers it on the crowns, so thick paint buries the texture under it. A deposit never exceeds
+// deposit_share * a_b, a pick-up never (1 - deposit_share) * a_c.
 template <typename T>
 T brush_transfer_amount(T a_c, T a_b, T relax, T deposit_share, T fill = T(0)) {
   const T amount = (deposit_share * (a_b + a_c) + fill - a_c) * relax;
