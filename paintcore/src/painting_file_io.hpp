@@ -14,6 +14,7 @@
 #include "impasto/files/atomic_file.hpp"
 #include "impasto/files/input_file.hpp"
 #include "impasto/paintcore/painting.hpp"
+#include "impasto/paintcore/painting_file_header.hpp"
 
 namespace impasto::paintcore::file_io {
 
@@ -28,7 +29,8 @@ constexpr char kMagic[8] = {'I', 'M', 'P', 'A', 'S', 'T', 'O', '\0'};
 // added the media and varnish of the tiles that have them (painting_surface_file.hpp).
 constexpr std::uint32_t kVersion = 6;
 constexpr std::uint32_t kOldestVersion = 1;
-constexpr std::size_t kHeaderBytes = sizeof(kMagic) + 4 + 8;
+static_assert(sizeof(kMagic) == kPaintingFileMagicBytes);
+constexpr std::size_t kHeaderBytes = kPaintingFileHeaderBytes;
 constexpr std::uint32_t kMaxStringBytes = 4096;
 // A pigment record is a spectral CSV with its flake data: kilobytes; 16 MB is far beyond any.
 constexpr std::uint32_t kMaxRecordBytes = 16u << 20;

@@ -14,6 +14,7 @@
 
 #include "hasher.hpp"
 #include "impasto/paintcore/painting.hpp"
+#include "impasto/paintcore/painting_file_header.hpp"
 
 namespace paintcore = impasto::paintcore;
 
@@ -36,7 +37,7 @@ void load(const std::vector<std::uint8_t>& bytes) {
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   std::vector<std::uint8_t> bytes(data, data + size);
   load(bytes);
-  constexpr std::size_t kHeader = 8 + 4 + 8;
+  constexpr std::size_t kHeader = paintcore::kPaintingFileHeaderBytes;
   if (bytes.size() >= kHeader + 8) {
     const std::uint64_t payload = bytes.size() - kHeader - 8;
     std::memcpy(bytes.data() + 12, &payload, 8);

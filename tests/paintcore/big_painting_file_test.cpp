@@ -7,23 +7,24 @@
 #include <fstream>
 #include <limits>
 
+#include "../common/scratch_folder.hpp"
 #include "hasher.hpp"
 #include "impasto/paintcore/painting_file_benchmark.hpp"
+#include "impasto/paintcore/painting_file_header.hpp"
 #include "test_util.hpp"
 
 namespace impasto::paintcore {
 namespace {
 
-constexpr std::size_t kHeaderBytes = 8 + 4 + 8;  // magic, version, payload size
+constexpr std::size_t kHeaderBytes = kPaintingFileHeaderBytes;
 const std::vector<std::string> kSlots{"red", "blue", "white", "umber"};
 
 class BigPaintingFile : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("impasto_big_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-            "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::create_directories(dir_);
+    dir_ = impasto::test::scratch_folder(
+        std::string("impasto_big_") +
+        ::testing::UnitTest::GetInstance()->current_test_info()->name());
   }
   void TearDown() override { std::filesystem::remove_all(dir_); }
 

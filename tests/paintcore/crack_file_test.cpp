@@ -9,12 +9,13 @@
 #include <limits>
 
 #include "hasher.hpp"
+#include "impasto/paintcore/painting_file_header.hpp"
 #include "test_util.hpp"
 
 namespace impasto::paintcore {
 namespace {
 
-constexpr std::size_t kHeaderBytes = 8 + 4 + 8;  // magic, version, payload size
+constexpr std::size_t kHeaderBytes = kPaintingFileHeaderBytes;
 // The version these tests write: save() writes 6, which adds at the end of the payload the
 // surface section (paint_surface.hpp), here empty: a u32 zero and the brush's medium (2 f32);
 // payload_of() takes it away.

@@ -14,11 +14,12 @@
 
 #include "hasher.hpp"
 #include "impasto/paintcore/painting.hpp"
+#include "impasto/paintcore/painting_file_header.hpp"
 #include "impasto/paintcore/simulation_params.hpp"
 
 namespace impasto::paintcore::test {
 
-inline constexpr std::size_t kFileHeaderBytes = 8 + 4 + 8;  // magic, version, payload size
+inline constexpr std::size_t kFileHeaderBytes = kPaintingFileHeaderBytes;
 
 inline std::vector<unsigned char> file_bytes(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);

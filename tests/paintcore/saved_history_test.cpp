@@ -6,8 +6,10 @@
 #include <cstring>
 #include <fstream>
 
+#include "../common/scratch_folder.hpp"
 #include "hasher.hpp"
 #include "impasto/paintcore/canvas_reframe.hpp"
+#include "impasto/paintcore/painting_file_header.hpp"
 #include "test_util.hpp"
 
 namespace impasto::paintcore {
@@ -16,15 +18,14 @@ namespace {
 using test::round_brush;
 using test::stroke_line;
 
-constexpr std::size_t kHeaderBytes = 8 + 4 + 8;  // magic, version, payload size
+constexpr std::size_t kHeaderBytes = kPaintingFileHeaderBytes;
 
 class SavedHistory : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("impasto_history_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-            "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::create_directories(dir_);
+    dir_ = impasto::test::scratch_folder(
+        std::string("impasto_history_") +
+        ::testing::UnitTest::GetInstance()->current_test_info()->name());
   }
   void TearDown() override { std::filesystem::remove_all(dir_); }
 

@@ -1,0 +1,12 @@
+#pragma once
+// The painting file's fixed header, for code that reads or edits a saved file's bytes (the
+// loader, and the tests and fuzzer that craft hostile files): the magic, the format version
+// (u32) and the payload's size (u64), little-endian, before the payload.
+#include <cstddef>
+
+namespace impasto::paintcore {
+
+inline constexpr std::size_t kPaintingFileMagicBytes = 8;  // "IMPASTO\0"
+inline constexpr std::size_t kPaintingFileHeaderBytes = kPaintingFileMagicBytes + 4 + 8;
+
+}  // namespace impasto::paintcore
