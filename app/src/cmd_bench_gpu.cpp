@@ -140,8 +140,8 @@ void run(const BenchGpuArgs& args) {
       }
     };
     using Detail = render_gl::ShadedViewCache::Detail;
-    // The window's refinement once the motion stops: a band of rows a frame.
-    std::vector<double> band_ms, refine_frames;
+    // The window's refinement once the motion stops: a few blocks a frame.
+    std::vector<double> block_ms, refine_frames;
     cache.update(renderer, view, args.viewport_w, args.viewport_h);  // the window's first frame
     for (int f = 0; f < args.frames; ++f) {
       view.pixels_per_cell *= 1.01;            // a zoom step: every pixel
@@ -152,7 +152,7 @@ void run(const BenchGpuArgs& args) {
             cache.update(renderer, view, args.viewport_w, args.viewport_h, Detail::kRefining);
         for (const render_gl::PixelRect& r : stats.changed) cache.copy_to(target.id(), r);
         glFinish();
-        band_ms.push_back(ms_since(start));
+        block_ms.push_back(ms_since(start));
         if (!stats.refining) {
           refine_frames.push_back(frame);
           break;
@@ -173,21 +173,21 @@ void run(const BenchGpuArgs& args) {
                       {"zoom_coarse_shading_ms", median(coarse_shade_ms)},
                       {"zoom_coarse_magnify_copy_ms", median(coarse_rest_ms)},
                       {"zoom_coarse_factor", median(coarse_factors)},
-                      {"refine_band_ms", median(band_ms)},
-                      {"refine_band_max_ms", *std::max_element(band_ms.begin(), band_ms.end())},
+                      {"refine_block_ms", median(block_ms)},
+                      {"refine_block_max_ms", *std::max_element(block_ms.begin(), block_ms.end())},
                       {"refine_frames", median(refine_frames)},
                       {"pan_ms", median(pan_ms)},
                       {"unchanged_ms", median(cached_ms)}};
     text << "window view " << args.viewport_w << "x" << args.viewport_h << " of the " << width
          << "x" << height << " canvas, fitted (" << view.pixels_per_cell
          << " px/cell): after a zoom or light change median " << median(full_ms)
-         << " ms (first frame while moving, coarse: " << median(coarse_ms) << " ms = shading "
-         << median(coarse_shade_ms) << " at 1/" << median(coarse_factors)
-         << " resolution + magnifying and copy " << median(coarse_rest_ms)
-         << "; refined in bands over " << median(refine_frames) << " frames of median "
-         << median(band_ms) << " ms, at most " << *std::max_element(band_ms.begin(), band_ms.end())
-         << " ms), after a 10-px pan " << median(pan_ms) << " ms, unchanged " << median(cached_ms)
-         << " ms\n";
+         << " ms (first frame while moving, coarse: " << median(coarse_ms)
+         << " ms, its parts' medians: shading " << median(coarse_shade_ms) << " ms at 1/"
+         << median(coarse_factors) << " resolution, magnifying and copy " << median(coarse_rest_ms)
+         << " ms; refined in blocks over " << median(refine_frames) << " frames of median "
+         << median(block_ms) << " ms, at most "
+         << *std::max_element(block_ms.begin(), block_ms.end()) << " ms), after a 10-px pan "
+         << median(pan_ms) << " ms, unchanged " << median(cached_ms) << " ms\n";
   }
 
   // 3. Pen sample to updated frame with a brush_px-wide brush: simulation step, dirty tiles

@@ -245,7 +245,7 @@ TEST(CachedViewCoarse, RefinedInBlocksMatchesAWholeRedraw) {
   Framebuffer window(w, h, TexelFormat::kRGBA8);
   using Detail = ShadedViewCache::Detail;
   ShadedViewCache cache;
-  cache.set_refine_band_ms(1e-9);  // one block a frame
+  cache.set_refine_step_ms(1e-9);  // one block a frame
   CanvasView view{120.0, 90.0, 1.0, 0.0};
   cache.draw(renderer, view, w, h, window.id());
   view.pixels_per_cell = 1.3;

@@ -249,7 +249,7 @@ CachedDrawStats ShadedViewCache::update(CanvasRenderer& renderer, const CanvasVi
       const int row = blocks_y - 1 - refined_blocks_ / blocks_x;  // GL rows count up
       const int fit =
           ms_per_pixel > 0.0
-              ? static_cast<int>(refine_band_ms_ / (ms_per_pixel * kRefineBlock * kRefineBlock))
+              ? static_cast<int>(refine_step_ms_ / (ms_per_pixel * kRefineBlock * kRefineBlock))
               : blocks_x;
       const int blocks = std::clamp(fit, 1, blocks_x - column);
       regions.push_back({column * kRefineBlock, row * kRefineBlock,
@@ -289,7 +289,7 @@ CachedDrawStats ShadedViewCache::update(CanvasRenderer& renderer, const CanvasVi
   };
   if ((stats.full || refining_blocks) && !regions.front().empty()) {
     // Timed: the cost of a pixel predicts the coarse factor of the next motion's first frame
-    // and the size of the next band of a refinement.
+    // and the size of the next step of a refinement.
     stats.shade_ms = timed_gl_ms(shade_regions);
     fine_ms_per_pixel_ = stats.shade_ms / static_cast<double>(stats.pixels_shaded);
   } else if (!regions.empty()) {

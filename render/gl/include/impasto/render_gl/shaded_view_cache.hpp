@@ -34,7 +34,7 @@ struct CachedDrawStats {
   bool shifted = false;         // the cached image was moved (a pan by whole pixels)
   bool coarse = false;          // the whole viewport was shaded coarsely (Detail::kCoarse)
   int coarse_factor = 0;        // its pixels' size in viewport pixels each way (0: not coarse)
-  double shade_ms = 0.0;        // a whole-viewport pass or a band: its shading's GL time
+  double shade_ms = 0.0;        // a whole-viewport pass or a refining step: its shading's GL time
   bool refining = false;        // the image still has coarse parts, which kRefining refines
   // The viewport pixels whose cached image changed: the shaded regions, or the whole
   // viewport after a shift. A window that keeps its last frame re-presents only these.
@@ -60,13 +60,13 @@ class ShadedViewCache {
   // time. The next kFull update() after a coarse one re-shades the viewport at every pixel.
   //
   // kRefining refines a coarse image a few kRefineBlock-square blocks a call, in reading
-  // order from the top, as many as the measured cost of a pixel fits in kRefineBandMs
-  // (set_refine_band_ms), so the window answers input between them (a wheel click waits for
+  // order from the top, as many as the measured cost of a pixel fits in kRefineStepMs
+  // (set_refine_step_ms), so the window answers input between them (a wheel click waits for
   // one call, not the whole re-shade); the image is the same as kFull's once `refining` is
   // false. Otherwise it is kFull. Blocks, not thin bands of rows: llvmpipe shades in 64-pixel
   // square tiles, and a band a few rows high cost it 2-5 times as much a pixel.
   enum class Detail { kFull, kCoarse, kRefining };
-  static constexpr double kRefineBandMs = 25.0;
+  static constexpr double kRefineStepMs = 25.0;
   static constexpr int kRefineBlock = 64;
   static constexpr int kMinCoarseFactor = 4;
   static constexpr int kMaxCoarseFactor = 16;
@@ -86,7 +86,7 @@ class ShadedViewCache {
   static int coarse_factor_for(double ms_per_pixel, int viewport_w, int viewport_h,
                                double budget_ms);
   void set_coarse_budget_ms(double budget_ms) { coarse_budget_ms_ = budget_ms; }
-  void set_refine_band_ms(double band_ms) { refine_band_ms_ = band_ms; }
+  void set_refine_step_ms(double step_ms) { refine_step_ms_ = step_ms; }
   // The factor the next coarse pass on this viewport would take.
   int next_coarse_factor(int viewport_w, int viewport_h) const;
 
@@ -127,7 +127,7 @@ class ShadedViewCache {
   bool coarse_ = false;     // image_ holds a coarse shading, to refine
   int refined_blocks_ = 0;  // of it, the blocks refined since (kRefining); -1: all
   double coarse_budget_ms_ = kDefaultCoarseBudgetMs;
-  double refine_band_ms_ = kRefineBandMs;
+  double refine_step_ms_ = kRefineStepMs;
   // The measured cost of a pixel of the last whole-viewport pass, fine and coarse (0: none).
   double fine_ms_per_pixel_ = 0.0;
   double coarse_ms_per_pixel_ = 0.0;
