@@ -75,9 +75,9 @@ class ShadedViewCache {
   // present 15, waiting for the refinement's pass under way up to 25), and the prediction
   // misses by a third either way on a loaded machine.
   static constexpr double kDefaultCoarseBudgetMs = 40.0;
-  // Zoomed out, a coarse pixel's neighbouring texel reads lie farther apart than a fine
-  // pixel's: until a coarse pass has been timed, its pixel is taken to cost this many fine
-  // ones (about 2 on llvmpipe: `impasto bench gpu`, its coarse frame's parts).
+  // Until a coarse pass has been timed, a coarse pixel is taken to cost this many fine ones:
+  // its texel reads lie several cells apart, and the fine figure is diluted by the cheap
+  // background around a fitted canvas (on llvmpipe 1.2-2: `impasto bench gpu`).
   static constexpr double kCoarsePixelCost = 2.0;
 
   // The factor (kMinCoarseFactor..kMaxCoarseFactor) for a viewport_w × viewport_h viewport
