@@ -247,11 +247,12 @@ CachedDrawStats ShadedViewCache::update(CanvasRenderer& renderer, const CanvasVi
       const int blocks_y = (viewport_h + kRefineBlock - 1) / kRefineBlock;
       const int column = refined_blocks_ % blocks_x;
       const int row = blocks_y - 1 - refined_blocks_ / blocks_x;  // GL rows count up
-      const int fit =
-          ms_per_pixel > 0.0
-              ? static_cast<int>(refine_step_ms_ / (ms_per_pixel * kRefineBlock * kRefineBlock))
-              : blocks_x;
-      const int blocks = std::clamp(fit, 1, blocks_x - column);
+      // In double until clamped: a tiny measured cost would overflow an int.
+      const double fit = ms_per_pixel > 0.0
+                             ? refine_step_ms_ / (ms_per_pixel * kRefineBlock * kRefineBlock)
+                             : blocks_x;
+      const int blocks = static_cast<int>(
+          std::clamp(std::floor(fit), 1.0, static_cast<double>(blocks_x - column)));
       regions.push_back({column * kRefineBlock, row * kRefineBlock,
                          std::min(viewport_w, (column + blocks) * kRefineBlock),
                          std::min(viewport_h, (row + 1) * kRefineBlock)});
