@@ -233,7 +233,7 @@ void Painting::end_stroke() {
     p.arena.execute([&] {
       if (p.stepper.step(p.canvas, p.brush, slot_count(), p.params, *p.last_contact, 0.0, 0.0, 0.0,
                          before_change, true))
-        pick_up_medium(p.canvas, p.history, p.brush, p.stepper);
+        exchange_medium(p.canvas, p.history, p.brush, p.stepper, p.stroke_media);
     });
     p.last_contact.reset();
   }
@@ -243,7 +243,7 @@ void Painting::end_stroke() {
   std::erase_if(p.stroke_tiles, [&p](int index) { return p.canvas.tile(index) == nullptr; });
   p.arena.execute(
       [&] { settle_wet_paint(p.canvas, p.stroke_tiles, slot_count(), p.brush.body(), p.params); });
-  lay_stroke_medium(p.canvas, p.history, p.brush.medium(), p.stroke_tiles);
+  lay_stroke_medium(p.canvas, p.history, p.brush.medium(), p.stroke_tiles, p.stroke_media);
   p.stroke_tiles.clear();
   p.history.commit();
 }
@@ -377,7 +377,7 @@ void Painting::stroke_to(const PenSample& sample) {
         p.last_contact = pose;
         ++p.steps;
         p.cells_updated += p.stepper.last_window_cells();
-        pick_up_medium(p.canvas, p.history, p.brush, p.stepper);
+        exchange_medium(p.canvas, p.history, p.brush, p.stepper, p.stroke_media);
       }
     }
   });

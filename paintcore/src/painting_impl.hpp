@@ -9,6 +9,7 @@
 #include "impasto/paintcore/brush_pose.hpp"
 #include "impasto/paintcore/painting.hpp"
 #include "ledger.hpp"
+#include "painting_surface.hpp"
 #include "stepper.hpp"
 #include "stroke_path.hpp"
 #include "undo_history.hpp"
@@ -61,6 +62,7 @@ struct Painting::Impl {
   std::optional<std::array<double, 2>> stroke_origin;  // where the stroke began (cells)
   std::optional<BrushPose> last_contact;  // where the brush last touched paint: it lifts there
   std::vector<int> stroke_tiles;          // tiles the stroke changed: where its paint levels
+  StrokeMedia stroke_media;               // the media the stroke's brush laid, step by step
 
   // A reframe, or its undo or redo, changes the cloth a tile index stands for: the
   // stepper's cached weave of untouched tiles must go.

@@ -17,25 +17,60 @@ void mix_brush_medium(Brush& brush, double before_mm3, double added_mm3,
   brush.set_medium(before_mm3 > 0.0 ? mix(brush.medium(), before_mm3, loaded, added_mm3) : loaded);
 }
 
-void pick_up_medium(const Canvas& canvas, const UndoHistory& history, Brush& brush,
-                    const Stepper& stepper) {
+namespace {
+
+constexpr int kLaidPlanes = 3;  // StrokeMedia: height laid, its medium, medium x log RMS
+
+// The medium of the paint a stroke laid at cell `cell` of tile `index`, if it laid any.
+std::optional<PaintMedium> laid_medium(const StrokeMedia& laid, int index, int cell) {
+  const auto found = laid.find(index);
+  if (found == laid.end()) return std::nullopt;
+  const float* planes = found->second.data();
+  const float height = planes[cell];
+  if (!(height > 0.0f)) return std::nullopt;
+  const float medium = planes[kTileCells + cell];
+  return PaintMedium{std::min(medium / height, 1.0f),
+                     medium > 0.0f ? planes[2 * kTileCells + cell] / medium : 0.0f};
+}
+
+}  // namespace
+
+void exchange_medium(const Canvas& canvas, const UndoHistory& history, Brush& brush,
+                     const Stepper& stepper, StrokeMedia& laid) {
   const PaintMedium on_brush_medium = brush.medium();
   double picked = 0.0, medium = 0.0, medium_log_rms = 0.0;  // heights (mm): one cell's area
-  stepper.for_each_pick_up([&](int x, int y, float height_mm) {
+  int booked_index = -1;  // the tile last booked in `laid` (cells come row by row)
+  std::vector<float>* booked = nullptr;
+  stepper.for_each_exchange([&](int x, int y, float height_mm) {
     const int index = canvas.tile_index(x / kTileSize, y / kTileSize);
     const int cell = (y % kTileSize) * kTileSize + x % kTileSize;
+    if (height_mm > 0.0f) {  // laid: the brush's medium as it was when it laid it
+      if (index != booked_index) {
+        booked = &laid[index];
+        booked_index = index;
+        if (booked->empty()) booked->assign(std::size_t{kLaidPlanes} * kTileCells, 0.0f);
+      }
+      std::vector<float>& planes = *booked;
+      planes[static_cast<std::size_t>(cell)] += height_mm;
+      const float share = height_mm * on_brush_medium.share;
+      planes[static_cast<std::size_t>(kTileCells + cell)] += share;
+      planes[static_cast<std::size_t>(2 * kTileCells + cell)] += share * on_brush_medium.log_rms;
+      return;
+    }
+    const float taken = -height_mm;
     const Tile* tile = canvas.tile(index);
-    // The cell held `had` before the stroke and `held` before the brush took its share now.
-    const double held = (tile != nullptr ? tile->wet_volume_mm[cell] : 0.0f) + height_mm;
+    // The cell held `had` before the stroke and `held` before the brush took its share now;
+    // the part this stroke laid carries what the stroke laid there.
+    const double held = (tile != nullptr ? tile->wet_volume_mm[cell] : 0.0f) + taken;
     double had = held;
     if (const std::optional<const Tile*> saved = history.saved_tile(index))
       had = *saved != nullptr ? (*saved)->wet_volume_mm[cell] : 0.0f;
-    const double laid = held > 0.0 ? std::clamp((held - had) / held, 0.0, 1.0) : 0.0;
-    const PaintMedium there =
-        mix(cell_surface(tile, cell).medium, 1.0 - laid, on_brush_medium, laid);
-    picked += height_mm;
-    medium += static_cast<double>(height_mm) * there.share;
-    medium_log_rms += static_cast<double>(height_mm) * there.share * there.log_rms;
+    const double fresh = held > 0.0 ? std::clamp((held - had) / held, 0.0, 1.0) : 0.0;
+    const PaintMedium there = mix(cell_surface(tile, cell).medium, 1.0 - fresh,
+                                  laid_medium(laid, index, cell).value_or(on_brush_medium), fresh);
+    picked += taken;
+    medium += static_cast<double>(taken) * there.share;
+    medium_log_rms += static_cast<double>(taken) * there.share * there.log_rms;
   });
   if (!(picked > 0.0) || (on_brush_medium.share == 0.0f && medium == 0.0)) return;
   const PaintMedium taken{static_cast<float>(medium / picked),
@@ -47,13 +82,18 @@ void pick_up_medium(const Canvas& canvas, const UndoHistory& history, Brush& bru
 }
 
 void lay_stroke_medium(Canvas& canvas, const UndoHistory& history, const PaintMedium& brush,
-                       const std::vector<int>& tiles) {
+                       const std::vector<int>& tiles, StrokeMedia& laid) {
   for (const int index : tiles) {
     Tile* tile = canvas.tile_slot(index).get();
     if (tile == nullptr) continue;
     // Paint without a medium over cells that never had one or a varnish changes nothing: no
     // data is made.
-    const bool lays_medium = brush.share != 0.0f || !tile->medium.empty();
+    const auto laid_here = laid.find(index);
+    const bool laid_a_medium =
+        laid_here != laid.end() &&
+        std::any_of(laid_here->second.begin() + kTileCells,
+                    laid_here->second.begin() + 2 * kTileCells, [](float m) { return m > 0.0f; });
+    const bool lays_medium = brush.share != 0.0f || laid_a_medium || !tile->medium.empty();
     if (!lays_medium && tile->varnish.empty()) continue;
     const std::optional<const Tile*> saved = history.saved_tile(index);
     if (!saved) continue;  // the stroke did not change this tile
@@ -76,11 +116,13 @@ void lay_stroke_medium(Canvas& canvas, const UndoHistory& history, const PaintMe
       // The surface there: the wet paint, over at most a film's depth of dry paint (none on
       // the bare ground, where the first paint makes the surface).
       const double under = had + std::min<double>(kSurfaceFilmMm, tile->dry_height_mm[c]);
-      const PaintMedium mixed = mix({share[c], log_rms[c]}, under, brush, gained);
+      const PaintMedium mixed =
+          mix({share[c], log_rms[c]}, under, laid_medium(laid, index, c).value_or(brush), gained);
       share[c] = mixed.share;
       log_rms[c] = mixed.log_rms;
     }
   }
+  laid.clear();
 }
 
 void dry_varnish(Canvas& canvas, UndoHistory& history, float fraction) {

@@ -42,18 +42,19 @@ class Stepper {
 
   std::size_t last_window_cells() const { return last_window_cells_; }
 
-  // Calls take(x_cells, y_cells, height_mm) for each canvas cell the last step that returned
-  // true moved paint from onto the brush (height_mm > 0: what the brush took there), in a
-  // fixed order: what travels with the paint (its medium, painting_surface.hpp) follows it.
+  // Calls take(x_cells, y_cells, height_mm) for each canvas cell where the last step that
+  // returned true moved paint between the canvas and the brush (height_mm > 0: the canvas
+  // gained it from the brush; < 0: the brush took it), in a fixed order: what travels with the
+  // paint (its medium, painting_surface.hpp) follows it.
   template <class Take>
-  void for_each_pick_up(Take&& take) const {
+  void for_each_exchange(Take&& take) const {
     if (!last_transferred_) return;
     for (int y = 0; y < win_.height; ++y) {
       const std::size_t first = static_cast<std::size_t>(y) * win_.width;
       for (int x = contact_lo_[static_cast<std::size_t>(y)];
            x < contact_hi_[static_cast<std::size_t>(y)]; ++x) {
         const std::size_t c = first + static_cast<std::size_t>(x);
-        if (brush_cell_[c] >= 0 && xfer_[c] < 0.0f) take(win_.x0 + x, win_.y0 + y, -xfer_[c]);
+        if (brush_cell_[c] >= 0 && xfer_[c] != 0.0f) take(win_.x0 + x, win_.y0 + y, xfer_[c]);
       }
     }
   }

@@ -282,7 +282,8 @@ TEST(PaintSurface, PickingUpPaintWithoutAMediumDilutesTheBrushsShareByVolume) {
   EXPECT_NEAR(p.brush().medium().share, 0.5, 1e-3);
 }
 
-// Dragging a gloss brush through matte paint and on over clean canvas lays down a mix.
+// Dragging a gloss brush through matte paint and on over clean canvas lays down a mix there,
+// and its own gloss before it reached the matte paint.
 TEST(PaintSurface, AGlossBrushDraggedThroughMattePaintLaysAMixBeyondIt) {
   const auto lay = [](bool matte_first) {
     Painting p = brushed();
@@ -294,6 +295,11 @@ TEST(PaintSurface, AGlossBrushDraggedThroughMattePaintLaysAMixBeyondIt) {
     p.load_brush({{"red", 1.0}}, 5.0, kDefaultPaintBody, Medium{Finish::gloss, 1.0});
     test::stroke_line(p, 1.0, 3.0, 11.0, 3.0, 0.8f);
     EXPECT_GT(p.canvas().wet_volume_mm(100, 30), 0.01f);
+    // Before the brush reached the matte paint it laid its own gloss (its trailing edge was
+    // still laying there when its front took up the first matte paint: a trace).
+    EXPECT_GT(p.canvas().wet_volume_mm(14, 30), 0.01f);
+    const double gloss = finish_log_rms(Finish::gloss), matte = finish_log_rms(Finish::matte);
+    EXPECT_LT(surface_at(p, 14, 30).medium.log_rms, gloss + 0.01 * (matte - gloss));
     return surface_at(p, 100, 30).medium;
   };
   const double gloss = finish_log_rms(Finish::gloss), matte = finish_log_rms(Finish::matte);
