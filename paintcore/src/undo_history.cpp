@@ -50,6 +50,7 @@ void UndoHistory::begin(const Brush& brush, const Ledger& ledger,
   current_.dry_layer_count = dry_layers;
   current_.bytes = brush_bytes(brush);
   saved_in_op_.resize(static_cast<std::size_t>(tile_count), 0);
+  saved_at_.resize(static_cast<std::size_t>(tile_count), 0);
   if (++op_id_ == 0) {  // wrapped: forget old ids
     std::fill(saved_in_op_.begin(), saved_in_op_.end(), 0);
     op_id_ = 1;
@@ -64,14 +65,13 @@ void UndoHistory::before_tile_change(int index, const Tile* current) {
   saved = op_id_;
   std::unique_ptr<Tile> copy = current ? std::make_unique<Tile>(*current) : nullptr;
   current_.bytes += copy ? tile_bytes(*copy) : sizeof(std::pair<int, std::unique_ptr<Tile>>);
+  saved_at_[static_cast<std::size_t>(index)] = static_cast<std::uint32_t>(current_.tiles.size());
   current_.tiles.emplace_back(index, std::move(copy));
 }
 
 std::optional<const Tile*> UndoHistory::saved_tile(int index) const {
   if (!recording_ || saved_in_op_[static_cast<std::size_t>(index)] != op_id_) return std::nullopt;
-  for (const auto& [saved, tile] : current_.tiles)
-    if (saved == index) return tile.get();
-  return std::nullopt;
+  return current_.tiles[saved_at_[static_cast<std::size_t>(index)]].second.get();
 }
 
 void UndoHistory::commit() {

@@ -74,6 +74,7 @@ class UndoHistory {
   bool recording_ = false;
   UndoStep current_;
   std::vector<std::uint32_t> saved_in_op_;  // op id per tile that was saved
+  std::vector<std::uint32_t> saved_at_;     // and where in current_.tiles (no search per cell)
   std::uint32_t op_id_ = 0;
   std::deque<UndoStep> undo_;
   std::deque<UndoStep> redo_;
