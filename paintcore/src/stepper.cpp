@@ -7,6 +7,7 @@
 
 #include "contact_rows.hpp"
 #include "impasto/paintcore/transfer.hpp"
+#include "impasto/paintcore/weave.hpp"
 #include "parallel_rows.hpp"
 #include "simd_clones.hpp"
 
@@ -31,6 +32,24 @@ void zero_border(float* grid, int width, int height) {
 
 IMPASTO_SIMD_CLONES void clamp_at_zero(float* __restrict amount, std::size_t count) {
   for (std::size_t i = 0; i < count; ++i) amount[i] = greater(amount[i], 0.0f);
+}
+
+// The level the brush's paint fills the ground's valleys to: the mean ground and dry paint
+// over about two repeats of the plain weave (2.5 mm) around the brush's centre. Over the few
+// cells the tip rests on, the mean rose and fell with the weave as the brush moved, and the
+// trailing edge printed that into every cell it left.
+double footing_mm(const Canvas& canvas, int cx, int cy) {
+  const int half =
+      std::max(1, static_cast<int>(std::lround(2.0 * kWeaveThreadPitchMm / canvas.cell_mm())));
+  const int x0 = std::clamp(cx - half, 0, canvas.width_cells() - 1);
+  const int x1 = std::clamp(cx + half, 0, canvas.width_cells() - 1);
+  const int y0 = std::clamp(cy - half, 0, canvas.height_cells() - 1);
+  const int y1 = std::clamp(cy + half, 0, canvas.height_cells() - 1);
+  double sum = 0.0;
+  for (int y = y0; y <= y1; ++y)
+    for (int x = x0; x <= x1; ++x)
+      sum += static_cast<double>(canvas.base_height_mm(x, y)) + canvas.dry_height_mm(x, y);
+  return sum / (static_cast<double>(x1 - x0 + 1) * (y1 - y0 + 1));
 }
 
 }  // namespace
@@ -606,25 +625,23 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   const int reach = std::clamp(brush.cells_across() / 8, 1, 4);
   const int cx = static_cast<int>(std::floor(placement.centre_x));
   const int cy = static_cast<int>(std::floor(placement.centre_y));
-  double rest = 0.0, footing = 0.0;
+  double rest = 0.0;
   int rest_cells = 0;
   for (int y = std::max(cy - reach, 0); y <= std::min(cy + reach, canvas.height_cells() - 1); ++y)
     for (int x = std::max(cx - reach, 0); x <= std::min(cx + reach, canvas.width_cells() - 1);
          ++x) {
-      const double ground =
-          static_cast<double>(canvas.base_height_mm(x, y)) + canvas.dry_height_mm(x, y);
-      rest += ground + params.wet_support * canvas.wet_volume_mm(x, y);
-      footing += ground;
+      rest += static_cast<double>(canvas.base_height_mm(x, y)) + canvas.dry_height_mm(x, y) +
+              params.wet_support * canvas.wet_volume_mm(x, y);
       ++rest_cells;
     }
   if (rest_cells == 0) {  // the centre is off the canvas: rest on the nearest cell
     const int x = std::clamp(cx, 0, canvas.width_cells() - 1);
     const int y = std::clamp(cy, 0, canvas.height_cells() - 1);
-    footing = static_cast<double>(canvas.base_height_mm(x, y)) + canvas.dry_height_mm(x, y);
-    rest = footing + params.wet_support * canvas.wet_volume_mm(x, y);
+    rest = static_cast<double>(canvas.base_height_mm(x, y)) + canvas.dry_height_mm(x, y) +
+           params.wet_support * canvas.wet_volume_mm(x, y);
     rest_cells = 1;
   }
-  in.footing_mm = static_cast<float>(footing / rest_cells);
+  in.footing_mm = static_cast<float>(footing_mm(canvas, cx, cy));
   in.ground_fill = static_cast<float>(params.ground_fill);
   in.tip_mm = static_cast<float>(rest / rest_cells - pose.depth_mm);
   in.brush_vx = static_cast<float>(params.drag * move_x / substeps);
