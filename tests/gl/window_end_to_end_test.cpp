@@ -285,6 +285,31 @@ TEST(RenderCommand, GpuWithAMissingPaintingIsAClearError) {
   EXPECT_NE(text.find("painting.impasto"), std::string::npos) << text;
 }
 
+// A wheel click is timed from its X server time to the first frame showing its zoom step:
+// `impasto bench window --zoom` sends them and reads the window's own figures back.
+TEST(WindowEndToEnd, WheelClicksAreTimedToTheirFirstFrames) {
+  ASSERT_NE(std::getenv("DISPLAY"), nullptr) << "run under xvfb-run -a";
+  if (!have_xdotool()) GTEST_SKIP() << "xdotool is not installed";
+  std::string text;
+  FILE* pipe = popen((std::string(IMPASTO_EXECUTABLE) +
+                      " bench window --canvas 256x192 --zoom 2 --zoom-interval 1.5 --json")
+                         .c_str(),
+                     "r");
+  ASSERT_NE(pipe, nullptr);
+  char buffer[4096];
+  while (std::fgets(buffer, sizeof buffer, pipe)) text += buffer;
+  ASSERT_EQ(pclose(pipe), 0) << text;
+  const nlohmann::json report = nlohmann::json::parse(text);
+  const nlohmann::json& canvas = report.at("canvases").at(0);
+  // Both clicks, unless the window was still busy with its first frames when it was closed.
+  EXPECT_GE(canvas.at("samples").get<int>(), 1);
+  EXPECT_LE(canvas.at("samples").get<int>(), 2);
+  EXPECT_GT(canvas.at("median_ms").get<double>(), 0.0);
+  EXPECT_GE(canvas.at("coarse_frames").get<int>(), 1);  // a zoom step is shown coarsely first
+  EXPECT_GE(canvas.at("coarse_factor").get<int>(), 4);
+  EXPECT_LE(canvas.at("coarse_factor").get<int>(), 16);
+}
+
 TEST(WindowEndToEnd, MissingStrokeFileIsAClearError) {
   const std::string output = [] {
     std::string text;
