@@ -176,6 +176,35 @@ TEST(CachedViewPan, WholePixelPansShadeOnlyTheUncoveredStrips) {
   EXPECT_TRUE(cache.draw(renderer, view, w, h, window.id()).full);
   EXPECT_EQ(window.read_rgba8(), full_redraw(renderer, view, w, h));
 }
+// Each view option the shader reads is part of the cached view's look: changing one
+// re-shades every pixel (the subsurface map's toggle once did not, and the window rebuilt the
+// surface tables to show it).
+TEST(CachedViewOptions, EachViewOptionReshadesEverything) {
+  auto context = create_headless_context();
+  const int w = 120, h = 90;
+  paintcore::Painting painting = loaded_painting({{"Pyrrole Red", 1.0}, {"Titanium White", 1.0}});
+  stroke(painting, 14.0, 4.0, 30.0);
+  const auto uploaded = uploaded_renderer(painting, four_nodes());
+  CanvasRenderer& renderer = *uploaded;
+  Framebuffer window(w, h, TexelFormat::kRGBA8);
+  ShadedViewCache cache;
+  const CanvasView view{128.0, 96.0, 0.5, 0.0};
+  cache.draw(renderer, view, w, h, window.id());
+  const auto changes = std::vector<void (*)(GpuViewOptions&)>{
+      [](GpuViewOptions& o) { o.light_intensity *= 1.5f; },
+      [](GpuViewOptions& o) { o.background_rgb[1] += 0.2f; },
+      [](GpuViewOptions& o) { o.crack_close_up_min_pixels += 1.0f; },
+      [](GpuViewOptions& o) { o.smooth_zoom = !o.smooth_zoom; },
+      [](GpuViewOptions& o) { o.subsurface_map = !o.subsurface_map; }};
+  for (std::size_t i = 0; i < changes.size(); ++i) {
+    GpuViewOptions options = renderer.view_options();
+    changes[i](options);
+    renderer.set_view_options(options);
+    EXPECT_TRUE(cache.draw(renderer, view, w, h, window.id()).full) << "option " << i;
+    EXPECT_EQ(cache.draw(renderer, view, w, h, window.id()).pixels_shaded, 0) << "option " << i;
+  }
+}
+
 // The coarse factor: the smallest whose predicted shading fits the budget.
 TEST(CoarseFactor, TheSmallestThatFitsTheBudget) {
   using Cache = ShadedViewCache;

@@ -86,7 +86,8 @@ void surface_panel(WindowState& s) {
     }
     if (surface.subsurface) {
       ImGui::SameLine();
-      changed |= ImGui::Checkbox("show where", &s.view_options.subsurface_map);
+      // A view option: the cached view redraws (ShadedViewCache::look_of), the tables stay.
+      ImGui::Checkbox("show where", &s.view_options.subsurface_map);
       if (ImGui::IsItemHovered()) {
         ImGui::SetTooltip(
             "The map of the spread in place of the painting: each channel's spread length,\n"

@@ -63,8 +63,8 @@ std::vector<double> ShadedViewCache::look_of(const CanvasRenderer& renderer,
   look.insert(look.end(), colour.begin(), colour.end());
   look.insert(look.end(),
               {o.light_intensity, o.background_rgb[0], o.background_rgb[1], o.background_rgb[2],
-               o.crack_close_up_min_pixels, o.smooth_zoom ? 1.0 : 0.0, view.pixels_per_cell,
-               view.rotation_rad, renderer.cell_mm()});
+               o.crack_close_up_min_pixels, o.smooth_zoom ? 1.0 : 0.0, o.subsurface_map ? 1.0 : 0.0,
+               view.pixels_per_cell, view.rotation_rad, renderer.cell_mm()});
   return look;
 }
 
