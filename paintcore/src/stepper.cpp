@@ -97,7 +97,6 @@ const float* Stepper::base_heights(const Canvas& canvas, int tile_index) {
   if (const Tile* tile = canvas.tile(tile_index)) return tile->base_height_mm.data();
   auto it = base_cache_.find(tile_index);
   if (it == base_cache_.end()) {
-    if (base_cache_.size() >= kBaseCacheTiles) base_cache_.clear();
     it = base_cache_.emplace(tile_index, std::vector<float>(kTileCells)).first;
     canvas.compute_base_heights(tile_index, it->second.data());
   }
@@ -110,6 +109,11 @@ void Stepper::find_bases(const Canvas& canvas) {
   ty0_ = w.y0 / kTileSize;
   const int tx1 = (w.x0 + w.width - 1) / kTileSize, ty1 = (w.y0 + w.height - 1) / kTileSize;
   tiles_across_ = tx1 - tx0_ + 1;
+  // The cache is emptied before a window's tiles are looked up, never while: clearing it
+  // midway left the window's first tiles pointing at freed heights (an empty brush swept
+  // over 256 unpainted tiles).
+  const auto window_tiles = static_cast<std::size_t>(tiles_across_) * (ty1 - ty0_ + 1);
+  if (base_cache_.size() + window_tiles > kBaseCacheTiles) base_cache_.clear();
   bases_.clear();
   for (int ty = ty0_; ty <= ty1; ++ty)
     for (int tx = tx0_; tx <= tx1; ++tx)

@@ -205,5 +205,16 @@ TEST(LongSteps, BenchmarkMeasuresTheReferenceAsExact) {
   EXPECT_LT(std::abs(results[1].volume_error_mm3), 1e-4 * results[1].volume_mm3);
 }
 
+TEST(StepperBaseCache, AWindowOverMoreUnpaintedTilesThanTheCacheHoldsStaysValid) {
+  // A brush window over 17 x 17 never painted tiles (more than the 256 the weave cache
+  // keeps): the cache used to be emptied midway through the window's lookups, leaving the
+  // first tiles' heights freed (AddressSanitizer: heap-use-after-free).
+  Painting p(flat_spec(1088, 1088), 1);
+  p.set_brush(round_brush(102.0, 0.5));
+  test::stroke_line(p, 54.0, 54.0, 54.3, 54.0, 0.5f, 2);
+  EXPECT_EQ(p.nonfinite_count(), 0u);
+  EXPECT_EQ(p.canvas().allocated_tiles(), 0u);  // an empty brush on a bare canvas paints nothing
+}
+
 }  // namespace
 }  // namespace impasto::paintcore
