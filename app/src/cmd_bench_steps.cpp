@@ -88,8 +88,7 @@ const CommandRegistrar registrar("bench steps", [](CLI::App& root) {
   cmd->add_option("--share", args->shares,
                   "long_step_share values to compare with one-cell steps (share of the width)")
       ->check(CLI::Range(0.0, 0.5));
-  cmd->add_option("--param", args->params,
-                  "A simulation parameter for every run, NAME=VALUE (long_step_drag_cells=1)");
+  cmd->add_option("--param", args->params, vocabulary_help("--param"));
   cmd->callback([args] { run(*args); });
 });
 
