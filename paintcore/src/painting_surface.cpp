@@ -142,7 +142,7 @@ namespace {
 
 // The coat each cell of `r` (row-major) takes: the thickness, levelled toward the mean of the
 // surface under it within kVarnishLevellingMm (over the coat's own cells: the varnish flows
-// only where it lies), at least zero, and as much varnish in all as an even coat.
+// only where it lies), at least the wetting film, and as much varnish in all as an even coat.
 std::vector<float> levelled_coat(const Canvas& canvas, const CellRect& r, double thickness_mm) {
   const int w = r.x1 - r.x0, h = r.y1 - r.y0;
   const std::size_t n = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
@@ -170,12 +170,13 @@ std::vector<float> levelled_coat(const Canvas& canvas, const CellRect& r, double
       const int y0 = std::max(y - reach, 0), y1 = std::min(y + reach + 1, h);
       const double mean = (prefix[y1] - prefix[y0]) / (static_cast<double>(nx) * (y1 - y0));
       const double here = height[at(x, y)];
-      const double c = std::max(thickness_mm + share * (mean - here), 0.0);
+      const double c =
+          std::max(thickness_mm + share * (mean - here), kVarnishWettingShare * thickness_mm);
       coat[at(x, y)] = static_cast<float>(c);
       total += c;
     }
   }
-  // What the peaks could not give (a coat is never below zero) comes off the rest evenly.
+  // What the peaks could not give (they keep their wetting film) comes off the rest evenly.
   const double scale = total > 0.0 ? thickness_mm * static_cast<double>(n) / total : 1.0;
   if (scale != 1.0)
     for (float& c : coat) c = static_cast<float>(c * scale);
@@ -226,7 +227,6 @@ void Painting::apply_varnish(Finish finish, double thickness_mm, std::optional<C
           const float here = coat[static_cast<std::size_t>(ty * kTileSize + y - r.y0) *
                                       static_cast<std::size_t>(r.x1 - r.x0) +
                                   static_cast<std::size_t>(tx * kTileSize + x - r.x0)];
-          if (!(here > 0.0f)) continue;  // a peak through the coat: no varnish there
           thickness[c] += here;
           wet[c] += here;
           log_rms[c] = rough;

@@ -58,11 +58,20 @@ TEST_F(CanvasEditCommand, VarnishOverARegionIsSavedWithItsUndoAndDriesWithThePai
   paintcore::Painting edited = paintcore::Painting::load(file("varnished.impasto"), 1);
   const paintcore::Tile* tile = edited.canvas().tile(0);
   ASSERT_NE(tile, nullptr);
-  const paintcore::CellSurface in = paintcore::cell_surface(tile, 20 * 64 + 45);
-  EXPECT_FLOAT_EQ(in.varnish_mm, 0.05f);
-  EXPECT_FLOAT_EQ(in.varnish_wetness(), 1.0f);
-  EXPECT_FLOAT_EQ(in.varnish_log_rms,
-                  static_cast<float>(paintcore::finish_log_rms(paintcore::Finish::satin)));
+  // Every cell of the region has the coat, wet and satin (its thickness levelled over the
+  // stroke's relief), as much varnish in all as an even 0.05 mm coat; none outside it.
+  double coat_mm = 0.0;
+  for (int y = 10; y < 40; ++y) {
+    for (int x = 40; x < 60; ++x) {
+      const paintcore::CellSurface in = paintcore::cell_surface(tile, y * 64 + x);
+      ASSERT_TRUE(in.varnished()) << x << "," << y;
+      EXPECT_FLOAT_EQ(in.varnish_wetness(), 1.0f);
+      EXPECT_FLOAT_EQ(in.varnish_log_rms,
+                      static_cast<float>(paintcore::finish_log_rms(paintcore::Finish::satin)));
+      coat_mm += in.varnish_mm;
+    }
+  }
+  EXPECT_NEAR(coat_mm, 0.05 * 20 * 30, 1e-5 * 0.05 * 20 * 30);
   EXPECT_FALSE(paintcore::cell_surface(tile, 20 * 64 + 39).varnished());
   run("edit " + file("varnished.impasto").string() + " --dry 1 --save " +
       file("dried.impasto").string());
@@ -144,8 +153,8 @@ TEST_F(CanvasEditCommand, AVarnishRecordReplaysAsEditVarnishDoes) {
   run("edit " + file("plain.impasto").string() +
       " --varnish gloss --varnish-thickness 0.05 --region 40,10,20,30 --save " +
       file("edited.impasto").string());
-  run("replay " + write("varnished.strokes", "varnish gloss 0.05 40 10 20 30\n") +
-      " --save " + file("replayed.impasto").string());
+  run("replay " + write("varnished.strokes", "varnish gloss 0.05 40 10 20 30\n") + " --save " +
+      file("replayed.impasto").string());
   paintcore::Painting edited = paintcore::Painting::load(file("edited.impasto"), 1);
   paintcore::Painting replayed = paintcore::Painting::load(file("replayed.impasto"), 1);
   EXPECT_EQ(replayed.state_hash(), edited.state_hash());

@@ -115,9 +115,12 @@ inline constexpr double kMaxVarnishMm = 1.0;
 // (docs/surface.md, "Varnish"): each cell's coat is the thickness plus levelled_share of the
 // way from the surface there to its mean within kVarnishLevellingMm, the share growing with
 // the cube of the thickness (a film's levelling rate goes as h^3, Orchard 1962) and half at
-// kVarnishHalfLevelledMm. The coat's volume is kept; a peak may poke through a thin coat.
+// kVarnishHalfLevelledMm. The coat's volume is kept. A varnish wets what it is brushed over:
+// a peak keeps a film of at least kVarnishWettingShare of the thickness (the coat over a
+// region varnishes every cell of it).
 inline constexpr double kVarnishLevellingMm = 0.25;
 inline constexpr double kVarnishHalfLevelledMm = 0.05;
+inline constexpr double kVarnishWettingShare = 0.2;
 double varnish_levelled_share(double thickness_mm);
 
 // The planes of a tile's surface data (plane-major, kTileCells values each).
