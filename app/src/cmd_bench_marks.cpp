@@ -59,8 +59,9 @@ void run(BenchMarksArgs args) {
     bodies.push_back(*body);
   }
   if (!args.json)
-    std::printf("%-8s %-6s %7s %6s %6s %6s %6s %7s %8s %8s %7s %8s\n", "head", "body", "load",
-                "dep%", "med", "p90", "p99", "ridge", "furrow", "bristle", "width", "us/step");
+    std::printf("%-8s %-6s %7s %6s %6s %6s %6s %7s %8s %8s %8s %7s %8s\n", "head", "body", "load",
+                "dep%", "med", "p90", "p99", "ridge", "furrow", "rms", "bristle", "width",
+                "us/step");
   ProgressReporter progress("bench marks", "marks");
   const std::uint64_t total = heads.size() * bodies.size();
   std::uint64_t done = 0;
@@ -82,6 +83,7 @@ void run(BenchMarksArgs args) {
                                       {"max", f.thickness.max_mm}}},
                                     {"edge_ridge_mm", f.edge_ridge_mm},
                                     {"furrow_period_mm", f.furrow_period_mm},
+                                    {"furrow_rms_mm", f.furrow_rms_mm},
                                     {"bristle_spacing_mm", f.bristle_spacing_mm},
                                     {"width_mm", f.width_mm},
                                     {"head_width_mm", f.size_mm},
@@ -89,11 +91,11 @@ void run(BenchMarksArgs args) {
                                     {"seconds_per_step", f.seconds_per_step}}
                   << "\n";
       } else {
-        std::printf("%-8s %-6s %7.1f %6.1f %6.3f %6.3f %6.3f %7.3f %8.2f %8.2f %7.2f %8.1f\n",
+        std::printf("%-8s %-6s %7.1f %6.1f %6.3f %6.3f %6.3f %7.3f %8.2f %8.3f %8.2f %7.2f %8.1f\n",
                     head.c_str(), body_name.c_str(), f.load_mm3, 100.0 * f.deposited_share,
                     f.thickness.median_mm, f.thickness.p90_mm, f.thickness.p99_mm, f.edge_ridge_mm,
-                    f.furrow_period_mm, f.bristle_spacing_mm, f.width_mm / f.size_mm,
-                    1e6 * f.seconds_per_step);
+                    f.furrow_period_mm, f.furrow_rms_mm, f.bristle_spacing_mm,
+                    f.width_mm / f.size_mm, 1e6 * f.seconds_per_step);
       }
       progress.update(++done, total);
     }

@@ -60,7 +60,39 @@ double furrow_period_cells(const std::vector<double>& across, PaintedBand band) 
                           across.begin() + static_cast<std::ptrdiff_t>(band.end - fifth)));
 }
 
+// Furrows' depth: the RMS of the profile's middle three fifths less its running mean over one
+// period (cells, fractional: a box whose end cells count in part), which leaves what varies
+// at the bristles' spacing and removes the mark's broad shape.
+double furrow_rms(const std::vector<double>& across, PaintedBand band, double period_cells) {
+  const std::size_t fifth = band.width() / 5;
+  const auto lo = static_cast<std::ptrdiff_t>(band.begin + fifth);
+  const auto hi = static_cast<std::ptrdiff_t>(band.end - fifth);
+  if (hi <= lo || period_cells < 1.0) return 0.0;
+  const double half = 0.5 * period_cells;
+  const auto reach = static_cast<std::ptrdiff_t>(std::ceil(half - 0.5));
+  const auto size = static_cast<std::ptrdiff_t>(across.size());
+  double sum_squares = 0.0;
+  for (std::ptrdiff_t i = lo; i < hi; ++i) {
+    double sum = 0.0, weight = 0.0;
+    for (std::ptrdiff_t k = -reach; k <= reach; ++k) {
+      // The share of cell i + k inside [i - half, i + half].
+      const double w = std::clamp(half + 0.5 - static_cast<double>(std::abs(k)), 0.0, 1.0);
+      const std::ptrdiff_t j = std::clamp<std::ptrdiff_t>(i + k, 0, size - 1);
+      sum += w * across[static_cast<std::size_t>(j)];
+      weight += w;
+    }
+    const double d = across[static_cast<std::size_t>(i)] - sum / weight;
+    sum_squares += d * d;
+  }
+  return std::sqrt(sum_squares / static_cast<double>(hi - lo));
+}
+
 }  // namespace
+
+double furrow_rms_mm(const Canvas& canvas, int x0, int x1, double period_mm) {
+  const std::vector<double> across = mean_profile_across(canvas, x0, x1);
+  return furrow_rms(across, painted_band(across), period_mm / canvas.cell_mm());
+}
 
 double furrow_period_mm(const Canvas& canvas, int x0, int x1) {
   const std::vector<double> across = mean_profile_across(canvas, x0, x1);
@@ -130,6 +162,8 @@ MarkFigures measure_mark(const std::string& head_name, PaintBody body, const Mar
   f.furrow_period_mm = furrow_period_cells(across, band) * cell_mm;
   f.bristle_spacing_mm =
       brush.head().bristles.spacing_mm * (1.0 + brush.head().splay * stroke.pressure);
+  f.middle_mm = middle_median;
+  f.furrow_rms_mm = furrow_rms(across, band, f.bristle_spacing_mm / cell_mm);
   return f;
 }
 

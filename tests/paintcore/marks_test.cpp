@@ -171,6 +171,19 @@ TEST(Marks, FurrowsFollowTheBristleSpacing) {
   }
 }
 
+TEST(Marks, HeavyPaintKeepsBristleFurrowsFluidPaintLevelsThem) {
+  // A 6 mm round (hog bristles in columns 0.45 mm apart) in heavy paint ploughs furrows at
+  // its splayed bristle spacing, a good fraction of the film deep; fluid paint levels them.
+  MarkStroke stroke;
+  stroke.size_mm = 6.0;
+  stroke.length_mm = 20.0;
+  const MarkFigures heavy = measure_mark("round", PaintBody::heavy, stroke);
+  const MarkFigures fluid = measure_mark("round", PaintBody::fluid, stroke);
+  EXPECT_NEAR(heavy.furrow_period_mm, heavy.bristle_spacing_mm, 0.15 * heavy.bristle_spacing_mm);
+  EXPECT_GT(heavy.furrow_rms_mm, 0.05 * heavy.middle_mm);
+  EXPECT_LT(fluid.furrow_rms_mm, 0.6 * heavy.furrow_rms_mm);
+}
+
 TEST(Marks, HeavyPaintHoldsItsRidgesFluidPaintLevels) {
   // The standard flat's mark (marks_benchmark.hpp): ridges along its edges in stiff paint,
   // levelled away in fluid paint.

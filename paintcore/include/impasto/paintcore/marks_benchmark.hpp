@@ -21,6 +21,8 @@ struct MarkFigures {
   double edge_ridge_mm = 0;       // edge crest above the middle third's median, across
   double furrow_period_mm = 0;    // dominant period of the thickness across the stroke
   double bristle_spacing_mm = 0;  // the head's spacing, splayed at the stroke's pressure
+  double middle_mm = 0;           // median thickness of the middle third across the stroke
+  double furrow_rms_mm = 0;       // furrows' depth (RMS) at the splayed bristle spacing
   double width_mm = 0;            // painted width across the stroke's middle
   double seconds_per_step = 0;    // wall time of the stroke / simulation steps
   std::uint64_t steps = 0;
@@ -42,6 +44,10 @@ struct MarkStroke {
 // discrete Fourier transform of its profile averaged over canvas columns [x0, x1), over the
 // middle three fifths of the painted band (the edge ridges left out); 0 where none is painted.
 double furrow_period_mm(const Canvas& canvas, int x0, int x1);
+
+// The furrows' depth (RMS, mm) of the same profile and band: the profile less its running
+// mean over one `period_mm` (the bristles' spacing), which removes the mark's broad shape.
+double furrow_rms_mm(const Canvas& canvas, int x0, int x1, double period_mm);
 
 // Paints the standard stroke with head `head` (from the brushes folder) and `body`.
 MarkFigures measure_mark(const std::string& head, PaintBody body, const MarkStroke& stroke = {});
