@@ -216,6 +216,22 @@ void Stepper::penetrate_rows(const StepInputs& in, int r0, int r1) {
   }
 }
 
+namespace {
+
+// Cells beyond the canvas do not exist: paint at the edge cannot leave. Zeroes the velocity of
+// window row `y` (vx, vy) where it points off the canvas, whose last cells are last_x, last_y.
+template <typename Window>
+void keep_paint_on_canvas(const Window& w, int y, int last_x, int last_y, float* vx, float* vy) {
+  if (w.x0 == 0) vx[0] = std::max(vx[0], 0.0f);
+  if (w.x0 + w.width - 1 == last_x) vx[w.width - 1] = std::min(vx[w.width - 1], 0.0f);
+  if (w.y0 + y == 0)
+    for (int x = 0; x < w.width; ++x) vy[x] = std::max(vy[x], 0.0f);
+  if (w.y0 + y == last_y)
+    for (int x = 0; x < w.width; ++x) vy[x] = std::min(vy[x], 0.0f);
+}
+
+}  // namespace
+
 IMPASTO_SIMD_CLONES void Stepper::velocity_rows(const StepInputs& in, int r0, int r1) {
   const Window& w = win_;
   const std::ptrdiff_t s = w.stride();
@@ -232,13 +248,7 @@ IMPASTO_SIMD_CLONES void Stepper::velocity_rows(const StepInputs& in, int r0, in
       vx[x] = weight[x] * in.brush_vx;
       vy[x] = weight[x] * in.brush_vy;
     }
-    // Cells beyond the canvas do not exist: paint at the edge cannot leave.
-    if (w.x0 == 0) vx[0] = std::max(vx[0], 0.0f);
-    if (w.x0 + w.width - 1 == last_x) vx[w.width - 1] = std::min(vx[w.width - 1], 0.0f);
-    if (w.y0 + y == 0)
-      for (int x = 0; x < w.width; ++x) vy[x] = std::max(vy[x], 0.0f);
-    if (w.y0 + y == last_y)
-      for (int x = 0; x < w.width; ++x) vy[x] = std::min(vy[x], 0.0f);
+    keep_paint_on_canvas(w, y, last_x, last_y, vx, vy);
   }
 }
 
@@ -265,13 +275,7 @@ IMPASTO_SIMD_CLONES void Stepper::shifted_velocity_rows(const StepInputs& in, in
       vx[x] = weight[x] * in.brush_vx;
       vy[x] = weight[x] * in.brush_vy;
     }
-    // Cells beyond the canvas do not exist: paint at the edge cannot leave.
-    if (w.x0 == 0) vx[0] = std::max(vx[0], 0.0f);
-    if (w.x0 + w.width - 1 == last_x) vx[w.width - 1] = std::min(vx[w.width - 1], 0.0f);
-    if (w.y0 + y == 0)
-      for (int x = 0; x < w.width; ++x) vy[x] = std::max(vy[x], 0.0f);
-    if (w.y0 + y == last_y)
-      for (int x = 0; x < w.width; ++x) vy[x] = std::min(vy[x], 0.0f);
+    keep_paint_on_canvas(w, y, last_x, last_y, vx, vy);
   }
 }
 
