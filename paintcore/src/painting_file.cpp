@@ -82,7 +82,7 @@ void PaintingFile::write_payload(const Painting::Impl& p, const Records& records
   w.put(spec.weave_origin_x_cells);
   w.put(spec.weave_origin_y_cells);
   const SimulationParams& q = p.params;
-  for (const NamedParam& param : simulation_param_fields()) w.put(q.*param.field);
+  for (const NamedParam& param : simulation_param_fields(kVersion)) w.put(q.*param.field);
   const int slots = static_cast<int>(p.slots.size());
   w.put(static_cast<std::uint32_t>(slots));
   for (const std::string& name : p.slots) w.put_string(name);
@@ -259,7 +259,8 @@ std::unique_ptr<Painting::Impl> PaintingFile::read_payload(Reader& r, std::uint3
   auto p = std::make_unique<Painting::Impl>(spec, threads);
   SimulationParams& q = p->params;
   if (version >= 3) {
-    for (const NamedParam& param : simulation_param_fields())
+    // Those the file's version holds; the rest keep their defaults.
+    for (const NamedParam& param : simulation_param_fields(version))
       q.*param.field = r.get_finite(std::string("params.") + param.name);
   } else {
     // IMPaSTo's per-step constants: xfer_fraction, equal_paint_cutoff, max_xfer, the two

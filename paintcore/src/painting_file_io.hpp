@@ -26,8 +26,10 @@ constexpr char kMagic[8] = {'I', 'M', 'P', 'A', 'S', 'T', 'O', '\0'};
 // files before version 4 render with the library's pigments. Version 5 added the weave's
 // origin (a cropped canvas keeps its cloth) and, after the payload's checksum, the optional
 // undo history section with a checksum of its own (painting_history_file.cpp). Version 6
-// added the media and varnish of the tiles that have them (painting_surface_file.hpp).
-constexpr std::uint32_t kVersion = 6;
+// added the media and varnish of the tiles that have them (painting_surface_file.hpp). Version
+// 7 added the long steps' settings after the other parameters (the version each parameter
+// came in is in simulation_params.cpp's list); older files load with their defaults.
+constexpr std::uint32_t kVersion = kPaintingFileVersion;
 constexpr std::uint32_t kOldestVersion = 1;
 static_assert(sizeof(kMagic) == kPaintingFileMagicBytes);
 constexpr std::size_t kHeaderBytes = kPaintingFileHeaderBytes;

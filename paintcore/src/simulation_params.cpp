@@ -1,42 +1,54 @@
 #include "impasto/paintcore/simulation_params.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <stdexcept>
 #include <string>
+
+#include "impasto/paintcore/painting_file_header.hpp"
 
 namespace impasto::paintcore {
 namespace {
 
-// One source for the parameters' names.
+// One source for the parameters' names, and for the painting file version that first holds
+// each (painting_file_io.hpp says what each version added).
 constexpr NamedParam kNamedParams[] = {
-    {"deposit_share", &SimulationParams::deposit_share},
-    {"transfer_length_mm", &SimulationParams::transfer_length_mm},
-    {"transfer_time_s", &SimulationParams::transfer_time_s},
-    {"lift_share", &SimulationParams::lift_share},
-    {"tip_film_mm", &SimulationParams::tip_film_mm},
-    {"ground_fill", &SimulationParams::ground_fill},
-    {"brush_flow_length_mm", &SimulationParams::brush_flow_length_mm},
-    {"plough", &SimulationParams::plough},
-    {"drag", &SimulationParams::drag},
-    {"squeeze_mm_s", &SimulationParams::squeeze_mm_s},
-    {"min_film_mm", &SimulationParams::min_film_mm},
-    {"settle_time_s", &SimulationParams::settle_time_s},
-    {"wet_support", &SimulationParams::wet_support},
-    // Not in painting files (simulation_param_fields ends before them).
-    {"long_step_share", &SimulationParams::long_step_share},
-    {"long_step_from_cells", &SimulationParams::long_step_from_cells},
-    {"long_step_drag_cells", &SimulationParams::long_step_drag_cells},
+    {"deposit_share", &SimulationParams::deposit_share, 3},
+    {"transfer_length_mm", &SimulationParams::transfer_length_mm, 3},
+    {"transfer_time_s", &SimulationParams::transfer_time_s, 3},
+    {"lift_share", &SimulationParams::lift_share, 3},
+    {"tip_film_mm", &SimulationParams::tip_film_mm, 3},
+    {"ground_fill", &SimulationParams::ground_fill, 3},
+    {"brush_flow_length_mm", &SimulationParams::brush_flow_length_mm, 3},
+    {"plough", &SimulationParams::plough, 3},
+    {"drag", &SimulationParams::drag, 3},
+    {"squeeze_mm_s", &SimulationParams::squeeze_mm_s, 3},
+    {"min_film_mm", &SimulationParams::min_film_mm, 3},
+    {"settle_time_s", &SimulationParams::settle_time_s, 3},
+    {"wet_support", &SimulationParams::wet_support, 3},
+    {"long_step_share", &SimulationParams::long_step_share, 7},
+    {"long_step_from_cells", &SimulationParams::long_step_from_cells, 7},
+    {"long_step_drag_cells", &SimulationParams::long_step_drag_cells, 7},
 };
-constexpr std::size_t kFileParams = 13;
+// Each file version's fields follow the older ones' (a file's are a prefix of the list), and
+// the newest version writes every one.
+static_assert(std::is_sorted(std::begin(kNamedParams), std::end(kNamedParams),
+                             [](const NamedParam& a, const NamedParam& b) {
+                               return a.file_version < b.file_version;
+                             }));
+static_assert(std::end(kNamedParams)[-1].file_version <= kPaintingFileVersion);
 
 }  // namespace
 
-std::span<const NamedParam> simulation_param_fields() {
-  return std::span<const NamedParam>(kNamedParams).first(kFileParams);
-}
-
 std::span<const NamedParam> all_simulation_params() {
   return kNamedParams;
+}
+
+std::span<const NamedParam> simulation_param_fields(std::uint32_t file_version) {
+  const auto end = std::find_if(std::begin(kNamedParams), std::end(kNamedParams),
+                                [&](const NamedParam& p) { return p.file_version > file_version; });
+  return std::span<const NamedParam>(std::begin(kNamedParams), end);
 }
 
 void set_param(SimulationParams& params, const std::string& assignment) {

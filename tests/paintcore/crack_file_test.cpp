@@ -8,17 +8,16 @@
 #include <fstream>
 #include <limits>
 
-#include "hasher.hpp"
-#include "impasto/paintcore/painting_file_header.hpp"
+#include "older_painting_files.hpp"
 #include "test_util.hpp"
 
 namespace impasto::paintcore {
 namespace {
 
-constexpr std::size_t kHeaderBytes = kPaintingFileHeaderBytes;
-// The version these tests write: save() writes 6, which adds at the end of the payload the
-// surface section (paint_surface.hpp), here empty: a u32 zero and the brush's medium (2 f32);
-// payload_of() takes it away.
+// The version these tests write: save() writes 7, which adds the long steps' settings after
+// the other parameters, and before it 6, which adds at the end of the payload the surface
+// section (paint_surface.hpp), here empty: a u32 zero and the brush's medium (2 f32);
+// payload_of() takes both away.
 constexpr std::uint32_t kVersion = 5;
 constexpr std::size_t kNoSurfacesBytes = 4 + 2 * 4;
 // Version 5's payload: the canvas spec (24 bytes, then the weave's origin, 2 i64, since
@@ -27,7 +26,7 @@ constexpr std::size_t kNoSurfacesBytes = 4 + 2 * 4;
 // 4; without a record source: a u32 zero).
 constexpr std::size_t kWeaveOriginOffset = 4 + 4 + 8 + 8;
 constexpr std::size_t kWeaveOriginBytes = 2 * 8;
-constexpr std::size_t kParamsOffset = kWeaveOriginOffset + kWeaveOriginBytes;
+static_assert(test::kParamsOffset == kWeaveOriginOffset + kWeaveOriginBytes);
 constexpr std::size_t kBrushExtrasBytes = 1 + 4 * 8;
 constexpr std::size_t kNoRecordsBytes = 4;
 // Bytes of a cracks section holding one tile with one crack cell.
@@ -82,12 +81,12 @@ class CrackFileTest : public ::testing::Test {
   // IMPaSTo's seven parameters (any valid values, the adhesion film kept) and no brush extras
   // or records at the end.
   static std::vector<unsigned char> as_version_two(std::vector<unsigned char> payload) {
-    const auto fields = simulation_param_fields();
+    const auto fields = simulation_param_fields(kVersion);
     const auto film = std::find_if(fields.begin(), fields.end(), [](const NamedParam& f) {
       return std::string(f.name) == "min_film_mm";
     });
     double min_film = 0.0;
-    std::memcpy(&min_film, payload.data() + kParamsOffset + 8 * (film - fields.begin()), 8);
+    std::memcpy(&min_film, payload.data() + test::kParamsOffset + 8 * (film - fields.begin()), 8);
     std::vector<unsigned char> old(7 * 8);
     const double values[7] = {0.1, 1.0 / 30, 0.001, 0.2, 0.3, 0.5, min_film};
     std::memcpy(old.data(), values, sizeof values);
@@ -106,29 +105,13 @@ class CrackFileTest : public ::testing::Test {
   // Writes a file from header fields and a payload, with the payload's checksum.
   static void write(const std::filesystem::path& file, std::uint32_t version,
                     const std::vector<unsigned char>& payload) {
-    std::vector<unsigned char> bytes = {'I', 'M', 'P', 'A', 'S', 'T', 'O', '\0'};
-    bytes.resize(kHeaderBytes);
-    std::memcpy(bytes.data() + 8, &version, 4);
-    const std::uint64_t size = payload.size();
-    std::memcpy(bytes.data() + 12, &size, 8);
-    bytes.insert(bytes.end(), payload.begin(), payload.end());
-    Hasher checksum;
-    checksum.bytes(payload.data(), payload.size());
-    const std::uint64_t digest = checksum.digest();
-    bytes.resize(bytes.size() + 8);
-    std::memcpy(bytes.data() + bytes.size() - 8, &digest, 8);
-    std::ofstream out(file, std::ios::binary);
-    out.write(reinterpret_cast<const char*>(bytes.data()),
-              static_cast<std::streamsize>(bytes.size()));
+    test::write_painting_file(file, version, payload);
   }
   // The payload alone (a version-5 file may carry the undo history after it), as version 5
-  // wrote it: without a version-6 file's empty surface section.
+  // wrote it: without a version-7 file's long steps and a version-6 file's empty surface
+  // section.
   static std::vector<unsigned char> payload_of(const std::vector<unsigned char>& file_bytes) {
-    std::uint64_t size = 0;
-    std::memcpy(&size, file_bytes.data() + 12, 8);
-    std::vector<unsigned char> payload(
-        file_bytes.begin() + kHeaderBytes,
-        file_bytes.begin() + kHeaderBytes + static_cast<std::ptrdiff_t>(size));
+    std::vector<unsigned char> payload = test::as_version_six(test::payload_of(file_bytes));
     EXPECT_GE(payload.size(), kNoSurfacesBytes);
     payload.resize(payload.size() - kNoSurfacesBytes);
     return payload;

@@ -58,7 +58,8 @@ void patch_payload(std::vector<unsigned char>& file, std::size_t offset, const T
 
 // Payload offsets of a painting with slots named `slots`.
 inline std::size_t slots_offset() {
-  return 4 + 4 + 8 + 8 + 2 * 8 + 8 * simulation_param_fields().size();  // spec, weave origin
+  // spec, weave origin, the parameters
+  return 4 + 4 + 8 + 8 + 2 * 8 + 8 * simulation_param_fields(kPaintingFileVersion).size();
 }
 inline std::size_t tiles_count_offset(const std::vector<std::string>& slots) {
   std::size_t offset = slots_offset() + 4;

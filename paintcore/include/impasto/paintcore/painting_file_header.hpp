@@ -3,9 +3,12 @@
 // loader, and the tests and fuzzer that craft hostile files): the magic, the format version
 // (u32) and the payload's size (u64), little-endian, before the payload.
 #include <cstddef>
+#include <cstdint>
 
 namespace impasto::paintcore {
 
+// The version this program writes (painting_file_io.hpp says what each version added).
+inline constexpr std::uint32_t kPaintingFileVersion = 7;
 inline constexpr std::size_t kPaintingFileMagicBytes = 8;  // "IMPASTO\0"
 inline constexpr std::size_t kPaintingFileHeaderBytes = kPaintingFileMagicBytes + 4 + 8;
 

@@ -3,6 +3,7 @@
 // stroke leaves depends neither on how densely the pen is sampled nor on the canvas
 // resolution. Paint heights are in mm. docs/simulation.md derives each rule.
 
+#include <cstdint>
 #include <span>
 #include <string>
 
@@ -56,16 +57,19 @@ struct SimulationParams {
 // Throws std::runtime_error naming the field when a parameter is out of range or not finite.
 void validate(const SimulationParams& params);
 
-// Every parameter with its name, in a fixed order (the painting file's): the one list of them.
+// Every parameter with its name and the painting file version that first holds it, in the
+// painting file's order (docs/painting-format.md): the one list of them. A parameter added
+// later goes at the end with the file version that adds it; files older than that version
+// load with its default.
 struct NamedParam {
   const char* name;
   double SimulationParams::*field;
+  std::uint32_t file_version;
 };
-// The parameters a painting file holds (docs/painting-format.md).
-std::span<const NamedParam> simulation_param_fields();
-// Those and the long steps' settings, which painting files do not hold yet (a painting
-// reopened, and a session replayed, step with the defaults, as the window does).
 std::span<const NamedParam> all_simulation_params();
+// The parameters a painting file of `file_version` holds, in its order: a prefix of the list
+// (versions 1 and 2 held IMPaSTo's per-step constants instead, and hold none of these).
+std::span<const NamedParam> simulation_param_fields(std::uint32_t file_version);
 
 // The parameters by name, for command lines and settings files: sets `name` from "NAME=VALUE"
 // text; throws naming the field (and listing the known names) when it can't. Does not validate.

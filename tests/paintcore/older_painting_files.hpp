@@ -1,0 +1,58 @@
+#pragma once
+// Painting files of older format versions, made from what save() writes today, for the tests
+// that check they still load (docs/painting-format.md): the payload taken out of a saved file,
+// one version's additions taken away, and a file written around a payload.
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <vector>
+
+#include "hasher.hpp"
+#include "impasto/paintcore/painting_file_header.hpp"
+#include "impasto/paintcore/simulation_params.hpp"
+
+namespace impasto::paintcore::test {
+
+// Where the parameters begin in a payload of version 5 or later: after the canvas's size, dpi
+// and weave seed (24 bytes) and the weave's origin (2 × i64).
+inline constexpr std::size_t kParamsOffset = 4 + 4 + 8 + 8 + 2 * 8;
+
+// The payload of a saved file's bytes (the undo history may follow its checksum).
+inline std::vector<unsigned char> payload_of(const std::vector<unsigned char>& file_bytes) {
+  std::uint64_t size = 0;
+  std::memcpy(&size, file_bytes.data() + 12, 8);
+  const auto begin = file_bytes.begin() + kPaintingFileHeaderBytes;
+  return {begin, begin + static_cast<std::ptrdiff_t>(size)};
+}
+
+// A version-6 payload from a version-7 one: without the parameters version 7 added (the long
+// steps' settings, after the others).
+inline std::vector<unsigned char> as_version_six(std::vector<unsigned char> payload) {
+  const auto kept = static_cast<std::ptrdiff_t>(8 * simulation_param_fields(6).size());
+  const auto added = static_cast<std::ptrdiff_t>(8 * simulation_param_fields(7).size()) - kept;
+  const auto at = payload.begin() + static_cast<std::ptrdiff_t>(kParamsOffset) + kept;
+  payload.erase(at, at + added);
+  return payload;
+}
+
+// Writes a painting file of `version` around `payload`, with the payload's checksum.
+inline void write_painting_file(const std::filesystem::path& file, std::uint32_t version,
+                                const std::vector<unsigned char>& payload) {
+  std::vector<unsigned char> bytes = {'I', 'M', 'P', 'A', 'S', 'T', 'O', '\0'};
+  bytes.resize(kPaintingFileHeaderBytes);
+  std::memcpy(bytes.data() + 8, &version, 4);
+  const std::uint64_t size = payload.size();
+  std::memcpy(bytes.data() + 12, &size, 8);
+  bytes.insert(bytes.end(), payload.begin(), payload.end());
+  Hasher checksum;
+  checksum.bytes(payload.data(), payload.size());
+  const std::uint64_t digest = checksum.digest();
+  bytes.resize(bytes.size() + 8);
+  std::memcpy(bytes.data() + bytes.size() - 8, &digest, 8);
+  std::ofstream out(file, std::ios::binary);
+  out.write(reinterpret_cast<const char*>(bytes.data()),
+            static_cast<std::streamsize>(bytes.size()));
+}
+
+}  // namespace impasto::paintcore::test
