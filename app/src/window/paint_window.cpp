@@ -33,6 +33,7 @@
 #include <thread>
 #include <utility>
 
+#include "latency_lines.hpp"
 #include "session/preview.hpp"
 #include "session/rebuild.hpp"
 #include "session/recovery_folder.hpp"
@@ -169,8 +170,9 @@ class PaintWindow {
   void present_frame(const std::vector<render_gl::PixelRect>& canvas_changed, int fb_w, int fb_h,
                      double fb_scale, bool take_screenshot);
   void pen_sample(const PointerEvent& at, bool tip_down);
-  void pan_view(double from_x, double from_y, double to_x, double to_y);
-  void rotate_view(double from_x, double from_y, double to_x, double to_y);
+  void pan_view(double from_x, double from_y, double to_x, double to_y, double time_s);
+  void rotate_view(double from_x, double from_y, double to_x, double to_y, double time_s);
+  void time_view_motion(double swap_time_s);
   void submit_pen_event(input::StrokeEvent event);
   void report_latency() const;
   void start_tablets();
@@ -204,6 +206,7 @@ class PaintWindow {
   bool frame_changed_ = true;            // the last frame re-shaded some of the canvas
   std::array<double, 6> last_motion_{};  // the view and the light at the last frame
   double last_motion_s_ = -1e9;          // when they last changed
+  double canvas_changed_s_ = -1e9;       // when the last upload had changed cells
   std::unique_ptr<render::SpectralPalette> palette_;
   bool palette_stands_in_ = false;    // the Gaussian rule while the palette's own is built
   std::uint64_t rules_finished_ = 0;  // render::palette_rules_finished() when it was made
@@ -213,12 +216,12 @@ class PaintWindow {
 
   // Every pen sample, mouse or tablet, goes to the simulation through this feed.
   PenFeed canvas_feed_{[this](input::StrokeEvent event) { submit_pen_event(std::move(event)); }};
-  InputLatency latency_;                 // pen sample's own time -> the swap that shows it
-  InputLatency zoom_latency_;            // a wheel click's own time -> the swap that shows it
-  std::uint64_t wheel_clicks_ = 0;       // wheel clicks delivered, numbering zoom_latency_'s
-  std::optional<std::uint64_t> zoomed_;  // this frame zoomed, after that many clicks
-  std::vector<int> coarse_factors_;      // of each coarse frame, for the report
-  std::uint64_t applied_at_upload_ = 0;  // simulation jobs applied before this frame's upload
+  InputLatency latency_;      // pen sample's own time -> the swap that shows it
+  ViewLatency view_latency_;  // a zoom step's, rotation's, pan's or light's event -> the swap
+  std::vector<double> frame_pointer_times_;  // this frame's presses and moves (a light drag's)
+  std::array<double, 2> shown_light_{};      // the light's direction at the last swap
+  std::vector<int> coarse_factors_;          // of each coarse frame, for the report
+  std::uint64_t applied_at_upload_ = 0;      // simulation jobs applied before this frame's upload
   PaletteBoardPanel board_panel_;
   PigmentEditor pigment_editor_;
   CanvasMenu canvas_menu_;
@@ -235,8 +238,10 @@ class PaintWindow {
   std::unique_ptr<PointerServerTimes> server_times_;  // each event's time, from the X server
   PointerGestures gestures_{{
       [this](const PointerEvent& at, bool tip_down) { pen_sample(at, tip_down); },
-      [this](double fx, double fy, double tx, double ty) { pan_view(fx, fy, tx, ty); },
-      [this](double fx, double fy, double tx, double ty) { rotate_view(fx, fy, tx, ty); },
+      [this](double fx, double fy, double tx, double ty, double t) { pan_view(fx, fy, tx, ty, t); },
+      [this](double fx, double fy, double tx, double ty, double t) {
+        rotate_view(fx, fy, tx, ty, t);
+      },
   }};
   SpeedPressure speed_pressure_;
   // The keyboard: each key press (and a held key's repeats) since the last frame, in order.
@@ -323,8 +328,7 @@ void PaintWindow::create_window() {
   });
   glfwSetScrollCallback(window_, [](GLFWwindow* window, double, double) {
     auto* self = static_cast<PaintWindow*>(glfwGetWindowUserPointer(window));
-    self->zoom_latency_.submitted(++self->wheel_clicks_,
-                                  self->server_times_->wheel_time() - self->session_start_s_);
+    self->view_latency_.submitted(ViewMotion::kZoom, self->server_times_->wheel_time());
   });
   double cursor_x = 0, cursor_y = 0;
   glfwGetCursorPos(window_, &cursor_x, &cursor_y);
@@ -647,6 +651,7 @@ void PaintWindow::sync_gpu() {
     } else {
       renderer_->upload_tiles(canvas, dirty);
       view_cache_.invalidate_cells(changed);  // only the cells changed, not whole tiles
+      if (!changed.empty()) canvas_changed_s_ = glfwGetTime();
       state_.tiles_uploaded += static_cast<long long>(dirty.size());
     }
   });
@@ -685,17 +690,36 @@ void PaintWindow::submit_pen_event(input::StrokeEvent event) {
   if (sample) latency_.submitted(worker_->stats().submitted, time_s);
 }
 
-void PaintWindow::pan_view(double from_x, double from_y, double to_x, double to_y) {
+void PaintWindow::pan_view(double from_x, double from_y, double to_x, double to_y, double time_s) {
   const auto a = state_.view.window_to_cell(from_x, from_y, window_w_, window_h_);
   const auto b = state_.view.window_to_cell(to_x, to_y, window_w_, window_h_);
   state_.view.center_x_cells -= b[0] - a[0];
   state_.view.center_y_cells -= b[1] - a[1];
+  view_latency_.submitted(ViewMotion::kPan, time_s);
+  view_latency_.applied(ViewMotion::kPan);
 }
 
-void PaintWindow::rotate_view(double from_x, double from_y, double to_x, double to_y) {
+void PaintWindow::rotate_view(double from_x, double from_y, double to_x, double to_y,
+                              double time_s) {
   const double a0 = std::atan2(from_y - window_h_ / 2.0, from_x - window_w_ / 2.0);
   const double a1 = std::atan2(to_y - window_h_ / 2.0, to_x - window_w_ / 2.0);
   state_.view.rotation_rad += a1 - a0;
+  view_latency_.submitted(ViewMotion::kRotate, time_s);
+  view_latency_.applied(ViewMotion::kRotate);
+}
+
+// A frame was swapped at swap_time_s: it shows every view motion applied before it. The
+// Light panel's disc moves the light as ImGui reads this frame's pointer events, so when the
+// light's direction changed, those events moved it.
+void PaintWindow::time_view_motion(double swap_time_s) {
+  const std::array<double, 2> light = {state_.settings.light_azimuth_deg,
+                                       state_.settings.light_elevation_deg};
+  if (light != shown_light_) {
+    for (const double t : frame_pointer_times_) view_latency_.submitted(ViewMotion::kLight, t);
+    view_latency_.applied(ViewMotion::kLight);
+  }
+  shown_light_ = light;
+  view_latency_.shown(swap_time_s);
 }
 
 // Applies every mouse event since the last frame in order: each move of a stroke is a pen
@@ -719,6 +743,10 @@ void PaintWindow::handle_canvas_input() {
       pointer_events_.take(), picking, frame.canvas_at,
       [this](const PointerEvent& at, bool released) { pick_at(at, released); });
   gestures_.apply(events, frame);
+  frame_pointer_times_.clear();
+  for (const PointerEvent& event : events) {
+    if (event.action != PointerAction::kRelease) frame_pointer_times_.push_back(event.time_s);
+  }
 
   double x = 0, y = 0;
   glfwGetCursorPos(window_, &x, &y);
@@ -733,8 +761,10 @@ void PaintWindow::handle_canvas_input() {
     const auto after = state_.view.window_to_cell(x, y, window_w_, window_h_);
     state_.view.center_x_cells += before[0] - after[0];
     state_.view.center_y_cells += before[1] - after[1];
-    zoomed_ = wheel_clicks_;
+    view_latency_.applied(ViewMotion::kZoom);
   }
+  // A wheel click over a panel scrolled it: no zoom step to time.
+  if (io.WantCaptureMouse && io.MouseWheel != 0.0f) view_latency_.dropped(ViewMotion::kZoom);
 }
 
 // Keys become commands through the one table (shortcuts.hpp), unless a text field or a
@@ -1059,8 +1089,9 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   const double fb_scale = win_w > 0 ? static_cast<double>(fb_w) / win_w : 1.0;
   fb_view.pixels_per_cell *= fb_scale;
   renderer_->set_shading(state_.settings);
-  // While the view or the light moves, frames that re-shade everything do it coarsely; the
-  // view is refined, a few blocks a frame, once the motion has stopped for kRefineAfter_s.
+  // While the view or the light moves, frames that re-shade everything do it coarsely, and
+  // while a stroke changes the canvas, its changes are drafted where they cost too much; the
+  // view is refined, a few blocks a frame, once both have stopped for kRefineAfter_s.
   const double now_s = glfwGetTime();
   const std::array<double, 6> motion = {fb_view.center_x_cells,
                                         fb_view.center_y_cells,
@@ -1071,17 +1102,17 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   if (motion != last_motion_) last_motion_s_ = now_s;
   last_motion_ = motion;
   using Detail = render_gl::ShadedViewCache::Detail;
-  const Detail detail = take_screenshot                           ? Detail::kFull
-                        : now_s - last_motion_s_ < kRefineAfter_s ? Detail::kCoarse
-                                                                  : Detail::kRefining;
+  const double still_s = now_s - std::max(last_motion_s_, canvas_changed_s_);
+  const Detail detail = take_screenshot            ? Detail::kFull
+                        : still_s < kRefineAfter_s ? Detail::kCoarse
+                                                   : Detail::kRefining;
   const render_gl::CachedDrawStats canvas =
       view_cache_.update(*renderer_, fb_view, fb_w, fb_h, detail);
   state_.pixels_shaded += canvas.pixels_shaded;
   frame_changed_ = !canvas.changed.empty();
   present_frame(canvas.changed, fb_w, fb_h, fb_scale, take_screenshot);
   latency_.shown(applied_at_upload_, glfwGetTime() - session_start_s_);
-  if (zoomed_)
-    zoom_latency_.shown(*std::exchange(zoomed_, std::nullopt), glfwGetTime() - session_start_s_);
+  time_view_motion(glfwGetTime());
   if (canvas.coarse) coarse_factors_.push_back(canvas.coarse_factor);
   state_.input_latency_ms = latency_.recent_median_ms().value_or(-1.0);
   state_.frame_ms = ms_since(start);
@@ -1204,20 +1235,12 @@ void PaintWindow::run() {
 
 // The session's input latency, for measuring it (docs/window.md).
 void PaintWindow::report_latency() const {
-  if (zoom_latency_.shown_count() > 0) {
-    std::vector<int> factors = coarse_factors_;
-    std::sort(factors.begin(), factors.end());
-    std::cout << "zoom latency (wheel click to the swap showing it): median "
-              << *zoom_latency_.percentile_ms(0.5) << " ms, 95th percentile "
-              << *zoom_latency_.percentile_ms(0.95) << " ms over " << zoom_latency_.shown_count()
-              << " clicks; " << factors.size() << " coarse frames, median factor "
-              << (factors.empty() ? 0 : factors[factors.size() / 2]) << "\n";
-  }
+  std::cout << view_latency_.report(coarse_factors_);
   if (latency_.shown_count() == 0) return;
-  std::cout << "input latency (pen event to the swap showing it): median "
-            << *latency_.percentile_ms(0.5) << " ms, 95th percentile "
-            << *latency_.percentile_ms(0.95) << " ms over " << latency_.shown_count()
-            << " samples; " << server_times_->matched() << " mouse events timed by the window "
+  std::cout << latency_line("input", "pen event", "samples",
+                            {*latency_.percentile_ms(0.5), *latency_.percentile_ms(0.95),
+                             static_cast<int>(latency_.shown_count())})
+            << "; " << server_times_->matched() << " mouse events timed by the window "
             << "system, " << server_times_->unmatched() << " when delivered\n";
 }
 

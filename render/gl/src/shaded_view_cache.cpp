@@ -136,6 +136,23 @@ double timed_gl_ms(Draw&& draw) {
       .count();
 }
 
+// Many small passes cost more than one pass over their bounding box, and overlapping ones
+// shade pixels twice: one pass over the box when it is no larger than their sum.
+std::vector<PixelRect> fewer_passes(std::vector<PixelRect> regions) {
+  constexpr std::size_t kMaxPasses = 32;
+  std::erase_if(regions, [](const PixelRect& r) { return r.empty(); });
+  if (regions.size() <= 1) return regions;
+  PixelRect box = regions.front();
+  long long sum = 0;
+  for (const PixelRect& r : regions) {
+    box = {std::min(box.x0, r.x0), std::min(box.y0, r.y0), std::max(box.x1, r.x1),
+           std::max(box.y1, r.y1)};
+    sum += r.area();
+  }
+  if (regions.size() > kMaxPasses || box.area() <= sum) regions.assign(1, box);
+  return regions;
+}
+
 }  // namespace
 
 long long ShadedViewCache::shade_coarse(CanvasRenderer& renderer, const CanvasView& view,
@@ -167,11 +184,85 @@ long long ShadedViewCache::shade_coarse(CanvasRenderer& renderer, const CanvasVi
   return pixels;
 }
 
+int ShadedViewCache::draft_factor_for(std::span<const PixelRect> regions,
+                                      const CanvasRenderer& renderer,
+                                      const CanvasView& view) const {
+  double pixels = 0.0;
+  for (const PixelRect& r : regions) pixels += static_cast<double>(r.area());
+  if (pixels <= 0.0) return 0;
+  const double fine = changed_ms_per_pixel_ > 0.0 ? changed_ms_per_pixel_ : fine_ms_per_pixel_;
+  if (draft_budget_ms_ <= 0.0) return kMaxDraftFactor;
+  if (!(fine > 0.0) || pixels * fine <= draft_budget_ms_) return 0;  // unknown: measure it
+  // Zoomed out, smooth zoom averages up to 4 x 4 cells a pixel: one cell a pixel at full
+  // resolution may already fit. Elsewhere a draft pixel costs what a fine one does.
+  const bool averages = renderer.view_options().smooth_zoom && view.pixels_per_cell <= 1.0 / 1.5;
+  const double draft = draft_ms_per_pixel_ > 0.0 ? draft_ms_per_pixel_ : fine;
+  for (int factor = averages ? 1 : 2; factor < kMaxDraftFactor; ++factor) {
+    if (pixels / (factor * factor) * draft <= draft_budget_ms_) return factor;
+  }
+  return kMaxDraftFactor;
+}
+
+long long ShadedViewCache::shade_draft(CanvasRenderer& renderer, const CanvasView& view,
+                                       int viewport_w, int viewport_h,
+                                       std::span<const PixelRect> regions, int factor,
+                                       std::vector<PixelRect>& drafted) {
+  const int w = (viewport_w + factor - 1) / factor, h = (viewport_h + factor - 1) / factor;
+  if (!draft_image_ || draft_image_->width() != w || draft_image_->height() != h) {
+    draft_image_ = std::make_unique<Framebuffer>(w, h, TexelFormat::kRGBA8);
+  }
+  // The draft's pixel (X, Y) covers the viewport's pixels [X f, (X + 1) f) x [Y f, (Y + 1) f):
+  // its view is the viewport's own, w f x h f pixels large from the same bottom-left corner.
+  CanvasView small = view;
+  const auto centre =
+      view.window_to_cell(w * factor / 2.0, viewport_h - h * factor / 2.0, viewport_w, viewport_h);
+  small.center_x_cells = centre[0];
+  small.center_y_cells = centre[1];
+  small.pixels_per_cell = view.pixels_per_cell / factor;
+  const GpuViewOptions options = renderer.view_options();
+  GpuViewOptions sharp = options;
+  sharp.smooth_zoom = false;  // one cell a pixel
+  renderer.set_view_options(sharp);
+  // Each region's draft pixels, and one more each way for the magnification to blend.
+  const auto draft_rect = [&](const PixelRect& r, int rim) {
+    return PixelRect{std::max(0, r.x0 / factor - rim), std::max(0, r.y0 / factor - rim),
+                     std::min(w, (r.x1 + factor - 1) / factor + rim),
+                     std::min(h, (r.y1 + factor - 1) / factor + rim)};
+  };
+  long long pixels = 0;
+  const double ms = timed_gl_ms([&] {
+    draft_image_->bind();
+    glEnable(GL_SCISSOR_TEST);
+    for (const PixelRect& r : regions) {
+      const PixelRect d = draft_rect(r, 1);
+      glScissor(d.x0, d.y0, d.x1 - d.x0, d.y1 - d.y0);
+      renderer.draw(small, w, h);
+      pixels += d.area();
+    }
+    glDisable(GL_SCISSOR_TEST);
+  });
+  if (pixels > 0) draft_ms_per_pixel_ = ms / static_cast<double>(pixels);
+  renderer.set_view_options(options);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, draft_image_->id());
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, image_->id());
+  drafted.clear();
+  for (const PixelRect& r : regions) {
+    const PixelRect d = draft_rect(r, 0);
+    const PixelRect onto{d.x0 * factor, d.y0 * factor, d.x1 * factor, d.y1 * factor};
+    glBlitFramebuffer(d.x0, d.y0, d.x1, d.y1, onto.x0, onto.y0, onto.x1, onto.y1,
+                      GL_COLOR_BUFFER_BIT, factor > 1 ? GL_LINEAR : GL_NEAREST);
+    drafted.push_back(
+        {onto.x0, onto.y0, std::min(viewport_w, onto.x1), std::min(viewport_h, onto.y1)});
+  }
+  return pixels;
+}
+
 CachedDrawStats ShadedViewCache::update(CanvasRenderer& renderer, const CanvasView& view,
                                         int viewport_w, int viewport_h, Detail detail) {
   CachedDrawStats stats;
   if (!image_ || image_->width() != viewport_w || image_->height() != viewport_h) {
     image_ = std::make_unique<Framebuffer>(viewport_w, viewport_h, TexelFormat::kRGBA8);
+    rough_.resize(viewport_w, viewport_h, kRefineBlock);
     all_invalid_ = true;
   }
   const auto look = look_of(renderer, view);
@@ -181,7 +272,6 @@ CachedDrawStats ShadedViewCache::update(CanvasRenderer& renderer, const CanvasVi
 
   // A pan: where the view's centre moved by whole pixels, move the image instead.
   std::vector<PixelRect> regions;
-  bool refining_blocks = false;
   if (!all_invalid_ && (view.center_x_cells != view_.center_x_cells ||
                         view.center_y_cells != view_.center_y_cells)) {
     const auto before = view_.cell_to_window(0.0, 0.0, viewport_w, viewport_h);
@@ -192,6 +282,7 @@ CachedDrawStats ShadedViewCache::update(CanvasRenderer& renderer, const CanvasVi
     if (std::abs(dx - rx) < kWholePixel && std::abs(dy_down - ry) < kWholePixel &&
         std::abs(rx) < viewport_w && std::abs(ry) < viewport_h) {
       regions = shift_image(static_cast<int>(rx), -static_cast<int>(ry));  // GL rows go up
+      rough_.shift(static_cast<int>(rx), -static_cast<int>(ry));  // the rough parts moved too
       stats.shifted = true;
     } else {
       all_invalid_ = true;
@@ -199,14 +290,13 @@ CachedDrawStats ShadedViewCache::update(CanvasRenderer& renderer, const CanvasVi
   }
   view_ = view;
 
-  if (coarse_ && detail == Detail::kFull) all_invalid_ = true;  // refine at once
-  if (coarse_ && stats.shifted) refined_blocks_ = 0;  // the refined blocks moved: start again
+  if (rough_.any() && detail == Detail::kFull) all_invalid_ = true;  // refine at once
   if (all_invalid_ && detail == Detail::kCoarse) {
     stats.coarse_factor = next_coarse_factor(viewport_w, viewport_h);
     stats.pixels_shaded =
         shade_coarse(renderer, view, viewport_w, viewport_h, stats.coarse_factor, stats.shade_ms);
-    stats.full = stats.coarse = stats.refining = coarse_ = true;
-    refined_blocks_ = 0;
+    stats.full = stats.coarse = stats.refining = true;
+    rough_.mark_all();
     stats.changed.assign(1, {0, 0, viewport_w, viewport_h});
     all_invalid_ = false;
     dirty_tiles_.clear();
@@ -214,13 +304,15 @@ CachedDrawStats ShadedViewCache::update(CanvasRenderer& renderer, const CanvasVi
     check_gl_error("coarse canvas view");
     return stats;
   }
-  if (all_invalid_) coarse_ = false;
 
-  // The regions to re-shade: the whole viewport, or the uncovered strips and the changed
-  // tiles and cells in view.
+  // The regions to re-shade: the whole viewport, or the uncovered strips, the changed tiles
+  // and cells in view (drafted when they cost too much) and the next rough blocks to refine.
+  std::vector<PixelRect> drafted;
+  bool refining_blocks = false;
   if (all_invalid_) {
     regions.assign(1, {0, 0, viewport_w, viewport_h});
     stats.full = true;
+    rough_.clear();
   } else {
     std::sort(dirty_tiles_.begin(), dirty_tiles_.end());
     dirty_tiles_.erase(std::unique(dirty_tiles_.begin(), dirty_tiles_.end()), dirty_tiles_.end());
@@ -230,49 +322,39 @@ CachedDrawStats ShadedViewCache::update(CanvasRenderer& renderer, const CanvasVi
       // Zoomed in, a pixel blends its neighbour cells' shading: one cell more each way.
       for (int* side : {&reach.left, &reach.top, &reach.right, &reach.bottom}) ++*side;
     }
+    std::vector<PixelRect> changed;
     for (int tile : dirty_tiles_) {
       const PixelRect rect = tile_screen_rect(tile, tiles_x, view, viewport_w, viewport_h, reach);
-      if (!rect.empty()) regions.push_back(rect);
+      if (!rect.empty()) changed.push_back(rect);
     }
     for (const paintcore::CellRect& cells : dirty_cells_) {
       const PixelRect rect = cells_screen_rect(cells, view, viewport_w, viewport_h, reach);
-      if (!rect.empty()) regions.push_back(rect);
+      if (!rect.empty()) changed.push_back(rect);
     }
-    if (coarse_ && detail == Detail::kRefining) {
-      // The next blocks in reading order, as many as the refine budget allows, within one
-      // row of blocks: one scissored pass.
+    changed = fewer_passes(std::move(changed));
+    stats.draft_factor = detail == Detail::kCoarse ? draft_factor_for(changed, renderer, view) : 0;
+    if (stats.draft_factor > 0) {
+      stats.pixels_shaded +=
+          shade_draft(renderer, view, viewport_w, viewport_h, changed, stats.draft_factor, drafted);
+      for (const PixelRect& r : drafted) rough_.mark(r);
+    } else {
+      regions.insert(regions.end(), changed.begin(), changed.end());
+    }
+    if (rough_.any() && detail == Detail::kRefining) {
+      // The next rough blocks in reading order, as many as the refine budget allows, within
+      // one row of blocks: one scissored pass.
       const double ms_per_pixel =
           fine_ms_per_pixel_ > 0.0 ? fine_ms_per_pixel_ : coarse_ms_per_pixel_ / kCoarsePixelCost;
       const int blocks_x = (viewport_w + kRefineBlock - 1) / kRefineBlock;
-      const int blocks_y = (viewport_h + kRefineBlock - 1) / kRefineBlock;
-      const int column = refined_blocks_ % blocks_x;
-      const int row = blocks_y - 1 - refined_blocks_ / blocks_x;  // GL rows count up
       // In double until clamped: a tiny measured cost would overflow an int.
       const double fit = ms_per_pixel > 0.0
                              ? refine_step_ms_ / (ms_per_pixel * kRefineBlock * kRefineBlock)
                              : blocks_x;
-      const int blocks = static_cast<int>(
-          std::clamp(std::floor(fit), 1.0, static_cast<double>(blocks_x - column)));
-      regions.push_back({column * kRefineBlock, row * kRefineBlock,
-                         std::min(viewport_w, (column + blocks) * kRefineBlock),
-                         std::min(viewport_h, (row + 1) * kRefineBlock)});
-      refined_blocks_ += blocks;
-      if (refined_blocks_ >= blocks_x * blocks_y) refined_blocks_ = -1;  // done
+      regions.push_back(
+          rough_.take_run(static_cast<int>(std::clamp(std::floor(fit), 1.0, 1.0 * blocks_x))));
       refining_blocks = true;
     }
-    // Many small passes cost more than one pass over their bounding box, and overlapping
-    // ones shade pixels twice: one pass over the box when it is no larger than their sum.
-    constexpr std::size_t kMaxPasses = 32;
-    if (regions.size() > 1) {
-      PixelRect box = regions.front();
-      long long sum = 0;
-      for (const PixelRect& r : regions) {
-        box = {std::min(box.x0, r.x0), std::min(box.y0, r.y0), std::max(box.x1, r.x1),
-               std::max(box.y1, r.y1)};
-        sum += r.area();
-      }
-      if (regions.size() > kMaxPasses || box.area() <= sum) regions.assign(1, box);
-    }
+    regions = fewer_passes(std::move(regions));
   }
   all_invalid_ = false;
   dirty_tiles_.clear();
@@ -288,21 +370,28 @@ CachedDrawStats ShadedViewCache::update(CanvasRenderer& renderer, const CanvasVi
     }
     glDisable(GL_SCISSOR_TEST);
   };
-  if ((stats.full || refining_blocks) && !regions.front().empty()) {
+  long long fine_pixels = 0;
+  for (const PixelRect& r : regions) fine_pixels += r.area();
+  if ((stats.full || refining_blocks) && fine_pixels > 0) {
     // Timed: the cost of a pixel predicts the coarse factor of the next motion's first frame
     // and the size of the next step of a refinement.
     stats.shade_ms = timed_gl_ms(shade_regions);
-    fine_ms_per_pixel_ = stats.shade_ms / static_cast<double>(stats.pixels_shaded);
+    fine_ms_per_pixel_ = stats.shade_ms / static_cast<double>(fine_pixels);
+  } else if (detail == Detail::kCoarse && fine_pixels > 0) {
+    // Timed while the canvas changes: the cost of a pixel decides whether the next changed
+    // regions are drafted.
+    changed_ms_per_pixel_ = timed_gl_ms(shade_regions) / static_cast<double>(fine_pixels);
   } else if (!regions.empty()) {
     shade_regions();
   }
-  stats.regions = static_cast<int>(regions.size());
-  if (coarse_ && refined_blocks_ < 0) coarse_ = false;
-  stats.refining = coarse_;
+  for (const PixelRect& r : regions) rough_.clear_covered(r);
+  stats.regions = static_cast<int>(regions.size() + drafted.size());
+  stats.refining = rough_.any();
   if (stats.shifted) {
     stats.changed.assign(1, {0, 0, viewport_w, viewport_h});
   } else {
     stats.changed = std::move(regions);
+    stats.changed.insert(stats.changed.end(), drafted.begin(), drafted.end());
   }
   check_gl_error("cached canvas view");
   return stats;

@@ -6,6 +6,8 @@
 // and shades only the strips it uncovers. What changes every pixel (zoom, rotation, a pan
 // by a fraction of a pixel, the viewport size, the light, the look) re-shades the viewport
 // once: while the view moves, coarsely, refined a few blocks a frame once it stops (Detail).
+// While a stroke changes more than the draft budget can shade each frame, its regions are
+// shaded as a draft, refined the same way once the canvas stops changing.
 // The shading runs at
 // screen resolution, so a zoomed-out view of a large canvas costs its pixels, not its cells.
 #include <array>
@@ -16,15 +18,10 @@
 #include "impasto/render_gl/canvas_renderer.hpp"
 #include "impasto/render_gl/canvas_view.hpp"
 #include "impasto/render_gl/framebuffer.hpp"
+#include "impasto/render_gl/pixel_rect.hpp"
+#include "impasto/render_gl/rough_blocks.hpp"
 
 namespace impasto::render_gl {
-
-// A screen rectangle in GL window pixels (origin bottom-left), [x0, x1) × [y0, y1).
-struct PixelRect {
-  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-  long long area() const { return static_cast<long long>(x1 - x0) * (y1 - y0); }
-  bool empty() const { return x1 <= x0 || y1 <= y0; }
-};
 
 // What one draw did.
 struct CachedDrawStats {
@@ -35,7 +32,8 @@ struct CachedDrawStats {
   bool coarse = false;          // the whole viewport was shaded coarsely (Detail::kCoarse)
   int coarse_factor = 0;        // its pixels' size in viewport pixels each way (0: not coarse)
   double shade_ms = 0.0;        // a whole-viewport pass or a refining step: its shading's GL time
-  bool refining = false;        // the image still has coarse parts, which kRefining refines
+  int draft_factor = 0;         // the changed regions were drafted at 1/factor (0: shaded finely)
+  bool refining = false;  // the image still has coarse or draft parts, which kRefining refines
   // The viewport pixels whose cached image changed: the shaded regions, or the whole
   // viewport after a shift. A window that keeps its last frame re-presents only these.
   std::vector<PixelRect> changed;
@@ -59,12 +57,19 @@ class ShadedViewCache {
   // budget, so a slow machine (llvmpipe, a loaded CPU) still shows a motion's first frame in
   // time. The next kFull update() after a coarse one re-shades the viewport at every pixel.
   //
-  // kRefining refines a coarse image a few kRefineBlock-square blocks a call, in reading
-  // order from the top, as many as the measured cost of a pixel fits in kRefineStepMs
-  // (set_refine_step_ms), so the window answers input between them (a wheel click waits for
-  // one call, not the whole re-shade); the image is the same as kFull's once `refining` is
-  // false. Otherwise it is kFull. Blocks, not thin bands of rows: llvmpipe shades in 64-pixel
-  // square tiles, and a band a few rows high cost it 2-5 times as much a pixel.
+  // kCoarse is also for while the canvas changes (a stroke): changed regions whose shading the
+  // measured cost of a pixel predicts over the draft budget (set_draft_budget_ms) are shaded
+  // as a draft instead — one cell a pixel (smooth zoom off) at 1/factor of the resolution,
+  // magnified, the factor the smallest that fits from 1 (zoomed out, where smooth zoom
+  // averages many cells a pixel) or 2 up to kMaxDraftFactor.
+  //
+  // kRefining refines the coarse and draft parts of the image a few kRefineBlock-square
+  // blocks a call, in reading order from the top, as many as the measured cost of a pixel
+  // fits in kRefineStepMs (set_refine_step_ms), so the window answers input between them (a
+  // wheel click waits for one call, not the whole re-shade); the image is the same as
+  // kFull's once `refining` is false. Otherwise it is kFull. Blocks, not thin bands of rows:
+  // llvmpipe shades in 64-pixel square tiles, and a band a few rows high cost it 2-5 times as
+  // much a pixel.
   enum class Detail { kFull, kCoarse, kRefining };
   static constexpr double kRefineStepMs = 25.0;
   static constexpr int kRefineBlock = 64;
@@ -79,6 +84,11 @@ class ShadedViewCache {
   // its texel reads lie several cells apart, and the fine figure is diluted by the cheap
   // background around a fitted canvas (on llvmpipe 1.2-2: `impasto bench gpu`).
   static constexpr double kCoarsePixelCost = 2.0;
+  // A stroke's frame on llvmpipe (1400×900, two cores) leaves its shading about this much of
+  // the 30 ms from the pen to the screen: the simulation, the upload, the panels and the
+  // present take the rest, and a frame already under way when the pen moves is waited for.
+  static constexpr double kDefaultDraftBudgetMs = 8.0;
+  static constexpr int kMaxDraftFactor = 4;
 
   // The factor (kMinCoarseFactor..kMaxCoarseFactor) for a viewport_w × viewport_h viewport
   // whose pixels are predicted to cost ms_per_pixel each when shaded coarsely: the smallest
@@ -87,6 +97,8 @@ class ShadedViewCache {
                                double budget_ms);
   void set_coarse_budget_ms(double budget_ms) { coarse_budget_ms_ = budget_ms; }
   void set_refine_step_ms(double step_ms) { refine_step_ms_ = step_ms; }
+  // At most 0: every changed region of a kCoarse update is drafted at kMaxDraftFactor.
+  void set_draft_budget_ms(double budget_ms) { draft_budget_ms_ = budget_ms; }
   // The factor the next coarse pass on this viewport would take.
   int next_coarse_factor(int viewport_w, int viewport_h) const;
 
@@ -120,17 +132,29 @@ class ShadedViewCache {
   // and the shading's time in shade_ms.
   long long shade_coarse(CanvasRenderer& renderer, const CanvasView& view, int viewport_w,
                          int viewport_h, int factor, double& shade_ms);
+  // The factor to draft `regions` at this frame (0: shade them finely).
+  int draft_factor_for(std::span<const PixelRect> regions, const CanvasRenderer& renderer,
+                       const CanvasView& view) const;
+  // Shades `regions` as a draft at 1/factor into image_; returns the pixels shaded and, in
+  // `drafted`, the image's rectangles it wrote.
+  long long shade_draft(CanvasRenderer& renderer, const CanvasView& view, int viewport_w,
+                        int viewport_h, std::span<const PixelRect> regions, int factor,
+                        std::vector<PixelRect>& drafted);
 
   std::unique_ptr<Framebuffer> image_;
   std::unique_ptr<Framebuffer> spare_;  // the target of a shift, then swapped with image_
   std::unique_ptr<Framebuffer> coarse_image_;
-  bool coarse_ = false;     // image_ holds a coarse shading, to refine
-  int refined_blocks_ = 0;  // of it, the blocks refined since (kRefining); -1: all
+  std::unique_ptr<Framebuffer> draft_image_;
+  RoughBlocks rough_;  // image_'s blocks that show a coarse or draft shading, to refine
   double coarse_budget_ms_ = kDefaultCoarseBudgetMs;
   double refine_step_ms_ = kRefineStepMs;
+  double draft_budget_ms_ = kDefaultDraftBudgetMs;
   // The measured cost of a pixel of the last whole-viewport pass, fine and coarse (0: none).
   double fine_ms_per_pixel_ = 0.0;
   double coarse_ms_per_pixel_ = 0.0;
+  // The same of the last changed regions shaded finely and of the last draft (0: none).
+  double changed_ms_per_pixel_ = 0.0;
+  double draft_ms_per_pixel_ = 0.0;
   const CanvasRenderer* renderer_ = nullptr;
   std::vector<double> look_;
   CanvasView view_;
