@@ -33,7 +33,6 @@
 #include <thread>
 #include <utility>
 
-#include "latency_lines.hpp"
 #include "session/preview.hpp"
 #include "session/rebuild.hpp"
 #include "session/recovery_folder.hpp"
@@ -170,9 +169,8 @@ class PaintWindow {
   void present_frame(const std::vector<render_gl::PixelRect>& canvas_changed, int fb_w, int fb_h,
                      double fb_scale, bool take_screenshot);
   void pen_sample(const PointerEvent& at, bool tip_down);
-  void pan_view(double from_x, double from_y, double to_x, double to_y, double time_s);
-  void rotate_view(double from_x, double from_y, double to_x, double to_y, double time_s);
-  void time_view_motion(double swap_time_s);
+  void pan_view(double from_x, double from_y, double to_x, double to_y);
+  void rotate_view(double from_x, double from_y, double to_x, double to_y);
   void submit_pen_event(input::StrokeEvent event);
   void report_latency() const;
   void start_tablets();
@@ -216,12 +214,12 @@ class PaintWindow {
 
   // Every pen sample, mouse or tablet, goes to the simulation through this feed.
   PenFeed canvas_feed_{[this](input::StrokeEvent event) { submit_pen_event(std::move(event)); }};
-  InputLatency latency_;      // pen sample's own time -> the swap that shows it
-  ViewLatency view_latency_;  // a zoom step's, rotation's, pan's or light's event -> the swap
-  std::vector<double> frame_pointer_times_;  // this frame's presses and moves (a light drag's)
-  std::array<double, 2> shown_light_{};      // the light's direction at the last swap
-  std::vector<int> coarse_factors_;          // of each coarse frame, for the report
-  std::uint64_t applied_at_upload_ = 0;      // simulation jobs applied before this frame's upload
+  InputLatency latency_;                 // pen sample's own time -> the swap that shows it
+  InputLatency zoom_latency_;            // a wheel click's own time -> the swap that shows it
+  std::uint64_t wheel_clicks_ = 0;       // wheel clicks delivered, numbering zoom_latency_'s
+  std::optional<std::uint64_t> zoomed_;  // this frame zoomed, after that many clicks
+  std::vector<int> coarse_factors_;      // of each coarse frame, for the report
+  std::uint64_t applied_at_upload_ = 0;  // simulation jobs applied before this frame's upload
   PaletteBoardPanel board_panel_;
   PigmentEditor pigment_editor_;
   CanvasMenu canvas_menu_;
@@ -238,10 +236,8 @@ class PaintWindow {
   std::unique_ptr<PointerServerTimes> server_times_;  // each event's time, from the X server
   PointerGestures gestures_{{
       [this](const PointerEvent& at, bool tip_down) { pen_sample(at, tip_down); },
-      [this](double fx, double fy, double tx, double ty, double t) { pan_view(fx, fy, tx, ty, t); },
-      [this](double fx, double fy, double tx, double ty, double t) {
-        rotate_view(fx, fy, tx, ty, t);
-      },
+      [this](double fx, double fy, double tx, double ty) { pan_view(fx, fy, tx, ty); },
+      [this](double fx, double fy, double tx, double ty) { rotate_view(fx, fy, tx, ty); },
   }};
   SpeedPressure speed_pressure_;
   // The keyboard: each key press (and a held key's repeats) since the last frame, in order.
@@ -328,7 +324,8 @@ void PaintWindow::create_window() {
   });
   glfwSetScrollCallback(window_, [](GLFWwindow* window, double, double) {
     auto* self = static_cast<PaintWindow*>(glfwGetWindowUserPointer(window));
-    self->view_latency_.submitted(ViewMotion::kZoom, self->server_times_->wheel_time());
+    self->zoom_latency_.submitted(++self->wheel_clicks_,
+                                  self->server_times_->wheel_time() - self->session_start_s_);
   });
   double cursor_x = 0, cursor_y = 0;
   glfwGetCursorPos(window_, &cursor_x, &cursor_y);
@@ -690,36 +687,17 @@ void PaintWindow::submit_pen_event(input::StrokeEvent event) {
   if (sample) latency_.submitted(worker_->stats().submitted, time_s);
 }
 
-void PaintWindow::pan_view(double from_x, double from_y, double to_x, double to_y, double time_s) {
+void PaintWindow::pan_view(double from_x, double from_y, double to_x, double to_y) {
   const auto a = state_.view.window_to_cell(from_x, from_y, window_w_, window_h_);
   const auto b = state_.view.window_to_cell(to_x, to_y, window_w_, window_h_);
   state_.view.center_x_cells -= b[0] - a[0];
   state_.view.center_y_cells -= b[1] - a[1];
-  view_latency_.submitted(ViewMotion::kPan, time_s);
-  view_latency_.applied(ViewMotion::kPan);
 }
 
-void PaintWindow::rotate_view(double from_x, double from_y, double to_x, double to_y,
-                              double time_s) {
+void PaintWindow::rotate_view(double from_x, double from_y, double to_x, double to_y) {
   const double a0 = std::atan2(from_y - window_h_ / 2.0, from_x - window_w_ / 2.0);
   const double a1 = std::atan2(to_y - window_h_ / 2.0, to_x - window_w_ / 2.0);
   state_.view.rotation_rad += a1 - a0;
-  view_latency_.submitted(ViewMotion::kRotate, time_s);
-  view_latency_.applied(ViewMotion::kRotate);
-}
-
-// A frame was swapped at swap_time_s: it shows every view motion applied before it. The
-// Light panel's disc moves the light as ImGui reads this frame's pointer events, so when the
-// light's direction changed, those events moved it.
-void PaintWindow::time_view_motion(double swap_time_s) {
-  const std::array<double, 2> light = {state_.settings.light_azimuth_deg,
-                                       state_.settings.light_elevation_deg};
-  if (light != shown_light_) {
-    for (const double t : frame_pointer_times_) view_latency_.submitted(ViewMotion::kLight, t);
-    view_latency_.applied(ViewMotion::kLight);
-  }
-  shown_light_ = light;
-  view_latency_.shown(swap_time_s);
 }
 
 // Applies every mouse event since the last frame in order: each move of a stroke is a pen
@@ -743,10 +721,6 @@ void PaintWindow::handle_canvas_input() {
       pointer_events_.take(), picking, frame.canvas_at,
       [this](const PointerEvent& at, bool released) { pick_at(at, released); });
   gestures_.apply(events, frame);
-  frame_pointer_times_.clear();
-  for (const PointerEvent& event : events) {
-    if (event.action != PointerAction::kRelease) frame_pointer_times_.push_back(event.time_s);
-  }
 
   double x = 0, y = 0;
   glfwGetCursorPos(window_, &x, &y);
@@ -761,10 +735,8 @@ void PaintWindow::handle_canvas_input() {
     const auto after = state_.view.window_to_cell(x, y, window_w_, window_h_);
     state_.view.center_x_cells += before[0] - after[0];
     state_.view.center_y_cells += before[1] - after[1];
-    view_latency_.applied(ViewMotion::kZoom);
+    zoomed_ = wheel_clicks_;
   }
-  // A wheel click over a panel scrolled it: no zoom step to time.
-  if (io.WantCaptureMouse && io.MouseWheel != 0.0f) view_latency_.dropped(ViewMotion::kZoom);
 }
 
 // Keys become commands through the one table (shortcuts.hpp), unless a text field or a
@@ -1112,7 +1084,8 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   frame_changed_ = !canvas.changed.empty();
   present_frame(canvas.changed, fb_w, fb_h, fb_scale, take_screenshot);
   latency_.shown(applied_at_upload_, glfwGetTime() - session_start_s_);
-  time_view_motion(glfwGetTime());
+  if (zoomed_)
+    zoom_latency_.shown(*std::exchange(zoomed_, std::nullopt), glfwGetTime() - session_start_s_);
   if (canvas.coarse) coarse_factors_.push_back(canvas.coarse_factor);
   state_.input_latency_ms = latency_.recent_median_ms().value_or(-1.0);
   state_.frame_ms = ms_since(start);
@@ -1235,12 +1208,20 @@ void PaintWindow::run() {
 
 // The session's input latency, for measuring it (docs/window.md).
 void PaintWindow::report_latency() const {
-  std::cout << view_latency_.report(coarse_factors_);
+  if (zoom_latency_.shown_count() > 0) {
+    std::vector<int> factors = coarse_factors_;
+    std::sort(factors.begin(), factors.end());
+    std::cout << "zoom latency (wheel click to the swap showing it): median "
+              << *zoom_latency_.percentile_ms(0.5) << " ms, 95th percentile "
+              << *zoom_latency_.percentile_ms(0.95) << " ms over " << zoom_latency_.shown_count()
+              << " clicks; " << factors.size() << " coarse frames, median factor "
+              << (factors.empty() ? 0 : factors[factors.size() / 2]) << "\n";
+  }
   if (latency_.shown_count() == 0) return;
-  std::cout << latency_line("input", "pen event", "samples",
-                            {*latency_.percentile_ms(0.5), *latency_.percentile_ms(0.95),
-                             static_cast<int>(latency_.shown_count())})
-            << "; " << server_times_->matched() << " mouse events timed by the window "
+  std::cout << "input latency (pen event to the swap showing it): median "
+            << *latency_.percentile_ms(0.5) << " ms, 95th percentile "
+            << *latency_.percentile_ms(0.95) << " ms over " << latency_.shown_count()
+            << " samples; " << server_times_->matched() << " mouse events timed by the window "
             << "system, " << server_times_->unmatched() << " when delivered\n";
 }
 
