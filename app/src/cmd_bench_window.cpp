@@ -1,9 +1,11 @@
 // impasto bench window: what a user waits for in the painting window — the time from each
 // mouse event's own timestamp to the buffer swap that shows it — measured with real X events
 // (xdotool) sent to `impasto paint` on the current DISPLAY (Xvfb with llvmpipe, or a desktop).
-// The window keeps the figures (InputLatency) and prints them when SIGTERM closes it. With
-// --zoom, wheel clicks instead: from each click's own time to the swap of the first frame
-// showing its zoom step.
+// The window keeps the figures (InputLatency) and prints them when SIGTERM closes it
+// (latency_lines.hpp). With --zoom, wheel clicks instead: from each click's own time to the
+// swap of the first frame showing its zoom step; with --rotate, right-button drags that turn
+// the view, and with --light-drag, drags of the Light panel's disc: from each move's own time
+// to the swap of the first frame showing it (ViewLatency).
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
@@ -12,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -25,10 +28,14 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "command.hpp"
+#include "latency_lines.hpp"
+#include "screen_spot.hpp"
 #include "vocabulary.hpp"
+#include "window/light_disc_look.hpp"
 
 extern char** environ;
 
@@ -47,15 +54,28 @@ struct BenchWindowArgs {
   double radius_px = 150.0;
   int zoom_clicks = 0;  // > 0: wheel clicks instead of circles, in and out by turns
   double zoom_interval_s = 2.0;
+  int rotate_drags = 0;  // > 0: right-button drags turning the view, instead of circles
+  int light_drags = 0;   // > 0: drags of the light's disc, instead of circles
   bool json = false;
+
+  // What is measured: "input" (pen samples of the circles), or the view motion's kind as the
+  // window names it in its report.
+  std::string kind() const {
+    if (zoom_clicks > 0) return "zoom";
+    if (rotate_drags > 0) return "rotation";
+    if (light_drags > 0) return "light";
+    return "input";
+  }
+  bool view_motion() const { return kind() != "input"; }
 };
 
 struct Latency {
   int width = 0, height = 0;
-  double median_ms = 0, p95_ms = 0;
-  int samples = 0;
-  int coarse_frames = 0, coarse_factor = 0;  // under --zoom
+  LatencyFigures figures;
+  MotionFrames frames;  // view motions only
 };
+
+constexpr double kPi = 3.14159265358979323846;
 
 std::string run_output(const std::string& command) {
   std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(command.c_str(), "r"), pclose);
@@ -82,6 +102,38 @@ pid_t start_window(const std::vector<std::string>& args, const std::filesystem::
   return pid;
 }
 
+// The dot on the Light panel's disc that marks the light, in window pixels. The panels run
+// past the window's height: they are scrolled down, a few wheel clicks at a time, until a
+// screenshot shows it.
+ScreenSpot find_light_dot(const std::string& window, int window_w, int window_h,
+                          const std::filesystem::path& dir) {
+  const auto png = dir / "light-disc.png";
+  const std::string over_panels = "xdotool mousemove --window " + window + " " +
+                                  std::to_string(window_w - 160) + " " +
+                                  std::to_string(window_h / 2) + " > /dev/null";
+  const int dot_px = static_cast<int>(window::kLightDotRadius);
+  for (int scrolls = 0; scrolls <= 12; ++scrolls) {
+    // (Bounded: import waits for a window that has gone, holding the display.)
+    if (std::system(
+            ("timeout 20 import -window " + window + " png:'" + png.string() + "'").c_str()) != 0) {
+      throw std::runtime_error("could not take a screenshot of window " + window +
+                               " with ImageMagick's import (installed? did the window close?)");
+    }
+    const render::Image screen = render::read_png(png);
+    // Left of the panels nothing is looked at: the canvas may hold that colour.
+    if (const auto dot = find_colour_spot(screen, window::kLightDotColour, window_w - 400,
+                                          dot_px * dot_px / 2, 4 * dot_px)) {
+      return *dot;
+    }
+    if (std::system((over_panels + " && xdotool click --repeat 3 --delay 30 5").c_str()) != 0) {
+      throw std::runtime_error("xdotool could not scroll the panels of window " + window);
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  }
+  throw std::runtime_error("found no light disc in the panels of window " + window +
+                           " (is the Light panel open?)");
+}
+
 Latency measure(const BenchWindowArgs& args, int width, int height,
                 const std::filesystem::path& dir) {
   const double cell_mm = 25.4 / args.dpi;
@@ -99,7 +151,6 @@ Latency measure(const BenchWindowArgs& args, int width, int height,
        (dir / (name + "-session.strokes")).string(), "--window-width",
        std::to_string(args.window_w), "--window-height", std::to_string(args.window_h)},
       out);
-  std::optional<Latency> result;
   std::string failure;
   try {
     const std::string id = run_output("timeout 30 xdotool search --sync --onlyvisible --pid " +
@@ -109,36 +160,73 @@ Latency measure(const BenchWindowArgs& args, int width, int height,
     std::this_thread::sleep_for(std::chrono::seconds(3));  // the replay applied, panels laid out
     // Circles about the middle of the canvas's part of the window (left of the panels).
     const double cx = (args.window_w - 360) / 2.0, cy = args.window_h / 2.0;
+    const auto xdotool = [&](const std::string& script, const std::string& what) {
+      if (std::system(("xdotool " + script + " > /dev/null").c_str()) != 0) {
+        throw std::runtime_error("xdotool could not " + what + " in window " + window +
+                                 " (did it close?)");
+      }
+    };
+    const auto at = [&](double x, double y, bool sync = false) {
+      return "mousemove --window " + window + (sync ? " --sync " : " ") +
+             std::to_string(std::lround(x)) + " " + std::to_string(std::lround(y));
+    };
+    // Held down at `path(0)`, moved to path(k / moves) every 8 ms (a 125 Hz mouse), let go.
+    const auto drag = [&](int button, const auto& path, const std::string& what) {
+      const auto [x0, y0] = path(0.0);
+      std::string script = at(x0, y0, true) + " mousedown " + std::to_string(button);
+      for (int k = 1; k <= args.moves; ++k) {
+        const auto [x, y] = path(static_cast<double>(k) / args.moves);
+        script += " sleep 0.008 " + at(x, y);
+      }
+      xdotool(script + " mouseup " + std::to_string(button), what);
+    };
     if (args.zoom_clicks > 0) {
       // Wheel clicks at the middle of the canvas (X buttons 4 and 5: in, out), each after
       // the view has been still for the interval.
       std::ostringstream cmd;
-      cmd << "xdotool mousemove --window " << window << " --sync " << std::lround(cx) << " "
-          << std::lround(cy);
+      cmd << at(cx, cy, true);
       for (int k = 0; k < args.zoom_clicks; ++k) {
         cmd << " sleep " << args.zoom_interval_s << " click " << (k % 2 == 0 ? 4 : 5);
       }
-      cmd << " sleep " << args.zoom_interval_s << " > /dev/null";
-      if (std::system(cmd.str().c_str()) != 0) {
-        throw std::runtime_error("xdotool could not click in window " + window +
-                                 " (did it close?)");
+      cmd << " sleep " << args.zoom_interval_s;
+      xdotool(cmd.str(), "click");
+    }
+    for (int d = 0; d < args.rotate_drags; ++d) {
+      // The right button turns the view about the window's centre by the angle the pointer
+      // turns about it: a whole turn on a circle about the centre, clear of the panels.
+      const double ox = args.window_w / 2.0, oy = args.window_h / 2.0;
+      const double r =
+          std::max(20.0, std::min({200.0, 0.3 * args.window_h, args.window_w - 360 - ox - 10.0}));
+      drag(
+          3,
+          [&](double t) {
+            return std::pair{ox + r * std::cos(2 * kPi * t), oy + r * std::sin(2 * kPi * t)};
+          },
+          "drag with the right button");
+      std::this_thread::sleep_for(std::chrono::seconds(1));  // refined, as between two turns
+    }
+    if (args.light_drags > 0) {
+      const ScreenSpot dot = find_light_dot(window, args.window_w, args.window_h, dir);
+      for (int d = 0; d < args.light_drags; ++d) {
+        // From the dot round a circle of 20 px beside it and back: the light swings about.
+        drag(
+            1,
+            [&](double t) {
+              return std::pair{dot.x + 20.0 * (std::cos(2 * kPi * t) - 1.0),
+                               dot.y + 20.0 * std::sin(2 * kPi * t)};
+            },
+            "drag the light's disc");
+        std::this_thread::sleep_for(std::chrono::seconds(1));
       }
     }
-    for (int c = 0; c < (args.zoom_clicks > 0 ? 0 : args.circles); ++c) {
-      std::ostringstream cmd;
-      cmd << "xdotool mousemove --window " << window << " --sync "
-          << std::lround(cx + args.radius_px) << " " << std::lround(cy) << " mousedown 1";
-      for (int k = 1; k <= args.moves; ++k) {
-        const double a = 2.0 * 3.14159265358979323846 * k / args.moves;
-        cmd << " sleep 0.008 mousemove --window " << window << " "
-            << std::lround(cx + args.radius_px * std::cos(a)) << " "
-            << std::lround(cy + args.radius_px * std::sin(a));
-      }
-      cmd << " mouseup 1 > /dev/null";
-      if (std::system(cmd.str().c_str()) != 0) {
-        throw std::runtime_error("xdotool could not move the mouse in window " + window +
-                                 " (did it close?)");
-      }
+    for (int c = 0; c < (args.view_motion() ? 0 : args.circles); ++c) {
+      drag(
+          1,
+          [&](double t) {
+            return std::pair{cx + args.radius_px * std::cos(2 * kPi * t),
+                             cy + args.radius_px * std::sin(2 * kPi * t)};
+          },
+          "move the mouse");
       std::this_thread::sleep_for(std::chrono::milliseconds(500));
     }
   } catch (const std::exception& e) {
@@ -150,33 +238,13 @@ Latency measure(const BenchWindowArgs& args, int width, int height,
   if (!failure.empty()) throw std::runtime_error(failure);
   std::ifstream text(out);
   const std::string printed((std::istreambuf_iterator<char>(text)), {});
-  // "... median M ms, 95th percentile P ms over N samples; ..." (no std::regex: GCC 12's
-  // regex trips -Wmaybe-uninitialized in the sanitizer build).
-  double median = 0, p95 = 0;
-  int samples = 0, coarse_frames = 0, coarse_factor = 0;
-  if (args.zoom_clicks > 0) {
-    // "zoom latency (...): median M ms, 95th percentile P ms over N clicks; C coarse frames,
-    // median factor F"
-    const std::size_t line = printed.find("zoom latency");
-    const std::size_t at = printed.find("median ", line);
-    if (line == std::string::npos || at == std::string::npos ||
-        std::sscanf(printed.c_str() + at,
-                    "median %lf ms, 95th percentile %lf ms over %d clicks; %d coarse frames, "
-                    "median factor %d",
-                    &median, &p95, &samples, &coarse_frames, &coarse_factor) != 5) {
-      throw std::runtime_error("impasto paint printed no zoom latency (exit status " +
-                               std::to_string(status) + "): " + printed);
-    }
-    return {width, height, median, p95, samples, coarse_frames, coarse_factor};
-  }
-  const std::size_t at = printed.find("median ", printed.find("input latency"));
-  if (at == std::string::npos ||
-      std::sscanf(printed.c_str() + at, "median %lf ms, 95th percentile %lf ms over %d samples",
-                  &median, &p95, &samples) != 3) {
-    throw std::runtime_error("impasto paint printed no input latency (exit status " +
+  const std::optional<LatencyFigures> figures = find_latency_line(printed, args.kind());
+  const std::optional<MotionFrames> frames = find_motion_frames_line(printed);
+  if (!figures || (args.view_motion() && !frames)) {
+    throw std::runtime_error("impasto paint printed no " + args.kind() + " latency (exit status " +
                              std::to_string(status) + "): " + printed);
   }
-  return {width, height, median, p95, samples};
+  return {width, height, *figures, frames.value_or(MotionFrames{})};
 }
 
 void run(const BenchWindowArgs& args) {
@@ -185,6 +253,11 @@ void run(const BenchWindowArgs& args) {
   }
   if (std::system("command -v xdotool > /dev/null") != 0) {
     throw std::runtime_error("bench window sends its mouse events with xdotool: install it");
+  }
+  if (args.light_drags > 0 && std::system("command -v import > /dev/null") != 0) {
+    throw std::runtime_error(
+        "bench window --light-drag finds the light's disc in a screenshot taken with "
+        "ImageMagick's import: install it");
   }
   const auto dir =
       std::filesystem::temp_directory_path() / ("impasto-bench-window-" + std::to_string(getpid()));
@@ -203,41 +276,56 @@ void run(const BenchWindowArgs& args) {
   if (args.json) {
     nlohmann::json j;
     j["window"] = {args.window_w, args.window_h};
+    j["kind"] = args.kind();
     j["brush_cells"] = args.brush_cells;
     j["load_mm3"] = args.load_mm3;
     if (args.zoom_clicks > 0) j["zoom_interval_s"] = args.zoom_interval_s;
+    if (args.rotate_drags > 0 || args.light_drags > 0) j["moves_per_drag"] = args.moves;
     for (const Latency& r : results) {
       j["canvases"].push_back({{"width", r.width},
                                {"height", r.height},
-                               {"median_ms", r.median_ms},
-                               {"p95_ms", r.p95_ms},
-                               {"samples", r.samples}});
-      if (args.zoom_clicks > 0) {
-        j["canvases"].back()["coarse_frames"] = r.coarse_frames;
-        j["canvases"].back()["coarse_factor"] = r.coarse_factor;
+                               {"median_ms", r.figures.median_ms},
+                               {"p95_ms", r.figures.p95_ms},
+                               {"samples", r.figures.events}});
+      if (args.view_motion()) {
+        j["canvases"].back()["coarse_frames"] = r.frames.coarse;
+        j["canvases"].back()["coarse_factor"] = r.frames.median_factor;
+        j["canvases"].back()["frame_interval_ms"] = r.frames.interval_ms;
       }
     }
     std::cout << j.dump(2) << "\n";
     return;
   }
+  std::ostringstream what;
+  std::string events = "samples";
   if (args.zoom_clicks > 0) {
-    std::cout << "zoom latency, wheel click to the swap showing it (" << args.window_w << "x"
-              << args.window_h << " window, " << args.zoom_clicks << " clicks "
-              << args.zoom_interval_s << " s apart):\n";
-    for (const Latency& r : results) {
-      std::cout << "  " << r.width << "x" << r.height << " canvas: median " << r.median_ms
-                << " ms, 95th percentile " << r.p95_ms << " ms over " << r.samples << " clicks; "
-                << r.coarse_frames << " coarse frames, median factor " << r.coarse_factor << "\n";
-    }
-    return;
+    what << "zoom latency, wheel click to the swap showing it (" << args.zoom_clicks << " clicks "
+         << args.zoom_interval_s << " s apart";
+    events = "clicks";
+  } else if (args.rotate_drags > 0) {
+    what << "rotation latency, pointer move to the swap showing it (" << args.rotate_drags
+         << " right-button turns of " << args.moves << " moves at 125 Hz";
+    events = "moves";
+  } else if (args.light_drags > 0) {
+    what << "light latency, pointer event to the swap showing it (" << args.light_drags
+         << " drags of the light's disc, " << args.moves << " moves at 125 Hz";
+    events = "events";
+  } else {
+    what << "input latency, mouse event to the swap showing it (" << args.brush_cells
+         << "-cell brush, " << args.load_mm3 << " mm3 loaded, " << args.circles << " circles of "
+         << args.moves << " moves at 125 Hz";
   }
-  std::cout << "input latency, mouse event to the swap showing it (" << args.window_w << "x"
-            << args.window_h << " window, " << args.brush_cells << "-cell brush, " << args.load_mm3
-            << " mm3 loaded, " << args.circles << " circles of " << args.moves
-            << " moves at 125 Hz):\n";
+  std::cout << what.str() << ", " << args.window_w << "x" << args.window_h << " window):\n";
   for (const Latency& r : results) {
-    std::cout << "  " << r.width << "x" << r.height << " canvas: median " << r.median_ms
-              << " ms, 95th percentile " << r.p95_ms << " ms over " << r.samples << " samples\n";
+    std::cout << "  " << r.width << "x" << r.height << " canvas: median " << r.figures.median_ms
+              << " ms, 95th percentile " << r.figures.p95_ms << " ms over " << r.figures.events
+              << " " << events;
+    if (args.view_motion()) {
+      std::cout << "; " << r.frames.coarse << " coarse frames, median factor "
+                << r.frames.median_factor << ", frames " << r.frames.interval_ms
+                << " ms apart while moving";
+    }
+    std::cout << "\n";
   }
 }
 
@@ -245,7 +333,9 @@ void setup(CLI::App& root) {
   auto args = std::make_shared<BenchWindowArgs>();
   CLI::App* bench = bench_group(root);
   CLI::App* cmd = bench->add_subcommand(
-      "window", "Input latency of the painting window, scripted mouse circles (xdotool)");
+      "window",
+      "Input latency of the painting window: scripted mouse circles, wheel clicks or drags "
+      "(xdotool)");
   cmd->add_option("--canvas", args->canvases, "Canvas sizes in cells, WIDTHxHEIGHT")
       ->capture_default_str();
   cmd->add_option("--window-width", args->window_w, "Window width")->check(CLI::Range(320, 8192));
@@ -255,14 +345,29 @@ void setup(CLI::App& root) {
   cmd->add_option("--load", args->load_mm3, "Paint loaded on the brush, mm3 (Burnt Sienna)")
       ->check(CLI::Range(0.0, 10000.0));
   cmd->add_option("--circles", args->circles, "Circles drawn")->check(CLI::Range(1, 100));
-  cmd->add_option("--moves", args->moves, "Mouse moves a circle")->check(CLI::Range(8, 10000));
-  cmd->add_option("--zoom", args->zoom_clicks,
-                  "Wheel clicks instead of circles (in and out by turns): the latency of a "
-                  "zoom step's first frame")
-      ->check(CLI::Range(1, 1000));
+  cmd->add_option("--moves", args->moves, "Mouse moves a circle or a drag, 8 ms apart")
+      ->check(CLI::Range(8, 10000));
+  CLI::Option* zoom =
+      cmd->add_option("--zoom", args->zoom_clicks,
+                      "Wheel clicks instead of circles (in and out by turns): the latency of a "
+                      "zoom step's first frame")
+          ->check(CLI::Range(1, 1000));
   cmd->add_option("--zoom-interval", args->zoom_interval_s, "Seconds between wheel clicks")
       ->check(CLI::Range(0.0, 60.0))
       ->capture_default_str();
+  CLI::Option* rotate =
+      cmd->add_option("--rotate", args->rotate_drags,
+                      "Right-button drags instead of circles, each a whole turn of the view "
+                      "(--moves moves), a second apart: the latency of a rotation's frames")
+          ->check(CLI::Range(1, 1000))
+          ->excludes(zoom);
+  cmd->add_option("--light-drag", args->light_drags,
+                  "Drags of the Light panel's disc instead of circles (--moves moves each, a "
+                  "second apart; found in a screenshot, ImageMagick's import): the latency of "
+                  "a light change's frames")
+      ->check(CLI::Range(1, 1000))
+      ->excludes(zoom)
+      ->excludes(rotate);
   add_json_flag(*cmd, args->json, "the latencies of each canvas");
   cmd->callback([args] { run(*args); });
 }

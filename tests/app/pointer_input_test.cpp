@@ -9,6 +9,7 @@
 #include <variant>
 #include <vector>
 
+#include "latency_lines.hpp"
 #include "window/pen_feed.hpp"
 #include "window/pointer_events.hpp"
 #include "window/pointer_gestures.hpp"
@@ -28,7 +29,7 @@ struct MousePath {
     sent.push_back(std::get<input::SampleEvent>(event).sample);
   }};
   double pan_dx = 0, pan_dy = 0;
-  int rotations = 0;
+  std::vector<double> rotation_times;  // of each rotating move
   PointerGestures gestures{{
       [this](const PointerEvent& at, bool tip_down) {
         paintcore::PenSample s;
@@ -39,11 +40,11 @@ struct MousePath {
         s.buttons = paintcore::kPenInRange | (tip_down ? paintcore::kPenTip : 0u);
         feed.feed(s);
       },
-      [this](double fx, double fy, double tx, double ty) {
+      [this](double fx, double fy, double tx, double ty, double) {
         pan_dx += tx - fx;
         pan_dy += ty - fy;
       },
-      [this](double, double, double, double) { ++rotations; },
+      [this](double, double, double, double, double time_s) { rotation_times.push_back(time_s); },
   }};
 };
 
@@ -232,7 +233,9 @@ TEST(PointerGestures, MiddlePansAndRightRotatesWithEveryMove) {
   EXPECT_TRUE(path.sent.empty());
   EXPECT_DOUBLE_EQ(path.pan_dx, 30);
   EXPECT_DOUBLE_EQ(path.pan_dy, -20);
-  EXPECT_EQ(path.rotations, 7);
+  // Each rotating move with its own time (the view's latency counts from it).
+  ASSERT_EQ(path.rotation_times.size(), 7u);
+  for (int i = 1; i <= 7; ++i) EXPECT_DOUBLE_EQ(path.rotation_times[i - 1], 1.2 + 0.001 * i);
 }
 
 TEST(SpeedPressure, UsesTheSamplesOwnTimes) {
@@ -283,6 +286,99 @@ TEST(InputLatency, MeasuresFromEachSamplesTimeToTheFirstSwapAfterItWasApplied) {
   latency.shown(20, 2.005);
   EXPECT_NEAR(*latency.recent_median_ms(), 5.0, 1e-9);
   EXPECT_EQ(latency.shown_count(), 7u);
+}
+
+TEST(ViewLatency, TimesEachKindFromItsEventsToTheFirstSwapAfterTheFrameAppliedThem) {
+  ViewLatency view;
+  // Two wheel clicks reach the window; the frame that zooms applies both.
+  view.submitted(ViewMotion::kZoom, 1.000);
+  view.submitted(ViewMotion::kZoom, 1.010);
+  view.shown(1.020);  // not applied yet: nothing shown
+  EXPECT_EQ(view.of(ViewMotion::kZoom).shown_count(), 0u);
+  view.applied(ViewMotion::kZoom);
+  // A rotating move, applied at once; a click that arrives after the zoom frame's input.
+  view.submitted(ViewMotion::kRotate, 1.030);
+  view.applied(ViewMotion::kRotate);
+  view.submitted(ViewMotion::kZoom, 1.035);
+  view.shown(1.050);
+  EXPECT_EQ(view.of(ViewMotion::kZoom).shown_count(), 2u);  // 50 and 40 ms
+  EXPECT_EQ(view.of(ViewMotion::kZoom).waiting(), 1u);
+  EXPECT_NEAR(*view.of(ViewMotion::kZoom).percentile_ms(1.0), 50.0, 1e-9);
+  EXPECT_NEAR(*view.of(ViewMotion::kRotate).percentile_ms(0.5), 20.0, 1e-9);
+  EXPECT_EQ(view.of(ViewMotion::kLight).shown_count(), 0u);
+  view.applied(ViewMotion::kZoom);
+  view.shown(1.100);
+  EXPECT_EQ(view.of(ViewMotion::kZoom).shown_count(), 3u);
+  EXPECT_EQ(view.of(ViewMotion::kRotate).shown_count(), 1u);  // shown once, by its first frame
+  // A click that scrolled a panel is not timed, nor held for the next zoom.
+  view.submitted(ViewMotion::kZoom, 1.200);
+  view.dropped(ViewMotion::kZoom);
+  view.submitted(ViewMotion::kZoom, 1.300);
+  view.applied(ViewMotion::kZoom);
+  view.shown(1.330);
+  EXPECT_EQ(view.of(ViewMotion::kZoom).shown_count(), 4u);
+  EXPECT_EQ(view.of(ViewMotion::kZoom).waiting(), 0u);
+  EXPECT_NEAR(*view.of(ViewMotion::kZoom).percentile_ms(0.0), 30.0, 1e-9);
+}
+
+TEST(ViewLatency, ReportsInLinesTheBenchReadsBack) {
+  ViewLatency view;
+  EXPECT_EQ(view.report({8}), "");  // nothing timed, nothing said
+  for (int i = 0; i < 5; ++i) view.submitted(ViewMotion::kLight, 2.0 + 0.01 * i);
+  view.applied(ViewMotion::kLight);
+  view.shown(2.1);  // 100, 90, 80, 70, 60 ms
+  const std::string printed = "wrote x.png\n" + view.report({12, 8, 9});
+  const auto light = find_latency_line(printed, "light");
+  ASSERT_TRUE(light);
+  EXPECT_NEAR(light->median_ms, 80.0, 1e-6);
+  EXPECT_NEAR(light->p95_ms, 100.0, 1e-6);
+  EXPECT_EQ(light->events, 5);
+  EXPECT_FALSE(find_latency_line(printed, "rotation"));  // no rotation: no line
+  const auto frames = find_motion_frames_line(printed);
+  ASSERT_TRUE(frames);
+  EXPECT_EQ(frames->coarse, 3);
+  EXPECT_EQ(frames->median_factor, 9);
+  EXPECT_EQ(frames->interval_ms, 0.0);  // one frame showed the motion: no interval
+}
+
+TEST(ViewLatency, MeasuresHowFarApartTheFramesOfAMotionCame) {
+  ViewLatency view;
+  const auto move_and_swap = [&](double event_s, double swap_s) {
+    view.submitted(ViewMotion::kRotate, event_s);
+    view.applied(ViewMotion::kRotate);
+    view.shown(swap_s);
+  };
+  move_and_swap(1.00, 1.05);
+  move_and_swap(1.04, 1.11);  // 60 ms after the last
+  move_and_swap(1.10, 1.18);  // 70
+  view.shown(1.25);           // nothing moved: the motion paused
+  move_and_swap(1.90, 1.95);  // the next drag: not an interval of this one
+  move_and_swap(1.93, 2.00);  // 50
+  EXPECT_EQ(view.motion_frame_intervals_ms().size(), 3u);
+  const auto frames = find_motion_frames_line(view.report({}));
+  ASSERT_TRUE(frames);
+  EXPECT_NEAR(frames->interval_ms, 60.0, 1e-6);
+  EXPECT_EQ(frames->coarse, 0);
+}
+
+TEST(LatencyLines, ReadBackWhatTheyWriteAndOnlyAtALinesStart) {
+  const std::string line = latency_line("input", "pen event", "samples", {61.5, 97.25, 360});
+  EXPECT_EQ(line,
+            "input latency (pen event to the swap showing it): median 61.5 ms, 95th percentile "
+            "97.25 ms over 360 samples");
+  const auto figures = find_latency_line("noise\n" + line + "; 12 mouse events\n", "input");
+  ASSERT_TRUE(figures);
+  EXPECT_DOUBLE_EQ(figures->median_ms, 61.5);
+  EXPECT_DOUBLE_EQ(figures->p95_ms, 97.25);
+  EXPECT_EQ(figures->events, 360);
+  EXPECT_FALSE(find_latency_line("no input latency (here)\n", "input"));
+  EXPECT_FALSE(find_latency_line("zoom latency (wheel click ...): median x ms\n", "zoom"));
+  EXPECT_FALSE(find_motion_frames_line("view motion: none\n"));
+  const auto frames = find_motion_frames_line(motion_frames_line({14, 10, 57.5}));
+  ASSERT_TRUE(frames);
+  EXPECT_EQ(frames->coarse, 14);
+  EXPECT_EQ(frames->median_factor, 10);
+  EXPECT_DOUBLE_EQ(frames->interval_ms, 57.5);
 }
 
 TEST(ServerTime, MovesOntoTheGlfwClockByItsAgeAcrossTheWrap) {

@@ -33,6 +33,7 @@
 #include <thread>
 #include <utility>
 
+#include "latency_lines.hpp"
 #include "session/preview.hpp"
 #include "session/rebuild.hpp"
 #include "session/recovery_folder.hpp"
@@ -169,8 +170,9 @@ class PaintWindow {
   void present_frame(const std::vector<render_gl::PixelRect>& canvas_changed, int fb_w, int fb_h,
                      double fb_scale, bool take_screenshot);
   void pen_sample(const PointerEvent& at, bool tip_down);
-  void pan_view(double from_x, double from_y, double to_x, double to_y);
-  void rotate_view(double from_x, double from_y, double to_x, double to_y);
+  void pan_view(double from_x, double from_y, double to_x, double to_y, double time_s);
+  void rotate_view(double from_x, double from_y, double to_x, double to_y, double time_s);
+  void time_view_motion(double swap_time_s);
   void submit_pen_event(input::StrokeEvent event);
   void report_latency() const;
   void start_tablets();
@@ -214,12 +216,12 @@ class PaintWindow {
 
   // Every pen sample, mouse or tablet, goes to the simulation through this feed.
   PenFeed canvas_feed_{[this](input::StrokeEvent event) { submit_pen_event(std::move(event)); }};
-  InputLatency latency_;                 // pen sample's own time -> the swap that shows it
-  InputLatency zoom_latency_;            // a wheel click's own time -> the swap that shows it
-  std::uint64_t wheel_clicks_ = 0;       // wheel clicks delivered, numbering zoom_latency_'s
-  std::optional<std::uint64_t> zoomed_;  // this frame zoomed, after that many clicks
-  std::vector<int> coarse_factors_;      // of each coarse frame, for the report
-  std::uint64_t applied_at_upload_ = 0;  // simulation jobs applied before this frame's upload
+  InputLatency latency_;      // pen sample's own time -> the swap that shows it
+  ViewLatency view_latency_;  // a zoom step's, rotation's, pan's or light's event -> the swap
+  std::vector<double> frame_pointer_times_;  // this frame's presses and moves (a light drag's)
+  std::array<double, 2> shown_light_{};      // the light's direction at the last swap
+  std::vector<int> coarse_factors_;          // of each coarse frame, for the report
+  std::uint64_t applied_at_upload_ = 0;      // simulation jobs applied before this frame's upload
   PaletteBoardPanel board_panel_;
   PigmentEditor pigment_editor_;
   CanvasMenu canvas_menu_;
@@ -236,8 +238,10 @@ class PaintWindow {
   std::unique_ptr<PointerServerTimes> server_times_;  // each event's time, from the X server
   PointerGestures gestures_{{
       [this](const PointerEvent& at, bool tip_down) { pen_sample(at, tip_down); },
-      [this](double fx, double fy, double tx, double ty) { pan_view(fx, fy, tx, ty); },
-      [this](double fx, double fy, double tx, double ty) { rotate_view(fx, fy, tx, ty); },
+      [this](double fx, double fy, double tx, double ty, double t) { pan_view(fx, fy, tx, ty, t); },
+      [this](double fx, double fy, double tx, double ty, double t) {
+        rotate_view(fx, fy, tx, ty, t);
+      },
   }};
   SpeedPressure speed_pressure_;
   // The keyboard: each key press (and a held key's repeats) since the last frame, in order.
@@ -324,8 +328,7 @@ void PaintWindow::create_window() {
   });
   glfwSetScrollCallback(window_, [](GLFWwindow* window, double, double) {
     auto* self = static_cast<PaintWindow*>(glfwGetWindowUserPointer(window));
-    self->zoom_latency_.submitted(++self->wheel_clicks_,
-                                  self->server_times_->wheel_time() - self->session_start_s_);
+    self->view_latency_.submitted(ViewMotion::kZoom, self->server_times_->wheel_time());
   });
   double cursor_x = 0, cursor_y = 0;
   glfwGetCursorPos(window_, &cursor_x, &cursor_y);
@@ -687,17 +690,36 @@ void PaintWindow::submit_pen_event(input::StrokeEvent event) {
   if (sample) latency_.submitted(worker_->stats().submitted, time_s);
 }
 
-void PaintWindow::pan_view(double from_x, double from_y, double to_x, double to_y) {
+void PaintWindow::pan_view(double from_x, double from_y, double to_x, double to_y, double time_s) {
   const auto a = state_.view.window_to_cell(from_x, from_y, window_w_, window_h_);
   const auto b = state_.view.window_to_cell(to_x, to_y, window_w_, window_h_);
   state_.view.center_x_cells -= b[0] - a[0];
   state_.view.center_y_cells -= b[1] - a[1];
+  view_latency_.submitted(ViewMotion::kPan, time_s);
+  view_latency_.applied(ViewMotion::kPan);
 }
 
-void PaintWindow::rotate_view(double from_x, double from_y, double to_x, double to_y) {
+void PaintWindow::rotate_view(double from_x, double from_y, double to_x, double to_y,
+                              double time_s) {
   const double a0 = std::atan2(from_y - window_h_ / 2.0, from_x - window_w_ / 2.0);
   const double a1 = std::atan2(to_y - window_h_ / 2.0, to_x - window_w_ / 2.0);
   state_.view.rotation_rad += a1 - a0;
+  view_latency_.submitted(ViewMotion::kRotate, time_s);
+  view_latency_.applied(ViewMotion::kRotate);
+}
+
+// A frame was swapped at swap_time_s: it shows every view motion applied before it. The
+// Light panel's disc moves the light as ImGui reads this frame's pointer events, so when the
+// light's direction changed, those events moved it.
+void PaintWindow::time_view_motion(double swap_time_s) {
+  const std::array<double, 2> light = {state_.settings.light_azimuth_deg,
+                                       state_.settings.light_elevation_deg};
+  if (light != shown_light_) {
+    for (const double t : frame_pointer_times_) view_latency_.submitted(ViewMotion::kLight, t);
+    view_latency_.applied(ViewMotion::kLight);
+  }
+  shown_light_ = light;
+  view_latency_.shown(swap_time_s);
 }
 
 // Applies every mouse event since the last frame in order: each move of a stroke is a pen
@@ -721,6 +743,10 @@ void PaintWindow::handle_canvas_input() {
       pointer_events_.take(), picking, frame.canvas_at,
       [this](const PointerEvent& at, bool released) { pick_at(at, released); });
   gestures_.apply(events, frame);
+  frame_pointer_times_.clear();
+  for (const PointerEvent& event : events) {
+    if (event.action != PointerAction::kRelease) frame_pointer_times_.push_back(event.time_s);
+  }
 
   double x = 0, y = 0;
   glfwGetCursorPos(window_, &x, &y);
@@ -735,8 +761,10 @@ void PaintWindow::handle_canvas_input() {
     const auto after = state_.view.window_to_cell(x, y, window_w_, window_h_);
     state_.view.center_x_cells += before[0] - after[0];
     state_.view.center_y_cells += before[1] - after[1];
-    zoomed_ = wheel_clicks_;
+    view_latency_.applied(ViewMotion::kZoom);
   }
+  // A wheel click over a panel scrolled it: no zoom step to time.
+  if (io.WantCaptureMouse && io.MouseWheel != 0.0f) view_latency_.dropped(ViewMotion::kZoom);
 }
 
 // Keys become commands through the one table (shortcuts.hpp), unless a text field or a
@@ -1008,11 +1036,24 @@ void PaintWindow::present_frame(const std::vector<render_gl::PixelRect>& canvas_
 // simulation has its own core meanwhile.
 constexpr auto kSimWait = std::chrono::milliseconds(15);
 
+static bool prof_on() { static bool on = std::getenv("IMPASTO_PROF") != nullptr; return on; }
+struct ProfAcc { double v[6] = {0,0,0,0,0,0}; long n = 0; long px = 0; std::vector<std::array<double,7>> rows;
+  void end(){ if (px>0){ rows.push_back({v[0],v[1],v[2],v[3],v[4],v[5],double(px)}); } for(double&x:v)x=0; px=0; n++; }
+  ~ProfAcc(){ if(!prof_on()||rows.empty()) return; const char* names[7]={"wait","swatch","upload","ui","shade","present","px"};
+    std::fprintf(stderr,"PROF frames %ld busy %zu medians:", n, rows.size());
+    for(int i=0;i<7;++i){ std::vector<double> c; for(auto&r:rows) c.push_back(r[i]); std::sort(c.begin(),c.end()); std::fprintf(stderr," %s %.2f (p90 %.1f)", names[i], c[c.size()/2], c[c.size()*9/10]); }
+    std::fprintf(stderr,"\n"); } };
+static ProfAcc g_prof;
+static double prof_mark(Clock::time_point& t) { if (prof_on()) glFinish(); auto n = Clock::now(); double ms = std::chrono::duration<double, std::milli>(n - t).count(); t = n; return ms; }
 void PaintWindow::draw_frame(bool take_screenshot) {
   const auto start = Clock::now();
+  auto pt = start; /*PROF*/
   if (worker_->stats().submitted != applied_at_upload_) worker_->wait_idle_for(kSimWait);
+  g_prof.v[0] += prof_mark(pt); /*PROF*/
   update_swatch();
+  g_prof.v[1] += prof_mark(pt); /*PROF*/
   sync_gpu();
+  g_prof.v[2] += prof_mark(pt); /*PROF*/
   int fb_w = 0, fb_h = 0;
   glfwGetFramebufferSize(window_, &fb_w, &fb_h);
   int win_w = 0, win_h = 0;
@@ -1054,6 +1095,7 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   }
   const RecoveryChoice recovery = draw_recovery_offer(recoverable_, preview);
   ImGui::Render();
+  g_prof.v[3] += prof_mark(pt); /*PROF*/
 
   renderer_->set_view_options(state_.view_options);
   // The view is in window coordinates; scale it to framebuffer pixels (HiDPI).
@@ -1081,11 +1123,12 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   const render_gl::CachedDrawStats canvas =
       view_cache_.update(*renderer_, fb_view, fb_w, fb_h, detail);
   state_.pixels_shaded += canvas.pixels_shaded;
+  g_prof.v[4] += prof_mark(pt); g_prof.px += canvas.pixels_shaded; /*PROF*/
   frame_changed_ = !canvas.changed.empty();
   present_frame(canvas.changed, fb_w, fb_h, fb_scale, take_screenshot);
+  g_prof.v[5] += prof_mark(pt); g_prof.end(); /*PROF*/
   latency_.shown(applied_at_upload_, glfwGetTime() - session_start_s_);
-  if (zoomed_)
-    zoom_latency_.shown(*std::exchange(zoomed_, std::nullopt), glfwGetTime() - session_start_s_);
+  time_view_motion(glfwGetTime());
   if (canvas.coarse) coarse_factors_.push_back(canvas.coarse_factor);
   state_.input_latency_ms = latency_.recent_median_ms().value_or(-1.0);
   state_.frame_ms = ms_since(start);
@@ -1208,20 +1251,12 @@ void PaintWindow::run() {
 
 // The session's input latency, for measuring it (docs/window.md).
 void PaintWindow::report_latency() const {
-  if (zoom_latency_.shown_count() > 0) {
-    std::vector<int> factors = coarse_factors_;
-    std::sort(factors.begin(), factors.end());
-    std::cout << "zoom latency (wheel click to the swap showing it): median "
-              << *zoom_latency_.percentile_ms(0.5) << " ms, 95th percentile "
-              << *zoom_latency_.percentile_ms(0.95) << " ms over " << zoom_latency_.shown_count()
-              << " clicks; " << factors.size() << " coarse frames, median factor "
-              << (factors.empty() ? 0 : factors[factors.size() / 2]) << "\n";
-  }
+  std::cout << view_latency_.report(coarse_factors_);
   if (latency_.shown_count() == 0) return;
-  std::cout << "input latency (pen event to the swap showing it): median "
-            << *latency_.percentile_ms(0.5) << " ms, 95th percentile "
-            << *latency_.percentile_ms(0.95) << " ms over " << latency_.shown_count()
-            << " samples; " << server_times_->matched() << " mouse events timed by the window "
+  std::cout << latency_line("input", "pen event", "samples",
+                            {*latency_.percentile_ms(0.5), *latency_.percentile_ms(0.95),
+                             static_cast<int>(latency_.shown_count())})
+            << "; " << server_times_->matched() << " mouse events timed by the window "
             << "system, " << server_times_->unmatched() << " when delivered\n";
 }
 

@@ -1,6 +1,7 @@
 #include "window/panels.hpp"
 #include "window/edit_help_menus.hpp"
 #include "window/enum_combo.hpp"
+#include "window/light_disc_look.hpp"
 #include "window/palette_medium.hpp"
 #include "window/plot.hpp"
 #include "window/shortcuts.hpp"
@@ -421,7 +422,8 @@ bool direction_pad(WindowState& s) {
   const double r = radius * (1.0 - s.settings.light_elevation_deg / 90.0);
   draw->AddCircleFilled(ImVec2(centre.x + static_cast<float>(r * std::cos(az)),
                                centre.y + static_cast<float>(r * std::sin(az))),
-                        6.0f, IM_COL32(255, 220, 80, 255));
+                        kLightDotRadius,
+                        IM_COL32(kLightDotColour[0], kLightDotColour[1], kLightDotColour[2], 255));
   return changed;
 }
 

@@ -35,10 +35,10 @@ void PointerGestures::apply(std::span<const PointerEvent> events, const PointerF
       case PointerAction::kMove:
         if (drag_ == Drag::kPaint && handlers_.paint) handlers_.paint(event, true);
         if (drag_ == Drag::kPan && handlers_.pan) {
-          handlers_.pan(last_x_, last_y_, event.x, event.y);
+          handlers_.pan(last_x_, last_y_, event.x, event.y, event.time_s);
         }
         if (drag_ == Drag::kRotate && handlers_.rotate) {
-          handlers_.rotate(last_x_, last_y_, event.x, event.y);
+          handlers_.rotate(last_x_, last_y_, event.x, event.y, event.time_s);
         }
         break;
       case PointerAction::kRelease:

@@ -23,9 +23,11 @@ struct PointerFrame {
 struct PointerHandlers {
   // A pen sample at the event's position and time; tip_down false ends the stroke.
   std::function<void(const PointerEvent& at, bool tip_down)> paint;
-  // Drags from one window position to the next.
-  std::function<void(double from_x, double from_y, double to_x, double to_y)> pan;
-  std::function<void(double from_x, double from_y, double to_x, double to_y)> rotate;
+  // Drags from one window position to the next, by a move at time_s (its event's own time).
+  using Drag =
+      std::function<void(double from_x, double from_y, double to_x, double to_y, double time_s)>;
+  Drag pan;
+  Drag rotate;
 };
 
 class PointerGestures {

@@ -3,10 +3,13 @@
 // window system) to the buffer swap of the first frame drawn after the simulation applied it.
 // Samples are known by their job number in the simulation's queue (SimStats::submitted
 // right after submitting); a frame knows how many jobs were applied before it uploaded.
+// ViewLatency times the view's motions the same way.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <deque>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace impasto::app::window {
@@ -20,6 +23,8 @@ class InputLatency {
   // A frame whose upload followed the first `applied` jobs was swapped at swap_time_s (the
   // same clock as the event times).
   void shown(std::uint64_t applied, double swap_time_s);
+  // The first `up_to` jobs will not be shown (they went elsewhere): they are not timed.
+  void dropped(std::uint64_t up_to);
 
   // Median over the last `recent` samples shown, in ms; none before the first.
   std::optional<double> recent_median_ms() const;
@@ -37,6 +42,42 @@ class InputLatency {
   std::deque<Waiting> waiting_;
   std::deque<double> recent_ms_;
   std::vector<double> all_ms_;
+};
+
+// What moves the view or the light: a wheel click's zoom step, a move of a rotating (right
+// button) or panning drag, a pointer event that moved the light (the Light panel's disc).
+enum class ViewMotion { kZoom, kRotate, kPan, kLight };
+inline constexpr std::size_t kViewMotions = 4;
+
+// A view motion as the user waits for it: from its event's own time to the swap of the first
+// frame drawn after the view took it. Each kind's events are numbered as they reach the window
+// (submitted); a frame that applies them says so (applied: every one of that kind so far), and
+// its swap shows them.
+class ViewLatency {
+ public:
+  void submitted(ViewMotion kind, double event_time_s);
+  void applied(ViewMotion kind);
+  void dropped(ViewMotion kind);  // every one of that kind so far went elsewhere (a panel)
+  void shown(double swap_time_s);
+  const InputLatency& of(ViewMotion kind) const { return kinds_[index(kind)].latency; }
+
+  // The window's exit report (latency_lines.hpp): a line for each kind with events shown,
+  // then the motion frames' line (the factor of each coarse frame, in any order); empty when
+  // nothing was shown.
+  std::string report(std::vector<int> coarse_factors) const;
+  // The time between each two swaps in a row that showed motions, ms: while a drag goes on,
+  // its frame period (a move waits for the frame under way, then for its own).
+  const std::vector<double>& motion_frame_intervals_ms() const { return intervals_ms_; }
+
+ private:
+  static std::size_t index(ViewMotion kind) { return static_cast<std::size_t>(kind); }
+  struct Kind {
+    InputLatency latency;
+    std::uint64_t submitted = 0, applied = 0;
+  };
+  std::array<Kind, kViewMotions> kinds_;
+  std::optional<double> last_motion_swap_s_;  // the last swap, if it showed a motion
+  std::vector<double> intervals_ms_;
 };
 
 }  // namespace impasto::app::window
