@@ -1036,24 +1036,11 @@ void PaintWindow::present_frame(const std::vector<render_gl::PixelRect>& canvas_
 // simulation has its own core meanwhile.
 constexpr auto kSimWait = std::chrono::milliseconds(15);
 
-static bool prof_on() { static bool on = std::getenv("IMPASTO_PROF") != nullptr; return on; }
-struct ProfAcc { double v[6] = {0,0,0,0,0,0}; long n = 0; long px = 0; std::vector<std::array<double,7>> rows;
-  void end(){ if (px>0){ rows.push_back({v[0],v[1],v[2],v[3],v[4],v[5],double(px)}); } for(double&x:v)x=0; px=0; n++; }
-  ~ProfAcc(){ if(!prof_on()||rows.empty()) return; const char* names[7]={"wait","swatch","upload","ui","shade","present","px"};
-    std::fprintf(stderr,"PROF frames %ld busy %zu medians:", n, rows.size());
-    for(int i=0;i<7;++i){ std::vector<double> c; for(auto&r:rows) c.push_back(r[i]); std::sort(c.begin(),c.end()); std::fprintf(stderr," %s %.2f (p90 %.1f)", names[i], c[c.size()/2], c[c.size()*9/10]); }
-    std::fprintf(stderr,"\n"); } };
-static ProfAcc g_prof;
-static double prof_mark(Clock::time_point& t) { if (prof_on()) glFinish(); auto n = Clock::now(); double ms = std::chrono::duration<double, std::milli>(n - t).count(); t = n; return ms; }
 void PaintWindow::draw_frame(bool take_screenshot) {
   const auto start = Clock::now();
-  auto pt = start; /*PROF*/
   if (worker_->stats().submitted != applied_at_upload_) worker_->wait_idle_for(kSimWait);
-  g_prof.v[0] += prof_mark(pt); /*PROF*/
   update_swatch();
-  g_prof.v[1] += prof_mark(pt); /*PROF*/
   sync_gpu();
-  g_prof.v[2] += prof_mark(pt); /*PROF*/
   int fb_w = 0, fb_h = 0;
   glfwGetFramebufferSize(window_, &fb_w, &fb_h);
   int win_w = 0, win_h = 0;
@@ -1095,7 +1082,6 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   }
   const RecoveryChoice recovery = draw_recovery_offer(recoverable_, preview);
   ImGui::Render();
-  g_prof.v[3] += prof_mark(pt); /*PROF*/
 
   renderer_->set_view_options(state_.view_options);
   // The view is in window coordinates; scale it to framebuffer pixels (HiDPI).
@@ -1123,10 +1109,8 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   const render_gl::CachedDrawStats canvas =
       view_cache_.update(*renderer_, fb_view, fb_w, fb_h, detail);
   state_.pixels_shaded += canvas.pixels_shaded;
-  g_prof.v[4] += prof_mark(pt); g_prof.px += canvas.pixels_shaded; /*PROF*/
   frame_changed_ = !canvas.changed.empty();
   present_frame(canvas.changed, fb_w, fb_h, fb_scale, take_screenshot);
-  g_prof.v[5] += prof_mark(pt); g_prof.end(); /*PROF*/
   latency_.shown(applied_at_upload_, glfwGetTime() - session_start_s_);
   time_view_motion(glfwGetTime());
   if (canvas.coarse) coarse_factors_.push_back(canvas.coarse_factor);
