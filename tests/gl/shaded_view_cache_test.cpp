@@ -4,6 +4,7 @@
 // coarse frames while the view moves are refined to the same picture.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <vector>
@@ -38,6 +39,15 @@ std::vector<std::uint8_t> full_redraw(CanvasRenderer& renderer, const CanvasView
   target.bind();
   renderer.draw(view, w, h);
   return target.read_rgba8();
+}
+
+// How many RGBA pixels' colours differ between two images of the same size.
+int pixels_differing(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b) {
+  EXPECT_EQ(a.size(), b.size());
+  int differing = 0;
+  for (std::size_t i = 0; i + 3 < std::min(a.size(), b.size()); i += 4)
+    differing += a[i] != b[i] || a[i + 1] != b[i + 1] || a[i + 2] != b[i + 2];
+  return differing;
 }
 
 void stroke(paintcore::Painting& painting, double y_mm, double x0_mm, double x1_mm) {
@@ -162,15 +172,8 @@ TEST(CachedViewPan, WholePixelPansShadeOnlyTheUncoveredStrips) {
   const CachedDrawStats drag = cache.draw(renderer, view, w, h, window.id());
   EXPECT_TRUE(drag.shifted);
   EXPECT_EQ(drag.pixels_shaded, 12LL * h + 9LL * w);
-  const auto cached = window.read_rgba8();
-  const auto redrawn = full_redraw(renderer, view, w, h);
-  ASSERT_EQ(cached.size(), redrawn.size());
-  int differing = 0;
-  for (std::size_t i = 0; i < cached.size(); i += 4) {
-    differing += cached[i] != redrawn[i] || cached[i + 1] != redrawn[i + 1] ||
-                 cached[i + 2] != redrawn[i + 2];
-  }
-  EXPECT_LE(differing, w * h / 200) << "pixels that differ from a whole redraw";
+  EXPECT_LE(pixels_differing(window.read_rgba8(), full_redraw(renderer, view, w, h)), w * h / 200)
+      << "pixels that differ from a whole redraw";
 
   // A pan by a fraction of a pixel moves every cell edge: everything again.
   view.center_x_cells += 0.3;
@@ -317,7 +320,9 @@ TEST(CachedViewCoarse, RefinedInBlocksMatchesAWholeRedraw) {
   EXPECT_GE(frames, blocks - blocks / 2);
   EXPECT_LE(frames, blocks - blocks / 2 + columns);
   EXPECT_LT(shaded, static_cast<long long>(w) * h);
-  EXPECT_EQ(window.read_rgba8(), full_redraw(renderer, view, w, h));
+  // The blocks refined before the pan moved with the image, which is the same as a redraw
+  // but for cells whose edge falls within float rounding of a pixel centre (as a pan's).
+  EXPECT_LE(pixels_differing(window.read_rgba8(), full_redraw(renderer, view, w, h)), w * h / 200);
 }
 
 // While a stroke changes the canvas (kCoarse), changed regions over the draft budget are

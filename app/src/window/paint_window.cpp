@@ -207,6 +207,7 @@ class PaintWindow {
   std::array<double, 6> last_motion_{};  // the view and the light at the last frame
   double last_motion_s_ = -1e9;          // when they last changed
   double canvas_changed_s_ = -1e9;       // when the last upload had changed cells
+  double tip_down_s_ = -1e9;             // when the last sample with the tip down came
   std::unique_ptr<render::SpectralPalette> palette_;
   bool palette_stands_in_ = false;    // the Gaussian rule while the palette's own is built
   std::uint64_t rules_finished_ = 0;  // render::palette_rules_finished() when it was made
@@ -688,6 +689,7 @@ void PaintWindow::submit_pen_event(input::StrokeEvent event) {
   last_input_s_ = glfwGetTime();
   // Only this thread submits, so the count just read is this event's job number.
   if (sample) latency_.submitted(worker_->stats().submitted, time_s);
+  if (sample && (sample->sample.buttons & paintcore::kPenTip) != 0) tip_down_s_ = last_input_s_;
 }
 
 void PaintWindow::pan_view(double from_x, double from_y, double to_x, double to_y, double time_s) {
@@ -1102,7 +1104,8 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   if (motion != last_motion_) last_motion_s_ = now_s;
   last_motion_ = motion;
   using Detail = render_gl::ShadedViewCache::Detail;
-  const double still_s = now_s - std::max(last_motion_s_, canvas_changed_s_);
+  // A stroke that changes nothing in view (an empty brush) is not kept waiting either.
+  const double still_s = now_s - std::max({last_motion_s_, canvas_changed_s_, tip_down_s_});
   const Detail detail = take_screenshot            ? Detail::kFull
                         : still_s < kRefineAfter_s ? Detail::kCoarse
                                                    : Detail::kRefining;

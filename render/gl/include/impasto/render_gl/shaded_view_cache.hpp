@@ -69,10 +69,11 @@ class ShadedViewCache {
   // wheel click waits for one call, not the whole re-shade); the image is the same as
   // kFull's once `refining` is false. Otherwise it is kFull. Blocks, not thin bands of rows:
   // llvmpipe shades in 64-pixel square tiles, and a band a few rows high cost it 2-5 times as
-  // much a pixel.
+  // much a pixel. 32 pixels, not 64: zoomed out over a large canvas (16 cells a pixel) a 64-pixel
+  // block took 70 ms on llvmpipe, and a stroke begun meanwhile waited for it.
   enum class Detail { kFull, kCoarse, kRefining };
   static constexpr double kRefineStepMs = 25.0;
-  static constexpr int kRefineBlock = 64;
+  static constexpr int kRefineBlock = 32;
   static constexpr int kMinCoarseFactor = 4;
   static constexpr int kMaxCoarseFactor = 16;
   // The coarse pass's shading budget, of the 100 ms a motion's first frame may take: in a
