@@ -348,10 +348,13 @@ TEST(ViewLatency, MeasuresHowFarApartTheFramesOfAMotionCame) {
     view.applied(ViewMotion::kRotate);
     view.shown(swap_s);
   };
+  EXPECT_FALSE(view.moving());
   move_and_swap(1.00, 1.05);
+  EXPECT_TRUE(view.moving());
   move_and_swap(1.04, 1.11);  // 60 ms after the last
   move_and_swap(1.10, 1.18);  // 70
   view.shown(1.25);           // nothing moved: the motion paused
+  EXPECT_FALSE(view.moving());
   move_and_swap(1.90, 1.95);  // the next drag: not an interval of this one
   move_and_swap(1.93, 2.00);  // 50
   EXPECT_EQ(view.motion_frame_intervals_ms().size(), 3u);

@@ -722,6 +722,11 @@ void PaintWindow::time_view_motion(double swap_time_s) {
   }
   shown_light_ = light;
   view_latency_.shown(swap_time_s);
+  // A drag's move that arrives while a frame is drawn waits for it, then for its own frame:
+  // while a motion goes on, a coarse pass gets half the budget, so the two fit the 100 ms.
+  using Cache = render_gl::ShadedViewCache;
+  view_cache_.set_coarse_budget_ms(Cache::kDefaultCoarseBudgetMs /
+                                   (view_latency_.moving() ? 2.0 : 1.0));
 }
 
 // Applies every mouse event since the last frame in order: each move of a stroke is a pen

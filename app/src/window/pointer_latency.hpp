@@ -68,6 +68,9 @@ class ViewLatency {
   // The time between each two swaps in a row that showed motions, ms: while a drag goes on,
   // its frame period (a move waits for the frame under way, then for its own).
   const std::vector<double>& motion_frame_intervals_ms() const { return intervals_ms_; }
+  // The last swap showed a motion: one may be going on, its next events arriving while a
+  // frame is drawn.
+  bool moving() const { return last_motion_swap_s_.has_value(); }
 
  private:
   static std::size_t index(ViewMotion kind) { return static_cast<std::size_t>(kind); }
