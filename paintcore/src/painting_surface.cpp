@@ -33,11 +33,23 @@ std::optional<PaintMedium> laid_medium(const StrokeMedia& laid, int index, int c
                      medium > 0.0f ? planes[2 * kTileCells + cell] / medium : 0.0f};
 }
 
+bool any_medium(const Canvas& canvas) {
+  for (int index = 0; index < canvas.tile_count(); ++index) {
+    const Tile* tile = canvas.tile(index);
+    if (tile != nullptr && !tile->medium.empty()) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 void exchange_medium(const Canvas& canvas, const UndoHistory& history, Brush& brush,
                      const Stepper& stepper, StrokeMedia& laid) {
   const PaintMedium on_brush_medium = brush.medium();
+  // No medium on the brush nor anywhere on the canvas (none is in use): the brush takes none
+  // up, the paint it lays carries none, and lay_stroke_medium has nothing to lay. Media change
+  // only at a stroke's end, so skipping part of a stroke's exchanges loses nothing.
+  if (on_brush_medium.share == 0.0f && !any_medium(canvas)) return;
   double picked = 0.0, medium = 0.0, medium_log_rms = 0.0;  // heights (mm): one cell's area
   int booked_index = -1;  // the tile last booked in `laid` (cells come row by row)
   std::vector<float>* booked = nullptr;
