@@ -88,7 +88,7 @@ class ShadedViewCache {
   // A stroke's frame on llvmpipe (1400×900, two cores) leaves its shading about this much of
   // the 30 ms from the pen to the screen: the simulation, the upload, the panels and the
   // present take the rest, and a frame already under way when the pen moves is waited for.
-  static constexpr double kDefaultDraftBudgetMs = 8.0;
+  static constexpr double kDefaultDraftBudgetMs = 4.0;
   static constexpr int kMaxDraftFactor = 4;
 
   // The factor (kMinCoarseFactor..kMaxCoarseFactor) for a viewport_w × viewport_h viewport
