@@ -266,7 +266,12 @@ CachedDrawStats ShadedViewCache::update(CanvasRenderer& renderer, const CanvasVi
     all_invalid_ = true;
   }
   const auto look = look_of(renderer, view);
-  if (&renderer != renderer_ || look != look_) all_invalid_ = true;
+  if (&renderer != renderer_ || look != look_) {
+    all_invalid_ = true;
+    // A pixel's cost depends on the zoom and the look: a draft decision from the old one could
+    // draft for ever what now fits the budget.
+    changed_ms_per_pixel_ = draft_ms_per_pixel_ = 0.0;
+  }
   renderer_ = &renderer;
   look_ = look;
 
