@@ -88,6 +88,16 @@ std::unique_ptr<CanvasRenderer> uploaded_renderer(const paintcore::Painting& pai
   return renderer;
 }
 
+// The cells the painting changed since the last call, uploaded and invalidated in the cache.
+void upload_changes(paintcore::Painting& painting, CanvasRenderer& renderer,
+                    ShadedViewCache& cache) {
+  const std::vector<paintcore::DirtyTile> changed = painting.canvas().take_dirty_rects();
+  std::vector<int> tiles;
+  for (const paintcore::DirtyTile& d : changed) tiles.push_back(d.index);
+  renderer.upload_tiles(painting.canvas(), tiles);
+  cache.invalidate_cells(changed);
+}
+
 class CachedView : public ::testing::TestWithParam<CanvasView> {};
 
 TEST_P(CachedView, PartialReshadesMatchAWholeRedraw) {
@@ -345,11 +355,7 @@ TEST(CachedViewDraft, DraftedStrokesAreRefinedToAWholeRedraw) {
     cache.draw(renderer, view, w, h, window.id());
     for (const double y_mm : {8.0, 20.0}) {
       stroke(painting, y_mm, 6.0, 30.0);
-      const std::vector<paintcore::DirtyTile> changed = painting.canvas().take_dirty_rects();
-      std::vector<int> tiles;
-      for (const paintcore::DirtyTile& d : changed) tiles.push_back(d.index);
-      renderer.upload_tiles(painting.canvas(), tiles);
-      cache.invalidate_cells(changed);
+      upload_changes(painting, renderer, cache);
       const CachedDrawStats draft = cache.update(renderer, view, w, h, Detail::kCoarse);
       cache.copy_to(window.id(), {0, 0, w, h});
       EXPECT_EQ(draft.draft_factor, ShadedViewCache::kMaxDraftFactor);
@@ -373,11 +379,7 @@ TEST(CachedViewDraft, DraftedStrokesAreRefinedToAWholeRedraw) {
     // Within the budget the changes are shaded finely: nothing to refine.
     cache.set_draft_budget_ms(1e9);
     stroke(painting, 14.0, 10.0, 20.0);
-    const std::vector<paintcore::DirtyTile> changed = painting.canvas().take_dirty_rects();
-    std::vector<int> tiles;
-    for (const paintcore::DirtyTile& d : changed) tiles.push_back(d.index);
-    renderer.upload_tiles(painting.canvas(), tiles);
-    cache.invalidate_cells(changed);
+    upload_changes(painting, renderer, cache);
     const CachedDrawStats fine = cache.update(renderer, view, w, h, Detail::kCoarse);
     cache.copy_to(window.id(), {0, 0, w, h});
     EXPECT_EQ(fine.draft_factor, 0);

@@ -25,14 +25,6 @@ class FileSafetyTest : public ::testing::Test {
   }
   void TearDown() override { std::filesystem::remove_all(dir_); }
 
-  static std::string load_error(const std::filesystem::path& file) {
-    try {
-      Painting::load(file, 1);
-    } catch (const std::runtime_error& e) {
-      return e.what();
-    }
-    return "no error";
-  }
   std::vector<std::string> names() const {
     std::vector<std::string> out;
     for (const auto& entry : std::filesystem::directory_iterator(dir_))
@@ -69,7 +61,7 @@ TEST_F(FileSafetyTest, AFullDiskDuringASaveKeepsTheOldPainting) {
     EXPECT_EQ(names(), std::vector<std::string>{"a.impasto"}) << "limit " << limit;
   }
   std::signal(SIGXFSZ, old_handler);
-  EXPECT_EQ(load_error(file), "no error");
+  EXPECT_EQ(test::load_error(file), "no error");
 }
 
 // kill -9 at several points of a save loop: the file on disk is always one whole painting
@@ -139,12 +131,12 @@ TEST_F(FileSafetyTest, RefusesAReadOnlyPaintingByName) {
 }
 
 TEST_F(FileSafetyTest, RefusesDevicesAndFoldersByName) {
-  EXPECT_EQ(load_error("/dev/zero"),
+  EXPECT_EQ(test::load_error("/dev/zero"),
             "/dev/zero: cannot read the painting: it is a device, not a file");
-  EXPECT_EQ(load_error(dir_),
+  EXPECT_EQ(test::load_error(dir_),
             dir_.string() + ": cannot read the painting: it is a folder, not a file");
   test::write_bytes(dir_ / "tiny.impasto", {'I', 'M', 'P'});
-  EXPECT_NE(load_error(dir_ / "tiny.impasto").find("field 'magic': the file is truncated"),
+  EXPECT_NE(test::load_error(dir_ / "tiny.impasto").find("field 'magic': the file is truncated"),
             std::string::npos);
 }
 
@@ -154,7 +146,7 @@ TEST_F(FileSafetyTest, HostilePaintingsFailByFieldOrLoadRepaired) {
   for (const auto& hostile : test::hostile_paintings()) {
     const auto file = dir_ / (hostile.name + ".impasto");
     test::write_bytes(file, hostile.bytes);
-    const std::string error = load_error(file);
+    const std::string error = test::load_error(file);
     if (hostile.field.empty() || hostile.field.rfind("canvas.", 0) == 0) {
       EXPECT_EQ(error, "no error") << hostile.name;
     } else {

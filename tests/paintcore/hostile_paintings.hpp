@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,16 @@
 namespace impasto::paintcore::test {
 
 inline constexpr std::size_t kFileHeaderBytes = kPaintingFileHeaderBytes;
+
+// What loading `file` throws, or "no error".
+inline std::string load_error(const std::filesystem::path& file) {
+  try {
+    Painting::load(file, 1);
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "no error";
+}
 
 inline std::vector<unsigned char> file_bytes(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);

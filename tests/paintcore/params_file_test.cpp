@@ -7,6 +7,7 @@
 #include <limits>
 #include <string>
 
+#include "../common/scratch_folder.hpp"
 #include "hostile_paintings.hpp"
 #include "older_painting_files.hpp"
 #include "test_util.hpp"
@@ -48,21 +49,11 @@ std::uint32_t version_of(const std::vector<unsigned char>& file_bytes) {
 class ParamsFileTest : public ::testing::Test {
  protected:
   void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("impasto_params_file_" + std::to_string(::getpid()) + "_" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::create_directories(dir_);
+    dir_ = impasto::test::scratch_folder(
+        std::string("impasto_params_file_") +
+        ::testing::UnitTest::GetInstance()->current_test_info()->name());
   }
   void TearDown() override { std::filesystem::remove_all(dir_); }
-
-  static std::string load_error(const std::filesystem::path& file) {
-    try {
-      Painting::load(file, 1);
-    } catch (const std::runtime_error& e) {
-      return e.what();
-    }
-    return "no error";
-  }
 
   std::filesystem::path dir_;
 };
@@ -129,7 +120,7 @@ TEST_F(ParamsFileTest, VersionSixFilesLoadWithTheLongStepsDefaults) {
   EXPECT_EQ(loaded.state_hash(), p.state_hash());
   // A version-7 payload labelled 6 does not load (its settings are read as the slot count).
   test::write_painting_file(v6, 6, test::payload_of(test::file_bytes(file)));
-  EXPECT_NE(load_error(v6), "no error");
+  EXPECT_NE(test::load_error(v6), "no error");
 }
 
 TEST_F(ParamsFileTest, TheCorpusVersionSixPaintingLoadsWithTheLongStepsDefaults) {
@@ -159,7 +150,7 @@ TEST_F(ParamsFileTest, ALongStepValueNoPaintingHoldsIsRefusedNamingTheField) {
     auto bytes = good;
     test::patch_payload(bytes, test::kParamsOffset + 8 * index, value);
     test::write_bytes(file, bytes);
-    return load_error(file);
+    return test::load_error(file);
   };
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const double inf = std::numeric_limits<double>::infinity();
@@ -183,7 +174,7 @@ TEST_F(ParamsFileTest, ALongStepValueNoPaintingHoldsIsRefusedNamingTheField) {
   }
   // The unedited bytes load.
   test::write_bytes(file, good);
-  EXPECT_EQ(load_error(file), "no error");
+  EXPECT_EQ(test::load_error(file), "no error");
 }
 
 }  // namespace
