@@ -126,8 +126,9 @@ void Advection::resize(int width, int height) {
   const std::size_t n = padded_size();
   const int stride = width + 2;
   // Every real cell is written by prepare_rows; only the border needs clearing.
-  for (auto* grid : {&stay_, &east_, &west_, &south_, &north_, &south_east_, &south_west_,
-                     &north_east_, &north_west_}) {
+  for (auto* grid :
+       {&stay_, &east_, &west_, &south_, &north_, &south_east_, &south_west_, &north_east_,
+        &north_west_, &next_stay_, &next_across_x_, &next_across_y_, &next_diagonal_}) {
     if (grid->size() < n) grid->resize(n);
     float* g = grid->data();
     std::fill(g, g + stride, 0.0f);
@@ -152,17 +153,38 @@ void Advection::prepare_rows(int y0, int y1, const float* vx, const float* vy, c
   }
 }
 
-void Advection::prepare_quadrant_rows(int y0, int y1, int sign_x, int sign_y, const float* vx,
-                                      const float* vy, const float* volume, float min_film_mm) {
-  quadrant_x_ = sign_x < 0 ? -1 : 1;
-  quadrant_y_ = sign_y < 0 ? -1 : 1;
-  // The three shares live in the east, south and south-east grids whatever the quadrant.
+void Advection::prepare_quadrant_rows(int y0, int y1, const float* vx, const float* vy,
+                                      const float* volume, float min_film_mm) {
   const int stride = width_ + 2;
   for (int y = y0; y < y1; ++y) {
     const std::size_t i = static_cast<std::size_t>(y + 1) * stride + 1;
-    prepare_quadrant_row(width_, vx + i, vy + i, volume + i, min_film_mm, stay_.data() + i,
-                         east_.data() + i, south_.data() + i, south_east_.data() + i);
+    prepare_quadrant_row(width_, vx + i, vy + i, volume + i, min_film_mm, next_stay_.data() + i,
+                         next_across_x_.data() + i, next_across_y_.data() + i,
+                         next_diagonal_.data() + i);
   }
+}
+
+void Advection::prepare_quadrant_spans(int y0, int y1, const float* vx, const float* vy,
+                                       const float* volume, float min_film_mm, const int* x0,
+                                       const int* x1) {
+  const int stride = width_ + 2;
+  for (int y = y0; y < y1; ++y) {
+    if (x1[y] <= x0[y]) continue;
+    const std::size_t i = static_cast<std::size_t>(y + 1) * stride + 1 + x0[y];
+    prepare_quadrant_row(x1[y] - x0[y], vx + i, vy + i, volume + i, min_film_mm,
+                         next_stay_.data() + i, next_across_x_.data() + i,
+                         next_across_y_.data() + i, next_diagonal_.data() + i);
+  }
+}
+
+void Advection::use_prepared_quadrant(int sign_x, int sign_y) {
+  quadrant_x_ = sign_x < 0 ? -1 : 1;
+  quadrant_y_ = sign_y < 0 ? -1 : 1;
+  // The three shares live in the east, south and south-east grids whatever the quadrant.
+  stay_.swap(next_stay_);
+  east_.swap(next_across_x_);
+  south_.swap(next_across_y_);
+  south_east_.swap(next_diagonal_);
 }
 
 void Advection::prepare(int width, int height, const float* vx, const float* vy,

@@ -54,6 +54,11 @@ Brush::Brush(BrushHead head, BrushSettings settings, double cell_mm, int slot_co
     covers_[static_cast<std::size_t>(cells_ / 2) * cells_ + cells_ / 2] = 1;
     covered_ = 1;
   }
+  for (std::size_t k = 0; k < covers_.size(); ++k) {
+    if (!covers_[k]) continue;
+    if (covered_runs_.empty() || covered_runs_.back().end != k) covered_runs_.push_back({k, k});
+    covered_runs_.back().end = k + 1;
+  }
   rim_mm_ = *std::max_element(footprint_mm_.begin(), footprint_mm_.end());
   const auto padded = static_cast<std::size_t>(cells_ + 2);
   padded_footprint_mm_.assign(padded * padded, rim_mm_);

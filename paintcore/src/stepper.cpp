@@ -83,7 +83,7 @@ void Stepper::resize(int slot_count, std::size_t brush_cells, int substeps) {
   if (xfer_pigment_.size() < cells * slots) xfer_pigment_.resize(cells * slots);
   if (brush_share_.size() < brush_cells) brush_share_.resize(brush_cells);
   row_contacts_.assign(static_cast<std::size_t>(w.height), 0);
-  for (auto* span : {&contact_lo_, &contact_hi_, &span_lo_, &span_hi_})
+  for (auto* span : {&contact_lo_, &contact_hi_, &span_lo_, &span_hi_, &need_lo_, &need_hi_})
     span->assign(static_cast<std::size_t>(w.height), 0);
   for (auto* grid : {&ground_, &wet_, &pen_, &vx_, &vy_, &new_wet_})
     zero_border(grid->data(), w.width, w.height);
@@ -259,23 +259,45 @@ IMPASTO_SIMD_CLONES void Stepper::shifted_velocity_rows(const StepInputs& in, in
   const Window& w = win_;
   const std::ptrdiff_t s = w.stride();
   const int last_x = in.canvas->width_cells() - 1, last_y = in.canvas->height_cells() - 1;
-  const int begin = std::clamp(-shift_x, 0, w.width),
-            end = std::clamp(w.width - shift_x, 0, w.width);
+  // Only the cells a sub-step's gather reads (need_lo_, need_hi_): elsewhere the velocity is
+  // never used.
   for (int y = r0; y < r1; ++y) {
+    const int lo = need_lo_[static_cast<std::size_t>(y)],
+              hi = need_hi_[static_cast<std::size_t>(y)];
+    if (hi <= lo) continue;
     const std::ptrdiff_t row = (y + 1) * s + 1;
     float* __restrict vx = vx_.data() + row;
     float* __restrict vy = vy_.data() + row;
-    std::fill_n(vx, w.width, 0.0f);
-    std::fill_n(vy, w.width, 0.0f);
+    std::fill(vx + lo, vx + hi, 0.0f);
+    std::fill(vy + lo, vy + hi, 0.0f);
     const int from_y = y + shift_y;
     if (from_y < 0 || from_y >= w.height) continue;
     const float* __restrict weight =
         contact_weight_.data() + static_cast<std::ptrdiff_t>(from_y) * w.width + shift_x;
+    const int begin = std::clamp(-shift_x, lo, hi), end = std::clamp(w.width - shift_x, lo, hi);
     for (int x = begin; x < end; ++x) {
       vx[x] = weight[x] * in.brush_vx;
       vy[x] = weight[x] * in.brush_vy;
     }
     keep_paint_on_canvas(w, y, last_x, last_y, vx, vy);
+  }
+}
+
+void Stepper::need_shares(int rows, int cols, int quadrant_x, int quadrant_y) {
+  // The gather of a span cell (x, y) reads the shares of (x, y), of the cell behind it across
+  // x, and of the row behind it (y - quadrant_y) at those two columns: a row's own span and
+  // the span of the row ahead of it, each widened by the cell behind.
+  for (int y = 0; y < rows; ++y) {
+    int lo = cols, hi = 0;
+    for (const int reader : {y, y + quadrant_y}) {
+      if (reader < 0 || reader >= rows) continue;
+      const auto k = static_cast<std::size_t>(reader);
+      if (span_hi_[k] <= span_lo_[k]) continue;
+      lo = std::min(lo, span_lo_[k] - std::max(quadrant_x, 0));
+      hi = std::max(hi, span_hi_[k] + std::max(-quadrant_x, 0));
+    }
+    need_lo_[static_cast<std::size_t>(y)] = std::clamp(lo, 0, cols);
+    need_hi_[static_cast<std::size_t>(y)] = std::clamp(hi, 0, cols);
   }
 }
 
@@ -430,26 +452,29 @@ void Stepper::clamp_brush(Brush& brush, int slot_count) {
 
 void Stepper::even_out_brush(Brush& brush, int slot_count, double share) {
   // Each covered cell moves `share` of the way to the brush's mean. The float cells' total is
-  // kept exactly: what rounding added or lost goes back into the fullest cell.
+  // kept exactly: what rounding added or lost goes back into the fullest cell (the first of
+  // the fullest, in index order). Both sums run in index order, so their bits are fixed;
+  // the cells' own update, between them, vectorises.
   const std::size_t cells = brush.cell_count();
-  const std::uint8_t* covers = brush.covers().data();
+  const std::vector<Brush::CellRun>& runs = brush.covered_runs();
   const auto covered = static_cast<double>(brush.covered_cells());
-  const auto even_out = [&](float* amount) {
+  const auto even_out = [&runs, covered, share](float* amount) {
     double total = 0.0;
-    std::size_t fullest = 0;
-    for (std::size_t c = 0; c < cells; ++c)
-      if (covers[c]) {
+    std::size_t fullest = runs.front().begin;
+    float most = amount[fullest];
+    for (const auto [begin, end] : runs)
+      for (std::size_t c = begin; c < end; ++c) {
         total += amount[c];
-        if (amount[c] > amount[fullest] || !covers[fullest]) fullest = c;
+        if (amount[c] > most) most = amount[c], fullest = c;
       }
     if (total <= 0.0) return;
     const double mean = total / covered;
-    double after = 0.0;
-    for (std::size_t c = 0; c < cells; ++c)
-      if (covers[c]) {
+    for (const auto [begin, end] : runs)
+      for (std::size_t c = begin; c < end; ++c)
         amount[c] = std::max(0.0f, static_cast<float>(amount[c] + share * (mean - amount[c])));
-        after += amount[c];
-      }
+    double after = 0.0;
+    for (const auto [begin, end] : runs)
+      for (std::size_t c = begin; c < end; ++c) after += amount[c];
     amount[fullest] = static_cast<float>(amount[fullest] + (total - after));
   };
   // Volume and each pigment are independent: one task each.
@@ -689,14 +714,14 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   // 1. Gather the window, find where the brush penetrates the paint surface, the velocity
   // and the shares advection will move (each needs only its own row: one pass).
   advection_.resize(cols, rows);
+  // (The drag moves every cell's paint the brush's way, or not at all: one quadrant.)
+  const int quadrant_x = in.brush_vx < 0.0f ? -1 : 1, quadrant_y = in.brush_vy < 0.0f ? -1 : 1;
   parallel_rows(rows, cols, [&](int r0, int r1) {
     gather_rows(in, r0, r1);
     penetrate_rows(in, r0, r1);
+    if (substeps > 1) return;  // each sub-step below has its own velocities and shares
     velocity_rows(in, r0, r1);
-    // (The drag moves every cell's paint the brush's way, or not at all: one quadrant.)
-    advection_.prepare_quadrant_rows(r0, r1, in.brush_vx < 0.0f ? -1 : 1,
-                                     in.brush_vy < 0.0f ? -1 : 1, vx_.data(), vy_.data(),
-                                     wet_.data(), in.min_film_mm);
+    advection_.prepare_quadrant_rows(r0, r1, vx_.data(), vy_.data(), wet_.data(), in.min_film_mm);
   });
   int contacts = 0;
   for (const int count : row_contacts_) contacts += count;
@@ -737,6 +762,7 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
     if (span_hi_[static_cast<std::size_t>(y)] <= span_lo_[static_cast<std::size_t>(y)])
       span_lo_[static_cast<std::size_t>(y)] = span_hi_[static_cast<std::size_t>(y)] = 0;
   }
+  if (substeps > 1) need_shares(rows, cols, quadrant_x, quadrant_y);
   int pass = 1;  // of the advection's sub-steps
   const auto advect_rows = [&](int r0, int r1) {
     for (int y = r0; y < r1; ++y) {
@@ -752,21 +778,27 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
       advection_.apply_span(from_.data(), to_.data(), static_cast<int>(from_.size()), y, lo, hi);
     }
   };
-  const auto prepare_rows = [&](int r0, int r1) {
-    advection_.prepare_quadrant_rows(r0, r1, in.brush_vx < 0.0f ? -1 : 1,
-                                     in.brush_vy < 0.0f ? -1 : 1, vx_.data(), vy_.data(), from_[0],
-                                     in.min_film_mm);
+  // A sub-step's shares: its contact's velocities, on the volume it starts from. Each row's
+  // shares need only that row's, so a sub-step's pass prepares the next one's.
+  const auto prepare_rows = [&](Shift shift, const float* volume, int r0, int r1) {
+    shifted_velocity_rows(in, shift.x, shift.y, r0, r1);
+    advection_.prepare_quadrant_spans(r0, r1, vx_.data(), vy_.data(), volume, in.min_film_mm,
+                                      need_lo_.data(), need_hi_.data());
   };
+  if (substeps > 1)
+    parallel_rows(rows, cols, [&](int r0, int r1) { prepare_rows(shifts_[0], from_[0], r0, r1); });
+  advection_.use_prepared_quadrant(quadrant_x, quadrant_y);
   for (int substep = 1; substep < substeps; ++substep) {
     // A long step's earlier sub-step, with the contact shifted back: from what the one before
     // left (swapped out of the new_ grids) back into them. (The transfer reads the step's
-    // input, wet_, untouched.)
-    const auto [sx, sy] = shifts_[static_cast<std::size_t>(substep - 1)];
+    // input, wet_, untouched.) The last sub-step has the step's own contact.
+    const Shift next =
+        substep + 1 < substeps ? shifts_[static_cast<std::size_t>(substep)] : Shift{0, 0};
     parallel_rows(rows, cols, [&](int r0, int r1) {
-      shifted_velocity_rows(in, sx, sy, r0, r1);
-      prepare_rows(r0, r1);
+      advect_rows(r0, r1);
+      prepare_rows(next, to_[0], r0, r1);
     });
-    parallel_rows(rows, cols, advect_rows);
+    advection_.use_prepared_quadrant(quadrant_x, quadrant_y);
     ++pass;
     std::swap(new_wet_, substep_wet_);
     std::swap(new_pigment_, substep_pigment_);
@@ -777,11 +809,6 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
       to_.push_back(new_pigment_.data() + static_cast<std::size_t>(s) * win_.padded());
     }
   }
-  if (substeps > 1)  // the last sub-step: the step's own contact, on what the others left
-    parallel_rows(rows, cols, [&](int r0, int r1) {
-      shifted_velocity_rows(in, 0, 0, r0, r1);
-      prepare_rows(r0, r1);
-    });
   parallel_rows(rows, cols, [&](int r0, int r1) {
     advect_rows(r0, r1);
     if (transfers) transfer_rows(in, r0, r1);

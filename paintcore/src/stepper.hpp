@@ -99,7 +99,9 @@ class Stepper {
   void gather_rows(const StepInputs& in, int r0, int r1);
   void penetrate_rows(const StepInputs& in, int r0, int r1);
   void velocity_rows(const StepInputs& in, int r0, int r1);
+  // A long step's sub-step's velocities, on each row's need_lo_..need_hi_ only.
   void shifted_velocity_rows(const StepInputs& in, int shift_x, int shift_y, int r0, int r1);
+  void need_shares(int rows, int cols, int quadrant_x, int quadrant_y);
   void transfer_rows(const StepInputs& in, int r0, int r1);
   void squeeze_rows(const StepInputs& in, int r0, int r1);
   void apply_squeeze_rows(int slot_count, int r0, int r1);
@@ -134,6 +136,7 @@ class Stepper {
   std::vector<int> row_contacts_;
   std::vector<int> contact_lo_, contact_hi_;  // each row's touching cells, [lo, hi)
   std::vector<int> span_lo_, span_hi_;        // and where paint can change (see step)
+  std::vector<int> need_lo_, need_hi_;        // and whose drag shares a sub-step reads
   struct Shift {
     int x, y;
   };

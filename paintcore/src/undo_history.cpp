@@ -15,7 +15,7 @@ std::size_t brush_bytes(const Brush& brush) {
          (brush.footprint_mm().capacity() + brush.volume_mm().capacity() +
           brush.pigment_mm().capacity()) *
              sizeof(float) +
-         brush.covers().capacity();
+         brush.covers().capacity() + brush.covered_runs().capacity() * sizeof(Brush::CellRun);
 }
 
 std::size_t dry_layer_bytes(const DryLayer& layer) {

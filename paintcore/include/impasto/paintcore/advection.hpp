@@ -35,9 +35,16 @@ class Advection {
   // The same for a field whose every velocity points into one quadrant: vx has the sign of
   // sign_x or is 0, and vy of sign_y (a brush's drag, say). Only the three shares toward that
   // quadrant can be non-zero, so only they are computed and gathered: the same results,
-  // bit for bit, at half the work. apply_rows then uses them until the next prepare.
-  void prepare_quadrant_rows(int y0, int y1, int sign_x, int sign_y, const float* vx,
-                             const float* vy, const float* volume, float min_film_mm);
+  // bit for bit, at half the work. These shares are prepared apart from those apply_rows
+  // reads, so that one pass may gather with the shares in use while it prepares the next;
+  // use_prepared_quadrant (between passes) hands them to apply_rows until it is called again.
+  void prepare_quadrant_rows(int y0, int y1, const float* vx, const float* vy, const float* volume,
+                             float min_film_mm);
+  // prepare_quadrant_rows on row y's cells [x0[y], x1[y]) only: for a gather that reads no
+  // other cell's shares (apply_span over spans whose reads those ranges hold).
+  void prepare_quadrant_spans(int y0, int y1, const float* vx, const float* vy, const float* volume,
+                              float min_film_mm, const int* x0, const int* x1);
+  void use_prepared_quadrant(int sign_x, int sign_y);
   void apply_rows(const float* const* q, float* const* out, int count, int y0, int y1) const;
   // apply_rows on row y's cells [x0, x1) only.
   void apply_span(const float* const* q, float* const* out, int count, int y, int x0, int x1) const;
@@ -55,6 +62,8 @@ class Advection {
   // Shares sent by each cell (padded grids): to itself and to its 8 neighbours.
   std::vector<float> stay_, east_, west_, south_, north_, south_east_, south_west_, north_east_,
       north_west_;
+  // A quadrant's shares being prepared (they become stay_, east_, south_, south_east_).
+  std::vector<float> next_stay_, next_across_x_, next_across_y_, next_diagonal_;
 };
 
 }  // namespace impasto::paintcore

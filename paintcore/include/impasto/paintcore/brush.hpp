@@ -49,6 +49,12 @@ class Brush {
   }
   const std::vector<float>& padded_coverage_transposed() const { return padded_coverage_t_; }
   std::size_t covered_cells() const { return covered_; }
+  // The covered cells as runs of consecutive indices [begin, end), in index order: loops over
+  // the paint grid visit them without testing every cell.
+  struct CellRun {
+    std::size_t begin, end;
+  };
+  const std::vector<CellRun>& covered_runs() const { return covered_runs_; }
   // Penetration depth (mm) below the paint surface at pressure 1; softer heads sink deeper.
   double max_depth_mm() const;
 
@@ -76,6 +82,7 @@ class Brush {
   std::size_t covered_ = 0;
   std::vector<float> footprint_mm_;
   std::vector<std::uint8_t> covers_;
+  std::vector<CellRun> covered_runs_;
   float rim_mm_ = 0.0f;
   std::vector<float> padded_footprint_mm_, padded_coverage_;
   std::vector<float> padded_footprint_mm_t_, padded_coverage_t_;
