@@ -32,4 +32,12 @@ void composite_dry_stack(const SpectralPalette& palette,
   }
 }
 
+void DryStackSignature::add(std::size_t layer_index, const paintcore::DryTile& layer) {
+  hash_.add(&layer_index, sizeof layer_index);
+  hash_.add(layer.volume_mm.data(), layer.volume_mm.size() * sizeof(float));
+  hash_.add(layer.slots.data(), layer.slots.size());
+  hash_.add(layer.pigment_mm.data(), layer.pigment_mm.size() * sizeof(float));
+  any_ = true;
+}
+
 }  // namespace impasto::render

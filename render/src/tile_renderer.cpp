@@ -24,7 +24,6 @@
 #include "impasto/render/shading.hpp"
 #include "impasto/render/shading_key.hpp"
 #include "impasto/render/surface_shading.hpp"
-#include "impasto/util/fnv1a.hpp"
 #include "spectral_kernels.hpp"
 
 namespace impasto::render {
@@ -35,9 +34,6 @@ using paintcore::kTileSize;
 namespace {
 
 constexpr double kDegreesToRadians = std::numbers::pi / 180.0;
-
-// FNV-1a over the bytes that decide a tile's dry stack: a changed stack changes the hash.
-using util::Fnv1a;
 
 // The pigments of one cell of a layer: slot index and concentration (amount / volume).
 template <typename AmountOf>
@@ -321,7 +317,7 @@ void TileRenderer::bake_dry_stack(const paintcore::Canvas& canvas, int tile_inde
                                   TileCache& cache) const {
   // The dry layers with paint in this tile, bottom first, and their signature.
   std::vector<const paintcore::DryTile*> layers;
-  Fnv1a hash;
+  DryStackSignature signature_of_layers;
   const auto& dry_layers = canvas.dry_layers();
   for (std::size_t l = 0; l < dry_layers.size(); ++l) {
     const paintcore::DryTile* dry = dry_layers[l].find(tile_index);
@@ -339,12 +335,9 @@ void TileRenderer::bake_dry_stack(const paintcore::Canvas& canvas, int tile_inde
       }
     }
     layers.push_back(dry);
-    hash.add(&l, sizeof l);
-    hash.add(dry->volume_mm.data(), dry->volume_mm.size() * sizeof(float));
-    hash.add(dry->slots.data(), dry->slots.size());
-    hash.add(dry->pigment_mm.data(), dry->pigment_mm.size() * sizeof(float));
+    signature_of_layers.add(l, *dry);
   }
-  const std::uint64_t signature = layers.empty() ? 0 : hash.value();
+  const std::uint64_t signature = signature_of_layers.value();
   if (cache.baked && signature == cache.dry_signature) return;
   cache.dry_signature = signature;
   cache.baked = true;

@@ -126,6 +126,7 @@ void CanvasRenderer::set_settings(const render::RenderSettings& settings,
   const bool encoding_changed = settings.display != settings_.display;
   settings_ = settings;
   palette_ = std::move(palette);
+  dry_baked_.clear();  // the reflectance follows the light, pigments and settings
   allocate_textures();
   if (encoding_changed) build_program();
   flakes_ = std::make_unique<FlakeTextures>(width_, height_, settings_, palette_);
@@ -207,13 +208,25 @@ void CanvasRenderer::upload_tile(const paintcore::Canvas& canvas, int tile_index
       for (int cell = 0; cell < kTileCells; ++cell) layer[4 * cell + slot % 4] = amounts[cell];
     }
   }
-  bake_dry_reflectance(canvas, tile_index, settings_, palette_, scratch.dry_node_major,
-                       hidden_dry_layers_);
-  scratch.dry_interleaved.assign(static_cast<size_t>(node_layers_) * 4 * kTileCells, 0.0f);
-  for (int node = 0; node < palette_.nodes(); ++node) {
-    const float* values = scratch.dry_node_major.data() + static_cast<size_t>(node) * kTileCells;
-    float* layer = scratch.dry_interleaved.data() + static_cast<size_t>(node / 4) * 4 * kTileCells;
-    for (int cell = 0; cell < kTileCells; ++cell) layer[4 * cell + node % 4] = values[cell];
+  // A stroke changes only wet paint: the dry stack's reflectance is baked and uploaded again
+  // only when its layers change (or the light, pigments or settings: set_settings).
+  const VisibleDryStack dry = visible_dry_stack(canvas, tile_index, palette_, hidden_dry_layers_);
+  const auto index = static_cast<std::size_t>(tile_index);
+  dry_baked_.resize(static_cast<std::size_t>(canvas.tile_count()), 0);
+  dry_signatures_.resize(static_cast<std::size_t>(canvas.tile_count()), 0);
+  const bool bake = !dry_baked_[index] || dry_signatures_[index] != dry.signature;
+  if (bake) {
+    bake_dry_reflectance(dry, settings_, palette_, scratch.dry_node_major);
+    scratch.dry_interleaved.assign(static_cast<size_t>(node_layers_) * 4 * kTileCells, 0.0f);
+    for (int node = 0; node < palette_.nodes(); ++node) {
+      const float* values = scratch.dry_node_major.data() + static_cast<size_t>(node) * kTileCells;
+      float* layer =
+          scratch.dry_interleaved.data() + static_cast<size_t>(node / 4) * 4 * kTileCells;
+      for (int cell = 0; cell < kTileCells; ++cell) layer[4 * cell + node % 4] = values[cell];
+    }
+    ++dry_tiles_baked_;
+    dry_baked_[index] = 1;
+    dry_signatures_[index] = dry.signature;
   }
 
   surface_.upload(x0, y0, w, h, 0, scratch.surface.data(), kTileSize);
@@ -222,7 +235,7 @@ void CanvasRenderer::upload_tile(const paintcore::Canvas& canvas, int tile_index
                      scratch.pigments.data() + static_cast<size_t>(layer) * 4 * kTileCells,
                      kTileSize);
   }
-  for (int layer = 0; layer < node_layers_; ++layer) {
+  for (int layer = 0; layer < node_layers_ && bake; ++layer) {
     dry_reflectance_.upload(
         x0, y0, w, h, layer,
         scratch.dry_interleaved.data() + static_cast<size_t>(layer) * 4 * kTileCells, kTileSize);

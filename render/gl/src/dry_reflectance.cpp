@@ -11,12 +11,11 @@ namespace impasto::render_gl {
 
 using paintcore::kTileCells;
 
-void bake_dry_reflectance(const paintcore::Canvas& canvas, int tile_index,
-                          const render::RenderSettings& settings,
-                          const render::SpectralPalette& palette, std::vector<float>& out,
-                          const std::vector<bool>& hidden) {
-  // The visible dry layers with paint in this tile, bottom first.
-  std::vector<const paintcore::DryTile*> layers;
+VisibleDryStack visible_dry_stack(const paintcore::Canvas& canvas, int tile_index,
+                                  const render::SpectralPalette& palette,
+                                  const std::vector<bool>& hidden) {
+  VisibleDryStack stack;
+  render::DryStackSignature signature;
   const auto& dry_layers = canvas.dry_layers();
   for (std::size_t l = 0; l < dry_layers.size(); ++l) {
     if (l < hidden.size() && hidden[l]) continue;
@@ -30,8 +29,16 @@ void bake_dry_reflectance(const paintcore::Canvas& canvas, int tile_index,
                                  " pigments");
       }
     }
-    layers.push_back(tile);
+    stack.layers.push_back(tile);
+    signature.add(l, *tile);
   }
+  stack.signature = signature.value();
+  return stack;
+}
+
+void bake_dry_reflectance(const VisibleDryStack& stack, const render::RenderSettings& settings,
+                          const render::SpectralPalette& palette, std::vector<float>& out) {
+  const std::vector<const paintcore::DryTile*>& layers = stack.layers;
   const int nodes = palette.nodes();
   out.resize(static_cast<size_t>(nodes) * kTileCells);
   std::vector<float> reflectance(static_cast<size_t>(nodes));

@@ -3,10 +3,13 @@
 // composited over it, bottom first, at every wavelength node. It changes only when paint
 // dries or the light changes, so renderers compute it once per such change ("bake") — the
 // CPU's TileRenderer and the GPU path's texture upload share this one definition.
+#include <cstddef>
+#include <cstdint>
 #include <span>
 
 #include "impasto/paintcore/canvas.hpp"
 #include "impasto/render/spectral_palette.hpp"
+#include "impasto/util/fnv1a.hpp"
 
 namespace impasto::render {
 
@@ -16,5 +19,18 @@ namespace impasto::render {
 void composite_dry_stack(const SpectralPalette& palette,
                          std::span<const paintcore::DryTile* const> layers, int cell,
                          float optical_per_mm, float* reflectance);
+
+// Which dry layers a tile's bake composites and what they hold, as one number (0 for none):
+// renderers keep it per tile and bake again only when it changes (the light, pigments and
+// settings they track themselves). Add the layers bottom first.
+class DryStackSignature {
+ public:
+  void add(std::size_t layer_index, const paintcore::DryTile& layer);
+  std::uint64_t value() const { return any_ ? hash_.value() : 0; }
+
+ private:
+  util::Fnv1a hash_;
+  bool any_ = false;
+};
 
 }  // namespace impasto::render

@@ -1,6 +1,7 @@
 #pragma once
 // The canvas on the GPU: its cell data as textures, updated tile by tile, and the K-M
 // shading pass that draws it through a CanvasView. Needs a current GL 3.3+ context.
+#include <cstdint>
 #include <memory>
 #include <span>
 #include <vector>
@@ -42,7 +43,10 @@ class CanvasRenderer {
   void set_shading(const render::RenderSettings& settings);
   // Dry layer i is not shown where hidden[i] (colour only; heights keep every layer). Call
   // upload_all afterwards.
-  void set_hidden_dry_layers(std::vector<bool> hidden) { hidden_dry_layers_ = std::move(hidden); }
+  void set_hidden_dry_layers(std::vector<bool> hidden) {
+    hidden_dry_layers_ = std::move(hidden);
+    dry_baked_.clear();
+  }
   // Exposure, background, the subsurface map's view: nothing to upload.
   void set_view_options(const GpuViewOptions& options);
   // How many cells spread light sideways now (the ghs surface with its subsurface spread).
@@ -55,6 +59,10 @@ class CanvasRenderer {
   void upload_all(const paintcore::Canvas& canvas);
   // Copies only these tiles (Canvas::take_dirty_tiles()).
   void upload_tiles(const paintcore::Canvas& canvas, std::span<const int> tile_indices);
+
+  // How many tiles' dry stacks have been baked so far (a stroke changes only wet paint and
+  // bakes none).
+  std::uint64_t dry_tiles_baked() const { return dry_tiles_baked_; }
 
   // Draws the shaded canvas into the bound framebuffer's viewport of the given size.
   void draw(const CanvasView& view, int viewport_w, int viewport_h);
@@ -90,6 +98,11 @@ class CanvasRenderer {
   Texture pigments_;         // ceil(slots / 4) layers of 4 slot amounts (mm)
   Texture surface_;          // wet volume, total height (mm)
   Texture dry_reflectance_;  // ceil(nodes / 4) layers of 4 node reflectances
+  // Per tile: whether dry_reflectance_ holds its bake for today's settings, and the
+  // signature of the dry stack baked (render::DryStackSignature).
+  std::vector<std::uint8_t> dry_baked_;
+  std::vector<std::uint64_t> dry_signatures_;
+  std::uint64_t dry_tiles_baked_ = 0;
   int pigment_layers_ = 0, node_layers_ = 0;
   std::unique_ptr<FlakeTextures> flakes_;        // sparkles of flake pigments (nothing without)
   std::unique_ptr<CrackTexture> cracks_;         // crack optics per cell (nothing without cracks)

@@ -3,6 +3,7 @@
 // the canvas ground with render::composite_paint_layer (the CPU's own per-cell code). It
 // changes only when a layer dries or the light changes, so it is computed on the CPU once
 // per such change ("baked") and uploaded, rather than per frame in the shader.
+#include <cstdint>
 #include <vector>
 
 #include "impasto/paintcore/canvas.hpp"
@@ -11,11 +12,19 @@
 
 namespace impasto::render_gl {
 
-// Node-major: out[node * kTileCells + cell] for the tile `tile_index` of `canvas`. Dry
-// layer i is left out where hidden[i] is true (the window's layer visibility).
-void bake_dry_reflectance(const paintcore::Canvas& canvas, int tile_index,
-                          const render::RenderSettings& settings,
-                          const render::SpectralPalette& palette, std::vector<float>& out,
-                          const std::vector<bool>& hidden = {});
+// The dry layers of a tile that show, bottom first: those with paint in the tile, less layer
+// i where hidden[i] is true (the window's layer visibility), and their signature
+// (render::DryStackSignature). Throws std::runtime_error for a slot the palette lacks.
+struct VisibleDryStack {
+  std::vector<const paintcore::DryTile*> layers;
+  std::uint64_t signature = 0;
+};
+VisibleDryStack visible_dry_stack(const paintcore::Canvas& canvas, int tile_index,
+                                  const render::SpectralPalette& palette,
+                                  const std::vector<bool>& hidden = {});
+
+// Node-major: out[node * kTileCells + cell] for a tile whose visible dry stack is `stack`.
+void bake_dry_reflectance(const VisibleDryStack& stack, const render::RenderSettings& settings,
+                          const render::SpectralPalette& palette, std::vector<float>& out);
 
 }  // namespace impasto::render_gl
