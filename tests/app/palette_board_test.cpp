@@ -11,12 +11,13 @@
 
 #include "window/palette_board.hpp"
 #include "window/sim_worker.hpp"
+#include "window_test_pigments.hpp"
 
 namespace impasto::app::window {
 namespace {
 
-const std::string kWhite = "Titanium White";
-const std::string kBlue = "Ultramarine Blue";
+using test::kBlue;
+using test::kWhite;
 
 paintcore::PenSample pen(double t, double x, double y, bool down) {
   paintcore::PenSample s;

@@ -43,7 +43,7 @@ class PigmentEditorTest : public ::testing::Test {
   }
   fs::path user() const { return folder_.user(); }
 
-  test::UserPigmentFolder folder_{"impasto_pigment_editor"};
+  impasto::test::UserPigmentFolder folder_{"impasto_pigment_editor"};
   WindowState state_;
   render::SpectralPalette palette_{state_.settings, std::vector<std::string>{}};
 };

@@ -13,6 +13,7 @@
 
 #include "window/eyedropper.hpp"
 #include "window/shortcuts.hpp"
+#include "window_test_pigments.hpp"
 
 namespace impasto::app::window {
 namespace {
@@ -55,8 +56,8 @@ TEST(Shortcuts, MenuTextComesFromTheTable) {
   EXPECT_EQ(pending, std::vector<Command>{Command::kUndo});
 }
 
-const std::string kWhite = "Titanium White";
-const std::string kBlue = "Ultramarine Blue";
+using test::kBlue;
+using test::kWhite;
 
 paintcore::Painting painted_mix() {
   paintcore::Painting p(paintcore::CanvasSpec{128, 128, 254.0, 0});

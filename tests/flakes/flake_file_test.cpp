@@ -6,13 +6,14 @@
 #include <stdexcept>
 #include <string>
 
+#include "flake_test_geometry.hpp"
 #include "impasto/flakes/flake_file.hpp"
 #include "test_paints.hpp"
 
 namespace impasto::flakes {
 namespace {
 
-constexpr double kDegree = std::numbers::pi / 180.0;
+using test::kDegree;
 
 const std::string kValid =
     "format = impasto-flake-paint 1\n"

@@ -7,14 +7,15 @@
 #include <stdexcept>
 #include <vector>
 
+#include "flake_test_geometry.hpp"
 #include "impasto/flakes/flake_tables.hpp"
 #include "test_paints.hpp"
 
 namespace impasto::flakes {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-const std::vector<double> kNodes{450.0, 550.0, 650.0};
+using test::kNodes;
+using test::kPi;
 
 // ∫₀^{π/2} P(β) sin β dβ through the table look-up.
 double orientation_integral(const FlakeTables& tables) {

@@ -12,14 +12,15 @@ namespace {
 
 const Vec3 kUp{0, 0, 1};
 
-Vec3 direction(double polar, double azimuth) {
+// The unit vector `polar` radians from the zenith (+z), `azimuth` radians round from +x.
+Vec3 direction_rad(double polar, double azimuth) {
   return {std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth),
           std::cos(polar)};
 }
 
 TEST(SparkleMath, UnitIndexLeavesDirectionsAndSizesUnchanged) {
   for (double polar : {0.0, 0.4, 1.2, 1.5}) {
-    const Vec3 V = direction(polar, 0.7);
+    const Vec3 V = direction_rad(polar, 0.7);
     const Vec3 v = refract_into_binder(V, kUp, 1.0);
     EXPECT_NEAR(v.x, V.x, 1e-15);
     EXPECT_NEAR(v.y, V.y, 1e-15);
@@ -33,7 +34,7 @@ TEST(SparkleMath, RefractionObeysSnell) {
   // A tilted surface normal, to exercise the vector form of Eq. 8.
   const Vec3 n = normalized(Vec3{0.2, -0.1, 1.0});
   for (double polar : {0.1, 0.6, 1.3}) {
-    const Vec3 V = normalized(direction(polar, 2.0) + n);
+    const Vec3 V = normalized(direction_rad(polar, 2.0) + n);
     const Vec3 v = refract_into_binder(V, n, eta);
     EXPECT_NEAR(length(v), 1.0, 1e-12);
     const double cos_out = dot(V, n), cos_in = dot(v, n);
@@ -57,7 +58,7 @@ TEST(SparkleMath, AngularSizeShrinksByTheSolidAngleRatio) {
 }
 
 TEST(SparkleMath, TheSpecularFlakeMirrorsLightIntoView) {
-  const Vec3 light = direction(0.5, 0.0), view = direction(0.3, 2.5);
+  const Vec3 light = direction_rad(0.5, 0.0), view = direction_rad(0.3, 2.5);
   const SpecularFlake f = specular_flake(view, light, kUp);
   const Vec3 mirrored = 2.0 * dot(light, f.normal) * f.normal - light;
   EXPECT_NEAR(mirrored.x, view.x, 1e-12);

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "flake_test_geometry.hpp"
 #include "impasto/flakes/fresnel.hpp"
 #include "impasto/flakes/sparkle_math.hpp"
 #include "impasto/flakes/sparkles.hpp"
@@ -16,15 +17,13 @@
 namespace impasto::flakes {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kDegree = kPi / 180.0;
-const std::vector<double> kNodes{450.0, 550.0, 650.0};
-constexpr int kCells = 20000;
+using test::direction;
+using test::kDegree;
+using test::kNodes;
+using test::kPi;
+using test::viewer;
 
-Vec3 direction(double polar_deg, double azimuth_deg) {
-  const double p = polar_deg * kDegree, a = azimuth_deg * kDegree;
-  return {std::sin(p) * std::cos(a), std::sin(p) * std::sin(a), std::cos(p)};
-}
+constexpr int kCells = 20000;
 
 // The sun 40° from the zenith, the viewer 25° from it on the other side.
 Light sun(double diameter_deg = 0.53) {
@@ -34,12 +33,6 @@ Light sun(double diameter_deg = 0.53) {
   light.angular_diameter_rad = diameter_deg * kDegree;
   light.spectral.assign(kNodes.size(), 1.0);
   return light;
-}
-
-View viewer() {
-  View view;
-  view.direction = direction(25, 180);
-  return view;
 }
 
 FlakeCell cell_at(int i, double area_mm2, double thickness_mm = 0.05) {

@@ -9,31 +9,23 @@
 #include <string>
 #include <vector>
 
+#include "flake_test_geometry.hpp"
 #include "impasto/flakes/sparkles.hpp"
 #include "test_paints.hpp"
 
 namespace impasto::flakes {
 namespace {
 
-constexpr double kDegree = std::numbers::pi / 180.0;
-const std::vector<double> kNodes{450.0, 550.0, 650.0};
-
-Vec3 direction(double polar_deg, double azimuth_deg) {
-  const double p = polar_deg * kDegree, a = azimuth_deg * kDegree;
-  return {std::sin(p) * std::cos(a), std::sin(p) * std::sin(a), std::cos(p)};
-}
+using test::direction;
+using test::kDegree;
+using test::kNodes;
+using test::viewer;
 
 Light sun_from(double polar_deg, double azimuth_deg = 0) {
   Light light;
   light.direction = -direction(polar_deg, azimuth_deg);
   light.spectral.assign(kNodes.size(), 1.0);
   return light;
-}
-
-View viewer() {
-  View view;
-  view.direction = direction(25, 180);
-  return view;
 }
 
 // A square tile of flake paint, with a gently rippled surface.

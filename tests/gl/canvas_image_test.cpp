@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "gl_test_slots.hpp"
 #include "image_difference.hpp"
 #include "impasto/paintcore/canvas.hpp"
 #include "impasto/paintcore/painting.hpp"
@@ -25,14 +26,11 @@ using test::max_difference;
 using paintcore::kTileCells;
 using paintcore::kTileSize;
 
-const std::vector<std::string> kSlots = {"Titanium White", "Phthalo Blue (Green Shade)",
-                                         "Pyrrole Red", "Hansa Yellow Opaque", "Carbon Black"};
-
 // A 150x100-cell canvas (3x2 tiles, the right and bottom ones partial): blobs of wet paint
 // with smoothly varying thickness and mix, a dry layer under part of it, one tile untouched.
 paintcore::Canvas make_test_canvas() {
   paintcore::Canvas canvas({150, 100, 300.0, 7});
-  const int slots = static_cast<int>(kSlots.size());
+  const int slots = static_cast<int>(test::kWhitePhthaloRedYellowBlack.size());
   for (int index : {0, 1, 4}) {  // tiles 2, 3 and 5 stay untouched
     paintcore::Tile& tile = canvas.ensure_tile(index, slots);
     const int x0 = (index % canvas.tiles_x()) * kTileSize;
@@ -83,7 +81,7 @@ paintcore::Canvas make_test_canvas() {
   return canvas;
 }
 
-struct Case {
+struct RenderCase {
   std::string name;
   std::string light;
   int wavelengths;
@@ -93,14 +91,14 @@ struct Case {
 };
 
 // Test names show the case's name rather than its bytes.
-void PrintTo(const Case& c, std::ostream* os) {
+void PrintTo(const RenderCase& c, std::ostream* os) {
   *os << c.name;
 }
 
-class CanvasImage : public ::testing::TestWithParam<Case> {};
+class CanvasImage : public ::testing::TestWithParam<RenderCase> {};
 
 TEST_P(CanvasImage, GpuMatchesCpuWithinTwoLevelsOf255) {
-  const Case& c = GetParam();
+  const RenderCase& c = GetParam();
   render::RenderSettings settings;
   settings.light = c.light;
   settings.wavelengths = c.wavelengths;
@@ -109,10 +107,11 @@ TEST_P(CanvasImage, GpuMatchesCpuWithinTwoLevelsOf255) {
   settings.storage = c.storage;
   const paintcore::Canvas canvas = make_test_canvas();
 
-  render::TileRenderer cpu(settings, kSlots);
+  render::TileRenderer cpu(settings, test::kWhitePhthaloRedYellowBlack);
   cpu.render_all(canvas);
   const render::Image expected = cpu.image();
-  const render::Image actual = render_painting_gpu(canvas, kSlots, settings);
+  const render::Image actual =
+      render_painting_gpu(canvas, test::kWhitePhthaloRedYellowBlack, settings);
 
   ASSERT_EQ(actual.width, expected.width);
   ASSERT_EQ(actual.height, expected.height);
@@ -130,16 +129,16 @@ TEST_P(CanvasImage, GpuMatchesCpuWithinTwoLevelsOf255) {
 
 INSTANTIATE_TEST_SUITE_P(
     Lights, CanvasImage,
-    ::testing::Values(Case{"D65_8_srgb", "D65", 8, render::DisplayEncoding::srgb, false,
-                           render::ReflectanceStorage::float32},
-                      Case{"A_4_rec709_saunderson", "A", 4, render::DisplayEncoding::rec709, true,
-                           render::ReflectanceStorage::float32},
-                      Case{"F11_16_p3_half", "F11", 16, render::DisplayEncoding::display_p3, false,
-                           render::ReflectanceStorage::float16},
-                      Case{"blackbody_3_linear", "blackbody:3200", 3,
-                           render::DisplayEncoding::linear_srgb, false,
-                           render::ReflectanceStorage::float32}),
-    [](const ::testing::TestParamInfo<Case>& info) { return info.param.name; });
+    ::testing::Values(RenderCase{"D65_8_srgb", "D65", 8, render::DisplayEncoding::srgb, false,
+                                 render::ReflectanceStorage::float32},
+                      RenderCase{"A_4_rec709_saunderson", "A", 4, render::DisplayEncoding::rec709,
+                                 true, render::ReflectanceStorage::float32},
+                      RenderCase{"F11_16_p3_half", "F11", 16, render::DisplayEncoding::display_p3,
+                                 false, render::ReflectanceStorage::float16},
+                      RenderCase{"blackbody_3_linear", "blackbody:3200", 3,
+                                 render::DisplayEncoding::linear_srgb, false,
+                                 render::ReflectanceStorage::float32}),
+    [](const ::testing::TestParamInfo<RenderCase>& info) { return info.param.name; });
 
 render::Image read_back(const Framebuffer& target) {
   const auto rgba = target.read_rgba_float();
@@ -213,7 +212,7 @@ TEST(CanvasImageErrors, FullSpectrumIsRefusedWithAClearMessage) {
   settings.wavelengths = 0;
   const paintcore::Canvas canvas({8, 8, 100.0, 0});
   try {
-    render_painting_gpu(canvas, kSlots, settings);
+    render_painting_gpu(canvas, test::kWhitePhthaloRedYellowBlack, settings);
     FAIL() << "full-spectrum rendering was accepted on the GPU";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("nodes"), std::string::npos) << e.what();

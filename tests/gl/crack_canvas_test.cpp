@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "gl_test_slots.hpp"
 #include "image_difference.hpp"
 #include "impasto/paintcore/painting.hpp"
 #include "impasto/render/tile_renderer.hpp"
@@ -23,8 +24,6 @@ using test::max_difference;
 
 using paintcore::kTileCells;
 using paintcore::kTileSize;
-
-const std::vector<std::string> kSlots = {"Titanium White", "Pyrrole Red", "Carbon Black"};
 
 void set_crack(paintcore::Canvas& canvas, int x, int y, paintcore::CrackRecord record) {
   const int index = (y / kTileSize) * canvas.tiles_x() + x / kTileSize;
@@ -71,10 +70,10 @@ TEST(CrackCanvas, GpuMatchesCpuWithinTwoLevelsOf255) {
   const paintcore::Canvas canvas = cracked_canvas();
   render::RenderSettings settings;
   settings.saunderson = true;  // the blend comes before the surface correction on both
-  render::TileRenderer cpu(settings, kSlots);
+  render::TileRenderer cpu(settings, test::kWhiteRedBlack);
   cpu.render_all(canvas);
   const render::Image expected = cpu.image();
-  const render::Image actual = render_painting_gpu(canvas, kSlots, settings);
+  const render::Image actual = render_painting_gpu(canvas, test::kWhiteRedBlack, settings);
   ASSERT_EQ(actual.rgb.size(), expected.rgb.size());
   const double worst = max_difference(actual, expected);
   std::cout << "[ cracks ] GPU vs CPU: max " << worst * 255 << "/255\n";
@@ -82,9 +81,9 @@ TEST(CrackCanvas, GpuMatchesCpuWithinTwoLevelsOf255) {
 
   // The cracks show, on both paths: without them the same canvas renders otherwise.
   settings.cracks = false;
-  const render::Image plain = render_painting_gpu(canvas, kSlots, settings);
+  const render::Image plain = render_painting_gpu(canvas, test::kWhiteRedBlack, settings);
   EXPECT_GT(max_difference(plain, actual), 20.0 / 255.0);
-  render::TileRenderer cpu_plain(settings, kSlots);
+  render::TileRenderer cpu_plain(settings, test::kWhiteRedBlack);
   cpu_plain.render_all(canvas);
   EXPECT_LE(max_difference(plain, cpu_plain.image()), 2.0 / 255.0);
 }
@@ -92,7 +91,7 @@ TEST(CrackCanvas, GpuMatchesCpuWithinTwoLevelsOf255) {
 TEST(CrackCanvas, CracksSetOnAPaintingReachTheGpuTileByTile) {
   paintcore::Painting painting({200, 140, 254.0, 3}, 1);
   render::RenderSettings settings;
-  const render::SpectralPalette palette(settings, kSlots);
+  const render::SpectralPalette palette(settings, test::kWhiteRedBlack);
   auto context = create_headless_context();
   const paintcore::Canvas& canvas = painting.canvas();
   CanvasRenderer gpu(canvas.width_cells(), canvas.height_cells(), settings, palette);

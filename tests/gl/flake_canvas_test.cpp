@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "gl_test_slots.hpp"
 #include "impasto/paintcore/canvas.hpp"
 #include "impasto/render/tile_renderer.hpp"
 #include "impasto/render_gl/render_painting_gpu.hpp"
@@ -19,15 +20,12 @@ namespace {
 using paintcore::kTileCells;
 using paintcore::kTileSize;
 
-const std::vector<std::string> kSlots = {"Titanium White", "Aluminium Metallic", "Ultramarine Blue",
-                                         "Mica Blue Pearl"};
-
 // 150x100 cells of 0.1 mm over a woven canvas: aluminium paint of varying thickness in tile
 // 0, pearl over blue in tile 1, a dry aluminium layer (half of it under wet blue) in tile 4,
 // tiles 2, 3 and 5 without flakes.
 paintcore::Canvas flake_canvas() {
   paintcore::Canvas canvas({150, 100, 254.0, 5});
-  const int slots = static_cast<int>(kSlots.size());
+  const int slots = static_cast<int>(test::kWhiteAluminiumUltramarinePearl.size());
   auto paint = [&](int index, int slot, float part, int other) {
     paintcore::Tile& tile = canvas.ensure_tile(index, slots);
     for (int cell = 0; cell < kTileCells; ++cell) {
@@ -57,25 +55,25 @@ paintcore::Canvas flake_canvas() {
   return canvas;
 }
 
-struct Case {
+struct FlakeLightCase {
   std::string name;
   render::LightType light;
   double size_deg;
   bool masking;
 };
 
-void PrintTo(const Case& c, std::ostream* os) {
+void PrintTo(const FlakeLightCase& c, std::ostream* os) {
   *os << c.name;
 }
 
-class FlakeCanvas : public ::testing::TestWithParam<Case> {};
+class FlakeCanvas : public ::testing::TestWithParam<FlakeLightCase> {};
 
 float displayed(float v) {
   return std::clamp(v, 0.0f, 1.0f);
 }
 
 TEST_P(FlakeCanvas, GpuSparklesMatchTheCpu) {
-  const Case& c = GetParam();
+  const FlakeLightCase& c = GetParam();
   render::RenderSettings settings;
   settings.light_type = c.light;
   settings.light_size_deg = c.size_deg;
@@ -84,15 +82,16 @@ TEST_P(FlakeCanvas, GpuSparklesMatchTheCpu) {
   settings.light_elevation_deg = 50.0;
   const paintcore::Canvas canvas = flake_canvas();
 
-  render::TileRenderer cpu(settings, kSlots);
+  render::TileRenderer cpu(settings, test::kWhiteAluminiumUltramarinePearl);
   cpu.render_all(canvas);
   const render::Image expected = cpu.image();
   render::RenderSettings calm_settings = settings;
   calm_settings.flakes = false;
-  render::TileRenderer calm(calm_settings, kSlots);
+  render::TileRenderer calm(calm_settings, test::kWhiteAluminiumUltramarinePearl);
   calm.render_all(canvas);
   const render::Image plain = calm.image();
-  const render::Image actual = render_painting_gpu(canvas, kSlots, settings);
+  const render::Image actual =
+      render_painting_gpu(canvas, test::kWhiteAluminiumUltramarinePearl, settings);
 
   ASSERT_EQ(actual.width, expected.width);
   ASSERT_EQ(actual.height, expected.height);
@@ -130,11 +129,12 @@ TEST_P(FlakeCanvas, GpuSparklesMatchTheCpu) {
 
 INSTANTIATE_TEST_SUITE_P(
     Lights, FlakeCanvas,
-    ::testing::Values(Case{"sun_masking", render::LightType::directional, 0.53, true},
-                      Case{"lamp_without_masking", render::LightType::directional, 3.0, false},
-                      Case{"point", render::LightType::point, 2.0, true},
-                      Case{"spot", render::LightType::spot, 2.0, true}),
-    [](const ::testing::TestParamInfo<Case>& info) { return info.param.name; });
+    ::testing::Values(FlakeLightCase{"sun_masking", render::LightType::directional, 0.53, true},
+                      FlakeLightCase{"lamp_without_masking", render::LightType::directional, 3.0,
+                                     false},
+                      FlakeLightCase{"point", render::LightType::point, 2.0, true},
+                      FlakeLightCase{"spot", render::LightType::spot, 2.0, true}),
+    [](const ::testing::TestParamInfo<FlakeLightCase>& info) { return info.param.name; });
 
 TEST(FlakeCanvasGpu, APaintingWithoutFlakePaintIsUnchanged) {
   // Flake pigments in the palette but not on the canvas: the GPU image equals the one with
@@ -148,8 +148,8 @@ TEST(FlakeCanvasGpu, APaintingWithoutFlakePaintIsUnchanged) {
   render::RenderSettings on;
   render::RenderSettings off = on;
   off.flakes = false;
-  const render::Image a = render_painting_gpu(canvas, kSlots, on);
-  const render::Image b = render_painting_gpu(canvas, kSlots, off);
+  const render::Image a = render_painting_gpu(canvas, test::kWhiteAluminiumUltramarinePearl, on);
+  const render::Image b = render_painting_gpu(canvas, test::kWhiteAluminiumUltramarinePearl, off);
   EXPECT_EQ(a.rgb, b.rgb);
 }
 

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "gl_test_slots.hpp"
 #include "image_difference.hpp"
 #include "impasto/paintcore/canvas.hpp"
 #include "impasto/paintcore/paint_surface.hpp"
@@ -35,7 +36,7 @@ using paintcore::kTileCells;
 using paintcore::kTileSize;
 namespace surface = render::surface;
 
-constexpr int kSide = 32;  // a 32x32 grid of kernel cases, one per pixel
+constexpr int kGhsGridSide = 32;  // a 32x32 grid of kernel cases, one per pixel
 
 // Row y: a surface and an incidence; column x: the distance from the mirror and the view.
 // The roughnesses span gloss to matte, with two between whose phase variance g crosses 25
@@ -50,7 +51,7 @@ surface::Roughness roughness_of(int y) {
   return kSurfaces[y % 6];
 }
 float cos_i_of(int y) {
-  return 0.15f + 0.85f * static_cast<float>(y) / (kSide - 1);
+  return 0.15f + 0.85f * static_cast<float>(y) / (kGhsGridSide - 1);
 }
 float cos_o_of(int x) {
   return 1.0f - 0.2f * static_cast<float>(x % 4);
@@ -99,9 +100,10 @@ void main() {
                            rho[p.x]), 0.0, 0.0, 1.0);
 })glsl";
   FullscreenPass pass("ghs_kernel_test.frag", source);
-  Framebuffer target(kSide, kSide, TexelFormat::kRGBA32F);
-  std::vector<float> roughness(2 * kSide), cos_i(kSide), cos_o(kSide), rho(kSide);
-  for (int i = 0; i < kSide; ++i) {
+  Framebuffer target(kGhsGridSide, kGhsGridSide, TexelFormat::kRGBA32F);
+  std::vector<float> roughness(2 * kGhsGridSide), cos_i(kGhsGridSide), cos_o(kGhsGridSide),
+      rho(kGhsGridSide);
+  for (int i = 0; i < kGhsGridSide; ++i) {
     roughness[2 * i] = static_cast<float>(roughness_of(i).rms_um);
     roughness[2 * i + 1] = static_cast<float>(roughness_of(i).correlation_um);
     cos_i[i] = cos_i_of(i);
@@ -112,23 +114,23 @@ void main() {
   for (float wavelength : {420.0f, 680.0f}) {
     target.bind();
     pass.program().use();
-    glUniform2fv(pass.program().uniform("roughness"), kSide, roughness.data());
-    glUniform1fv(pass.program().uniform("cos_i"), kSide, cos_i.data());
-    glUniform1fv(pass.program().uniform("cos_o"), kSide, cos_o.data());
-    glUniform1fv(pass.program().uniform("rho"), kSide, rho.data());
+    glUniform2fv(pass.program().uniform("roughness"), kGhsGridSide, roughness.data());
+    glUniform1fv(pass.program().uniform("cos_i"), kGhsGridSide, cos_i.data());
+    glUniform1fv(pass.program().uniform("cos_o"), kGhsGridSide, cos_o.data());
+    glUniform1fv(pass.program().uniform("rho"), kGhsGridSide, rho.data());
     glUniform1f(pass.program().uniform("wavelength_nm"), wavelength);
     pass.draw();
     const std::vector<float> pixels = target.read_rgba_float();
     double worst = 0.0;
-    for (int y = 0; y < kSide; ++y) {
-      for (int x = 0; x < kSide; ++x) {
+    for (int y = 0; y < kGhsGridSide; ++y) {
+      for (int x = 0; x < kGhsGridSide; ++x) {
         surface::GhsParams p;
         p.roughness = {roughness[2 * y], roughness[2 * y + 1]};  // the floats the GPU got
         p.wavelength_nm = wavelength;
         p.source_sigma = 0.013f;
         p.subcell_slope_rms = 0.05f;
         const double cpu = surface::ghs_kernel(p, cos_i[y], cos_o[x], rho[x]);
-        const double gpu = pixels[static_cast<std::size_t>(4 * (y * kSide + x))];
+        const double gpu = pixels[static_cast<std::size_t>(4 * (y * kGhsGridSide + x))];
         const double g = std::pow(2.0 * std::numbers::pi * p.roughness.rms_um /
                                       (wavelength * 1e-3) * (cos_i[y] + cos_o[x]),
                                   2.0);
@@ -148,15 +150,12 @@ void main() {
   EXPECT_GT(above_switch, 100);
 }
 
-const std::vector<std::string> kSlots = {"Titanium White", "Phthalo Blue (Green Shade)",
-                                         "Pyrrole Red", "Carbon Black"};
-
 // 150x100 cells: a dry layer with brush ridges (slopes that turn highlights toward the
 // viewer) under a blob of wet paint thinning to nothing at its edge (wetness from full to
 // none), carbon black on the left where the surface light shows most, one tile untouched.
 paintcore::Canvas make_ridged_canvas() {
   paintcore::Canvas canvas({150, 100, 300.0, 7});
-  const int slots = static_cast<int>(kSlots.size());
+  const int slots = static_cast<int>(test::kWhitePhthaloRedBlack.size());
   paintcore::DryLayer layer;
   for (int index : {0, 1, 4}) {
     paintcore::Tile& tile = canvas.ensure_tile(index, slots);
@@ -188,25 +187,25 @@ paintcore::Canvas make_ridged_canvas() {
   return canvas;
 }
 
-struct Case {
+struct FinishCase {
   std::string name;
   surface::Finish medium;
   std::optional<surface::Finish> varnish;
   double elevation_deg;
 };
 
-void PrintTo(const Case& c, std::ostream* os) {
+void PrintTo(const FinishCase& c, std::ostream* os) {
   *os << c.name;
 }
 
-class GhsCanvas : public ::testing::TestWithParam<Case> {};
+class GhsCanvas : public ::testing::TestWithParam<FinishCase> {};
 
 // Half a level of 255 in the display encoding, a quarter of the other image tests' two levels
 // (canvas_image_test.cpp): the GPU evaluates in float what the CPU does partly in double (the
 // kernel and the tables' interpolation), ~1e-4 relative at worst (GhsGlsl above); measured
 // 0.02/255 on llvmpipe. A highlight of 1.0 off by 1e-4 is 0.03/255 there.
 TEST_P(GhsCanvas, GpuMatchesCpuWithinHalfALevelOf255) {
-  const Case& c = GetParam();
+  const FinishCase& c = GetParam();
   render::RenderSettings settings;
   settings.surface.model = render::SurfaceModel::ghs;
   settings.surface.medium = c.medium;
@@ -216,10 +215,10 @@ TEST_P(GhsCanvas, GpuMatchesCpuWithinHalfALevelOf255) {
   settings.light_azimuth_deg = 200.0;
   const paintcore::Canvas canvas = make_ridged_canvas();
 
-  render::TileRenderer cpu(settings, kSlots);
+  render::TileRenderer cpu(settings, test::kWhitePhthaloRedBlack);
   cpu.render_all(canvas);
   const render::Image expected = cpu.image();
-  const render::Image actual = render_painting_gpu(canvas, kSlots, settings);
+  const render::Image actual = render_painting_gpu(canvas, test::kWhitePhthaloRedBlack, settings);
   ASSERT_EQ(actual.width, expected.width);
   ASSERT_EQ(actual.height, expected.height);
   const auto [worst, mean, worst_x, worst_y] = test::compare_images(actual, expected);
@@ -231,7 +230,7 @@ TEST_P(GhsCanvas, GpuMatchesCpuWithinHalfALevelOf255) {
   // Not vacuous: the same canvas under Blinn-Phong differs (the ghs terms were drawn).
   render::RenderSettings blinn = settings;
   blinn.surface.model = render::SurfaceModel::blinn;
-  const render::Image blinn_image = render_painting_gpu(canvas, kSlots, blinn);
+  const render::Image blinn_image = render_painting_gpu(canvas, test::kWhitePhthaloRedBlack, blinn);
   double changed = 0.0;
   for (std::size_t i = 0; i < blinn_image.rgb.size(); ++i)
     changed = std::max(changed, std::abs(double(blinn_image.rgb[i]) - actual.rgb[i]));
@@ -240,13 +239,13 @@ TEST_P(GhsCanvas, GpuMatchesCpuWithinHalfALevelOf255) {
 
 INSTANTIATE_TEST_SUITE_P(
     Finishes, GhsCanvas,
-    ::testing::Values(Case{"gloss", surface::Finish::gloss, std::nullopt, 50.0},
-                      Case{"satin", surface::Finish::satin, std::nullopt, 50.0},
-                      Case{"matte", surface::Finish::matte, std::nullopt, 50.0},
-                      Case{"matte_raking", surface::Finish::matte, std::nullopt, 15.0},
-                      Case{"matte_varnished_gloss", surface::Finish::matte, surface::Finish::gloss,
-                           30.0}),
-    [](const ::testing::TestParamInfo<Case>& info) { return info.param.name; });
+    ::testing::Values(FinishCase{"gloss", surface::Finish::gloss, std::nullopt, 50.0},
+                      FinishCase{"satin", surface::Finish::satin, std::nullopt, 50.0},
+                      FinishCase{"matte", surface::Finish::matte, std::nullopt, 50.0},
+                      FinishCase{"matte_raking", surface::Finish::matte, std::nullopt, 15.0},
+                      FinishCase{"matte_varnished_gloss", surface::Finish::matte,
+                                 surface::Finish::gloss, 30.0}),
+    [](const ::testing::TestParamInfo<FinishCase>& info) { return info.param.name; });
 
 // The window's path: a surface chosen after the renderer was made (set_settings) and the
 // light dragged after that (set_shading) follow the CPU as a new renderer would.
@@ -256,7 +255,7 @@ TEST(GhsCanvasSettings, SetSettingsAndTheLightSwitchTheModelBothWays) {
   render::RenderSettings settings;
   settings.surface.subsurface = false;
   CanvasRenderer gpu(canvas.width_cells(), canvas.height_cells(), settings,
-                     render::SpectralPalette(settings, kSlots));
+                     render::SpectralPalette(settings, test::kWhitePhthaloRedBlack));
   Framebuffer target(canvas.width_cells(), canvas.height_cells(), TexelFormat::kRGBA32F);
   const auto draw_against_cpu = [&](const render::RenderSettings& s, const char* step) {
     gpu.upload_all(canvas);
@@ -264,7 +263,7 @@ TEST(GhsCanvasSettings, SetSettingsAndTheLightSwitchTheModelBothWays) {
     gpu.draw(one_pixel_per_cell(canvas.width_cells(), canvas.height_cells()), canvas.width_cells(),
              canvas.height_cells());
     const std::vector<float> rgba = target.read_rgba_float();
-    render::TileRenderer cpu(s, kSlots);
+    render::TileRenderer cpu(s, test::kWhitePhthaloRedBlack);
     cpu.render_all(canvas);
     const render::Image expected = cpu.image();
     double worst = 0.0;
@@ -280,13 +279,13 @@ TEST(GhsCanvasSettings, SetSettingsAndTheLightSwitchTheModelBothWays) {
   };
   settings.surface.model = render::SurfaceModel::ghs;
   settings.surface.medium = surface::Finish::matte;
-  gpu.set_settings(settings, render::SpectralPalette(settings, kSlots));
+  gpu.set_settings(settings, render::SpectralPalette(settings, test::kWhitePhthaloRedBlack));
   draw_against_cpu(settings, "ghs matte");
   settings.light_elevation_deg = 20.0;
   gpu.set_shading(settings);
   draw_against_cpu(settings, "light lowered");
   settings.surface.model = render::SurfaceModel::blinn;
-  gpu.set_settings(settings, render::SpectralPalette(settings, kSlots));
+  gpu.set_settings(settings, render::SpectralPalette(settings, test::kWhitePhthaloRedBlack));
   draw_against_cpu(settings, "back to blinn");
 }
 
@@ -296,7 +295,8 @@ TEST(GhsCanvasSettings, SetSettingsAndTheLightSwitchTheModelBothWays) {
 TEST(GhsCanvasCells, MediaAndVarnishOfEachCellMatchTheCpu) {
   paintcore::Canvas canvas = make_ridged_canvas();
   for (int index : {0, 1, 4}) {
-    paintcore::Tile& tile = canvas.ensure_tile(index, static_cast<int>(kSlots.size()));
+    paintcore::Tile& tile =
+        canvas.ensure_tile(index, static_cast<int>(test::kWhitePhthaloRedBlack.size()));
     tile.medium.assign(static_cast<std::size_t>(paintcore::kMediumPlanes) * kTileCells, 0.0f);
     tile.varnish.assign(static_cast<std::size_t>(paintcore::kVarnishPlanes) * kTileCells, 0.0f);
     for (int cell = 0; cell < kTileCells; ++cell) {
@@ -324,10 +324,10 @@ TEST(GhsCanvasCells, MediaAndVarnishOfEachCellMatchTheCpu) {
   settings.surface.subsurface = false;
   settings.light_elevation_deg = 25.0;
   settings.light_azimuth_deg = 200.0;
-  render::TileRenderer cpu(settings, kSlots);
+  render::TileRenderer cpu(settings, test::kWhitePhthaloRedBlack);
   cpu.render_all(canvas);
   const render::Image expected = cpu.image();
-  const render::Image actual = render_painting_gpu(canvas, kSlots, settings);
+  const render::Image actual = render_painting_gpu(canvas, test::kWhitePhthaloRedBlack, settings);
   double worst = 0.0;
   for (std::size_t i = 0; i < expected.rgb.size(); ++i)
     worst = std::max(worst, std::abs(double(actual.rgb[i]) - expected.rgb[i]));
@@ -335,7 +335,7 @@ TEST(GhsCanvasCells, MediaAndVarnishOfEachCellMatchTheCpu) {
   EXPECT_LE(worst, 0.5 / 255.0);
   // Not vacuous: without the cells' surfaces the CPU renders otherwise.
   paintcore::Canvas plain = make_ridged_canvas();
-  render::TileRenderer cpu_plain(settings, kSlots);
+  render::TileRenderer cpu_plain(settings, test::kWhitePhthaloRedBlack);
   cpu_plain.render_all(plain);
   const render::Image plain_image = cpu_plain.image();
   double changed = 0.0;
@@ -353,11 +353,11 @@ TEST(GhsCanvasZoom, ZoomedInPixelsBlendTheFourNearestCellsShading) {
   settings.surface.model = render::SurfaceModel::ghs;
   settings.surface.subsurface = false;
   settings.display = render::DisplayEncoding::linear_srgb;  // blending is linear on both sides
-  render::TileRenderer cpu(settings, kSlots);
+  render::TileRenderer cpu(settings, test::kWhitePhthaloRedBlack);
   cpu.render_all(canvas);
   const render::Image cells = cpu.image();
   CanvasRenderer gpu(canvas.width_cells(), canvas.height_cells(), settings,
-                     render::SpectralPalette(settings, kSlots));
+                     render::SpectralPalette(settings, test::kWhitePhthaloRedBlack));
   gpu.upload_all(canvas);
   constexpr int kPixelsPerCell = 4, kSide = 64;  // around the canvas centre
   Framebuffer target(kSide, kSide, TexelFormat::kRGBA32F);

@@ -21,7 +21,7 @@ namespace {
 namespace km = render::km;
 namespace shade = render::shade;
 
-constexpr int kSide = 32;  // a 32x32 grid of test cases, one per pixel
+constexpr int kKmGridSide = 32;  // a 32x32 grid of test cases, one per pixel
 
 // Inputs of case (x, y): spans of many decades, with exact zeros in the first row/column.
 float absorption_of(int x) {
@@ -37,35 +37,36 @@ float below_of(int x, int y) {
   return float((x * 3 + y * 5) % 17) / 16.0f;
 }
 
-// Runs `body` (a fragment shader main writing `result`) over the kSide x kSide grid. The
-// case inputs travel as uniforms (K per column, S per row) and an RG32F texture (thickness,
+// Runs `body` (a fragment shader main writing `result`) over the kKmGridSide x kKmGridSide grid.
+// The case inputs travel as uniforms (K per column, S per row) and an RG32F texture (thickness,
 // reflectance below), so both sides compute from bit-identical inputs.
 std::vector<float> run_pass(const std::string& body) {
   const std::string source = std::string("#version 330 core\n") + km_glsl() + shading_glsl() +
                              "uniform float absorption[32];\nuniform float scattering[32];\n"
                              "uniform sampler2D thickness_below;\nout vec4 result;\n" +
                              body;
-  Framebuffer target(kSide, kSide, TexelFormat::kRGBA32F);
+  Framebuffer target(kKmGridSide, kKmGridSide, TexelFormat::kRGBA32F);
   FullscreenPass pass("test.frag", source);
-  std::vector<float> absorption(kSide), scattering(kSide), thickness_below(2 * kSide * kSide);
-  for (int i = 0; i < kSide; ++i) {
+  std::vector<float> absorption(kKmGridSide), scattering(kKmGridSide),
+      thickness_below(2 * kKmGridSide * kKmGridSide);
+  for (int i = 0; i < kKmGridSide; ++i) {
     absorption[i] = absorption_of(i);
     scattering[i] = scattering_of(i);
   }
-  for (int y = 0; y < kSide; ++y) {
-    for (int x = 0; x < kSide; ++x) {
-      thickness_below[2 * (y * kSide + x)] = thickness_of(x, y);
-      thickness_below[2 * (y * kSide + x) + 1] = below_of(x, y);
+  for (int y = 0; y < kKmGridSide; ++y) {
+    for (int x = 0; x < kKmGridSide; ++x) {
+      thickness_below[2 * (y * kKmGridSide + x)] = thickness_of(x, y);
+      thickness_below[2 * (y * kKmGridSide + x) + 1] = below_of(x, y);
     }
   }
-  Texture inputs(kSide, kSide, 0, TexelFormat::kRG32F);
-  inputs.upload(0, 0, kSide, kSide, 0, thickness_below.data(), kSide);
+  Texture inputs(kKmGridSide, kKmGridSide, 0, TexelFormat::kRG32F);
+  inputs.upload(0, 0, kKmGridSide, kKmGridSide, 0, thickness_below.data(), kKmGridSide);
   target.bind();
   pass.program().use();
   inputs.bind(0);
   glUniform1i(pass.program().uniform("thickness_below"), 0);
-  glUniform1fv(pass.program().uniform("absorption"), kSide, absorption.data());
-  glUniform1fv(pass.program().uniform("scattering"), kSide, scattering.data());
+  glUniform1fv(pass.program().uniform("absorption"), kKmGridSide, absorption.data());
+  glUniform1fv(pass.program().uniform("scattering"), kKmGridSide, scattering.data());
   pass.draw();
   return target.read_rgba_float();
 }
@@ -85,9 +86,9 @@ void main() {
   result = vec4(rt, km_composite(rt, d_below.y), absorption[p.x]);
 })glsl");
   double worst = 0.0;
-  for (int y = 0; y < kSide; ++y) {
-    for (int x = 0; x < kSide; ++x) {
-      const float* p = &pixels[(y * kSide + x) * 4];
+  for (int y = 0; y < kKmGridSide; ++y) {
+    for (int x = 0; x < kKmGridSide; ++x) {
+      const float* p = &pixels[(y * kKmGridSide + x) * 4];
       const float K = absorption_of(x);
       ASSERT_EQ(p[3], K);  // the inputs arrived unchanged
       const km::LayerRT cpu = km::layer(K, scattering_of(y), thickness_of(x, y));
@@ -144,9 +145,9 @@ void main() {
   result = vec4(shade_blinn_phong(n, l, 0.25, m), l.x, l.z);
 })glsl");
   double worst = 0.0;
-  for (int y = 0; y < kSide; ++y) {
-    for (int x = 0; x < kSide; ++x) {
-      const float* p = &pixels[(y * kSide + x) * 4];
+  for (int y = 0; y < kKmGridSide; ++y) {
+    for (int x = 0; x < kKmGridSide; ++x) {
+      const float* p = &pixels[(y * kKmGridSide + x) * 4];
       const shade::Vec3 n = shade::height_normal(0.01f * float(x % 7), 0.013f * float(y % 5),
                                                  0.02f * float((x + y) % 3), 0.0f, 0.085f);
       const shade::Vec3 l = shade::light_direction(0.2f * float(x), 0.05f + 0.045f * float(y));

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "gl_test_slots.hpp"
 #include "image_difference.hpp"
 #include "impasto/paintcore/canvas.hpp"
 #include "impasto/render/tile_renderer.hpp"
@@ -27,13 +28,12 @@ using test::max_difference;
 
 using paintcore::kTileSize;
 
-const std::vector<std::string> kSlots = {"Titanium White", "Ultramarine Blue", "Burnt Sienna"};
-
 // Ridges up to `height` mm, diagonal and round, over tiles 0, 1, 3 and 4 of a 3x2-tile
 // canvas at 150 dpi (0.17 mm cells), the right and bottom tiles partial.
 void paint_ridges(paintcore::Canvas& canvas, float height, std::initializer_list<int> tiles) {
   for (int index : tiles) {
-    paintcore::Tile& tile = canvas.ensure_tile(index, static_cast<int>(kSlots.size()));
+    paintcore::Tile& tile =
+        canvas.ensure_tile(index, static_cast<int>(test::kWhiteUltramarineSienna.size()));
     const int x0 = (index % canvas.tiles_x()) * kTileSize;
     const int y0 = (index / canvas.tiles_x()) * kTileSize;
     for (int y = 0; y < kTileSize; ++y) {
@@ -73,10 +73,10 @@ TEST_P(ReliefCanvas, GpuShadowsAndOcclusionMatchTheCpu) {
   settings.light_elevation_deg = light.elevation;
   const paintcore::Canvas canvas = thick_canvas();
 
-  render::TileRenderer cpu(settings, kSlots);
+  render::TileRenderer cpu(settings, test::kWhiteUltramarineSienna);
   cpu.render_all(canvas);
   const render::Image expected = cpu.image();
-  const render::Image actual = render_painting_gpu(canvas, kSlots, settings);
+  const render::Image actual = render_painting_gpu(canvas, test::kWhiteUltramarineSienna, settings);
   ASSERT_EQ(actual.rgb.size(), expected.rgb.size());
   const double worst = max_difference(actual, expected);
   double sum = 0.0;
@@ -91,7 +91,7 @@ TEST_P(ReliefCanvas, GpuShadowsAndOcclusionMatchTheCpu) {
   // The relief does show: without shadows and occlusion some cells are clearly lighter.
   render::RenderSettings bare = settings;
   bare.shadows = bare.occlusion = false;
-  render::TileRenderer unshadowed(bare, kSlots);
+  render::TileRenderer unshadowed(bare, test::kWhiteUltramarineSienna);
   unshadowed.render_all(canvas);
   EXPECT_GT(max_difference(unshadowed.image(), expected), 0.05);
 }
@@ -111,7 +111,7 @@ TEST(ReliefCachedView, ShadowsCastIntoUnchangedTilesAreReshaded) {
   paintcore::Canvas canvas({170, 110, 150.0, 5});
   paint_ridges(canvas, 0.5f, {0, 1, 3, 4});
   CanvasRenderer renderer(canvas.width_cells(), canvas.height_cells(), settings,
-                          render::SpectralPalette(settings, kSlots));
+                          render::SpectralPalette(settings, test::kWhiteUltramarineSienna));
   renderer.upload_all(canvas);
   const int w = 170, h = 110;
   const CanvasView view = one_pixel_per_cell(w, h);

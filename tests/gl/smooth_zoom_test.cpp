@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "gl_test_slots.hpp"
 #include "impasto/paintcore/canvas.hpp"
 #include "impasto/render/tile_renderer.hpp"
 #include "impasto/render_gl/canvas_renderer.hpp"
@@ -20,8 +21,6 @@ namespace impasto::render_gl {
 namespace {
 
 using paintcore::kTileSize;
-
-const std::vector<std::string> kSlots = {"Titanium White", "Pyrrole Red", "Ultramarine Blue"};
 
 // 96 x 64 cells at 150 dpi: a dome of paint whose mix changes every few cells.
 paintcore::Canvas dome_canvas() {
@@ -77,7 +76,8 @@ TEST(SmoothZoom, ZoomedInPixelsBlendNeighbourCellsGently) {
   const int W = canvas.width_cells(), H = canvas.height_cells(), P = 5;
   GpuViewOptions smooth, blocks;
   blocks.smooth_zoom = false;
-  CanvasRenderer renderer(W, H, settings, render::SpectralPalette(settings, kSlots), smooth);
+  CanvasRenderer renderer(W, H, settings,
+                          render::SpectralPalette(settings, test::kWhiteRedUltramarine), smooth);
   renderer.upload_all(canvas);
   const std::vector<float> one = draw(renderer, 1.0, W, H);
   const std::vector<float> zoomed = draw(renderer, P, W * P, H * P);
@@ -120,10 +120,11 @@ TEST(SmoothZoom, ZoomedOutPixelsAreTheCpuImageBoxFiltered) {
   const paintcore::Canvas canvas = dome_canvas();
   const render::RenderSettings settings = linear_settings();
   const int W = canvas.width_cells(), H = canvas.height_cells();
-  render::TileRenderer cpu(settings, kSlots);
+  render::TileRenderer cpu(settings, test::kWhiteRedUltramarine);
   cpu.render_all(canvas);
   const render::Image reference = cpu.image();
-  CanvasRenderer renderer(W, H, settings, render::SpectralPalette(settings, kSlots));
+  CanvasRenderer renderer(W, H, settings,
+                          render::SpectralPalette(settings, test::kWhiteRedUltramarine));
   renderer.upload_all(canvas);
   const std::vector<float> half = draw(renderer, 0.5, W / 2, H / 2);
   double worst = 0.0, worst_nearest = 0.0;

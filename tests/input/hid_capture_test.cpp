@@ -9,17 +9,15 @@
 #include <fstream>
 #include <sstream>
 
+#include "hid_test_files.hpp"
+
 namespace impasto::input::hid {
 namespace {
 
-const std::string kFiles = IMPASTO_TEST_FILES_DIR "/hid/";
-const std::string kH610 = kFiles + "captures/Huion_H610/";
-const std::string kM708 = kFiles + "captures/Ugee_M708_v2/";
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using test::kFiles;
+using test::kH610;
+using test::kM708;
+using test::read_text;
 
 // The number of "STREAM" headers, counted independently of the reader.
 int stream_headers(const std::string& path) {

@@ -10,22 +10,16 @@
 #include <fstream>
 #include <map>
 
+#include "hid_test_files.hpp"
+
 namespace impasto::input::hid {
 namespace {
 
+using test::kFiles;
+using test::models;
+using test::read_text;
+
 using Bytes = std::vector<std::uint8_t>;
-const std::string kFiles = IMPASTO_TEST_FILES_DIR "/hid/";
-
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-const std::vector<TabletModel>& models() {
-  static const std::vector<TabletModel> table =
-      load_tablet_models(IMPASTO_SOURCE_DIR "/data/tablets/models.tsv");
-  return table;
-}
 
 struct FakeDevice {
   HidDeviceInfo info;

@@ -11,11 +11,14 @@
 #include <set>
 #include <sstream>
 
+#include "hid_test_files.hpp"
+
 namespace impasto::input::hid {
 namespace {
 
+using test::kM708;
+
 const std::string kTable = IMPASTO_SOURCE_DIR "/data/tablets/models.tsv";
-const std::string kM708 = IMPASTO_TEST_FILES_DIR "/hid/captures/Ugee_M708_v2/";
 
 InitExchange with_string(std::uint8_t index, const std::string& text) {
   std::vector<std::uint8_t> bytes{static_cast<std::uint8_t>(2 + 2 * text.size()), 3};

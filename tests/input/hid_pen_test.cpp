@@ -5,16 +5,18 @@
 
 #include <gtest/gtest.h>
 
+#include "hid_test_files.hpp"
+
 namespace impasto::input::hid {
 namespace {
+
+using test::kFiles;
 
 using Bytes = std::vector<std::uint8_t>;
 using paintcore::PenSample;
 
-const std::string kHid = IMPASTO_TEST_FILES_DIR "/hid/";
-
 PenDecoder decoder_for(const std::string& stem) {
-  const std::string path = kHid + stem + ".rdesc.bin";
+  const std::string path = kFiles + stem + ".rdesc.bin";
   return PenDecoder(parse_report_descriptor(load_descriptor_bytes(path), path));
 }
 

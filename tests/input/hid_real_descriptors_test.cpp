@@ -8,13 +8,15 @@
 
 #include <map>
 
+#include "hid_test_files.hpp"
+
 namespace impasto::input::hid {
 namespace {
 
-const std::string kHid = IMPASTO_TEST_FILES_DIR "/hid/";
+using test::kFiles;
 
 ReportDescriptor load(const std::string& stem) {
-  const std::string path = kHid + stem + ".rdesc.bin";
+  const std::string path = kFiles + stem + ".rdesc.bin";
   return parse_report_descriptor(load_descriptor_bytes(path), path);
 }
 
@@ -41,8 +43,8 @@ TEST(RealDescriptors, HexAndBinaryFilesAgree) {
        {"huion_inspiroy_h1060p__256C_006D__0010", "xp_pen_deco_pro_m__28BD_0904__000E",
         "wacom_one_pen_tablet_small__056A_03CB__000A",
         "wacom_intuos_pro_m_3rd_gen__056A_03F7__0008", "wacom_intuos_s_3rd_gen__056A_0374__000A"}) {
-    EXPECT_EQ(load_descriptor_bytes(kHid + stem + ".rdesc.hex"),
-              load_descriptor_bytes(kHid + stem + ".rdesc.bin"))
+    EXPECT_EQ(load_descriptor_bytes(kFiles + stem + ".rdesc.hex"),
+              load_descriptor_bytes(kFiles + stem + ".rdesc.bin"))
         << stem;
   }
 }

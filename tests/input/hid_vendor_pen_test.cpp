@@ -12,27 +12,21 @@
 #include <filesystem>
 #include <fstream>
 
+#include "hid_test_files.hpp"
+
 namespace impasto::input::hid {
 namespace {
 
-using Bytes = std::vector<std::uint8_t>;
-const std::string kFiles = IMPASTO_TEST_FILES_DIR "/hid/";
-const std::string kH610 = kFiles + "captures/Huion_H610/";
-const std::string kM708 = kFiles + "captures/Ugee_M708_v2/";
+using test::kFiles;
+using test::kH610;
+using test::kM708;
+using test::models;
+using test::read_text;
 
-std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
+using Bytes = std::vector<std::uint8_t>;
 
 InitExchange probe(const std::string& path) {
   return parse_string_probe(read_text(path), path);
-}
-
-const std::vector<TabletModel>& models() {
-  static const std::vector<TabletModel> table =
-      load_tablet_models(IMPASTO_SOURCE_DIR "/data/tablets/models.tsv");
-  return table;
 }
 
 unsigned le16(const Bytes& b, std::size_t at) {

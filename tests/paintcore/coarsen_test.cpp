@@ -8,20 +8,8 @@
 namespace impasto::paintcore {
 namespace {
 
-// Two strokes, one of them dried: wet and dry paint of two pigments, reaching past a tile.
-Painting painted() {
-  Painting p(CanvasSpec{150, 70, 254.0, 3}, 1);
-  p.set_brush(test::round_brush(3.0));
-  p.load_brush({{"red", 1.0}}, 30.0);
-  test::stroke_line(p, 1.0, 1.0, 14.0, 6.0, 0.8f);
-  p.dry(1.0);
-  p.load_brush({{"blue", 1.0}}, 30.0);
-  test::stroke_line(p, 14.0, 1.0, 1.0, 6.0, 0.9f);
-  return p;
-}
-
 TEST(Coarsened, KeepsThePaintAndTheSizeInMillimetres) {
-  const Painting p = painted();
+  const Painting p = test::crossed_strokes(150, 1.0);
   for (int factor : {1, 2, 3, 8}) {
     const Painting c = p.coarsened(factor);
     // 150 and 70 cells: the last block of each row and column is partial when 3 or 8.
@@ -43,7 +31,7 @@ TEST(Coarsened, KeepsThePaintAndTheSizeInMillimetres) {
 }
 
 TEST(Coarsened, ACellIsTheMeanOfItsBlock) {
-  const Painting p = painted();
+  const Painting p = test::crossed_strokes(150, 1.0);
   const Painting c = p.coarsened(4);
   for (int cy = 0; cy < c.canvas().height_cells(); ++cy)
     for (int cx = 0; cx < c.canvas().width_cells(); ++cx) {
@@ -63,7 +51,7 @@ TEST(Coarsened, ACellIsTheMeanOfItsBlock) {
 }
 
 TEST(Coarsened, RefusesAFactorThatLeavesLessThanOneDpi) {
-  const Painting p = painted();
+  const Painting p = test::crossed_strokes(150, 1.0);
   EXPECT_NO_THROW(p.coarsened(254));
   EXPECT_THROW(p.coarsened(255), std::runtime_error);
   EXPECT_THROW(p.coarsened(0), std::runtime_error);

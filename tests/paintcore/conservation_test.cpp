@@ -9,19 +9,10 @@
 namespace impasto::paintcore {
 namespace {
 
+using test::expect_conserved;
 using test::flat_spec;
 using test::relative_error;
 using test::round_brush;
-
-void expect_conserved(const Painting& p, double tolerance = 1e-5) {
-  const PaintTotals expected = test::expected_totals(p);
-  const PaintTotals present = test::present_totals(p);
-  EXPECT_LT(relative_error(present.volume, expected.volume), tolerance)
-      << present.volume << " vs " << expected.volume;
-  for (std::size_t s = 0; s < expected.pigment.size(); ++s)
-    EXPECT_LT(relative_error(present.pigment[s], expected.pigment[s]), tolerance) << "slot " << s;
-  EXPECT_EQ(p.nonfinite_count(), 0u);
-}
 
 // A session of strokes in many directions, with tilt and twist, reloads and wipes.
 void paint_session(Painting& p) {

@@ -15,6 +15,7 @@
 namespace impasto::paintcore {
 namespace {
 
+using test::expect_conserved;
 using test::flat_spec;
 using test::relative_error;
 using test::round_brush;
@@ -46,16 +47,6 @@ Painting paint_through_band(int cells, const SimulationParams& params, int threa
   }
   p.end_stroke();
   return p;
-}
-
-void expect_conserved(const Painting& p) {
-  const PaintTotals expected = test::expected_totals(p);
-  const PaintTotals present = test::present_totals(p);
-  EXPECT_LT(relative_error(present.volume, expected.volume), 1e-5)
-      << present.volume << " vs " << expected.volume;
-  for (std::size_t s = 0; s < expected.pigment.size(); ++s)
-    EXPECT_LT(relative_error(present.pigment[s], expected.pigment[s]), 1e-5) << "slot " << s;
-  EXPECT_EQ(p.nonfinite_count(), 0u);
 }
 
 // Mean |height difference| of 4 x 4 cell blocks where either painting holds paint.

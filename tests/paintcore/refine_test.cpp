@@ -6,19 +6,8 @@
 namespace impasto::paintcore {
 namespace {
 
-Painting painted() {
-  Painting p(CanvasSpec{100, 70, 254.0, 3}, 1);
-  p.set_brush(test::round_brush(3.0));
-  p.load_brush({{"red", 1.0}}, 30.0);
-  test::stroke_line(p, 1.0, 1.0, 9.0, 6.0, 0.8f);
-  p.dry(0.5);
-  p.load_brush({{"blue", 1.0}}, 30.0);
-  test::stroke_line(p, 9.0, 1.0, 1.0, 6.0, 0.9f);
-  return p;
-}
-
 TEST(Refined, KeepsTheSizeInMillimetresTheWeaveAndThePaint) {
-  const Painting p = painted();
+  const Painting p = test::crossed_strokes(100, 0.5);
   for (int scale : {1, 2, 4}) {
     const Painting f = p.refined(scale);
     EXPECT_EQ(f.canvas().width_cells(), 100 * scale);
@@ -45,7 +34,7 @@ TEST(Refined, KeepsTheSizeInMillimetresTheWeaveAndThePaint) {
 }
 
 TEST(Refined, TheReliefHasNoStepsAtTheOldCellsEdges) {
-  const Painting p = painted();
+  const Painting p = test::crossed_strokes(100, 0.5);
   const Painting f = p.refined(4);
   // Along a row through the paint: the fine surface's slope changes smoothly; a blocky copy
   // would be flat inside each old cell and jump at its edges.

@@ -1,5 +1,7 @@
 #pragma once
 // Helpers shared by the paintcore tests.
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <string>
 #include <vector>
@@ -45,6 +47,21 @@ inline void stroke_line(Painting& p, double x0, double y0, double x1, double y1,
   p.end_stroke();
 }
 
+// Two crossing strokes on a `width_cells` x 70 canvas (0.1 mm cells, weave 3), from the top
+// corners 1 mm in down to y = 6 mm: red, then `dried` (0..1) of it dried, then blue. Wet and
+// dry paint of two pigments, for the tests that resample a painting.
+inline Painting crossed_strokes(int width_cells, double dried) {
+  const double right_mm = width_cells / 10.0 - 1.0;
+  Painting p(CanvasSpec{width_cells, 70, 254.0, 3}, 1);
+  p.set_brush(round_brush(3.0));
+  p.load_brush({{"red", 1.0}}, 30.0);
+  stroke_line(p, 1.0, 1.0, right_mm, 6.0, 0.8f);
+  p.dry(dried);
+  p.load_brush({{"blue", 1.0}}, 30.0);
+  stroke_line(p, right_mm, 1.0, 1.0, 6.0, 0.9f);
+  return p;
+}
+
 // Paint that should exist: loaded - wiped; and what does: canvas + brush.
 inline PaintTotals expected_totals(const Painting& p) {
   PaintTotals t = p.loaded_totals();
@@ -64,6 +81,18 @@ inline PaintTotals present_totals(const Painting& p) {
 
 inline double relative_error(double actual, double expected) {
   return std::abs(actual - expected) / std::max(std::abs(expected), 1e-300);
+}
+
+// Paint is conserved: present = expected, in volume and in every pigment, within `tolerance`
+// (relative), and no value is NaN or infinite.
+inline void expect_conserved(const Painting& p, double tolerance = 1e-5) {
+  const PaintTotals expected = expected_totals(p);
+  const PaintTotals present = present_totals(p);
+  EXPECT_LT(relative_error(present.volume, expected.volume), tolerance)
+      << present.volume << " vs " << expected.volume;
+  for (std::size_t s = 0; s < expected.pigment.size(); ++s)
+    EXPECT_LT(relative_error(present.pigment[s], expected.pigment[s]), tolerance) << "slot " << s;
+  EXPECT_EQ(p.nonfinite_count(), 0u);
 }
 
 }  // namespace impasto::paintcore::test

@@ -94,8 +94,6 @@ SpectralSampling example_rule() {
 
 const NodeRuleKey kExampleKey{0x0123456789abcdefull, NodeWeights::optimised, 3};
 
-}  // namespace
-
 TEST(NodeRuleFile, RoundTripsExactly) {
   const SpectralSampling rule = example_rule();
   expect_same(parse_node_rule(format_node_rule(kExampleKey, rule), kExampleKey, {}), rule);
@@ -237,3 +235,5 @@ TEST_F(NodeCache, APaletteTooSmallToTrainOnGetsTheGaussianRule) {
 TEST(RenderDefaults, TheOptimisedRuleIsTheDefault) {
   EXPECT_EQ(RenderSettings{}.node_weights, NodeWeights::optimised);
 }
+
+}  // namespace

@@ -12,10 +12,12 @@
 #include <stdexcept>
 #include <vector>
 
+#include "image_checks.hpp"
 #include "impasto/data/lights.hpp"
 #include "impasto/data/pigments.hpp"
 #include "impasto/render/render_settings.hpp"
 #include "impasto/render/tile_renderer.hpp"
+#include "white_and_blue_palette.hpp"
 
 using namespace impasto;
 using namespace impasto::render;
@@ -213,14 +215,6 @@ TEST(ReliefShading, SettingsOutOfRangeAreRefused) {
 
 // --- in the tile renderer ---
 
-SpectralPalette make_palette(const RenderSettings& settings) {
-  const auto& db = data::PigmentDatabase::defaults();
-  const std::vector<data::Pigment> pigments = {db.get("Titanium White"),
-                                               db.get("Phthalo Blue (Green Shade)")};
-  return SpectralPalette(settings, data::light_from_spec("D65"), pigments,
-                         hiding_reflectance(pigments[0]));
-}
-
 // 3×3 tiles at 254 dpi (0.1 mm cells), a thick ridge of paint `height` mm across the
 // middle tile's width and past its edges.
 void paint_ridge(paintcore::Canvas& canvas, int tile_index, float height) {
@@ -236,24 +230,17 @@ void paint_ridge(paintcore::Canvas& canvas, int tile_index, float height) {
   }
 }
 
-void expect_identical(const Image& a, const Image& b) {
-  ASSERT_EQ(a.rgb.size(), b.rgb.size());
-  std::size_t differing = 0;
-  for (std::size_t i = 0; i < a.rgb.size(); ++i) differing += a.rgb[i] != b.rgb[i] ? 1 : 0;
-  EXPECT_EQ(differing, 0u);
-}
-
 TEST(ReliefRender, IncrementalShadowsAcrossTilesEqualAFullRender) {
   for (double azimuth : {225.0, 90.0, 10.0}) {
     RenderSettings settings = light_at(azimuth, 20.0);
     paintcore::Canvas canvas({3 * kTileSize, 3 * kTileSize, 254.0, 3});
-    TileRenderer renderer(settings, make_palette(settings));
+    TileRenderer renderer(settings, white_and_blue_palette(settings));
     renderer.update(canvas, {});
     paint_ridge(canvas, 4, 2.0f);  // the middle tile: its shadow falls into its neighbours
     const int changed[] = {4};
     const RenderStats stats = renderer.update(canvas, changed);
     EXPECT_GT(stats.border_cells, 2 * kTileSize) << azimuth;
-    TileRenderer fresh(settings, make_palette(settings));
+    TileRenderer fresh(settings, white_and_blue_palette(settings));
     fresh.render_all(canvas);
     expect_identical(renderer.image(), fresh.image());
     // And back: the ridge removed, its shadow goes with it.
@@ -282,8 +269,8 @@ TEST(ReliefRender, TheRidgeShadowsTheSideAwayFromTheLight) {
   off.occlusion = false;
   paintcore::Canvas canvas({3 * kTileSize, 3 * kTileSize, 254.0, 0});
   paint_ridge(canvas, 4, 2.0f);
-  TileRenderer with(on, make_palette(on));
-  TileRenderer without(off, make_palette(off));
+  TileRenderer with(on, white_and_blue_palette(on));
+  TileRenderer without(off, white_and_blue_palette(off));
   with.render_all(canvas);
   without.render_all(canvas);
   const Image a = with.image(), b = without.image();

@@ -15,6 +15,7 @@
 #include "impasto/data/pigments.hpp"
 #include "impasto/render/paint_layer.hpp"
 #include "impasto/render/tile_renderer.hpp"
+#include "white_and_blue_palette.hpp"
 
 using namespace impasto;
 using namespace impasto::render;
@@ -114,17 +115,6 @@ TEST(ShadingKey, TheCopyTakesEachShadingAndUniformSettingAndLeavesTheRest) {
   EXPECT_EQ(copy.thickness_scale_mm, RenderSettings{}.thickness_scale_mm);
 }
 
-std::vector<data::Pigment> test_pigments() {
-  const auto& db = data::PigmentDatabase::defaults();
-  return {db.get("Titanium White"), db.get("Phthalo Blue (Green Shade)")};
-}
-
-SpectralPalette make_palette(const RenderSettings& settings) {
-  const auto pigments = test_pigments();
-  return SpectralPalette(settings, data::light_from_spec(settings.light), pigments,
-                         hiding_reflectance(pigments[0]));
-}
-
 // One tile of wet ridges over the weave, thick enough to cast shadows, half of it dry.
 paintcore::Canvas ridged_canvas() {
   paintcore::Canvas canvas({kTileSize, kTileSize, 254.0, 5});
@@ -141,7 +131,7 @@ paintcore::Canvas ridged_canvas() {
 }
 
 Image fresh_render(const RenderSettings& settings, const paintcore::Canvas& canvas) {
-  TileRenderer renderer(settings, make_palette(settings));
+  TileRenderer renderer(settings, white_and_blue_palette(settings));
   renderer.render_all(canvas);
   return renderer.image();
 }
@@ -154,11 +144,11 @@ TEST(ShadingKey, ARelightAfterEachChangeEqualsAFreshRender) {
     RenderSettings settings;
     settings.light_elevation_deg = 25.0;  // low enough for the ridges to cast shadows
     settings.saunderson = true;           // so that its coefficients show
-    TileRenderer renderer(settings, make_palette(settings));
+    TileRenderer renderer(settings, white_and_blue_palette(settings));
     renderer.render_all(canvas);
     const Image before = renderer.image();
     change.apply(settings);
-    renderer.set_settings(settings, make_palette(settings));
+    renderer.set_settings(settings, white_and_blue_palette(settings));
     renderer.render_all(canvas);
     const Image fresh = fresh_render(settings, canvas);
     ASSERT_EQ(renderer.image().rgb.size(), fresh.rgb.size());

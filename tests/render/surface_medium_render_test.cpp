@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "image_checks.hpp"
 #include "impasto/data/lights.hpp"
 #include "impasto/data/pigments.hpp"
 #include "impasto/paintcore/painting.hpp"
@@ -22,7 +23,8 @@ namespace {
 constexpr const char* kWhite = "Titanium White";
 constexpr const char* kBlack = "Carbon Black";
 
-SpectralPalette make_palette(const RenderSettings& settings) {
+// Titanium White (the ground) and Carbon Black, under D65.
+SpectralPalette white_and_black_palette(const RenderSettings& settings) {
   const auto& db = data::PigmentDatabase::defaults();
   const std::vector<data::Pigment> pigments{db.get(kWhite), db.get(kBlack)};
   return SpectralPalette(settings, data::light_from_spec("D65"), pigments,
@@ -30,7 +32,7 @@ SpectralPalette make_palette(const RenderSettings& settings) {
 }
 
 Image shade_painting(const RenderSettings& settings, const paintcore::Painting& painting) {
-  TileRenderer renderer(settings, make_palette(settings));
+  TileRenderer renderer(settings, white_and_black_palette(settings));
   renderer.render_all(painting.canvas());
   return renderer.image();
 }
@@ -66,11 +68,6 @@ paintcore::Painting two_strokes(std::optional<paintcore::Medium> top,
   }
   p.dry(1.0);
   return p;
-}
-
-float luminance(const Image& image, int x, int y) {
-  const float* p = image.pixel(x, y);
-  return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2];
 }
 
 // The brightest and the mean cell of the paint (thicker than 0.02 mm) in a band of rows, in

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "image_checks.hpp"
 #include "impasto/data/lights.hpp"
 #include "impasto/data/pigments.hpp"
 #include "impasto/render/paint_layer.hpp"
@@ -69,11 +70,6 @@ std::uint64_t image_hash(const Image& image) {
   util::Fnv1a hash;
   hash.add(image.rgb.data(), image.rgb.size() * sizeof(float));
   return hash.value();
-}
-
-float luminance(const Image& image, int x, int y) {  // linear sRGB
-  const float* p = image.pixel(x, y);
-  return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2];
 }
 
 RenderSettings ghs(surface::Finish medium, std::optional<surface::Finish> varnish = {}) {

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "image_checks.hpp"
 #include "impasto/data/lights.hpp"
 #include "impasto/data/pigments.hpp"
 #include "impasto/render/paint_layer.hpp"
@@ -50,14 +51,6 @@ void add_dry_black_glaze(paintcore::Canvas& canvas, int tile_index, float volume
   dry.pigment_mm.assign(kTileCells, volume_mm * 0.5f);
   canvas.dry_layers().push_back({{dry}});
   canvas.ensure_tile(tile_index, 3).dry_height_mm.fill(volume_mm);
-}
-
-void expect_identical(const Image& a, const Image& b) {
-  ASSERT_EQ(a.width, b.width);
-  ASSERT_EQ(a.height, b.height);
-  std::size_t differing = 0;
-  for (std::size_t i = 0; i < a.rgb.size(); ++i) differing += a.rgb[i] != b.rgb[i] ? 1 : 0;
-  EXPECT_EQ(differing, 0u);
 }
 
 }  // namespace
