@@ -1216,6 +1216,9 @@ void PaintWindow::run() {
     // Nothing new on the canvas and nothing to simulate: frames at most every kIdleFrame, so
     // the simulation and the rest of the machine get the cores (an event still waits less).
     if (!frame_changed_ && worker_->idle()) std::this_thread::sleep_until(frame_start + kIdleFrame);
+    // Pen up and nothing to simulate: the GPU makes room for the next strokes' tiles now, when
+    // a growth of its tile atlas delays no stroke.
+    if (renderer_ && !canvas_feed_.in_stroke() && worker_->idle()) renderer_->make_room();
     if (capture) {
       screenshot_done = true;
       std::cout << "wrote " << options_.screenshot->string() << "\n";

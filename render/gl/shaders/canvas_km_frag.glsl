@@ -9,15 +9,19 @@
 // through, and the surface's own light is added per node.
 // Assembled after #version, MAX_NODES/MAX_SLOTS defines, km_lib, shading_lib, surface_ghs_lib,
 // relief_lib, flakes_lib, cracks_lib, crack_close_up_lib, crack_close_up_canvas_lib, the
-// OpenColorIO display function `vec4 ocio_display(vec4 xyz)` and subsurface_canvas_lib
-// (each cell's light with the subsurface spread; the output's encoding).
+// OpenColorIO display function `vec4 ocio_display(vec4 xyz)`, subsurface_canvas_lib (each
+// cell's light with the subsurface spread; the output's encoding) and tile_atlas_lib.
 
 in vec2 uv;
 out vec4 frag_color;
 
-uniform sampler2DArray pigments;      // 4 slots a layer, amounts in mm
+// The tiles with paint or dry layers, in a TileAtlas: 4 slots a layer, amounts in mm, then
+// from dry_first_layer 4 nodes a layer, the reflectance beneath the wet paint. A tile with no
+// place holds no pigment over the bare ground (bare_reflectance).
+uniform sampler2DArray tile_data;
+uniform int dry_first_layer;
+uniform float bare_reflectance[MAX_NODES];
 uniform sampler2D surface;            // r: wet volume (mm), g: total height (mm)
-uniform sampler2DArray dry_reflectance;  // 4 nodes a layer, reflectance beneath the wet paint
 uniform ivec2 canvas_cells;
 uniform mat3 screen_to_cell;          // window pixel (gl_FragCoord) to canvas cell coordinates
 uniform vec3 background;              // display RGB outside the canvas
@@ -54,9 +58,11 @@ vec3 cell_xyz(ivec2 cell, float volume, vec4 crack, bool close_up, float body[MA
               out vec3 xyz_uncracked, out vec3 xyz_ground) {
   // Concentration = amount / volume, as the CPU's gather_shares computes it.
   float inverse_volume = volume > 0.0 ? 1.0 / volume : 0.0;
+  ivec2 texel = atlas_texel(cell);
+  bool bare = texel.x < 0;  // wet paint has a tile, so a place: bare cells have no volume
   float concentration[MAX_SLOTS];
-  for (int layer = 0; volume > 0.0 && layer * 4 < slot_count; ++layer) {
-    vec4 amounts = max(texelFetch(pigments, ivec3(cell, layer), 0), vec4(0.0));
+  for (int layer = 0; volume > 0.0 && !bare && layer * 4 < slot_count; ++layer) {
+    vec4 amounts = max(texelFetch(tile_data, ivec3(texel, layer), 0), vec4(0.0));
     for (int i = 0; i < 4; ++i) concentration[layer * 4 + i] = component(amounts, i) * inverse_volume;
   }
   float thickness = volume * optical_per_mm;
@@ -64,13 +70,15 @@ vec3 cell_xyz(ivec2 cell, float volume, vec4 crack, bool close_up, float body[MA
   // Where there is no wet paint the layer is the identity (R = 0, T = 1 composites to the
   // reflectance below exactly), so bare canvas and dry paint skip the K-M maths, as the CPU
   // reference skips it for wet_volume <= 0.
-  bool wet_paint = volume > 0.0;
+  bool wet_paint = volume > 0.0 && !bare;
   xyz_uncracked = vec3(0.0);
   xyz_ground = vec3(0.0);
   bool saunderson = saunderson_k.x >= 0.0;
   vec3 xyz = vec3(0.0);
   for (int node = 0; node < node_count; ++node) {
-    float R = component(texelFetch(dry_reflectance, ivec3(cell, node / 4), 0), node % 4);
+    float R = bare ? bare_reflectance[node]
+                   : component(texelFetch(tile_data, ivec3(texel, dry_first_layer + node / 4), 0),
+                               node % 4);
     float crack_wall = crack_walls(crack, node, R);
     if (wet_paint) {
       float K = 0.0;

@@ -1,6 +1,7 @@
 #include "impasto/render_gl/canvas_renderer.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -40,6 +41,13 @@ paintcore::CellRect intersected(const paintcore::CellRect& a, const paintcore::C
   return r.empty() ? paintcore::CellRect{} : r;
 }
 
+// Whether any dry layer has paint in the tile (hidden or not: a hidden layer's tile keeps its
+// place, which a shown one will need).
+bool has_dry_paint(const paintcore::Canvas& canvas, int tile_index) {
+  return std::any_of(canvas.dry_layers().begin(), canvas.dry_layers().end(),
+                     [&](const paintcore::DryLayer& layer) { return layer.find(tile_index); });
+}
+
 int layers_for(int count) {
   return std::max(1, (count + 3) / 4);
 }
@@ -61,10 +69,11 @@ void check_palette(const render::SpectralPalette& palette) {
 
 // Staging memory for one tile, interleaved the way the textures store it.
 struct CanvasRenderer::TileScratch {
-  std::vector<float> pigments;         // [layer][cell][4]
-  std::vector<float> surface;          // [cell][2]
-  std::vector<float> dry_node_major;   // [node][cell]
-  std::vector<float> dry_interleaved;  // [layer][cell][4]
+  std::vector<float> pigments;            // [layer][cell][4]
+  std::vector<float> surface;             // [cell][2]
+  std::array<float, kTileCells> weave{};  // a bare tile's heights (mm)
+  std::vector<float> dry_node_major;      // [node][cell]
+  std::vector<float> dry_interleaved;     // [layer][cell][4]
 };
 
 CanvasRenderer::CanvasRenderer(int width_cells, int height_cells,
@@ -79,6 +88,7 @@ CanvasRenderer::CanvasRenderer(int width_cells, int height_cells,
   check_palette(palette_);
   surface_ = Texture(width_, height_, 0, TexelFormat::kRG32F);
   allocate_textures();
+  bare_reflectance_ = bare_ground_reflectance(settings_, palette_);
   build_program();
   flakes_ = std::make_unique<FlakeTextures>(width_, height_, settings_, palette_);
   cracks_ = std::make_unique<CrackTexture>(width_, height_);
@@ -89,14 +99,14 @@ CanvasRenderer::CanvasRenderer(int width_cells, int height_cells,
 CanvasRenderer::~CanvasRenderer() = default;
 
 void CanvasRenderer::allocate_textures() {
-  if (layers_for(palette_.pigment_count()) != pigment_layers_) {
-    pigment_layers_ = layers_for(palette_.pigment_count());
-    pigments_ = Texture(width_, height_, pigment_layers_, TexelFormat::kRGBA32F);
-  }
-  if (layers_for(palette_.nodes()) != node_layers_) {
-    node_layers_ = layers_for(palette_.nodes());
-    dry_reflectance_ = Texture(width_, height_, node_layers_, TexelFormat::kRGBA32F);
-  }
+  const int pigment_layers = layers_for(palette_.pigment_count());
+  const int node_layers = layers_for(palette_.nodes());
+  if (pigment_layers == pigment_layers_ && node_layers == node_layers_) return;
+  pigment_layers_ = pigment_layers;
+  node_layers_ = node_layers;
+  tile_data_ = TileAtlas((width_ + kTileSize - 1) / kTileSize,
+                         (height_ + kTileSize - 1) / kTileSize, pigment_layers_ + node_layers_);
+  dry_bakes_.clear();
 }
 
 void CanvasRenderer::build_program() {
@@ -104,7 +114,8 @@ void CanvasRenderer::build_program() {
     display_ = std::make_unique<GpuDisplayTransform>(settings_.display);
   }
   std::string source = "#version 330 core\n#define MAX_NODES " + std::to_string(render::kMaxNodes) +
-                       "\n#define MAX_SLOTS " + std::to_string(paintcore::kMaxPigmentSlots) + "\n";
+                       "\n#define MAX_SLOTS " + std::to_string(paintcore::kMaxPigmentSlots) +
+                       "\n#define TILE_SIZE " + std::to_string(kTileSize) + "\n";
   source += shaders::km_lib;
   source += shading_glsl();
   source += surface_ghs_glsl();
@@ -115,6 +126,7 @@ void CanvasRenderer::build_program() {
   source += shaders::crack_close_up_canvas_lib;
   source += display_->glsl();
   source += GpuSubsurfaceSpread::canvas_glsl();
+  source += shaders::tile_atlas_lib;
   source += shaders::canvas_km_frag;
   pass_ = std::make_unique<FullscreenPass>("canvas_km_frag.glsl", std::move(source));
 }
@@ -126,8 +138,9 @@ void CanvasRenderer::set_settings(const render::RenderSettings& settings,
   const bool encoding_changed = settings.display != settings_.display;
   settings_ = settings;
   palette_ = std::move(palette);
-  dry_baked_.clear();  // the reflectance follows the light, pigments and settings
+  dry_bakes_.clear();  // the reflectance follows the light, pigments and settings
   allocate_textures();
+  bare_reflectance_ = bare_ground_reflectance(settings_, palette_);
   if (encoding_changed) build_program();
   flakes_ = std::make_unique<FlakeTextures>(width_, height_, settings_, palette_);
   ghs_ = std::make_unique<GhsSurfaceTables>(width_, height_, settings_, palette_);
@@ -178,20 +191,22 @@ void CanvasRenderer::upload_tile(const paintcore::Canvas& canvas, int tile_index
   const int w = std::min(kTileSize, width_ - x0);
   const int h = std::min(kTileSize, height_ - y0);
   const paintcore::Tile* tile = canvas.tile(tile_index);
+  const VisibleDryStack dry = visible_dry_stack(canvas, tile_index, palette_, hidden_dry_layers_);
+  // Paint or dry layers take a place in the atlas (and keep it); a bare tile shows the weave.
+  if (tile != nullptr || !dry.layers.empty()) tile_data_.place(tile_index);
 
   scratch.surface.assign(2 * kTileCells, 0.0f);
+  if (tile == nullptr) canvas.compute_base_heights(tile_index, scratch.weave.data());
   float lowest = std::numeric_limits<float>::max();
   float highest = std::numeric_limits<float>::lowest();
-  scratch.pigments.assign(static_cast<size_t>(pigment_layers_) * 4 * kTileCells, 0.0f);
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
       const int cell = y * kTileSize + x;
       if (tile != nullptr) {
-        const float wet = tile->wet_volume_mm[cell];
-        scratch.surface[2 * cell] = wet;
+        scratch.surface[2 * cell] = tile->wet_volume_mm[cell];
         scratch.surface[2 * cell + 1] = paintcore::surface_height_mm(*tile, cell);
       } else {
-        scratch.surface[2 * cell + 1] = canvas.base_height_mm(x0 + x, y0 + y);
+        scratch.surface[2 * cell + 1] = scratch.weave[static_cast<std::size_t>(cell)];
       }
       lowest = std::min(lowest, scratch.surface[2 * cell + 1]);
       highest = std::max(highest, scratch.surface[2 * cell + 1]);
@@ -199,47 +214,11 @@ void CanvasRenderer::upload_tile(const paintcore::Canvas& canvas, int tile_index
   }
   tile_min_height_.resize(static_cast<std::size_t>(canvas.tile_count()), 0.0f);
   tile_max_height_.resize(static_cast<std::size_t>(canvas.tile_count()), 0.0f);
+  dry_bakes_.resize(static_cast<std::size_t>(canvas.tile_count()));
   tile_min_height_[static_cast<std::size_t>(tile_index)] = lowest;
   tile_max_height_[static_cast<std::size_t>(tile_index)] = highest;
-  if (tile != nullptr) {
-    for (int slot = 0; slot < std::min(tile->slot_count(), palette_.pigment_count()); ++slot) {
-      const float* amounts = tile->pigment(slot);
-      float* layer = scratch.pigments.data() + static_cast<size_t>(slot / 4) * 4 * kTileCells;
-      for (int cell = 0; cell < kTileCells; ++cell) layer[4 * cell + slot % 4] = amounts[cell];
-    }
-  }
-  // A stroke changes only wet paint: the dry stack's reflectance is baked and uploaded again
-  // only when its layers change (or the light, pigments or settings: set_settings).
-  const VisibleDryStack dry = visible_dry_stack(canvas, tile_index, palette_, hidden_dry_layers_);
-  const auto index = static_cast<std::size_t>(tile_index);
-  dry_baked_.resize(static_cast<std::size_t>(canvas.tile_count()), 0);
-  dry_signatures_.resize(static_cast<std::size_t>(canvas.tile_count()), 0);
-  const bool bake = !dry_baked_[index] || dry_signatures_[index] != dry.signature;
-  if (bake) {
-    bake_dry_reflectance(dry, settings_, palette_, scratch.dry_node_major);
-    scratch.dry_interleaved.assign(static_cast<size_t>(node_layers_) * 4 * kTileCells, 0.0f);
-    for (int node = 0; node < palette_.nodes(); ++node) {
-      const float* values = scratch.dry_node_major.data() + static_cast<size_t>(node) * kTileCells;
-      float* layer =
-          scratch.dry_interleaved.data() + static_cast<size_t>(node / 4) * 4 * kTileCells;
-      for (int cell = 0; cell < kTileCells; ++cell) layer[4 * cell + node % 4] = values[cell];
-    }
-    ++dry_tiles_baked_;
-    dry_baked_[index] = 1;
-    dry_signatures_[index] = dry.signature;
-  }
-
   surface_.upload(x0, y0, w, h, 0, scratch.surface.data(), kTileSize);
-  for (int layer = 0; layer < pigment_layers_; ++layer) {
-    pigments_.upload(x0, y0, w, h, layer,
-                     scratch.pigments.data() + static_cast<size_t>(layer) * 4 * kTileCells,
-                     kTileSize);
-  }
-  for (int layer = 0; layer < node_layers_ && bake; ++layer) {
-    dry_reflectance_.upload(
-        x0, y0, w, h, layer,
-        scratch.dry_interleaved.data() + static_cast<size_t>(layer) * 4 * kTileCells, kTileSize);
-  }
+  if (tile_data_.placed(tile_index)) upload_tile_data(tile, dry, tile_index, w, h, scratch);
   flakes_->upload_tile(canvas, tile_index);
   cracks_->upload_tile(canvas, tile_index);
   ghs_->upload_tile(canvas, tile_index);
@@ -250,6 +229,45 @@ void CanvasRenderer::upload_tile(const paintcore::Canvas& canvas, int tile_index
   }
 }
 
+void CanvasRenderer::upload_tile_data(const paintcore::Tile* tile, const VisibleDryStack& dry,
+                                      int tile_index, int w, int h, TileScratch& scratch) {
+  scratch.pigments.assign(static_cast<size_t>(pigment_layers_) * 4 * kTileCells, 0.0f);
+  if (tile != nullptr) {
+    for (int slot = 0; slot < std::min(tile->slot_count(), palette_.pigment_count()); ++slot) {
+      const float* amounts = tile->pigment(slot);
+      float* layer = scratch.pigments.data() + static_cast<size_t>(slot / 4) * 4 * kTileCells;
+      for (int cell = 0; cell < kTileCells; ++cell) layer[4 * cell + slot % 4] = amounts[cell];
+    }
+  }
+  for (int layer = 0; layer < pigment_layers_; ++layer) {
+    tile_data_.upload(tile_index, w, h, layer,
+                      scratch.pigments.data() + static_cast<size_t>(layer) * 4 * kTileCells,
+                      kTileSize);
+  }
+  // A stroke changes only wet paint: the dry stack's reflectance is baked and uploaded again
+  // only when its layers change (or the light, pigments or settings: set_settings).
+  std::optional<std::uint64_t>& baked = dry_bakes_[static_cast<std::size_t>(tile_index)];
+  if (baked == dry.signature) return;
+  // No dry paint (a tile's first wet paint, or its last layer undone): the bare ground.
+  const bool bare = dry.layers.empty();
+  if (!bare) bake_dry_reflectance(dry, settings_, palette_, scratch.dry_node_major);
+  scratch.dry_interleaved.assign(static_cast<size_t>(node_layers_) * 4 * kTileCells, 0.0f);
+  for (int node = 0; node < palette_.nodes(); ++node) {
+    const float* values = scratch.dry_node_major.data() + static_cast<size_t>(node) * kTileCells;
+    const float ground = bare_reflectance_[static_cast<std::size_t>(node)];
+    float* layer = scratch.dry_interleaved.data() + static_cast<size_t>(node / 4) * 4 * kTileCells;
+    for (int cell = 0; cell < kTileCells; ++cell)
+      layer[4 * cell + node % 4] = bare ? ground : values[cell];
+  }
+  for (int layer = 0; layer < node_layers_; ++layer) {
+    tile_data_.upload(tile_index, w, h, pigment_layers_ + layer,
+                      scratch.dry_interleaved.data() + static_cast<size_t>(layer) * 4 * kTileCells,
+                      kTileSize);
+  }
+  if (!bare) ++dry_tiles_baked_;
+  baked = dry.signature;
+}
+
 void CanvasRenderer::upload_all(const paintcore::Canvas& canvas) {
   if (canvas.width_cells() != width_ || canvas.height_cells() != height_) {
     throw std::runtime_error("CanvasRenderer: canvas is " + std::to_string(canvas.width_cells()) +
@@ -257,9 +275,19 @@ void CanvasRenderer::upload_all(const paintcore::Canvas& canvas) {
                              std::to_string(width_) + "x" + std::to_string(height_));
   }
   cell_mm_ = canvas.cell_mm();
+  // The places all at once: one allocation, rather than a growth and copy every doubling.
+  int painted = 0;
+  for (int index = 0; index < canvas.tile_count(); ++index) {
+    painted += canvas.tile(index) != nullptr || has_dry_paint(canvas, index) ? 1 : 0;
+  }
+  tile_data_.reserve(painted);
   TileScratch scratch;
   for (int index = 0; index < canvas.tile_count(); ++index) upload_tile(canvas, index, scratch);
   update_height_range(true);
+}
+
+void CanvasRenderer::make_room() {
+  tile_data_.reserve(tile_data_.places() + std::max(kRoomTiles, tile_data_.places() / 2));
 }
 
 void CanvasRenderer::update_height_range(bool reset) {
@@ -350,12 +378,13 @@ void CanvasRenderer::update_spread() {
 
 void CanvasRenderer::set_uniforms(const CanvasView& view, int viewport_w, int viewport_h) {
   const ShaderProgram& program = pass_->program();
-  pigments_.bind(0);
+  tile_data_.bind(0, 2);
   surface_.bind(1);
-  dry_reflectance_.bind(2);
-  glUniform1i(program.uniform("pigments"), 0);
+  glUniform1i(program.uniform("tile_data"), 0);
   glUniform1i(program.uniform("surface"), 1);
-  glUniform1i(program.uniform("dry_reflectance"), 2);
+  glUniform1i(program.uniform("tile_places"), 2);
+  glUniform1i(program.uniform("atlas_columns"), tile_data_.columns());
+  glUniform1i(program.uniform("dry_first_layer"), pigment_layers_);
   if (display_->bind(program, 3) > GpuSubsurfaceSpread::kDeltaUnit) {
     throw std::runtime_error(
         "GPU renderer: the display transform's lookup tables overlap the "
@@ -390,6 +419,7 @@ void CanvasRenderer::set_uniforms(const CanvasView& view, int viewport_w, int vi
   }
   glUniform3fv(program.uniform("node_to_xyz"), nodes, to_xyz.data());
   glUniform3fv(program.uniform("white_xyz"), 1, palette_.white_xyz().data());
+  glUniform1fv(program.uniform("bare_reflectance"), nodes, bare_reflectance_.data());
   glUniform1f(program.uniform("optical_per_mm"),
               static_cast<float>(1.0 / settings_.thickness_scale_mm));
   glUniform2f(program.uniform("saunderson_k"),

@@ -11,6 +11,17 @@ namespace impasto::render_gl {
 
 using paintcore::kTileCells;
 
+namespace {
+
+// A reflectance as the CPU reference stores it (settings.storage).
+float stored(float value, const render::RenderSettings& settings) {
+  return settings.storage == render::ReflectanceStorage::float16
+             ? static_cast<float>(Imath::half(value))
+             : value;
+}
+
+}  // namespace
+
 VisibleDryStack visible_dry_stack(const paintcore::Canvas& canvas, int tile_index,
                                   const render::SpectralPalette& palette,
                                   const std::vector<bool>& hidden) {
@@ -44,15 +55,23 @@ void bake_dry_reflectance(const VisibleDryStack& stack, const render::RenderSett
   std::vector<float> reflectance(static_cast<size_t>(nodes));
   // The CPU reference's own bake, stored as it stores it, so the two agree bit for bit.
   const auto optical_per_mm = static_cast<float>(1.0 / settings.thickness_scale_mm);
-  const bool half = settings.storage == render::ReflectanceStorage::float16;
   for (int cell = 0; cell < kTileCells; ++cell) {
     render::composite_dry_stack(palette, layers, cell, optical_per_mm, reflectance.data());
     for (int node = 0; node < nodes; ++node) {
-      const float value = reflectance[static_cast<size_t>(node)];
       out[static_cast<size_t>(node) * kTileCells + static_cast<size_t>(cell)] =
-          half ? static_cast<float>(Imath::half(value)) : value;
+          stored(reflectance[static_cast<size_t>(node)], settings);
     }
   }
+}
+
+std::vector<float> bare_ground_reflectance(const render::RenderSettings& settings,
+                                           const render::SpectralPalette& palette) {
+  // composite_dry_stack of no layers: the ground, the same for every cell.
+  std::vector<float> reflectance(static_cast<std::size_t>(palette.nodes()));
+  const auto optical_per_mm = static_cast<float>(1.0 / settings.thickness_scale_mm);
+  render::composite_dry_stack(palette, {}, 0, optical_per_mm, reflectance.data());
+  for (float& value : reflectance) value = stored(value, settings);
+  return reflectance;
 }
 
 }  // namespace impasto::render_gl

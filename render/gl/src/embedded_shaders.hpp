@@ -12,6 +12,7 @@ extern const char* const flakes_lib;                 // flake sparkles (no #vers
 extern const char* const cracks_lib;                 // crack far-view blend (no #version)
 extern const char* const crack_close_up_lib;         // a cavity shaded point by point
 extern const char* const crack_close_up_canvas_lib;  // the close-up in the canvas pass
+extern const char* const tile_atlas_lib;             // a cell's texel in a TileAtlas
 extern const char* const subsurface_canvas_lib;      // the spread in the canvas pass
 extern const char* const subsurface_spread_frag;     // the spread's gather pass
 extern const char* const canvas_km_frag;             // the canvas pass (after the libraries)

@@ -3,6 +3,7 @@
 // shading pass that draws it through a CanvasView. Needs a current GL 3.3+ context.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -19,8 +20,11 @@
 #include "impasto/render_gl/gpu_view_options.hpp"
 #include "impasto/render_gl/subsurface_spread.hpp"
 #include "impasto/render_gl/texture.hpp"
+#include "impasto/render_gl/tile_atlas.hpp"
 
 namespace impasto::render_gl {
+
+struct VisibleDryStack;
 
 class CanvasRenderer {
  public:
@@ -45,7 +49,7 @@ class CanvasRenderer {
   // upload_all afterwards.
   void set_hidden_dry_layers(std::vector<bool> hidden) {
     hidden_dry_layers_ = std::move(hidden);
-    dry_baked_.clear();
+    dry_bakes_.clear();
   }
   // Exposure, background, the subsurface map's view: nothing to upload.
   void set_view_options(const GpuViewOptions& options);
@@ -59,10 +63,19 @@ class CanvasRenderer {
   void upload_all(const paintcore::Canvas& canvas);
   // Copies only these tiles (Canvas::take_dirty_tiles()).
   void upload_tiles(const paintcore::Canvas& canvas, std::span<const int> tile_indices);
+  // Makes room on the GPU for tiles strokes will paint: half as many again as hold paint, at
+  // least kRoomTiles. Growing costs a frame (tens of ms a row on llvmpipe), so a window calls
+  // this while the pen is up and the simulation idle, and strokes rarely wait for a growth.
+  static constexpr int kRoomTiles = 256;
+  void make_room();
 
   // How many tiles' dry stacks have been baked so far (a stroke changes only wet paint and
-  // bakes none).
+  // bakes none; a tile with no dry paint takes the ground's reflectance, no bake).
   std::uint64_t dry_tiles_baked() const { return dry_tiles_baked_; }
+  // How many tiles hold paint or dry layers on the GPU (bare tiles take no texture memory),
+  // and the bytes their textures take.
+  int tiles_on_gpu() const { return tile_data_.places(); }
+  std::size_t tile_data_bytes() const { return tile_data_.bytes(); }
 
   // Draws the shaded canvas into the bound framebuffer's viewport of the given size.
   void draw(const CanvasView& view, int viewport_w, int viewport_h);
@@ -80,6 +93,9 @@ class CanvasRenderer {
   void build_program();
   void allocate_textures();
   void upload_tile(const paintcore::Canvas& canvas, int tile_index, TileScratch& scratch);
+  // A placed tile's pigments and (when its dry stack changed) its dry reflectance.
+  void upload_tile_data(const paintcore::Tile* tile, const VisibleDryStack& dry, int tile_index,
+                        int w, int h, TileScratch& scratch);
   // The canvas pass's uniforms and textures for `view` (the program in use).
   void set_uniforms(const CanvasView& view, int viewport_w, int viewport_h);
   bool spread_on() const;
@@ -95,13 +111,15 @@ class CanvasRenderer {
   std::vector<bool> hidden_dry_layers_;
   std::unique_ptr<GpuDisplayTransform> display_;
   std::unique_ptr<FullscreenPass> pass_;
-  Texture pigments_;         // ceil(slots / 4) layers of 4 slot amounts (mm)
-  Texture surface_;          // wet volume, total height (mm)
-  Texture dry_reflectance_;  // ceil(nodes / 4) layers of 4 node reflectances
-  // Per tile: whether dry_reflectance_ holds its bake for today's settings, and the
-  // signature of the dry stack baked (render::DryStackSignature).
-  std::vector<std::uint8_t> dry_baked_;
-  std::vector<std::uint64_t> dry_signatures_;
+  Texture surface_;  // wet volume, total height (mm), every cell (bare ones show the weave)
+  // The tiles with paint or dry layers: ceil(slots / 4) layers of 4 slot amounts (mm), then
+  // ceil(nodes / 4) layers of 4 node reflectances of the dry stack beneath the wet paint.
+  // A bare tile has no place: no pigment, and the ground's reflectance (bare_reflectance_).
+  TileAtlas tile_data_;
+  std::vector<float> bare_reflectance_;  // per node, as a bake stores it
+  // Per tile: the signature of the dry stack whose bake tile_data_ holds for today's
+  // settings (render::DryStackSignature); none where it holds none.
+  std::vector<std::optional<std::uint64_t>> dry_bakes_;
   std::uint64_t dry_tiles_baked_ = 0;
   int pigment_layers_ = 0, node_layers_ = 0;
   std::unique_ptr<FlakeTextures> flakes_;        // sparkles of flake pigments (nothing without)

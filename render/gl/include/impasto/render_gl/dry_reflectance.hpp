@@ -27,4 +27,8 @@ VisibleDryStack visible_dry_stack(const paintcore::Canvas& canvas, int tile_inde
 void bake_dry_reflectance(const VisibleDryStack& stack, const render::RenderSettings& settings,
                           const render::SpectralPalette& palette, std::vector<float>& out);
 
+// Per node, what a bake stores for a cell with no dry paint: the ground's reflectance.
+std::vector<float> bare_ground_reflectance(const render::RenderSettings& settings,
+                                           const render::SpectralPalette& palette);
+
 }  // namespace impasto::render_gl
