@@ -34,6 +34,8 @@
 #include "command.hpp"
 #include "latency_lines.hpp"
 #include "screen_spot.hpp"
+#include "session/recovery_folder.hpp"
+#include "session/session_registry.hpp"
 #include "vocabulary.hpp"
 #include "window/light_disc_look.hpp"
 
@@ -132,6 +134,15 @@ ScreenSpot find_light_dot(const std::string& window, int window_w, int window_h,
   }
   throw std::runtime_error("found no light disc in the panels of window " + window +
                            " (is the Light panel open?)");
+}
+
+// The window, told to go (SIGTERM) with the bench's strokes unsaved, kept its session for
+// recovery as it would a painter's; a measurement is nothing to recover, and the next
+// `impasto paint` would offer it.
+void forget_sessions_of(pid_t pid) {
+  for (const SessionEntry& session : unfinished_sessions(recovery_folder())) {
+    if (session.pid == pid) discard_session(session);
+  }
 }
 
 Latency measure(const BenchWindowArgs& args, int width, int height,
@@ -235,6 +246,7 @@ Latency measure(const BenchWindowArgs& args, int width, int height,
   kill(pid, SIGTERM);  // the window closes cleanly and prints its figures
   int status = 0;
   waitpid(pid, &status, 0);
+  forget_sessions_of(pid);
   if (!failure.empty()) throw std::runtime_error(failure);
   std::ifstream text(out);
   const std::string printed((std::istreambuf_iterator<char>(text)), {});

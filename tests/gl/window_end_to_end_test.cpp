@@ -286,12 +286,16 @@ TEST(RenderCommand, GpuWithAMissingPaintingIsAClearError) {
 }
 
 // A wheel click is timed from its X server time to the first frame showing its zoom step:
-// `impasto bench window --zoom` sends them and reads the window's own figures back.
+// `impasto bench window --zoom` sends them and reads the window's own figures back. It
+// leaves no session behind to recover.
 TEST(WindowEndToEnd, WheelClicksAreTimedToTheirFirstFrames) {
   ASSERT_NE(std::getenv("DISPLAY"), nullptr) << "run under xvfb-run -a";
   if (!have_xdotool()) GTEST_SKIP() << "xdotool is not installed";
+  const fs::path state =
+      fs::temp_directory_path() / ("impasto_bench_window_state_" + std::to_string(getpid()));
+  fs::remove_all(state);
   std::string text;
-  FILE* pipe = popen((std::string(IMPASTO_EXECUTABLE) +
+  FILE* pipe = popen(("XDG_STATE_HOME=" + state.string() + " " + IMPASTO_EXECUTABLE +
                       " bench window --canvas 256x192 --zoom 2 --zoom-interval 1.5 --json")
                          .c_str(),
                      "r");
@@ -308,6 +312,14 @@ TEST(WindowEndToEnd, WheelClicksAreTimedToTheirFirstFrames) {
   EXPECT_GE(canvas.at("coarse_frames").get<int>(), 1);  // a zoom step is shown coarsely first
   EXPECT_GE(canvas.at("coarse_factor").get<int>(), 4);
   EXPECT_LE(canvas.at("coarse_factor").get<int>(), 16);
+  // The window's recovery folder holds its recording's name at most, no session entry.
+  int entries = 0;
+  for (const auto& file : fs::exists(state) ? fs::recursive_directory_iterator(state)
+                                            : fs::recursive_directory_iterator()) {
+    entries += file.path().extension() == ".session" ? 1 : 0;
+  }
+  EXPECT_EQ(entries, 0) << "a benchmark's window left a session to recover in " << state;
+  fs::remove_all(state);
 }
 
 TEST(WindowEndToEnd, MissingStrokeFileIsAClearError) {
