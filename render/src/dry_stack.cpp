@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <stdexcept>
+#include <string>
 
 #include "impasto/render/paint_layer.hpp"
 
@@ -30,6 +32,35 @@ void composite_dry_stack(const SpectralPalette& palette,
     composite_paint_layer(palette, std::span(shares.data(), count), volume * optical_per_mm,
                           reflectance);
   }
+}
+
+VisibleDryStack visible_dry_stack(const paintcore::Canvas& canvas, int tile_index,
+                                  const SpectralPalette& palette, const std::vector<bool>& hidden) {
+  VisibleDryStack stack;
+  DryStackSignature signature;
+  const auto& dry_layers = canvas.dry_layers();
+  for (std::size_t l = 0; l < dry_layers.size(); ++l) {
+    if (l < hidden.size() && hidden[l]) continue;
+    const paintcore::DryTile* dry = dry_layers[l].find(tile_index);
+    if (dry == nullptr) continue;
+    const std::string where =
+        "render: dry layer " + std::to_string(l) + " of tile " + std::to_string(tile_index);
+    if (dry->volume_mm.size() != static_cast<std::size_t>(kTileCells) ||
+        dry->pigment_mm.size() != dry->slots.size() * static_cast<std::size_t>(kTileCells)) {
+      throw std::runtime_error(where + " has inconsistent sizes");
+    }
+    for (std::uint8_t slot : dry->slots) {
+      if (slot >= palette.pigment_count()) {
+        throw std::runtime_error(where + " uses pigment slot " + std::to_string(slot) +
+                                 " but the palette has " + std::to_string(palette.pigment_count()) +
+                                 " pigments");
+      }
+    }
+    stack.layers.push_back(dry);
+    signature.add(l, *dry);
+  }
+  stack.signature = signature.value();
+  return stack;
 }
 
 void DryStackSignature::add(std::size_t layer_index, const paintcore::DryTile& layer) {

@@ -315,29 +315,9 @@ void TileRenderer::update_height_range(bool reset) {
 
 void TileRenderer::bake_dry_stack(const paintcore::Canvas& canvas, int tile_index,
                                   TileCache& cache) const {
-  // The dry layers with paint in this tile, bottom first, and their signature.
-  std::vector<const paintcore::DryTile*> layers;
-  DryStackSignature signature_of_layers;
-  const auto& dry_layers = canvas.dry_layers();
-  for (std::size_t l = 0; l < dry_layers.size(); ++l) {
-    const paintcore::DryTile* dry = dry_layers[l].find(tile_index);
-    if (dry == nullptr) continue;
-    if (dry->volume_mm.size() != static_cast<std::size_t>(kTileCells) ||
-        dry->pigment_mm.size() != dry->slots.size() * static_cast<std::size_t>(kTileCells)) {
-      throw std::runtime_error("render: dry layer " + std::to_string(l) + " of tile " +
-                               std::to_string(tile_index) + " has inconsistent sizes");
-    }
-    for (std::uint8_t slot : dry->slots) {
-      if (slot >= palette_.pigment_count()) {
-        throw std::runtime_error("render: dry layer " + std::to_string(l) + " uses pigment slot " +
-                                 std::to_string(slot) + " but the palette has " +
-                                 std::to_string(palette_.pigment_count()) + " pigments");
-      }
-    }
-    layers.push_back(dry);
-    signature_of_layers.add(l, *dry);
-  }
-  const std::uint64_t signature = signature_of_layers.value();
+  const VisibleDryStack stack = visible_dry_stack(canvas, tile_index, palette_);
+  const std::vector<const paintcore::DryTile*>& layers = stack.layers;
+  const std::uint64_t signature = stack.signature;
   if (cache.baked && signature == cache.dry_signature) return;
   cache.dry_signature = signature;
   cache.baked = true;

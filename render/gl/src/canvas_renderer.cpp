@@ -191,7 +191,8 @@ void CanvasRenderer::upload_tile(const paintcore::Canvas& canvas, int tile_index
   const int w = std::min(kTileSize, width_ - x0);
   const int h = std::min(kTileSize, height_ - y0);
   const paintcore::Tile* tile = canvas.tile(tile_index);
-  const VisibleDryStack dry = visible_dry_stack(canvas, tile_index, palette_, hidden_dry_layers_);
+  const render::VisibleDryStack dry =
+      render::visible_dry_stack(canvas, tile_index, palette_, hidden_dry_layers_);
   // Paint or dry layers take a place in the atlas (and keep it); a bare tile shows the weave.
   if (tile != nullptr || !dry.layers.empty()) tile_data_.place(tile_index);
 
@@ -229,8 +230,9 @@ void CanvasRenderer::upload_tile(const paintcore::Canvas& canvas, int tile_index
   }
 }
 
-void CanvasRenderer::upload_tile_data(const paintcore::Tile* tile, const VisibleDryStack& dry,
-                                      int tile_index, int w, int h, TileScratch& scratch) {
+void CanvasRenderer::upload_tile_data(const paintcore::Tile* tile,
+                                      const render::VisibleDryStack& dry, int tile_index, int w,
+                                      int h, TileScratch& scratch) {
   scratch.pigments.assign(static_cast<size_t>(pigment_layers_) * 4 * kTileCells, 0.0f);
   if (tile != nullptr) {
     for (int slot = 0; slot < std::min(tile->slot_count(), palette_.pigment_count()); ++slot) {

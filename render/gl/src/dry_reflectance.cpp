@@ -2,9 +2,6 @@
 
 #include <Imath/half.h>
 
-#include <stdexcept>
-#include <string>
-
 #include "impasto/render/dry_stack.hpp"
 
 namespace impasto::render_gl {
@@ -22,32 +19,8 @@ float stored(float value, const render::RenderSettings& settings) {
 
 }  // namespace
 
-VisibleDryStack visible_dry_stack(const paintcore::Canvas& canvas, int tile_index,
-                                  const render::SpectralPalette& palette,
-                                  const std::vector<bool>& hidden) {
-  VisibleDryStack stack;
-  render::DryStackSignature signature;
-  const auto& dry_layers = canvas.dry_layers();
-  for (std::size_t l = 0; l < dry_layers.size(); ++l) {
-    if (l < hidden.size() && hidden[l]) continue;
-    const paintcore::DryTile* tile = dry_layers[l].find(tile_index);
-    if (tile == nullptr) continue;
-    for (const auto slot : tile->slots) {
-      if (slot >= palette.pigment_count()) {
-        throw std::runtime_error("GPU renderer: dry layer " + std::to_string(l) +
-                                 " uses pigment slot " + std::to_string(slot) +
-                                 " but the palette has " + std::to_string(palette.pigment_count()) +
-                                 " pigments");
-      }
-    }
-    stack.layers.push_back(tile);
-    signature.add(l, *tile);
-  }
-  stack.signature = signature.value();
-  return stack;
-}
-
-void bake_dry_reflectance(const VisibleDryStack& stack, const render::RenderSettings& settings,
+void bake_dry_reflectance(const render::VisibleDryStack& stack,
+                          const render::RenderSettings& settings,
                           const render::SpectralPalette& palette, std::vector<float>& out) {
   const std::vector<const paintcore::DryTile*>& layers = stack.layers;
   const int nodes = palette.nodes();

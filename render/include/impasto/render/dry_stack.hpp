@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <vector>
 
 #include "impasto/paintcore/canvas.hpp"
 #include "impasto/render/spectral_palette.hpp"
@@ -32,5 +33,17 @@ class DryStackSignature {
   util::Fnv1a hash_;
   bool any_ = false;
 };
+
+// The dry layers of a tile that show, bottom first: those with paint in the tile, less layer
+// i where hidden[i] is true (the window's layer visibility), and their signature. What the
+// CPU's and the GPU's bakes composite. Throws std::runtime_error naming the layer and tile for
+// a layer whose sizes disagree or that uses a slot the palette lacks.
+struct VisibleDryStack {
+  std::vector<const paintcore::DryTile*> layers;
+  std::uint64_t signature = 0;
+};
+VisibleDryStack visible_dry_stack(const paintcore::Canvas& canvas, int tile_index,
+                                  const SpectralPalette& palette,
+                                  const std::vector<bool>& hidden = {});
 
 }  // namespace impasto::render

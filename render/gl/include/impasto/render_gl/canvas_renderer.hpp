@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "impasto/paintcore/canvas.hpp"
+#include "impasto/render/dry_stack.hpp"
 #include "impasto/render/relief_shading.hpp"
 #include "impasto/render/render_settings.hpp"
 #include "impasto/render/spectral_palette.hpp"
@@ -23,8 +24,6 @@
 #include "impasto/render_gl/tile_atlas.hpp"
 
 namespace impasto::render_gl {
-
-struct VisibleDryStack;
 
 class CanvasRenderer {
  public:
@@ -94,8 +93,8 @@ class CanvasRenderer {
   void allocate_textures();
   void upload_tile(const paintcore::Canvas& canvas, int tile_index, TileScratch& scratch);
   // A placed tile's pigments and (when its dry stack changed) its dry reflectance.
-  void upload_tile_data(const paintcore::Tile* tile, const VisibleDryStack& dry, int tile_index,
-                        int w, int h, TileScratch& scratch);
+  void upload_tile_data(const paintcore::Tile* tile, const render::VisibleDryStack& dry,
+                        int tile_index, int w, int h, TileScratch& scratch);
   // The canvas pass's uniforms and textures for `view` (the program in use).
   void set_uniforms(const CanvasView& view, int viewport_w, int viewport_h);
   bool spread_on() const;

@@ -7,24 +7,16 @@
 #include <vector>
 
 #include "impasto/paintcore/canvas.hpp"
+#include "impasto/render/dry_stack.hpp"
 #include "impasto/render/render_settings.hpp"
 #include "impasto/render/spectral_palette.hpp"
 
 namespace impasto::render_gl {
 
-// The dry layers of a tile that show, bottom first: those with paint in the tile, less layer
-// i where hidden[i] is true (the window's layer visibility), and their signature
-// (render::DryStackSignature). Throws std::runtime_error for a slot the palette lacks.
-struct VisibleDryStack {
-  std::vector<const paintcore::DryTile*> layers;
-  std::uint64_t signature = 0;
-};
-VisibleDryStack visible_dry_stack(const paintcore::Canvas& canvas, int tile_index,
-                                  const render::SpectralPalette& palette,
-                                  const std::vector<bool>& hidden = {});
-
-// Node-major: out[node * kTileCells + cell] for a tile whose visible dry stack is `stack`.
-void bake_dry_reflectance(const VisibleDryStack& stack, const render::RenderSettings& settings,
+// Node-major: out[node * kTileCells + cell] for a tile whose visible dry stack is `stack`
+// (render::visible_dry_stack).
+void bake_dry_reflectance(const render::VisibleDryStack& stack,
+                          const render::RenderSettings& settings,
                           const render::SpectralPalette& palette, std::vector<float>& out);
 
 // Per node, what a bake stores for a cell with no dry paint: the ground's reflectance.
