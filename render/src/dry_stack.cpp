@@ -64,10 +64,10 @@ VisibleDryStack visible_dry_stack(const paintcore::Canvas& canvas, int tile_inde
 }
 
 void DryStackSignature::add(std::size_t layer_index, const paintcore::DryTile& layer) {
-  hash_.add(&layer_index, sizeof layer_index);
-  hash_.add(layer.volume_mm.data(), layer.volume_mm.size() * sizeof(float));
-  hash_.add(layer.slots.data(), layer.slots.size());
-  hash_.add(layer.pigment_mm.data(), layer.pigment_mm.size() * sizeof(float));
+  hash_.value(layer_index);
+  hash_.bytes(layer.volume_mm.data(), layer.volume_mm.size() * sizeof(float));
+  hash_.bytes(layer.slots.data(), layer.slots.size());
+  hash_.bytes(layer.pigment_mm.data(), layer.pigment_mm.size() * sizeof(float));
   any_ = true;
 }
 
