@@ -26,8 +26,69 @@ struct BenchMarksArgs {
   std::vector<std::string> heads;   // empty: every head in the brushes folder
   std::vector<std::string> bodies;  // empty: every body
   std::vector<std::string> params;  // NAME=VALUE
+  bool sweeps = true;               // the sampling and resolution table after the first
   paintcore::MarkStroke stroke;
 };
+
+// The sample spacings (mm) and resolutions (dpi) of the second table: a mark must not
+// depend on either (docs/marks.md, "No trace of the sampling").
+constexpr double kSweepSpacingsMm[] = {0.05, 0.1, 0.5, 2.0};
+constexpr double kSweepDpis[] = {150.0, 300.0, 600.0, 1200.0};
+
+// One head and body's marks over the sweeps.
+struct Sweep {
+  std::vector<paintcore::MarkFigures> by_spacing, by_dpi;
+};
+
+Sweep sweep(const std::string& head, paintcore::PaintBody body, const paintcore::MarkStroke& base) {
+  Sweep s;
+  for (const double spacing : kSweepSpacingsMm) {
+    paintcore::MarkStroke stroke = base;
+    stroke.spacing_mm = spacing;
+    s.by_spacing.push_back(paintcore::measure_mark(head, body, stroke));
+  }
+  for (const double dpi : kSweepDpis) {
+    paintcore::MarkStroke stroke = base;
+    stroke.dpi = dpi;
+    s.by_dpi.push_back(paintcore::measure_mark(head, body, stroke));
+  }
+  return s;
+}
+
+void print_sweep_header() {
+  std::printf("\n%-8s %-6s %31s %13s %7s %31s %15s\n", "", "", "trace % of film at spacing (mm)",
+              "peak x median", "", "furrow rms (mm) at dpi", "furrow at mm");
+  std::printf("%-8s %-6s %7s %7s %7s %7s %6s %6s %7s %7s %7s %7s %7s %7s %7s\n", "head", "body",
+              "0.05", "0.1", "0.5", "2", "0.5", "2", "rim %", "150", "300", "600", "1200", "0.05",
+              "2");
+}
+
+void print_sweep(const std::string& head, const std::string& body, const Sweep& s) {
+  const auto& sp = s.by_spacing;
+  const auto& dp = s.by_dpi;
+  std::printf(
+      "%-8s %-6s %7.2f %7.2f %7.2f %7.2f %6.1f %6.1f %7.1f %7.4f %7.4f %7.4f %7.4f %7.4f "
+      "%7.4f\n",
+      head.c_str(), body.c_str(), 100 * sp[0].trace_rms_share, 100 * sp[1].trace_rms_share,
+      100 * sp[2].trace_rms_share, 100 * sp[3].trace_rms_share, sp[2].trace_peak, sp[3].trace_peak,
+      100 * sp[1].lift_rim_share, dp[0].furrow_rms_mm, dp[1].furrow_rms_mm, dp[2].furrow_rms_mm,
+      dp[3].furrow_rms_mm, sp[0].furrow_rms_mm, sp[3].furrow_rms_mm);
+}
+
+nlohmann::json sweep_json(const Sweep& s) {
+  nlohmann::json spacings = nlohmann::json::array(), dpis = nlohmann::json::array();
+  for (const auto& f : s.by_spacing)
+    spacings.push_back({{"spacing_mm", f.spacing_mm},
+                        {"trace_rms_share", f.trace_rms_share},
+                        {"trace_peak", f.trace_peak},
+                        {"trace_peak_share", f.trace_peak_share},
+                        {"lift_rim_share", f.lift_rim_share},
+                        {"furrow_rms_mm", f.furrow_rms_mm}});
+  for (const auto& f : s.by_dpi)
+    dpis.push_back(
+        {{"dpi", f.dpi}, {"furrow_rms_mm", f.furrow_rms_mm}, {"middle_mm", f.middle_mm}});
+  return {{"by_spacing", spacings}, {"by_dpi", dpis}};
+}
 
 std::vector<std::string> all_heads() {
   std::vector<std::string> heads;
@@ -59,12 +120,13 @@ void run(BenchMarksArgs args) {
     bodies.push_back(*body);
   }
   if (!args.json)
-    std::printf("%-8s %-6s %7s %6s %6s %6s %6s %7s %8s %8s %8s %7s %8s\n", "head", "body", "load",
-                "dep%", "med", "p90", "p99", "ridge", "furrow", "rms", "bristle", "width",
-                "us/step");
+    std::printf("%-8s %-6s %7s %6s %6s %6s %6s %7s %8s %8s %8s %7s %7s %6s %8s\n", "head", "body",
+                "load", "dep%", "med", "p90", "p99", "ridge", "furrow", "rms", "bristle", "width",
+                "trace%", "rim%", "us/step");
   ProgressReporter progress("bench marks", "marks");
-  const std::uint64_t total = heads.size() * bodies.size();
+  const std::uint64_t total = heads.size() * bodies.size() * (args.sweeps ? 2 : 1);
   std::uint64_t done = 0;
+  std::vector<std::pair<std::string, Sweep>> sweeps;
   for (const std::string& head : heads)
     for (const paintcore::PaintBody body : bodies) {
       const paintcore::MarkFigures f = paintcore::measure_mark(head, body, args.stroke);
@@ -87,18 +149,39 @@ void run(BenchMarksArgs args) {
                                     {"bristle_spacing_mm", f.bristle_spacing_mm},
                                     {"width_mm", f.width_mm},
                                     {"head_width_mm", f.size_mm},
+                                    {"trace_rms_share", f.trace_rms_share},
+                                    {"trace_peak", f.trace_peak},
+                                    {"trace_peak_share", f.trace_peak_share},
+                                    {"lift_rim_share", f.lift_rim_share},
                                     {"steps", f.steps},
                                     {"seconds_per_step", f.seconds_per_step}}
                   << "\n";
       } else {
-        std::printf("%-8s %-6s %7.1f %6.1f %6.3f %6.3f %6.3f %7.3f %8.2f %8.3f %8.2f %7.2f %8.1f\n",
-                    head.c_str(), body_name.c_str(), f.load_mm3, 100.0 * f.deposited_share,
-                    f.thickness.median_mm, f.thickness.p90_mm, f.thickness.p99_mm, f.edge_ridge_mm,
-                    f.furrow_period_mm, f.furrow_rms_mm, f.bristle_spacing_mm,
-                    f.width_mm / f.size_mm, 1e6 * f.seconds_per_step);
+        std::printf(
+            "%-8s %-6s %7.1f %6.1f %6.3f %6.3f %6.3f %7.3f %8.2f %8.3f %8.2f %7.2f %7.2f %6.1f "
+            "%8.1f\n",
+            head.c_str(), body_name.c_str(), f.load_mm3, 100.0 * f.deposited_share,
+            f.thickness.median_mm, f.thickness.p90_mm, f.thickness.p99_mm, f.edge_ridge_mm,
+            f.furrow_period_mm, f.furrow_rms_mm, f.bristle_spacing_mm, f.width_mm / f.size_mm,
+            100.0 * f.trace_rms_share, 100.0 * f.lift_rim_share, 1e6 * f.seconds_per_step);
       }
       progress.update(++done, total);
+      if (!args.sweeps) continue;
+      Sweep s = sweep(head, body, args.stroke);
+      progress.clear();
+      if (args.json)
+        std::cout << nlohmann::json{{"head", head}, {"body", body_name}, {"sweeps", sweep_json(s)}}
+                  << "\n";
+      sweeps.emplace_back(head + "\t" + body_name, std::move(s));
+      progress.update(++done, total);
     }
+  if (args.json || sweeps.empty()) return;
+  progress.clear();
+  print_sweep_header();
+  for (const auto& [key, s] : sweeps) {
+    const auto tab = key.find('\t');
+    print_sweep(key.substr(0, tab), key.substr(tab + 1), s);
+  }
 }
 
 const CommandRegistrar registrar("bench marks", [](CLI::App& root) {
@@ -129,6 +212,8 @@ const CommandRegistrar registrar("bench marks", [](CLI::App& root) {
   cmd->add_option("--spacing", args->stroke.spacing_mm, "Distance between pen samples (mm)")
       ->check(CLI::Range(0.001, 10.0));
   add_threads_option(*cmd, args->stroke.threads);
+  cmd->add_flag("!--no-sweeps", args->sweeps,
+                "Skip the second table (sample spacings 0.05-2 mm, 150-1200 dpi)");
   cmd->add_option("--param", args->params, vocabulary_help("--param"));
   cmd->callback([args] { run(*args); });
 });

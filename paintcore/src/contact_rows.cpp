@@ -21,15 +21,14 @@ constexpr float kBelowBound = 1.0f - 1e-5f;
 [[gnu::always_inline]] inline int write_contact(int x, float coverage, float underside,
                                                 bool covered, std::int32_t b, float paint,
                                                 float ground, float wet, float tip_mm,
-                                                bool lift_off, float footing_mm, float ground_fill,
-                                                float* pen, std::int32_t* cell, float* weight,
+                                                float footing_mm, float ground_fill, float* pen,
+                                                std::int32_t* cell, float* weight,
                                                 float* on_brush) {
   // The head presses where its underside is below the paint surface; the paint hanging
   // under the bristles touches before that (a loaded brush lays a broad mark, a dry one
   // skips).
   const float penetration = ground + wet - (tip_mm + underside);
-  // Where the brush lifts, the film spans the whole head, bristle gaps and all.
-  const bool touches = covered & (lift_off | (penetration + paint > 0.0f));
+  const bool touches = covered & (penetration + paint > 0.0f);
   // (Masks by multiplication, of finite values: selects here became branches.)
   const int hit = touches;
   const float mask = static_cast<float>(hit);
@@ -58,7 +57,6 @@ IMPASTO_SIMD_CLONES int penetrate_row(int begin, int end, const HeadRow& head,
   const auto limit = static_cast<float>(n) + 1.0f;
   const float u0 = head.u0, v0 = head.v0, step_u = head.step_u, step_v = head.step_v;
   const float tip_mm = head.tip_mm;
-  const bool lift_off = head.lift_off;
   const float footing_mm = head.footing_mm, ground_fill = head.ground_fill;
   int contacts = 0;
   for (int x = begin; x < end; ++x) {
@@ -84,9 +82,8 @@ IMPASTO_SIMD_CLONES int penetrate_row(int begin, int end, const HeadRow& head,
     const int i_near = static_cast<int>(u + 0.5f), j_near = static_cast<int>(v + 0.5f);
     const bool covered = inside & (coverage_grid[j_near * padded + i_near] > 0.0f);
     const std::int32_t b = covered ? (j_near - 1) * n + (i_near - 1) : 0;
-    contacts +=
-        write_contact(x, coverage, underside, covered, b, brush_paint[b], ground[x], wet[x], tip_mm,
-                      lift_off, footing_mm, ground_fill, pen, cell, weight, on_brush);
+    contacts += write_contact(x, coverage, underside, covered, b, brush_paint[b], ground[x], wet[x],
+                              tip_mm, footing_mm, ground_fill, pen, cell, weight, on_brush);
   }
   return contacts;
 }
@@ -132,7 +129,6 @@ IMPASTO_SIMD_CLONES int penetrate_aligned_row(int width, const HeadRow& head, bo
   const float t0 = along_v ? head.v0 : head.u0, step_t = along_v ? head.step_v : head.step_u;
   const float s = along_v ? head.u0 : head.v0;
   const float tip_mm = head.tip_mm;
-  const bool lift_off = head.lift_off;
   const float footing_mm = head.footing_mm, ground_fill = head.ground_fill;
   if (!(s >= 0.0f && s < limit)) {  // the row passes beside the head
     std::fill_n(pen, width, 0.0f);
@@ -180,9 +176,8 @@ IMPASTO_SIMD_CLONES int penetrate_aligned_row(int width, const HeadRow& head, bo
     const float paint = paint_at[k_near];
     const bool covered = inside & (paint >= 0.0f);
     const std::int32_t b = covered ? first_cell + k_near * cell_step : 0;
-    contacts +=
-        write_contact(x, coverage, underside, covered, b, covered ? paint : 0.0f, ground[x], wet[x],
-                      tip_mm, lift_off, footing_mm, ground_fill, pen, cell, weight, on_brush);
+    contacts += write_contact(x, coverage, underside, covered, b, covered ? paint : 0.0f, ground[x],
+                              wet[x], tip_mm, footing_mm, ground_fill, pen, cell, weight, on_brush);
   }
   return contacts;
 }

@@ -16,7 +16,6 @@ struct HeadRow {
   float u0 = 0, v0 = 0;          // padded brush coordinates of the row's first cell centre
   float step_u = 0, step_v = 0;  // and their change per canvas cell
   float tip_mm = 0;              // height of the brush tip
-  bool lift_off = false;         // the brush leaves the paint: every covered cell touches
   // Paint in the ground's valleys below the footing (the mean ground and dry paint around
   // the brush's centre), by ground_fill of their depth, stays put: the drag moves the rest.
   float footing_mm = 0, ground_fill = 0;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 
@@ -213,11 +214,29 @@ void Painting::begin_stroke() {
   p.stroke_origin.reset();
   p.stroke_tiles.clear();
   p.last_contact.reset();
+  p.step_from.reset();
+  p.pending_cells = p.pending_seconds = 0.0;
+  p.last_move = {0.0, 0.0};
+  p.last_move_seconds = 0.0;
 }
 
 void Painting::end_stroke() {
   Impl& p = *impl_;
   if (!p.in_stroke) return;
+  // The path walked since the last step is stepped too: the stroke ends where the pen did.
+  if (p.last_pose && p.step_from && (p.pending_cells > 0.0 || p.pending_seconds > 0.0)) {
+    BrushPose end = *p.last_pose;
+    const auto at = p.step_end({end.x_cells, end.y_cells});
+    end.x_cells = at[0];
+    end.y_cells = at[1];
+    p.arena.execute([&] {
+      p.take_step(end, end.x_cells - (*p.step_from)[0], end.y_cells - (*p.step_from)[1],
+                  p.pending_seconds, !p.stroke_has_twist);
+    });
+  }
+  if (p.stroke_touched) p.arena.execute([&] { p.lift_brush(); });
+  p.step_from.reset();
+  p.pending_cells = p.pending_seconds = 0.0;
   p.in_stroke = false;
   p.last_pose.reset();
   p.pose_before_last.reset();
@@ -226,8 +245,8 @@ void Painting::end_stroke() {
     p.history.discard();  // nothing changed: nothing to undo
     return;
   }
-  // The brush lifts where it last touched, leaving a pile; then the stroke's paint levels as
-  // far as its body lets it (both part of the stroke's undo step).
+  // Where the tips last touched the film breaks; then the stroke's paint levels as far as its
+  // body lets it (all part of the stroke's undo step).
   if (p.last_contact) {
     const auto before_change = [&p](int index) { p.before_stroke_tile_change(index); };
     p.arena.execute([&] {
@@ -249,6 +268,11 @@ void Painting::end_stroke() {
 }
 
 namespace {
+
+// How far a brush goes on along its travel as it lifts, in head widths at full pressure, and
+// how long a brush lifting on the spot takes.
+constexpr double kLiftLengthShare = 0.5;
+constexpr double kLiftSeconds = 0.1;
 
 // A pause between two samples longer than this counts as this long: a still brush has long
 // reached its split by then, and a gap in a recording must not cost unbounded steps.
@@ -314,6 +338,8 @@ void Painting::stroke_to(const PenSample& sample) {
   double t0 = 0.0, t1 = 1.0;
   if (!clip_segment(from.x_cells, from.y_cells, target.x_cells, target.y_cells, -margin, -margin,
                     p.canvas.width_cells() + margin, p.canvas.height_cells() + margin, t0, t1)) {
+    p.step_from.reset();
+    p.pending_cells = p.pending_seconds = 0.0;
     p.pose_before_last = from;
     p.last_pose = target;
     return;
@@ -331,58 +357,150 @@ void Painting::stroke_to(const PenSample& sample) {
     return std::array<double, 2>{from.x_cells + (target.x_cells - from.x_cells) * u,
                                  from.y_cells + (target.y_cells - from.y_cells) * u};
   };
-  const double cells_per_t =
-      whole ? curve.max_speed()
-            : std::hypot(target.x_cells - from.x_cells, target.y_cells - from.y_cells) * (t1 - t0);
-  // CFL: the brush moves at most one cell per step (by the curve's fastest point: a straight
-  // segment is cut into equal whole-cell steps, so a steady stroke leaves no step pattern),
-  // or a big brush's long step (Stepper::max_step_cells), and the squeeze at most half a cell.
-  // (A hair over a whole step counts as one: positions come from mm and carry rounding.)
+  // The brush steps at most one cell of travel (CFL), or a big brush's long step
+  // (Stepper::max_step_cells), and the squeeze at most max_seconds, counted along the path
+  // since the last step: steps fall at the same places whatever the samples' spacing, and a
+  // steady stroke's steps are all alike. (A hair over a whole step counts as one: positions
+  // come from mm and carry rounding.)
   const double max_seconds = Stepper::max_step_seconds(p.params, p.canvas.cell_mm());
   const double max_cells = Stepper::max_step_cells(p.params, p.brush.cells_across());
-  const auto count = static_cast<std::int64_t>(
-      std::max({1.0, std::ceil(cells_per_t / max_cells - 1e-9), std::ceil(seconds / max_seconds)}));
-  const double step_seconds = seconds / static_cast<double>(count);
-  const double follow_cells = std::max(1.0, p.brush.settings().size_mm / p.canvas.cell_mm());
-  const auto before_change = [&p](int index) { p.before_stroke_tile_change(index); };
+  const double length =
+      whole ? curve.length()
+            : std::hypot(target.x_cells - from.x_cells, target.y_cells - from.y_cells) * (t1 - t0);
+  const double span_seconds = seconds * (t1 - t0);
+  if (first || !p.step_from || t0 > 0.0) {
+    // A stroke's first sample, or a path coming back within reach: the steps start here.
+    p.step_from = p.step_origin = position(0.0);
+    p.pending_cells = p.pending_seconds = 0.0;
+  }
+
   p.arena.execute([&] {
-    std::array<double, 2> last = position(0.0);
-    for (std::int64_t k = 1; k <= count; ++k) {
-      const double t = static_cast<double>(k) / static_cast<double>(count);
-      const std::array<double, 2> here = position(t);
-      const double move_x = here[0] - last[0], move_y = here[1] - last[1];
-      last = here;
-      BrushPose pose = lerp(from, target, whole ? t : t0 + (t1 - t0) * t);
+    if (first) p.take_step(target, 0.0, 0.0, 0.0, follows);  // the pen set down
+    constexpr double kHair = 1e-9;
+    double w = 0.0;  // how far along this segment's simulated part the steps have come
+    for (;;) {
+      const double to_distance = length > 0.0 ? (max_cells - p.pending_cells) / length
+                                              : std::numeric_limits<double>::max();
+      const double to_time = span_seconds > 0.0 ? (max_seconds - p.pending_seconds) / span_seconds
+                                                : std::numeric_limits<double>::max();
+      const double next = w + std::max(0.0, std::min(to_distance, to_time));
+      if (next > 1.0 + kHair) break;
+      const double share = std::min(next, 1.0);
+      const double u = whole ? share : t0 + (t1 - t0) * share;
+      const std::array<double, 2> here =
+          p.step_end(whole ? curve.at(curve.t_at_length_share(share)) : position(share));
+      BrushPose pose = lerp(from, target, u);
       pose.x_cells = here[0];
       pose.y_cells = here[1];
-      const double moved = std::hypot(move_x, move_y);
-      if (follows) {
-        // Until the brush has left its first spot by a tenth of its size it faces the way it
-        // has gone so far (a first jitter must not set it); then it trails the hand.
-        if (!p.stroke_origin) p.stroke_origin = {from.x_cells, from.y_cells};
-        const double away_x = here[0] - (*p.stroke_origin)[0];
-        const double away_y = here[1] - (*p.stroke_origin)[1];
-        if (p.heading_settled && moved > 0.0) {
-          p.heading_rad =
-              follow_heading(*p.heading_rad, std::atan2(move_y, move_x), moved, follow_cells);
-        } else if (!p.heading_settled && (away_x != 0.0 || away_y != 0.0)) {
-          p.heading_rad = heading_for_travel(std::atan2(away_y, away_x));
-          p.heading_settled = std::hypot(away_x, away_y) >= 0.1 * follow_cells;
-        }
-        pose.twist_rad = p.heading_rad.value_or(0.0);
-      }
-      if (p.stepper.step(p.canvas, p.brush, slot_count(), p.params, pose, move_x, move_y,
-                         step_seconds, before_change)) {
-        p.stroke_touched = true;
-        p.last_contact = pose;
-        ++p.steps;
-        p.cells_updated += p.stepper.last_window_cells();
-        exchange_medium(p.canvas, p.history, p.brush, p.stepper, p.stroke_media);
-      }
+      const double step_seconds = p.pending_seconds + span_seconds * (share - w);
+      p.take_step(pose, here[0] - (*p.step_from)[0], here[1] - (*p.step_from)[1], step_seconds,
+                  follows);
+      p.step_from = here;
+      p.pending_cells = p.pending_seconds = 0.0;
+      w = share;
+      if (share >= 1.0) break;
     }
+    p.pending_cells += length * (1.0 - w);
+    p.pending_seconds += span_seconds * (1.0 - w);
   });
+  if (t1 < 1.0) {  // the path leaves the brush's reach: nothing further can touch
+    p.step_from.reset();
+    p.pending_cells = p.pending_seconds = 0.0;
+  }
   p.pose_before_last = from;
   p.last_pose = target;
+}
+
+void Painting::Impl::take_step(BrushPose pose, double move_x, double move_y, double seconds,
+                               bool follows, bool lifting) {
+  const double moved = std::hypot(move_x, move_y);
+  if (follows) {
+    // Until the brush has left its first spot by a tenth of its size it faces the way it has
+    // gone so far (a first jitter must not set it); then it trails the hand.
+    const double follow_cells = std::max(1.0, brush.settings().size_mm / canvas.cell_mm());
+    if (!stroke_origin) stroke_origin = {pose.x_cells - move_x, pose.y_cells - move_y};
+    const double away_x = pose.x_cells - (*stroke_origin)[0];
+    const double away_y = pose.y_cells - (*stroke_origin)[1];
+    if (heading_settled && moved > 0.0) {
+      heading_rad = follow_heading(*heading_rad, std::atan2(move_y, move_x), moved, follow_cells);
+    } else if (!heading_settled && (away_x != 0.0 || away_y != 0.0)) {
+      heading_rad = heading_for_travel(std::atan2(away_y, away_x));
+      heading_settled = std::hypot(away_x, away_y) >= 0.1 * follow_cells;
+    }
+    pose.twist_rad = heading_rad.value_or(0.0);
+  }
+  if (moved > 0.0) {
+    last_move = {move_x, move_y};
+    last_move_seconds = seconds;
+  }
+  const auto before_change = [this](int index) { before_stroke_tile_change(index); };
+  if (stepper.step(canvas, brush, static_cast<int>(slots.size()), params, pose, move_x, move_y,
+                   seconds, before_change, false, lifting)) {
+    stroke_touched = true;
+    last_contact = pose;
+    ++steps;
+    cells_updated += stepper.last_window_cells();
+    exchange_medium(canvas, history, brush, stepper, stroke_media);
+  }
+}
+
+std::array<double, 2> Painting::Impl::step_end(std::array<double, 2> at) const {
+  // A long step's end lies a whole number of cells from where the steps started (within half
+  // a cell of the path): the head's footprint, sampled between cells, then falls the same way
+  // on the cells at every step. Where the ends fell between cells differently from one step
+  // to the next, alternate steps pressed differently, and the stroke showed it.
+  if (Stepper::max_step_cells(params, brush.cells_across()) <= 1.0 || !step_origin) return at;
+  const auto& o = *step_origin;
+  return {o[0] + std::round(at[0] - o[0]), o[1] + std::round(at[1] - o[1])};
+}
+
+void Painting::Impl::lift_brush() {
+  // A brush does not leave all at once: as the hand lifts, it goes on along its travel for a
+  // while, pressing less and less, so its heel leaves first and its tips last, and the mark
+  // tapers with the bristles' furrows running into its end. Lifted on the spot, the whole
+  // footprint split its film at once and left a flat disc with a rim: a stamp. A mouse's
+  // release (the pressure jumps to 0) and a pen's ease-off both end this way; a pen that has
+  // already eased off has little left to lift. A still brush lifts where it stands.
+  if (!last_contact) return;
+  const BrushPose start = *last_contact;
+  const double max_depth = brush.max_depth_mm();
+  const double pressure = max_depth > 0.0 ? std::clamp(start.depth_mm / max_depth, 0.0, 1.0) : 0.0;
+  const double travel = std::hypot(last_move[0], last_move[1]);
+  const double length =
+      travel > 0.0 ? kLiftLengthShare * pressure * brush.settings().size_mm / canvas.cell_mm()
+                   : 0.0;
+  const double speed = last_move_seconds > 0.0 ? travel / last_move_seconds : 0.0;  // cells/s
+  const double step_cells = Stepper::max_step_cells(params, brush.cells_across());
+  const auto steps = static_cast<int>(std::max(
+      {std::ceil(length / step_cells),
+       std::ceil(kLiftSeconds / Stepper::max_step_seconds(params, canvas.cell_mm())), 1.0}));
+  const double seconds =
+      (length > 0.0 && speed > 0.0 ? length / speed : kLiftSeconds) / static_cast<double>(steps);
+  // (take_step keeps the last move: the lift's own would turn it.)
+  const std::array<double, 2> along =
+      travel > 0.0 ? std::array<double, 2>{last_move[0] / travel, last_move[1] / travel}
+                   : std::array<double, 2>{0.0, 0.0};
+  // The mean paint the brush carries (mm), as far as its tips present it.
+  double on_brush = 0.0;
+  for (const float height : brush.volume_mm()) on_brush += height;
+  const double carried =
+      std::min(on_brush / std::max<std::size_t>(brush.covered_cells(), 1), params.tip_film_mm);
+  std::array<double, 2> from{start.x_cells, start.y_cells};
+  step_origin = from;  // the lift's steps fall on whole cells from its start, as the stroke's
+  const bool follows = !stroke_has_twist;
+  for (int k = 1; k <= steps; ++k) {
+    const double u = static_cast<double>(k) / steps;
+    BrushPose pose = start;
+    // The tip rises from its last depth to the paint it carries above the surface, where the
+    // last of the film between brush and canvas breaks.
+    pose.depth_mm = start.depth_mm - (start.depth_mm + carried) * u;
+    const auto at =
+        step_end({start.x_cells + along[0] * length * u, start.y_cells + along[1] * length * u});
+    pose.x_cells = at[0];
+    pose.y_cells = at[1];
+    take_step(pose, at[0] - from[0], at[1] - from[1], seconds, follows, true);
+    from = at;
+  }
 }
 
 // --- drying ------------------------------------------------------------------------------

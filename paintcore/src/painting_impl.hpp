@@ -60,7 +60,15 @@ struct Painting::Impl {
   std::optional<double> heading_rad;
   bool heading_settled = false;                        // it now trails the hand
   std::optional<std::array<double, 2>> stroke_origin;  // where the stroke began (cells)
+  // The brush steps by distance along its path, not once a sample: where its last step ended
+  // and the path and time since then, which the next sample's steps (or the stroke's end)
+  // carry on from. So how often the pen was sampled leaves no trace in the paint.
+  std::optional<std::array<double, 2>> step_from;    // cells
+  std::optional<std::array<double, 2>> step_origin;  // where the steps started (cells)
+  double pending_cells = 0.0, pending_seconds = 0.0;
   std::optional<BrushPose> last_contact;  // where the brush last touched paint: it lifts there
+  std::array<double, 2> last_move{};      // the last step's move (cells)
+  double last_move_seconds = 0.0;         // and how long it took
   std::vector<int> stroke_tiles;          // tiles the stroke changed: where its paint levels
   StrokeMedia stroke_media;               // the media the stroke's brush laid, step by step
 
@@ -73,6 +81,17 @@ struct Painting::Impl {
         before.weave_origin_y_cells != now.weave_origin_y_cells)
       stepper = Stepper();
   }
+
+  // One simulation step to `pose`, moved (move_x, move_y) cells from the last step's end in
+  // `seconds`: turns a head that follows the hand, then steps and keeps the stroke's books.
+  void take_step(BrushPose pose, double move_x, double move_y, double seconds, bool follows,
+                 bool lifting = false);
+  // Where a long step may end: a whole number of cells from where the steps started (see
+  // stroke_to); any point for a brush that steps a cell at a time.
+  std::array<double, 2> step_end(std::array<double, 2> at) const;
+  // The brush leaves the canvas as a brush does: from its last contact it goes on along its
+  // travel, the pressure easing off, its tips last; see end_stroke.
+  void lift_brush();
 
   // What a stroke's steps call before they first change a tile: keep it for undo, and note
   // it as the stroke's.

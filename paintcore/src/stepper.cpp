@@ -15,8 +15,6 @@ namespace impasto::paintcore {
 namespace {
 
 constexpr std::size_t kBaseCacheTiles = 256;
-// The bristles even out once per this distance travelled (mm), not every step.
-constexpr double kBrushFlowBatchMm = 0.5;
 
 // Sets the one-cell border of a padded grid to zero.
 void zero_border(float* grid, int width, int height) {
@@ -63,13 +61,6 @@ void Stepper::resize(int slot_count, std::size_t brush_cells, int substeps) {
     if (grid->size() < n) grid->resize(n);
   if (pigment_.size() < n * slots) pigment_.resize(n * slots);
   if (new_pigment_.size() < n * slots) new_pigment_.resize(n * slots);
-  if (substeps > 1) {
-    if (substep_wet_.size() < n) substep_wet_.resize(n);
-    if (substep_pigment_.size() < n * slots) substep_pigment_.resize(n * slots);
-    zero_border(substep_wet_.data(), w.width, w.height);
-    for (std::size_t s = 0; s < slots; ++s)
-      zero_border(substep_pigment_.data() + s * n, w.width, w.height);
-  }
   if (brush_cell_.size() < cells) brush_cell_.resize(cells);
   if (brush_paint_at_.size() < cells) brush_paint_at_.resize(cells);
   if (brush_share_cap_.size() < cells) brush_share_cap_.resize(cells);
@@ -80,6 +71,12 @@ void Stepper::resize(int slot_count, std::size_t brush_cells, int substeps) {
     zero_border(faces->data(), w.width, w.height);
   }
   if (xfer_ratio_.size() < cells) xfer_ratio_.resize(cells);
+  if (substeps > 1) {
+    if (exchanged_.size() < cells) exchanged_.resize(cells);
+    for (auto* grid : {&head_level_, &pen_now_})
+      if (grid->size() < n) grid->resize(n);
+    zero_border(pen_now_.data(), w.width, w.height);
+  }
   if (xfer_pigment_.size() < cells * slots) xfer_pigment_.resize(cells * slots);
   if (brush_share_.size() < brush_cells) brush_share_.resize(brush_cells);
   row_contacts_.assign(static_cast<std::size_t>(w.height), 0);
@@ -165,7 +162,6 @@ void Stepper::penetrate_rows(const StepInputs& in, int r0, int r1) {
   head.step_u = static_cast<float>(in.placement.to_brush[0]);
   head.step_v = static_cast<float>(in.placement.to_brush[2]);
   head.tip_mm = in.tip_mm;
-  head.lift_off = in.lift_off;
   head.footing_mm = in.footing_mm;
   head.ground_fill = in.ground_fill;
   head.coverage_transposed = in.brush->padded_coverage_transposed().data();
@@ -253,7 +249,8 @@ IMPASTO_SIMD_CLONES void Stepper::velocity_rows(const StepInputs& in, int r0, in
 }
 
 IMPASTO_SIMD_CLONES void Stepper::shifted_velocity_rows(const StepInputs& in, int shift_x,
-                                                        int shift_y, int r0, int r1) {
+                                                        int shift_y, float brush_vx, float brush_vy,
+                                                        int r0, int r1) {
   // velocity_rows with the contact where it was shift cells back along the move: cell
   // (x, y) moves as the step's cell (x + shift_x, y + shift_y) does.
   const Window& w = win_;
@@ -276,8 +273,8 @@ IMPASTO_SIMD_CLONES void Stepper::shifted_velocity_rows(const StepInputs& in, in
         contact_weight_.data() + static_cast<std::ptrdiff_t>(from_y) * w.width + shift_x;
     const int begin = std::clamp(-shift_x, lo, hi), end = std::clamp(w.width - shift_x, lo, hi);
     for (int x = begin; x < end; ++x) {
-      vx[x] = weight[x] * in.brush_vx;
-      vy[x] = weight[x] * in.brush_vy;
+      vx[x] = weight[x] * brush_vx;
+      vy[x] = weight[x] * brush_vy;
     }
     keep_paint_on_canvas(w, y, last_x, last_y, vx, vy);
   }
@@ -331,16 +328,114 @@ void Stepper::transfer_rows(const StepInputs& in, int r0, int r1) {
   }
 }
 
-IMPASTO_SIMD_CLONES void Stepper::squeeze_rows(const StepInputs& in, int r0, int r1) {
+void Stepper::shifted_transfer_rows(const StepInputs& in, Shift shift, float relax,
+                                    const float* wet, float* new_wet, float* new_pigment, int r0,
+                                    int r1) {
+  // transfer_rows for one sub-step of a long step: the head where it was then, which is the
+  // step's own contact shifted back along the move (cell (x, y) meets the brush cell that the
+  // step's cell (x + shift.x, y + shift.y) does), with the brush's paint as the sub-steps
+  // before left it. `wet` is the sub-step's input, new_wet and new_pigment its output.
+  const Window& w = win_;
+  const std::size_t n = w.padded();
+  const std::size_t cells = static_cast<std::size_t>(w.width) * w.height;
+  const FilmSplit split{in.tip_film_mm, relax, in.deposit_share, in.ground_fill, in.footing_mm};
+  const float* brush_volume = in.brush->volume_mm().data();
+  const float* brush_pigment = in.brush->pigment_mm().data();
+  const std::size_t brush_cells = in.brush->cell_count();
+  thread_local std::vector<float> on_brush, cap;
+  if (on_brush.size() < static_cast<std::size_t>(w.width)) {
+    on_brush.resize(static_cast<std::size_t>(w.width));
+    cap.resize(static_cast<std::size_t>(w.width));
+  }
+  for (int y = r0; y < r1; ++y) {
+    const int from_y = y + shift.y;
+    // The row's active span, where the shifted contact can lie.
+    const int lo = std::max(span_lo_[static_cast<std::size_t>(y)], -shift.x);
+    const int hi = std::min(span_hi_[static_cast<std::size_t>(y)], w.width - shift.x);
+    const std::size_t first = static_cast<std::size_t>(y) * w.width;
+    if (hi <= lo || from_y < 0 || from_y >= w.height) {
+      // Nothing meets this row now: no exchange.
+      const int a = span_lo_[static_cast<std::size_t>(y)],
+                b = span_hi_[static_cast<std::size_t>(y)];
+      if (b > a)
+        std::fill(xfer_.begin() + static_cast<std::ptrdiff_t>(first + a),
+                  xfer_.begin() + static_cast<std::ptrdiff_t>(first + b), 0.0f);
+      continue;
+    }
+    const std::size_t from_first =
+        static_cast<std::size_t>(from_y) * w.width + static_cast<std::size_t>(lo + shift.x);
+    const std::int32_t* cell = brush_cell_.data() + from_first;
+    const int count = hi - lo;
+    for (int x = 0; x < count; ++x) {
+      const std::int32_t b = cell[x];
+      on_brush[static_cast<std::size_t>(x)] = b >= 0 ? brush_volume[b] : 0.0f;
+      const std::int32_t sharing =
+          b >= 0 && in.sharing_binds ? brush_share_[static_cast<std::size_t>(b)] : 1;
+      cap[static_cast<std::size_t>(x)] = sharing <= 1 ? on_brush[static_cast<std::size_t>(x)]
+                                                      : on_brush[static_cast<std::size_t>(x)] *
+                                                            in.inv_deposit_share /
+                                                            static_cast<float>(sharing);
+    }
+    // Cells of the span beyond the shifted contact exchange nothing.
+    const int a = span_lo_[static_cast<std::size_t>(y)], b = span_hi_[static_cast<std::size_t>(y)];
+    std::fill(xfer_.begin() + static_cast<std::ptrdiff_t>(first + a),
+              xfer_.begin() + static_cast<std::ptrdiff_t>(first + b), 0.0f);
+    const std::size_t row = static_cast<std::size_t>(y + 1) * w.stride() + 1 + lo;
+    const std::size_t from_row = static_cast<std::size_t>(from_y + 1) * w.stride() + 1 +
+                                 static_cast<std::size_t>(lo + shift.x);
+    transfer_row(count, split, cell, on_brush.data(), cap.data(), pen_.data() + from_row,
+                 ground_.data() + row, wet + row, new_wet + row, xfer_.data() + first + lo,
+                 xfer_ratio_.data() + first + lo);
+    for (int s = 0; s < in.slot_count; ++s) {
+      const std::size_t k = static_cast<std::size_t>(s);
+      transfer_pigment_row(count, cell, xfer_.data() + first + lo, xfer_ratio_.data() + first + lo,
+                           brush_pigment + k * brush_cells, new_pigment + k * n + row,
+                           xfer_pigment_.data() + k * cells + first + lo);
+    }
+    for (int x = a; x < b; ++x)
+      exchanged_[first + static_cast<std::size_t>(x)] += xfer_[first + static_cast<std::size_t>(x)];
+  }
+}
+
+void Stepper::shifted_transfer_to_brush(Brush& brush, int slot_count, Shift shift, int r0, int r1) {
+  // transfer_to_brush for a sub-step: the brush cells of the shifted contact.
+  const Window& w = win_;
+  const std::size_t cells = static_cast<std::size_t>(w.width) * w.height;
+  const std::size_t brush_cells = brush.cell_count();
+  float* volume = brush.volume_mm().data();
+  float* pigment = brush.pigment_mm().data();
+  for (int y = r0; y < r1; ++y) {
+    const int from_y = y + shift.y;
+    const int lo = std::max(span_lo_[static_cast<std::size_t>(y)], -shift.x);
+    const int hi = std::min(span_hi_[static_cast<std::size_t>(y)], w.width - shift.x);
+    if (hi <= lo || from_y < 0 || from_y >= w.height) continue;
+    const std::size_t first = static_cast<std::size_t>(y) * w.width;
+    const std::int32_t* cell =
+        brush_cell_.data() + static_cast<std::size_t>(from_y) * w.width + shift.x;
+    for (int x = lo; x < hi; ++x) {
+      if (cell[x] < 0) continue;
+      const auto bc = static_cast<std::size_t>(cell[x]);
+      const std::size_t c = first + static_cast<std::size_t>(x);
+      volume[bc] -= xfer_[c];
+      for (std::size_t k = 0; k < static_cast<std::size_t>(slot_count); ++k)
+        pigment[k * brush_cells + bc] -= xfer_pigment_[k * cells + c];
+    }
+  }
+}
+
+IMPASTO_SIMD_CLONES void Stepper::squeeze_rows(const float* pen_grid, Shift shift, float c, int r0,
+                                               int r1) {
   // The squeeze: paint flows across each face between cells, from the side the head presses
   // deeper to the other, flux = h v with v = 2 c dp per face. Faces, not cell velocities: a
   // cell-centred gradient cannot see a checkerboard, which then grew under a still brush.
   // Saturated at an eighth of the penetration difference and a quarter of the source's
   // paint per face, so four faces together never overshoot or take more than a cell holds.
-  // (Branch-free, and faces on padded grids whose border stays 0: the loops vectorise.)
+  // pen_grid: how deep the head presses each cell; its contact (how fully it moves the
+  // paint) is the step's shifted by `shift` (a long step's sub-step: see
+  // shifted_transfer_rows). (Branch-free, and faces on padded grids whose border stays 0:
+  // the loops vectorise.)
   const Window& w = win_;
   const std::ptrdiff_t s = w.stride();
-  const float c = in.gradient_scale;
   // The signed share of the source's paint that crosses (> 0: from this cell).
   const auto share = [c](float dp, float h_from, float h_to, float contact) {
     const float h = dp > 0.0f ? h_from : h_to;
@@ -348,24 +443,79 @@ IMPASTO_SIMD_CLONES void Stepper::squeeze_rows(const StepInputs& in, int r0, int
     const float ratio = contact * flux / std::max(h, 1e-30f);
     return dp > 0.0f ? ratio : -ratio;
   };
+  // Cells whose shifted contact lies in the window: [lo, hi).
+  const int lo = std::max(0, -shift.x), hi = std::min(w.width, w.width - shift.x);
   for (int y = r0; y < r1; ++y) {
     const std::ptrdiff_t row = (y + 1) * s + 1;
-    const std::size_t first = static_cast<std::size_t>(y) * w.width;
-    const float* __restrict pen = pen_.data() + row;
-    const float* __restrict wet = new_wet_.data() + row;
-    const float* __restrict weight = contact_weight_.data() + first;
     float* __restrict east = face_east_.data() + row;
     float* __restrict south = face_south_.data() + row;
-    const int last = w.width - 1;
-    for (int x = 0; x < last; ++x)
+    const int from_y = y + shift.y;
+    if (from_y < 0 || from_y >= w.height || hi <= lo) {
+      std::fill_n(east, w.width, 0.0f);
+      std::fill_n(south, w.width, 0.0f);
+      continue;
+    }
+    const std::size_t first = static_cast<std::size_t>(from_y) * w.width;
+    const float* __restrict pen = pen_grid + row;
+    const float* __restrict wet = new_wet_.data() + row;
+    const float* __restrict weight = contact_weight_.data() + first + shift.x;
+    std::fill_n(east, lo, 0.0f);
+    std::fill_n(south, lo, 0.0f);
+    const int last = hi - 1;
+    for (int x = lo; x < last; ++x)
       east[x] = share(pen[x] - pen[x + 1], wet[x], wet[x + 1], std::max(weight[x], weight[x + 1]));
-    east[last] = 0.0f;  // the window's edge: no face
-    if (y + 1 < w.height) {
+    std::fill(east + last, east + w.width, 0.0f);  // the window's edge: no face
+    if (y + 1 < w.height && from_y + 1 < w.height) {
       const float* __restrict below = weight + w.width;
-      for (int x = 0; x < w.width; ++x)
+      for (int x = lo; x < hi; ++x)
         south[x] = share(pen[x] - pen[x + s], wet[x], wet[x + s], std::max(weight[x], below[x]));
+      std::fill(south + hi, south + w.width, 0.0f);
     } else {
       std::fill_n(south, w.width, 0.0f);
+    }
+  }
+}
+
+void Stepper::sub_step_penetration_rows(Shift shift, int r0, int r1) {
+  // How deep the head presses each cell in a long step's sub-step: its underside where the
+  // step's contact, shifted, puts it (head_level_), against the paint as the sub-step has
+  // left it. The step's own penetration, shifted, would not see the paint the squeeze moves:
+  // pressed from where it had been, the paint overshot into a ripple across the stroke.
+  const Window& w = win_;
+  const std::ptrdiff_t s = w.stride();
+  for (int y = r0; y < r1; ++y) {
+    const std::ptrdiff_t row = (y + 1) * s + 1;
+    float* pen = pen_now_.data() + row;
+    std::fill_n(pen, w.width, 0.0f);
+    const int from_y = y + shift.y;
+    if (from_y < 0 || from_y >= w.height) continue;
+    const int lo = std::max(span_lo_[static_cast<std::size_t>(y)], -shift.x);
+    const int hi = std::min(span_hi_[static_cast<std::size_t>(y)], w.width - shift.x);
+    const std::ptrdiff_t from_row = (from_y + 1) * s + 1 + shift.x;
+    const std::int32_t* cell =
+        brush_cell_.data() + static_cast<std::size_t>(from_y) * w.width + shift.x;
+    const float* level = head_level_.data() + from_row;
+    const float* ground = ground_.data() + row;
+    const float* wet = new_wet_.data() + row;
+    for (int x = lo; x < hi; ++x)
+      pen[x] = cell[x] >= 0 ? std::max(ground[x] + wet[x] - level[x], 0.0f) : 0.0f;
+  }
+}
+
+void Stepper::copy_span_rows(int slot_count, int r0, int r1) {
+  // A sub-step without a squeeze: its result, new_ grids, is the next one's input, the
+  // gathered grids (only the rows' spans differ).
+  const Window& w = win_;
+  const std::size_t n = w.padded();
+  for (int k = 0; k <= slot_count; ++k) {
+    const float* q =
+        k == 0 ? new_wet_.data() : new_pigment_.data() + static_cast<std::size_t>(k - 1) * n;
+    float* out = k == 0 ? wet_.data() : pigment_.data() + static_cast<std::size_t>(k - 1) * n;
+    for (int y = r0; y < r1; ++y) {
+      const int lo = span_lo_[static_cast<std::size_t>(y)];
+      const int hi = span_hi_[static_cast<std::size_t>(y)];
+      const std::size_t row = static_cast<std::size_t>(y + 1) * w.stride() + 1;
+      std::copy(q + row + lo, q + row + hi, out + row + lo);
     }
   }
 }
@@ -593,10 +743,10 @@ void Stepper::scatter(Canvas& canvas, int slot_count, const BeforeTileChange& be
 
 bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const SimulationParams& params,
                    const BrushPose& pose, double move_x, double move_y, double seconds,
-                   const BeforeTileChange& before_change, bool lift_off) {
+                   const BeforeTileChange& before_change, bool lift_off, bool lifting) {
   last_window_cells_ = 0;
   // A pen that does not press (pressure 0) holds the brush off the paint.
-  if (brush.empty() || !(pose.depth_mm > 0.0)) return false;
+  if (brush.empty() || !(pose.depth_mm > 0.0 || lifting)) return false;
   brush.ensure_slots(slot_count);
   StepInputs in{};
   in.canvas = &canvas;
@@ -641,6 +791,26 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
     shifts_.push_back({static_cast<int>(std::lround(back * move_x)),
                        static_cast<int>(std::lround(back * move_y))});
   }
+  // What each sub-step moves: from the last position (the step's start, exactly, for the
+  // first) to its own, whole cells apart but for the first. The drag, the film split and the
+  // squeeze go by these, so the sub-steps of consecutive steps tile the path: with even
+  // shares, a step of 12.5 cells split in 13 counted its half-cell first move as a whole one,
+  // and pressed a line into the paint every step. Their lengths are scaled to add up to the
+  // step's (a staircase is longer than the diagonal it follows).
+  sub_moves_.clear();
+  {
+    double from_x = move_x, from_y = move_y, walked = 0.0;
+    for (int j = 1; j <= substeps; ++j) {
+      const Shift to = j < substeps ? shifts_[static_cast<std::size_t>(j - 1)] : Shift{0, 0};
+      const double dx = from_x - to.x, dy = from_y - to.y;
+      sub_moves_.push_back({dx, dy, std::hypot(dx, dy)});
+      walked += sub_moves_.back().length;
+      from_x = to.x;
+      from_y = to.y;
+    }
+    const double scale = walked > 0.0 ? std::hypot(move_x, move_y) / walked : 0.0;
+    for (SubMove& sub : sub_moves_) sub.length *= scale;
+  }
   const bool long_step = travel > 1.0 + 1e-6;
   const int back_x = long_step ? static_cast<int>(std::ceil(std::abs(move_x))) : 0;
   const int back_y = long_step ? static_cast<int>(std::ceil(std::abs(move_y))) : 0;
@@ -677,8 +847,8 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   in.footing_mm = static_cast<float>(footing_mm(canvas, cx, cy));
   in.ground_fill = static_cast<float>(params.ground_fill);
   in.tip_mm = static_cast<float>(rest / rest_cells - pose.depth_mm);
-  in.brush_vx = static_cast<float>(params.drag * move_x / substeps);
-  in.brush_vy = static_cast<float>(params.drag * move_y / substeps);
+  in.brush_vx = static_cast<float>(params.drag * sub_moves_.back().x);
+  in.brush_vy = static_cast<float>(params.drag * sub_moves_.back().y);
   // The squeeze moves paint down the penetration's slope (mm/mm) by plough mm per mm
   // travelled plus squeeze_mm_s per second: in cells this step, per unit slope, over the
   // central difference's two cells.
@@ -692,8 +862,9 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   in.tip_film_mm = static_cast<float>(params.tip_film_mm);
   in.lift_off = lift_off;
   if (lift_off) {
-    // The brush leaves the paint: the film between bristles and canvas breaks in its
-    // middle, at once (no motion, no squeeze).
+    // The brush leaves the paint: the film between the tips still touching (the lift eased
+    // the pressure off, Painting::end_stroke) and the canvas breaks in its middle, at once
+    // (no motion, no squeeze).
     in.relax = 1.0f;
     in.deposit_share = static_cast<float>(params.lift_share);
   }
@@ -715,7 +886,7 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   // and the shares advection will move (each needs only its own row: one pass).
   advection_.resize(cols, rows);
   // (The drag moves every cell's paint the brush's way, or not at all: one quadrant.)
-  const int quadrant_x = in.brush_vx < 0.0f ? -1 : 1, quadrant_y = in.brush_vy < 0.0f ? -1 : 1;
+  const int quadrant_x = move_x < 0.0 ? -1 : 1, quadrant_y = move_y < 0.0 ? -1 : 1;
   parallel_rows(rows, cols, [&](int r0, int r1) {
     gather_rows(in, r0, r1);
     penetrate_rows(in, r0, r1);
@@ -729,7 +900,6 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
 
   // 2. Advect volume and every active pigment with the same shares, then the transfer.
   const std::size_t cells = static_cast<std::size_t>(cols) * rows;
-  if (in.sharing_binds) share_brush_cells(cells, in.inv_deposit_share);
   from_.assign({wet_.data()});
   to_.assign({new_wet_.data()});
   for (int s = 0; s < slot_count; ++s) {
@@ -762,7 +932,14 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
     if (span_hi_[static_cast<std::size_t>(y)] <= span_lo_[static_cast<std::size_t>(y)])
       span_lo_[static_cast<std::size_t>(y)] = span_hi_[static_cast<std::size_t>(y)] = 0;
   }
-  if (substeps > 1) need_shares(rows, cols, quadrant_x, quadrant_y);
+  if (substeps > 1) {
+    need_shares(rows, cols, quadrant_x, quadrant_y);
+    // The head's underside over each cell, where the step's contact found it pressing (at
+    // the surface where it did not): what a sub-step's penetration measures against.
+    const std::size_t n = win_.padded();
+    for (std::size_t i = 0; i < n; ++i) head_level_[i] = ground_[i] + wet_[i] - pen_[i];
+  }
+  if (in.sharing_binds) share_brush_cells(cells, in.inv_deposit_share);
   int pass = 1;  // of the advection's sub-steps
   const auto advect_rows = [&](int r0, int r1) {
     for (int y = r0; y < r1; ++y) {
@@ -780,56 +957,93 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   };
   // A sub-step's shares: its contact's velocities, on the volume it starts from. Each row's
   // shares need only that row's, so a sub-step's pass prepares the next one's.
-  const auto prepare_rows = [&](Shift shift, const float* volume, int r0, int r1) {
-    shifted_velocity_rows(in, shift.x, shift.y, r0, r1);
+  // Sub-step j (from 1) has the contact shifted by shifts_[j - 1] (none for the last) and
+  // moves by sub_moves_[j - 1].
+  const auto shift_of = [&](int j) {
+    return j < substeps ? shifts_[static_cast<std::size_t>(j - 1)] : Shift{0, 0};
+  };
+  const auto prepare_rows = [&](int j, const float* volume, int r0, int r1) {
+    const Shift shift = shift_of(j);
+    const SubMove& sub = sub_moves_[static_cast<std::size_t>(j - 1)];
+    shifted_velocity_rows(in, shift.x, shift.y, static_cast<float>(params.drag * sub.x),
+                          static_cast<float>(params.drag * sub.y), r0, r1);
     advection_.prepare_quadrant_spans(r0, r1, vx_.data(), vy_.data(), volume, in.min_film_mm,
                                       need_lo_.data(), need_hi_.data());
   };
-  if (substeps > 1)
-    parallel_rows(rows, cols, [&](int r0, int r1) { prepare_rows(shifts_[0], from_[0], r0, r1); });
-  advection_.use_prepared_quadrant(quadrant_x, quadrant_y);
-  for (int substep = 1; substep < substeps; ++substep) {
-    // A long step's earlier sub-step, with the contact shifted back: from what the one before
-    // left (swapped out of the new_ grids) back into them. (The transfer reads the step's
-    // input, wet_, untouched.) The last sub-step has the step's own contact.
-    const Shift next =
-        substep + 1 < substeps ? shifts_[static_cast<std::size_t>(substep)] : Shift{0, 0};
+  const auto& m = in.placement.to_canvas;
+  // Canvas rows that share a brush cell lie less than a chunk apart, so chunks of one parity
+  // never write the same brush cell: each set runs in parallel, and every brush cell's sum
+  // has one fixed order.
+  const int chunk = static_cast<int>(std::floor(std::abs(m[2]) + std::abs(m[3]))) + 2;
+  const bool squeezes = in.gradient_scale > 0.0f;
+  swept_ = substeps > 1;
+  if (!swept_) {
+    // 3. One step: the drag and the film split (which reads the step's input, wet_,
+    // untouched), the brush gives what the canvas took, and the squeeze's faces.
+    advection_.use_prepared_quadrant(quadrant_x, quadrant_y);
     parallel_rows(rows, cols, [&](int r0, int r1) {
       advect_rows(r0, r1);
-      prepare_rows(next, to_[0], r0, r1);
+      if (transfers) transfer_rows(in, r0, r1);
     });
-    advection_.use_prepared_quadrant(quadrant_x, quadrant_y);
-    ++pass;
-    std::swap(new_wet_, substep_wet_);
-    std::swap(new_pigment_, substep_pigment_);
-    from_.assign({substep_wet_.data()});
-    to_.assign({new_wet_.data()});
-    for (int s = 0; s < slot_count; ++s) {
-      from_.push_back(substep_pigment_.data() + static_cast<std::size_t>(s) * win_.padded());
-      to_.push_back(new_pigment_.data() + static_cast<std::size_t>(s) * win_.padded());
+    if (transfers || squeezes) {
+      parallel_row_chunks(rows, chunk, cols, [&](int r0, int r1) {
+        if (transfers) transfer_to_brush(brush, slot_count, r0, r1);
+        if (squeezes) squeeze_rows(pen_.data(), Shift{0, 0}, in.gradient_scale, r0, r1);
+      });
+      if (transfers) clamp_brush(brush, slot_count);
+    }
+  } else {
+    // 3. A long step: its sub-steps each drag, split the film and squeeze with the head
+    // where it was then (the step's contact shifted back along the move) and their share of
+    // the step's distance and time, the brush giving and taking as it goes. Only the contact
+    // is found once. Done once for the whole step at its end, the split met each cell with
+    // one brush row a step, which one by where the cell lay between two step ends, and the
+    // squeeze saturated and pushed up the head's trailing edge there: a ridge every step,
+    // and edges that long steps left flatter than short ones. Each sub-step goes from the
+    // gathered grids (wet_, pigment_) to the new_ ones and its squeeze back; the last
+    // sub-step's squeeze is applied as the result is scattered, as a short step's is.
+    if (transfers) std::fill_n(exchanged_.begin(), cells, 0.0f);
+    const double walked = std::hypot(move_x, move_y);
+    parallel_rows(rows, cols, [&](int r0, int r1) { prepare_rows(1, wet_.data(), r0, r1); });
+    for (int j = 1; j <= substeps; ++j) {
+      const Shift here = shift_of(j);
+      const double share = walked > 0.0
+                               ? sub_moves_[static_cast<std::size_t>(j - 1)].length / walked
+                               : 1.0 / substeps;
+      const auto relax =
+          static_cast<float>(transfer_relaxation(share * distance_mm, share * seconds, params));
+      advection_.use_prepared_quadrant(quadrant_x, quadrant_y);
+      parallel_rows(rows, cols, [&](int r0, int r1) {
+        advect_rows(r0, r1);
+        if (transfers)
+          shifted_transfer_rows(in, here, relax, wet_.data(), new_wet_.data(), new_pigment_.data(),
+                                r0, r1);
+        if (squeezes) sub_step_penetration_rows(here, r0, r1);
+      });
+      const auto c = static_cast<float>(in.gradient_scale * share);
+      if (transfers || squeezes) {
+        parallel_row_chunks(rows, chunk, cols, [&](int r0, int r1) {
+          if (transfers) shifted_transfer_to_brush(brush, slot_count, here, r0, r1);
+          if (squeezes) squeeze_rows(pen_now_.data(), here, c, r0, r1);
+        });
+        if (transfers) clamp_brush(brush, slot_count);
+      }
+      if (j == substeps) break;
+      parallel_rows(rows, cols, [&](int r0, int r1) {
+        if (squeezes)
+          apply_squeeze_rows(slot_count, r0, r1);
+        else
+          copy_span_rows(slot_count, r0, r1);
+        prepare_rows(j + 1, wet_.data(), r0, r1);
+      });
+      ++pass;
     }
   }
-  parallel_rows(rows, cols, [&](int r0, int r1) {
-    advect_rows(r0, r1);
-    if (transfers) transfer_rows(in, r0, r1);
-  });
-  // 3. The brush gives what the canvas took, and the squeeze's faces. Canvas rows that share
-  // a brush cell lie less than a chunk apart, so chunks of one parity never write the same
-  // brush cell: each set runs in parallel, and every brush cell's sum has one fixed order.
-  const bool squeezes = in.gradient_scale > 0.0f;
-  if (transfers || squeezes) {
-    const auto& m = in.placement.to_canvas;
-    const int chunk = static_cast<int>(std::floor(std::abs(m[2]) + std::abs(m[3]))) + 2;
-    parallel_row_chunks(rows, chunk, cols, [&](int r0, int r1) {
-      if (transfers) transfer_to_brush(brush, slot_count, r0, r1);
-      if (squeezes) squeeze_rows(in, r0, r1);
-    });
-    if (transfers) clamp_brush(brush, slot_count);
-  }
-  // Paint in the bristles flows toward the tips that gave theirs away: over every
-  // kBrushFlowBatchMm travelled at once (the relaxation composes over distance).
+  // Paint in the bristles flows toward the tips that gave theirs away, every step by the
+  // distance it went. (Batched over 0.5 mm, it evened out at a rhythm of its own, which a
+  // stroke could show.)
   brush_flow_pending_mm_ += distance_mm;
-  if (brush_flow_pending_mm_ >= kBrushFlowBatchMm) finish_stroke(brush, slot_count, params);
+  finish_stroke(brush, slot_count, params);
 
   // 4. The squeeze applied, and the result written back to the tiles.
   scatter(canvas, slot_count, before_change, squeezes);

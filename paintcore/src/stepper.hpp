@@ -27,11 +27,13 @@ class Stepper {
   // cell: the CFL limits, see max_step_seconds; a long step's drag is advected in sub-steps
   // of at most long_step_drag_cells travelled, and of at most a cell dragged). With lift_off the
   // brush, still, leaves the paint: the film splits fully by SimulationParams::lift_share. Returns
-  // false, changing nothing, when the brush touches no paint surface. Call inside the painting's
+  // false, changing nothing, when the brush touches no paint surface. With lifting, the brush
+  // rises off the paint (Painting's lift): a depth below 0 holds its tip that far above the
+  // surface, where only the paint hanging under it still touches. Call inside the painting's
   // task arena.
   bool step(Canvas& canvas, Brush& brush, int slot_count, const SimulationParams& params,
             const BrushPose& pose, double move_x, double move_y, double seconds,
-            const BeforeTileChange& before_change, bool lift_off = false);
+            const BeforeTileChange& before_change, bool lift_off = false, bool lifting = false);
 
   // The longest time one step may take so that the squeeze moves paint at most half a cell
   // where the penetration's slope is 1.
@@ -51,6 +53,14 @@ class Stepper {
     if (!last_transferred_) return;
     for (int y = 0; y < win_.height; ++y) {
       const std::size_t first = static_cast<std::size_t>(y) * win_.width;
+      if (swept_) {  // a long step's sub-steps: what each cell exchanged over them all
+        for (int x = span_lo_[static_cast<std::size_t>(y)];
+             x < span_hi_[static_cast<std::size_t>(y)]; ++x) {
+          const std::size_t c = first + static_cast<std::size_t>(x);
+          if (exchanged_[c] != 0.0f) take(win_.x0 + x, win_.y0 + y, exchanged_[c]);
+        }
+        continue;
+      }
       for (int x = contact_lo_[static_cast<std::size_t>(y)];
            x < contact_hi_[static_cast<std::size_t>(y)]; ++x) {
         const std::size_t c = first + static_cast<std::size_t>(x);
@@ -100,10 +110,19 @@ class Stepper {
   void penetrate_rows(const StepInputs& in, int r0, int r1);
   void velocity_rows(const StepInputs& in, int r0, int r1);
   // A long step's sub-step's velocities, on each row's need_lo_..need_hi_ only.
-  void shifted_velocity_rows(const StepInputs& in, int shift_x, int shift_y, int r0, int r1);
+  void shifted_velocity_rows(const StepInputs& in, int shift_x, int shift_y, float brush_vx,
+                             float brush_vy, int r0, int r1);
   void need_shares(int rows, int cols, int quadrant_x, int quadrant_y);
   void transfer_rows(const StepInputs& in, int r0, int r1);
-  void squeeze_rows(const StepInputs& in, int r0, int r1);
+  struct Shift {
+    int x, y;
+  };
+  void shifted_transfer_rows(const StepInputs& in, Shift shift, float relax, const float* wet,
+                             float* new_wet, float* new_pigment, int r0, int r1);
+  void shifted_transfer_to_brush(Brush& brush, int slot_count, Shift shift, int r0, int r1);
+  void squeeze_rows(const float* pen_grid, Shift shift, float c, int r0, int r1);
+  void sub_step_penetration_rows(Shift shift, int r0, int r1);
+  void copy_span_rows(int slot_count, int r0, int r1);
   void apply_squeeze_rows(int slot_count, int r0, int r1);
   void share_brush_cells(std::size_t cells, float inv_deposit_share);
   void transfer_to_brush(Brush& brush, int slot_count, int r0, int r1);
@@ -121,8 +140,6 @@ class Stepper {
   // Padded window grids (see advection.hpp for the layout).
   std::vector<float> ground_, wet_, pen_, vx_, vy_, new_wet_;
   std::vector<float> pigment_, new_pigment_;  // slot-major, padded grids
-  // Advection's sub-steps after the first go from these to new_wet_, new_pigment_ (swapped).
-  std::vector<float> substep_wet_, substep_pigment_;
   // Unpadded per-cell data of the transfer.
   std::vector<std::int32_t> brush_cell_;       // brush cell touching each window cell, or -1
   std::vector<float> brush_paint_at_;          // its paint height (0 where none touches)
@@ -131,16 +148,22 @@ class Stepper {
   std::vector<float> contact_weight_;          // how fully the head moves each cell's paint, 0..1
   std::vector<float> face_east_, face_south_;  // squeeze: signed share crossing each face
   std::vector<float> xfer_ratio_;              // xfer_ / the source's paint height
-  std::vector<float> xfer_pigment_;            // pigment moved brush -> canvas, slot-major
-  std::vector<std::int32_t> brush_share_;      // canvas cells touching each brush cell
+  // A long step's film split runs in its sub-steps (see step): the paint each cell exchanged
+  // over them all (signed, as xfer_), and the brush paint of one row as that sub-step meets it.
+  std::vector<float> exchanged_;
+  std::vector<float> head_level_, pen_now_;  // padded: see sub_step_penetration_rows
+  bool swept_ = false;                       // this step's transfer ran in sub-steps
+  std::vector<float> xfer_pigment_;          // pigment moved brush -> canvas, slot-major
+  std::vector<std::int32_t> brush_share_;    // canvas cells touching each brush cell
   std::vector<int> row_contacts_;
   std::vector<int> contact_lo_, contact_hi_;  // each row's touching cells, [lo, hi)
   std::vector<int> span_lo_, span_hi_;        // and where paint can change (see step)
   std::vector<int> need_lo_, need_hi_;        // and whose drag shares a sub-step reads
-  struct Shift {
-    int x, y;
+  std::vector<Shift> shifts_;                 // a long step's earlier sub-steps' contact
+  struct SubMove {
+    double x, y, length;  // cells; the length scaled so that they add up to the step's
   };
-  std::vector<Shift> shifts_;       // a long step's earlier sub-steps' contact
+  std::vector<SubMove> sub_moves_;  // what each sub-step moves (see step)
   std::vector<const float*> from_;  // the quantities advection moves
   std::vector<float*> to_;          // and where they go
   Advection advection_;

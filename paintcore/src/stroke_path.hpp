@@ -19,10 +19,17 @@ class StrokeSegment {
   // margin on a curve for the speed's variation within a chord): at least the arc length,
   // and exactly the chord's length on a straight segment.
   double max_speed() const;
+  // Its arc length (cells), and the parameter t at which the arc from `from` is `share` of it:
+  // exact on a straight segment, over 32 chords on a curve (the brush steps by distance
+  // along the path, not by the curve's parameter, whose speed varies).
+  double length() const { return lengths_.back(); }
+  double t_at_length_share(double share) const;
 
  private:
+  static constexpr int kChords = 32;
   std::array<double, 2> p0_, p1_, m0_, m1_;
   bool straight_ = true;
+  std::array<double, kChords + 1> lengths_{};  // arc length from `from` at t = k / kChords
 };
 
 // The heading (radians) of a head that trails the hand: after moving distance d along
