@@ -218,6 +218,7 @@ void Painting::begin_stroke() {
   p.pending_cells = p.pending_seconds = 0.0;
   p.last_move = {0.0, 0.0};
   p.last_move_seconds = 0.0;
+  p.stepper.begin_stroke();
 }
 
 void Painting::end_stroke() {
@@ -470,7 +471,10 @@ void Painting::Impl::lift_brush() {
       travel > 0.0 ? kLiftLengthShare * pressure * brush.settings().size_mm / canvas.cell_mm()
                    : 0.0;
   const double speed = last_move_seconds > 0.0 ? travel / last_move_seconds : 0.0;  // cells/s
-  const double step_cells = Stepper::max_step_cells(params, brush.cells_across());
+  // A cell a step, whatever the brush: the contact shrinks as the tip rises, and a long step
+  // holds its contact's outline for its whole length (each step's outline was left as a
+  // ring in a dab).
+  const double step_cells = 1.0;
   const auto steps = static_cast<int>(std::max(
       {std::ceil(length / step_cells),
        std::ceil(kLiftSeconds / Stepper::max_step_seconds(params, canvas.cell_mm())), 1.0}));

@@ -476,11 +476,14 @@ IMPASTO_SIMD_CLONES void Stepper::squeeze_rows(const float* pen_grid, Shift shif
   }
 }
 
-void Stepper::sub_step_penetration_rows(Shift shift, int r0, int r1) {
+void Stepper::sub_step_penetration_rows(Shift shift, float level_offset_mm, int r0, int r1) {
   // How deep the head presses each cell in a long step's sub-step: its underside where the
   // step's contact, shifted, puts it (head_level_), against the paint as the sub-step has
-  // left it. The step's own penetration, shifted, would not see the paint the squeeze moves:
-  // pressed from where it had been, the paint overshot into a ripple across the stroke.
+  // left it, raised by level_offset_mm (a pen pressing less as the step went on, or a brush
+  // lifting, was deeper earlier in the step). The step's own penetration, shifted, would not
+  // see the paint the squeeze moves: pressed from where it had been, the paint overshot into a
+  // ripple across the stroke; and a lifting brush held at each step's depth left a ring where
+  // each step's footprint stopped pressing.
   const Window& w = win_;
   const std::ptrdiff_t s = w.stride();
   for (int y = r0; y < r1; ++y) {
@@ -498,7 +501,8 @@ void Stepper::sub_step_penetration_rows(Shift shift, int r0, int r1) {
     const float* ground = ground_.data() + row;
     const float* wet = new_wet_.data() + row;
     for (int x = lo; x < hi; ++x)
-      pen[x] = cell[x] >= 0 ? std::max(ground[x] + wet[x] - level[x], 0.0f) : 0.0f;
+      pen[x] =
+          cell[x] >= 0 ? std::max(ground[x] + wet[x] - (level[x] + level_offset_mm), 0.0f) : 0.0f;
   }
 }
 
@@ -745,6 +749,9 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
                    const BrushPose& pose, double move_x, double move_y, double seconds,
                    const BeforeTileChange& before_change, bool lift_off, bool lifting) {
   last_window_cells_ = 0;
+  // Where the tip was at the last step's end (its depth, as the pen pressed then).
+  const double depth_from = last_depth_mm_.value_or(pose.depth_mm);
+  last_depth_mm_ = pose.depth_mm;
   // A pen that does not press (pressure 0) holds the brush off the paint.
   if (brush.empty() || !(pose.depth_mm > 0.0 || lifting)) return false;
   brush.ensure_slots(slot_count);
@@ -934,10 +941,13 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   }
   if (substeps > 1) {
     need_shares(rows, cols, quadrant_x, quadrant_y);
-    // The head's underside over each cell, where the step's contact found it pressing (at
-    // the surface where it did not): what a sub-step's penetration measures against.
+    // The head's underside over each cell, where the step's contact found it pressing: what a
+    // sub-step's penetration measures against.
     const std::size_t n = win_.padded();
-    for (std::size_t i = 0; i < n; ++i) head_level_[i] = ground_[i] + wet_[i] - pen_[i];
+    // (Where it did not press, its underside lies somewhere above the paint: it presses there
+    // in no sub-step.)
+    for (std::size_t i = 0; i < n; ++i)
+      head_level_[i] = pen_[i] > 0.0f ? ground_[i] + wet_[i] - pen_[i] : 1e30f;
   }
   if (in.sharing_binds) share_brush_cells(cells, in.inv_deposit_share);
   int pass = 1;  // of the advection's sub-steps
@@ -1005,11 +1015,15 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
     if (transfers) std::fill_n(exchanged_.begin(), cells, 0.0f);
     const double walked = std::hypot(move_x, move_y);
     parallel_rows(rows, cols, [&](int r0, int r1) { prepare_rows(1, wet_.data(), r0, r1); });
+    double progress = 0.0;  // of the step's path, after this sub-step
     for (int j = 1; j <= substeps; ++j) {
       const Shift here = shift_of(j);
       const double share = walked > 0.0
                                ? sub_moves_[static_cast<std::size_t>(j - 1)].length / walked
                                : 1.0 / substeps;
+      progress = j == substeps ? 1.0 : std::min(progress + share, 1.0);
+      // The tip went from depth_from to the pose's depth along the step.
+      const auto level_offset = static_cast<float>((pose.depth_mm - depth_from) * (1.0 - progress));
       const auto relax =
           static_cast<float>(transfer_relaxation(share * distance_mm, share * seconds, params));
       advection_.use_prepared_quadrant(quadrant_x, quadrant_y);
@@ -1018,7 +1032,7 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
         if (transfers)
           shifted_transfer_rows(in, here, relax, wet_.data(), new_wet_.data(), new_pigment_.data(),
                                 r0, r1);
-        if (squeezes) sub_step_penetration_rows(here, r0, r1);
+        if (squeezes) sub_step_penetration_rows(here, level_offset, r0, r1);
       });
       const auto c = static_cast<float>(in.gradient_scale * share);
       if (transfers || squeezes) {

@@ -6,6 +6,7 @@
 // side and the squeeze's faces (in fixed row chunks); the squeeze and the scatter.
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
@@ -69,6 +70,9 @@ class Stepper {
     }
   }
 
+  // A new stroke: its first step starts from its own depth.
+  void begin_stroke() { last_depth_mm_.reset(); }
+
   // Applies what is still pending of the bristles' evening out; call when a stroke ends (and
   // so before anything else touches the brush).
   void finish_stroke(Brush& brush, int slot_count, const SimulationParams& params);
@@ -121,7 +125,7 @@ class Stepper {
                              float* new_wet, float* new_pigment, int r0, int r1);
   void shifted_transfer_to_brush(Brush& brush, int slot_count, Shift shift, int r0, int r1);
   void squeeze_rows(const float* pen_grid, Shift shift, float c, int r0, int r1);
-  void sub_step_penetration_rows(Shift shift, int r0, int r1);
+  void sub_step_penetration_rows(Shift shift, float level_offset_mm, int r0, int r1);
   void copy_span_rows(int slot_count, int r0, int r1);
   void apply_squeeze_rows(int slot_count, int r0, int r1);
   void share_brush_cells(std::size_t cells, float inv_deposit_share);
@@ -134,7 +138,8 @@ class Stepper {
                bool squeezes);
 
   Window win_;
-  double brush_flow_pending_mm_ = 0.0;  // distance travelled since the bristles last evened out
+  double brush_flow_pending_mm_ = 0.0;   // distance travelled since the bristles last evened out
+  std::optional<double> last_depth_mm_;  // the tip's depth at the stroke's last step (pose)
   std::size_t last_window_cells_ = 0;
   bool last_transferred_ = false;  // the last step's xfer_ holds its transfer
   // Padded window grids (see advection.hpp for the layout).
