@@ -181,6 +181,11 @@ SimBenchmarkResult run_sim_benchmark(int brush_cells, int steps, int threads) {
   const double cell_mm = 25.4 / kDpi;
   const int canvas_cells = 3 * brush_cells + 64;
   Painting painting(CanvasSpec{canvas_cells, canvas_cells, kDpi, 1}, threads);
+  // One-cell steps: a step is the unit this counts (a brush of 64 cells or more would take
+  // long steps of several cells, docs/simulation.md, which bench steps measures).
+  SimulationParams params;
+  params.long_step_share = 0.0;
+  painting.set_params(params);
   painting.set_brush(BrushSettings{"round", brush_cells * cell_mm, 0.2});
   const double brush_area_mm2 = brush_cells * brush_cells * cell_mm * cell_mm;
   painting.load_brush({{"white", 3.0}, {"ultramarine", 1.0}}, 0.5 * brush_area_mm2);

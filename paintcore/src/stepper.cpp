@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 #include "contact_rows.hpp"
 #include "impasto/paintcore/transfer.hpp"
@@ -368,7 +369,8 @@ void Stepper::shifted_transfer_rows(const StepInputs& in, Shift shift, float rel
     const int count = hi - lo;
     for (int x = 0; x < count; ++x) {
       const std::int32_t b = cell[x];
-      on_brush[static_cast<std::size_t>(x)] = b >= 0 ? brush_volume[b] : 0.0f;
+      // (Clamped once a step: a sub-step's float rounding may leave a hair below 0.)
+      on_brush[static_cast<std::size_t>(x)] = b >= 0 ? std::max(brush_volume[b], 0.0f) : 0.0f;
       const std::int32_t sharing =
           b >= 0 && in.sharing_binds ? brush_share_[static_cast<std::size_t>(b)] : 1;
       cap[static_cast<std::size_t>(x)] = sharing <= 1 ? on_brush[static_cast<std::size_t>(x)]
@@ -1034,15 +1036,23 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
                                 r0, r1);
         if (squeezes) sub_step_penetration_rows(here, level_offset, r0, r1);
       });
+      // The brush gives what the canvas took, in canvas order on one thread (a sub-step's
+      // exchange is small: two passes of row chunks cost more), beside the squeeze's faces.
       const auto c = static_cast<float>(in.gradient_scale * share);
-      if (transfers || squeezes) {
-        parallel_row_chunks(rows, chunk, cols, [&](int r0, int r1) {
-          if (transfers) shifted_transfer_to_brush(brush, slot_count, here, r0, r1);
-          if (squeezes) squeeze_rows(pen_now_.data(), here, c, r0, r1);
-        });
+      tbb::parallel_invoke(
+          [&] {
+            if (transfers) shifted_transfer_to_brush(brush, slot_count, here, 0, rows);
+          },
+          [&] {
+            if (squeezes)
+              parallel_rows(rows, cols, [&](int r0, int r1) {
+                squeeze_rows(pen_now_.data(), here, c, r0, r1);
+              });
+          });
+      if (j == substeps) {
         if (transfers) clamp_brush(brush, slot_count);
+        break;
       }
-      if (j == substeps) break;
       parallel_rows(rows, cols, [&](int r0, int r1) {
         if (squeezes)
           apply_squeeze_rows(slot_count, r0, r1);
