@@ -15,6 +15,12 @@
 namespace impasto::paintcore {
 namespace {
 
+// The bristles even out once per this many cells travelled (a long step's every step), not
+// every one-cell step: it costs a pass over the brush for each quantity. Batched over 0.5 mm
+// (5 cells at 254 dpi), they evened out at a rhythm a stroke could show; 4 cells is at
+// the edge of what the relief resolves (it is band-limited below 4 cells a column).
+constexpr double kBrushFlowBatchCells = 4.0;
+
 constexpr std::size_t kBaseCacheTiles = 256;
 
 // Sets the one-cell border of a padded grid to zero.
@@ -607,31 +613,49 @@ void Stepper::clamp_brush(Brush& brush, int slot_count) {
 }
 
 void Stepper::even_out_brush(Brush& brush, int slot_count, double share) {
-  // Each covered cell moves `share` of the way to the brush's mean. The float cells' total is
-  // kept exactly: what rounding added or lost goes back into the fullest cell (the first of
-  // the fullest, in index order). Both sums run in index order, so their bits are fixed;
-  // the cells' own update, between them, vectorises.
+  // Paint flows along the hairs, not across them: each covered cell moves `share` of the way
+  // to the mean of its column of bristles (the head's +v axis runs along the travel, so a column
+  // of cells is what one bristle lays). Evened out over the whole brush, every bristle held
+  // the same paint to the end and a running-dry stroke faded evenly through the weave instead
+  // of breaking into streaks where bristles ran dry. Each column's float total is kept
+  // exactly: what rounding added or lost goes back into its fullest cell (the first of the
+  // fullest, in index order). The sums run in index order, so their bits are fixed.
+  // A blade (a head without bristles) is one plate: its paint spreads across it freely, one
+  // "column" the width of the grid.
   const std::size_t cells = brush.cell_count();
+  const bool bristles = brush.head().bristles.spacing_mm > 0.0;
+  const auto across = static_cast<std::size_t>(brush.cells_across());
+  const std::size_t columns = bristles ? across : 1;
   const std::vector<Brush::CellRun>& runs = brush.covered_runs();
-  const auto covered = static_cast<double>(brush.covered_cells());
-  const auto even_out = [&runs, covered, share](float* amount) {
-    double total = 0.0;
-    std::size_t fullest = runs.front().begin;
-    float most = amount[fullest];
-    for (const auto [begin, end] : runs)
-      for (std::size_t c = begin; c < end; ++c) {
-        total += amount[c];
-        if (amount[c] > most) most = amount[c], fullest = c;
+  const auto even_out = [&runs, across, columns, share](float* amount) {
+    thread_local std::vector<double> total, after;
+    thread_local std::vector<std::size_t> count, fullest;
+    total.assign(columns, 0.0);
+    after.assign(columns, 0.0);
+    count.assign(columns, 0);
+    fullest.assign(columns, 0);
+    // Walks the covered cells in index order with each one's column (runs may wrap a row).
+    const auto each = [&](auto&& visit) {
+      for (const auto [begin, end] : runs) {
+        std::size_t u = columns > 1 ? begin % across : 0;
+        for (std::size_t c = begin; c < end; ++c) {
+          visit(c, u);
+          if (columns > 1 && ++u == across) u = 0;
+        }
       }
-    if (total <= 0.0) return;
-    const double mean = total / covered;
-    for (const auto [begin, end] : runs)
-      for (std::size_t c = begin; c < end; ++c)
-        amount[c] = std::max(0.0f, static_cast<float>(amount[c] + share * (mean - amount[c])));
-    double after = 0.0;
-    for (const auto [begin, end] : runs)
-      for (std::size_t c = begin; c < end; ++c) after += amount[c];
-    amount[fullest] = static_cast<float>(amount[fullest] + (total - after));
+    };
+    each([&](std::size_t c, std::size_t u) {
+      total[u] += amount[c];
+      if (count[u]++ == 0 || amount[c] > amount[fullest[u]]) fullest[u] = c;
+    });
+    each([&](std::size_t c, std::size_t u) {
+      const double mean = total[u] / static_cast<double>(count[u]);
+      amount[c] = std::max(0.0f, static_cast<float>(amount[c] + share * (mean - amount[c])));
+      after[u] += amount[c];
+    });
+    for (std::size_t u = 0; u < columns; ++u)
+      if (count[u] > 0 && total[u] > 0.0)
+        amount[fullest[u]] = static_cast<float>(amount[fullest[u]] + (total[u] - after[u]));
   };
   // Volume and each pigment are independent: one task each.
   tbb::parallel_for(0, slot_count + 1, [&](int k) {
@@ -1063,11 +1087,11 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
       ++pass;
     }
   }
-  // Paint in the bristles flows toward the tips that gave theirs away, every step by the
-  // distance it went. (Batched over 0.5 mm, it evened out at a rhythm of its own, which a
-  // stroke could show.)
+  // Paint in the bristles flows toward the tips that gave theirs away: over every
+  // kBrushFlowBatchCells cells travelled at once (the relaxation composes over distance).
   brush_flow_pending_mm_ += distance_mm;
-  finish_stroke(brush, slot_count, params);
+  if (brush_flow_pending_mm_ >= kBrushFlowBatchCells * cell_mm - 1e-9)
+    finish_stroke(brush, slot_count, params);
 
   // 4. The squeeze applied, and the result written back to the tiles.
   scatter(canvas, slot_count, before_change, squeezes);
