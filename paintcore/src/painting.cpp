@@ -274,6 +274,7 @@ namespace {
 // how long a brush lifting on the spot takes.
 constexpr double kLiftLengthShare = 0.5;
 constexpr double kLiftSeconds = 0.1;
+constexpr double kMaxLiftSeconds = 0.5;
 
 // A pause between two samples longer than this counts as this long: a still brush has long
 // reached its split by then, and a gap in a recording must not cost unbounded steps.
@@ -364,7 +365,7 @@ void Painting::stroke_to(const PenSample& sample) {
   // steady stroke's steps are all alike. (A hair over a whole step counts as one: positions
   // come from mm and carry rounding.)
   const double max_seconds = Stepper::max_step_seconds(p.params, p.canvas.cell_mm());
-  const double max_cells = Stepper::max_step_cells(p.params, p.brush.cells_across());
+  const double max_cells = Stepper::max_step_cells(p.params, p.brush);
   const double length =
       whole ? curve.length()
             : std::hypot(target.x_cells - from.x_cells, target.y_cells - from.y_cells) * (t1 - t0);
@@ -430,7 +431,7 @@ void Painting::Impl::take_step(BrushPose pose, double move_x, double move_y, dou
     }
     pose.twist_rad = heading_rad.value_or(0.0);
   }
-  if (moved > 0.0) {
+  if (moved >= 0.5) {  // (a step's rounding remainder at the stroke's end says nothing)
     last_move = {move_x, move_y};
     last_move_seconds = seconds;
   }
@@ -450,7 +451,7 @@ std::array<double, 2> Painting::Impl::step_end(std::array<double, 2> at) const {
   // a cell of the path): the head's footprint, sampled between cells, then falls the same way
   // on the cells at every step. Where the ends fell between cells differently from one step
   // to the next, alternate steps pressed differently, and the stroke showed it.
-  if (Stepper::max_step_cells(params, brush.cells_across()) <= 1.0 || !step_origin) return at;
+  if (Stepper::max_step_cells(params, brush) <= 1.0 || !step_origin) return at;
   const auto& o = *step_origin;
   return {o[0] + std::round(at[0] - o[0]), o[1] + std::round(at[1] - o[1])};
 }
@@ -470,16 +471,19 @@ void Painting::Impl::lift_brush() {
   const double length =
       travel > 0.0 ? kLiftLengthShare * pressure * brush.settings().size_mm / canvas.cell_mm()
                    : 0.0;
+  // The lift takes as long as the stroke's last step went that far, within bounds (a stroke
+  // that ended still lifts in kLiftSeconds).
   const double speed = last_move_seconds > 0.0 ? travel / last_move_seconds : 0.0;  // cells/s
+  const double lift_seconds =
+      length > 0.0 && speed > 0.0 ? std::min(length / speed, kMaxLiftSeconds) : kLiftSeconds;
   // A cell a step, whatever the brush: the contact shrinks as the tip rises, and a long step
   // holds its contact's outline for its whole length (each step's outline was left as a
   // ring in a dab).
   const double step_cells = 1.0;
   const auto steps = static_cast<int>(std::max(
       {std::ceil(length / step_cells),
-       std::ceil(kLiftSeconds / Stepper::max_step_seconds(params, canvas.cell_mm())), 1.0}));
-  const double seconds =
-      (length > 0.0 && speed > 0.0 ? length / speed : kLiftSeconds) / static_cast<double>(steps);
+       std::ceil(lift_seconds / Stepper::max_step_seconds(params, canvas.cell_mm())), 1.0}));
+  const double seconds = lift_seconds / static_cast<double>(steps);
   // (take_step keeps the last move: the lift's own would turn it.)
   const std::array<double, 2> along =
       travel > 0.0 ? std::array<double, 2>{last_move[0] / travel, last_move[1] / travel}

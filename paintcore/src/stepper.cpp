@@ -73,6 +73,7 @@ void Stepper::resize(int slot_count, std::size_t brush_cells, int substeps) {
   if (brush_share_cap_.size() < cells) brush_share_cap_.resize(cells);
   if (xfer_.size() < cells) xfer_.resize(cells);
   if (contact_weight_.size() < cells) contact_weight_.resize(cells);
+  if (drag_weight_.size() < cells) drag_weight_.resize(cells);
   for (auto* faces : {&face_east_, &face_south_}) {
     if (faces->size() < n) faces->resize(n);
     zero_border(faces->data(), w.width, w.height);
@@ -241,8 +242,8 @@ IMPASTO_SIMD_CLONES void Stepper::velocity_rows(const StepInputs& in, int r0, in
   const int last_x = in.canvas->width_cells() - 1, last_y = in.canvas->height_cells() - 1;
   for (int y = r0; y < r1; ++y) {
     const std::ptrdiff_t row = (y + 1) * s + 1;
-    const float* __restrict weight =
-        contact_weight_.data() + static_cast<std::ptrdiff_t>(y) * w.width;
+    const float* __restrict weight = (in.blade ? drag_weight_ : contact_weight_).data() +
+                                     static_cast<std::ptrdiff_t>(y) * w.width;
     float* __restrict vx = vx_.data() + row;
     float* __restrict vy = vy_.data() + row;
     // v = drag * brush motion under the head, weighted by how fully it covers the cell
@@ -276,14 +277,44 @@ IMPASTO_SIMD_CLONES void Stepper::shifted_velocity_rows(const StepInputs& in, in
     std::fill(vy + lo, vy + hi, 0.0f);
     const int from_y = y + shift_y;
     if (from_y < 0 || from_y >= w.height) continue;
-    const float* __restrict weight =
-        contact_weight_.data() + static_cast<std::ptrdiff_t>(from_y) * w.width + shift_x;
+    const float* __restrict weight = (in.blade ? drag_weight_ : contact_weight_).data() +
+                                     static_cast<std::ptrdiff_t>(from_y) * w.width + shift_x;
     const int begin = std::clamp(-shift_x, lo, hi), end = std::clamp(w.width - shift_x, lo, hi);
     for (int x = begin; x < end; ++x) {
       vx[x] = weight[x] * brush_vx;
       vy[x] = weight[x] * brush_vy;
     }
     keep_paint_on_canvas(w, y, last_x, last_y, vx, vy);
+  }
+}
+
+void Stepper::blade_drag_rows(double move_x, double move_y, float drag, int r0, int r1) {
+  // A blade is rigid: at its leading edge (a touching cell whose neighbour ahead it does not
+  // touch) it pushes all the paint above its underside ahead of it, and under it the paint
+  // moves as under bristles (drag times the contact). So an empty knife drawn flat through
+  // wet paint scrapes it down to a film and drives it ahead into a ridge, and a loaded one
+  // lays its paint behind it without pushing that on too. (Dragged by a fifth of its
+  // motion everywhere, the knife planed wet paint into a raised slab.)
+  const Window& w = win_;
+  const double length = std::hypot(move_x, move_y);
+  const int ax = length > 0.0 ? static_cast<int>(std::lround(move_x / length)) : 0;
+  const int ay = length > 0.0 ? static_cast<int>(std::lround(move_y / length)) : 0;
+  const std::ptrdiff_t s = w.stride();
+  for (int y = r0; y < r1; ++y) {
+    const std::size_t first = static_cast<std::size_t>(y) * w.width;
+    for (int x = 0; x < w.width; ++x) {
+      const std::size_t c = first + static_cast<std::size_t>(x);
+      drag_weight_[c] = drag * contact_weight_[c];
+      if (brush_cell_[c] < 0 || (ax == 0 && ay == 0)) continue;
+      const int fx = x + ax, fy = y + ay;
+      const bool ahead_touches =
+          fx >= 0 && fx < w.width && fy >= 0 && fy < w.height &&
+          brush_cell_[static_cast<std::size_t>(fy) * w.width + static_cast<std::size_t>(fx)] >= 0;
+      if (ahead_touches) continue;
+      const auto padded = static_cast<std::size_t>((y + 1) * s + 1 + x);
+      const float wet = wet_[padded];
+      drag_weight_[c] = wet > 0.0f ? std::min(pen_[padded] / wet, 1.0f) : 0.0f;
+    }
   }
 }
 
@@ -446,7 +477,8 @@ IMPASTO_SIMD_CLONES void Stepper::squeeze_rows(const float* pen_grid, Shift shif
   const std::ptrdiff_t s = w.stride();
   // The signed share of the source's paint that crosses (> 0: from this cell).
   const auto share = [c](float dp, float h_from, float h_to, float contact) {
-    const float h = dp > 0.0f ? h_from : h_to;
+    // (A hair below 0 from float rounding moves nothing: divided by the 1e-30 floor, it blew up.)
+    const float h = std::max(dp > 0.0f ? h_from : h_to, 0.0f);
     const float flux = std::min(2.0f * c * h * std::abs(dp) / (1.0f + 16.0f * c * h), 0.25f * h);
     const float ratio = contact * flux / std::max(h, 1e-30f);
     return dp > 0.0f ? ratio : -ratio;
@@ -675,6 +707,11 @@ double Stepper::max_step_seconds(const SimulationParams& params, double cell_mm)
   return params.squeeze_mm_s > 0.0 ? 0.5 * cell_mm / params.squeeze_mm_s : 1e300;
 }
 
+double Stepper::max_step_cells(const SimulationParams& params, const Brush& brush) {
+  return brush.head().bristles.spacing_mm > 0.0 ? max_step_cells(params, brush.cells_across())
+                                                : 1.0;
+}
+
 double Stepper::max_step_cells(const SimulationParams& params, int brush_cells) {
   if (brush_cells < params.long_step_from_cells) return 1.0;
   return std::max(1.0, params.long_step_share * brush_cells);
@@ -789,6 +826,10 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   const double max_depth = brush.max_depth_mm();
   const double pressure = max_depth > 0.0 ? std::clamp(pose.depth_mm / max_depth, 0.0, 1.0) : 0.0;
   in.placement = place_brush(pose, brush.cells_across(), 1.0 + brush.head().splay * pressure);
+  // A head without bristles is a blade: rigid, it carries all the paint above its underside
+  // (drag 1, contact_rows.cpp); bristles drag a share of what they touch.
+  in.blade = !(brush.head().bristles.spacing_mm > 0.0);
+  const double drag = in.blade ? 1.0 : params.drag;
   const BrushPlacement& placement = in.placement;
   // The window: the canvas cells the brush grid can cover, plus one cell that advection
   // can push paint into, clipped to the canvas.
@@ -815,8 +856,8 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   const double travel = std::max(std::abs(move_x), std::abs(move_y));
   const int substeps =
       travel > 1.0 + 1e-6
-          ? static_cast<int>(std::ceil(
-                std::max(travel / params.long_step_drag_cells, params.drag * travel) - 1e-6))
+          ? static_cast<int>(
+                std::ceil(std::max(travel / params.long_step_drag_cells, drag * travel) - 1e-6))
           : 1;
   shifts_.clear();
   for (int j = 1; j < substeps; ++j) {
@@ -857,7 +898,9 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
 
   // The tip sinks depth_mm below the surface it rests on: the ground and dry paint, and the
   // share of the wet paint that holds the brush up, averaged around the centre (a surface
-  // under one cell would let the brush bob on the paint it has just laid).
+  // under one cell would let the brush bob on the paint it has just laid). A blade is rigid:
+  // pressed, it cuts through the wet paint toward the ground; held lightly it rides on it.
+  const double wet_support = in.blade ? params.wet_support * (1.0 - pressure) : params.wet_support;
   const int reach = std::clamp(brush.cells_across() / 8, 1, 4);
   const int cx = static_cast<int>(std::floor(placement.centre_x));
   const int cy = static_cast<int>(std::floor(placement.centre_y));
@@ -867,21 +910,21 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
     for (int x = std::max(cx - reach, 0); x <= std::min(cx + reach, canvas.width_cells() - 1);
          ++x) {
       rest += static_cast<double>(canvas.base_height_mm(x, y)) + canvas.dry_height_mm(x, y) +
-              params.wet_support * canvas.wet_volume_mm(x, y);
+              wet_support * canvas.wet_volume_mm(x, y);
       ++rest_cells;
     }
   if (rest_cells == 0) {  // the centre is off the canvas: rest on the nearest cell
     const int x = std::clamp(cx, 0, canvas.width_cells() - 1);
     const int y = std::clamp(cy, 0, canvas.height_cells() - 1);
     rest = static_cast<double>(canvas.base_height_mm(x, y)) + canvas.dry_height_mm(x, y) +
-           params.wet_support * canvas.wet_volume_mm(x, y);
+           wet_support * canvas.wet_volume_mm(x, y);
     rest_cells = 1;
   }
   in.footing_mm = static_cast<float>(footing_mm(canvas, cx, cy));
   in.ground_fill = static_cast<float>(params.ground_fill);
   in.tip_mm = static_cast<float>(rest / rest_cells - pose.depth_mm);
-  in.brush_vx = static_cast<float>(params.drag * sub_moves_.back().x);
-  in.brush_vy = static_cast<float>(params.drag * sub_moves_.back().y);
+  in.brush_vx = static_cast<float>(drag * sub_moves_.back().x);
+  in.brush_vy = static_cast<float>(drag * sub_moves_.back().y);
   // The squeeze moves paint down the penetration's slope (mm/mm) by plough mm per mm
   // travelled plus squeeze_mm_s per second: in cells this step, per unit slope, over the
   // central difference's two cells.
@@ -920,13 +963,22 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   advection_.resize(cols, rows);
   // (The drag moves every cell's paint the brush's way, or not at all: one quadrant.)
   const int quadrant_x = move_x < 0.0 ? -1 : 1, quadrant_y = move_y < 0.0 ? -1 : 1;
-  parallel_rows(rows, cols, [&](int r0, int r1) {
-    gather_rows(in, r0, r1);
-    penetrate_rows(in, r0, r1);
+  const auto one_step_shares = [&](int r0, int r1) {
     if (substeps > 1) return;  // each sub-step below has its own velocities and shares
     velocity_rows(in, r0, r1);
     advection_.prepare_quadrant_rows(r0, r1, vx_.data(), vy_.data(), wet_.data(), in.min_film_mm);
+  };
+  parallel_rows(rows, cols, [&](int r0, int r1) {
+    gather_rows(in, r0, r1);
+    penetrate_rows(in, r0, r1);
+    if (!in.blade) one_step_shares(r0, r1);
   });
+  // A blade's leading edge needs the rows around each row's contact: a pass of its own.
+  if (in.blade)
+    parallel_rows(rows, cols, [&](int r0, int r1) {
+      blade_drag_rows(move_x, move_y, static_cast<float>(params.drag), r0, r1);
+      one_step_shares(r0, r1);
+    });
   int contacts = 0;
   for (const int count : row_contacts_) contacts += count;
   if (contacts == 0) return false;  // nothing touches: nothing changes
@@ -1001,8 +1053,8 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   const auto prepare_rows = [&](int j, const float* volume, int r0, int r1) {
     const Shift shift = shift_of(j);
     const SubMove& sub = sub_moves_[static_cast<std::size_t>(j - 1)];
-    shifted_velocity_rows(in, shift.x, shift.y, static_cast<float>(params.drag * sub.x),
-                          static_cast<float>(params.drag * sub.y), r0, r1);
+    shifted_velocity_rows(in, shift.x, shift.y, static_cast<float>(drag * sub.x),
+                          static_cast<float>(drag * sub.y), r0, r1);
     advection_.prepare_quadrant_spans(r0, r1, vx_.data(), vy_.data(), volume, in.min_film_mm,
                                       need_lo_.data(), need_hi_.data());
   };

@@ -42,6 +42,10 @@ class Stepper {
   // The longest move of one step, in cells: 1, or for a brush at least long_step_from_cells
   // across, long_step_share of its width (if that is more).
   static double max_step_cells(const SimulationParams& params, int brush_cells);
+  // The same for this brush: a blade (a head without bristles) steps a cell at a time, as its
+  // leading edge pushes the paint ahead of it cell by cell (a long step's sub-steps left a
+  // blade's scrape half done).
+  static double max_step_cells(const SimulationParams& params, const Brush& brush);
 
   std::size_t last_window_cells() const { return last_window_cells_; }
 
@@ -105,6 +109,7 @@ class Stepper {
     // Canvas cells sharing a brush cell may together take more than it holds: each deposit
     // is capped by brush_share_cap_ (see step).
     bool sharing_binds;
+    bool blade;  // a head without bristles (see step)
   };
 
   void resize(int slot_count, std::size_t brush_cells, int substeps);
@@ -117,6 +122,7 @@ class Stepper {
   void shifted_velocity_rows(const StepInputs& in, int shift_x, int shift_y, float brush_vx,
                              float brush_vy, int r0, int r1);
   void need_shares(int rows, int cols, int quadrant_x, int quadrant_y);
+  void blade_drag_rows(double move_x, double move_y, float drag, int r0, int r1);
   void transfer_rows(const StepInputs& in, int r0, int r1);
   struct Shift {
     int x, y;
@@ -146,11 +152,12 @@ class Stepper {
   std::vector<float> ground_, wet_, pen_, vx_, vy_, new_wet_;
   std::vector<float> pigment_, new_pigment_;  // slot-major, padded grids
   // Unpadded per-cell data of the transfer.
-  std::vector<std::int32_t> brush_cell_;       // brush cell touching each window cell, or -1
-  std::vector<float> brush_paint_at_;          // its paint height (0 where none touches)
-  std::vector<float> brush_share_cap_;         // on_brush / (deposit_share * sharers), if binding
-  std::vector<float> xfer_;                    // paint height moved brush -> canvas (signed)
-  std::vector<float> contact_weight_;          // how fully the head moves each cell's paint, 0..1
+  std::vector<std::int32_t> brush_cell_;  // brush cell touching each window cell, or -1
+  std::vector<float> brush_paint_at_;     // its paint height (0 where none touches)
+  std::vector<float> brush_share_cap_;    // on_brush / (deposit_share * sharers), if binding
+  std::vector<float> xfer_;               // paint height moved brush -> canvas (signed)
+  std::vector<float> contact_weight_;     // how fully the head moves each cell's paint, 0..1
+  std::vector<float> drag_weight_;  // a blade's share of each cell's paint it carries (see step)
   std::vector<float> face_east_, face_south_;  // squeeze: signed share crossing each face
   std::vector<float> xfer_ratio_;              // xfer_ / the source's paint height
   // A long step's film split runs in its sub-steps (see step): the paint each cell exchanged

@@ -211,6 +211,41 @@ TEST(Marks, AKnifePlanesThePaintAndLeavesRidgesAtItsEnds) {
   EXPECT_EQ(paste.bristle_spacing_mm, 0.0);  // a smooth blade
 }
 
+TEST(Marks, AnEmptyKnifeScrapesWetPaintDownAndPushesItAhead) {
+  // A band of heavy paint along x, then a clean 8 mm knife drawn flat across it along y,
+  // pressed (0.9): where it passed, a film of less than a fifth of the band stays, and the
+  // paint it took off is pushed ahead of the blade and piled past the band where the blade
+  // left; paint is conserved and stays finite. Dragged by a fifth of its motion, the blade
+  // planed the band into a raised slab 0.3 of its height.
+  Painting p(CanvasSpec{300, 300, 254.0, 0}, 1);
+  p.set_brush(BrushSettings{"flat", 10.0, 0.5});
+  p.load_brush({{"white", 1.0}}, 300.0, PaintBody::heavy);
+  test::stroke_line(p, 3.0, 10.0, 27.0, 10.0, 0.8f, 120);
+  p.wipe_brush();
+  p.set_brush(BrushSettings{"knife", 8.0, 0.9});
+  const Canvas& c = p.canvas();
+  const auto mean_over = [&c](int x0, int x1, int y0, int y1) {
+    double sum = 0.0;
+    for (int y = y0; y < y1; ++y)
+      for (int x = x0; x < x1; ++x) sum += c.wet_volume_mm(x, y);
+    return sum / ((x1 - x0) * (y1 - y0));
+  };
+  const double band = mean_over(140, 160, 80, 120);
+  ASSERT_GT(band, 0.3);
+  test::stroke_line(p, 15.0, 2.0, 15.0, 25.0, 0.9f, 100);
+  EXPECT_LT(mean_over(145, 155, 85, 115), 0.2 * band);
+  double ahead = 0.0;
+  for (int y = 160; y < 300; ++y)
+    for (int x = 110; x < 190; ++x) ahead = std::max(ahead, double(c.wet_volume_mm(x, y)));
+  EXPECT_GT(ahead, 2.0 * band);
+  for (int y = 0; y < c.height_cells(); ++y)
+    for (int x = 0; x < c.width_cells(); ++x) {
+      ASSERT_TRUE(std::isfinite(c.wet_volume_mm(x, y))) << x << "," << y;
+      ASSERT_GE(c.wet_volume_mm(x, y), 0.0f) << x << "," << y;
+    }
+  test::expect_conserved(p);
+}
+
 TEST(Marks, LevellingFlowsOnlyPastTheYieldSlope) {
   const PaintBodyInfo& heavy = body_info(PaintBody::heavy);
   // 0.5 mm of heavy paint holds a slope of 60 / (14.7 * 0.5) ~ 8: a 0.5 mm drop over 0.1 mm.
