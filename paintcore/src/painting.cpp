@@ -476,10 +476,12 @@ void Painting::Impl::lift_brush() {
   const double speed = last_move_seconds > 0.0 ? travel / last_move_seconds : 0.0;  // cells/s
   const double lift_seconds =
       length > 0.0 && speed > 0.0 ? std::min(length / speed, kMaxLiftSeconds) : kLiftSeconds;
-  // A cell a step, whatever the brush: the contact shrinks as the tip rises, and a long step
-  // holds its contact's outline for its whole length (each step's outline was left as a
-  // ring in a dab).
-  const double step_cells = 1.0;
+  // A quarter of a long step (a cell for heads under about 100 cells): the contact shrinks
+  // as the tip rises, and a long step holds its contact's outline for its whole length (each
+  // step's outline was left as a ring in a dab); a big brush's one-cell steps made its lift
+  // cost a frame.
+  const double step_cells =
+      std::max(1.0, std::floor(0.25 * Stepper::max_step_cells(params, brush)));
   const auto steps = static_cast<int>(std::max(
       {std::ceil(length / step_cells),
        std::ceil(lift_seconds / Stepper::max_step_seconds(params, canvas.cell_mm())), 1.0}));

@@ -483,35 +483,33 @@ IMPASTO_SIMD_CLONES void Stepper::squeeze_rows(const float* pen_grid, Shift shif
     const float ratio = contact * flux / std::max(h, 1e-30f);
     return dp > 0.0f ? ratio : -ratio;
   };
-  // Cells whose shifted contact lies in the window: [lo, hi).
+  // Cells whose shifted contact lies in the window: [lo, hi). A long step's sub-steps
+  // compute only each row's face range (face_lo_, face_hi_: zeroed once a step, and no face
+  // beyond it can carry paint); a one-cell step computes the whole row.
   const int lo = std::max(0, -shift.x), hi = std::min(w.width, w.width - shift.x);
   for (int y = r0; y < r1; ++y) {
     const std::ptrdiff_t row = (y + 1) * s + 1;
     float* __restrict east = face_east_.data() + row;
     float* __restrict south = face_south_.data() + row;
     const int from_y = y + shift.y;
-    if (from_y < 0 || from_y >= w.height || hi <= lo) {
-      std::fill_n(east, w.width, 0.0f);
-      std::fill_n(south, w.width, 0.0f);
-      continue;
-    }
+    const int range_lo = faces_in_range_ ? face_lo_[static_cast<std::size_t>(y)] : 0;
+    const int range_hi = faces_in_range_ ? face_hi_[static_cast<std::size_t>(y)] : w.width;
+    if (range_hi <= range_lo) continue;
+    const int a = std::max(lo, range_lo), b = std::min(hi, range_hi);
+    std::fill(east + range_lo, east + range_hi, 0.0f);
+    std::fill(south + range_lo, south + range_hi, 0.0f);
+    if (from_y < 0 || from_y >= w.height || b <= a) continue;
     const std::size_t first = static_cast<std::size_t>(from_y) * w.width;
     const float* __restrict pen = pen_grid + row;
     const float* __restrict wet = new_wet_.data() + row;
     const float* __restrict weight = contact_weight_.data() + first + shift.x;
-    std::fill_n(east, lo, 0.0f);
-    std::fill_n(south, lo, 0.0f);
-    const int last = hi - 1;
-    for (int x = lo; x < last; ++x)
+    const int east_end = std::min(b, hi - 1);  // the window's edge: no face
+    for (int x = a; x < east_end; ++x)
       east[x] = share(pen[x] - pen[x + 1], wet[x], wet[x + 1], std::max(weight[x], weight[x + 1]));
-    std::fill(east + last, east + w.width, 0.0f);  // the window's edge: no face
     if (y + 1 < w.height && from_y + 1 < w.height) {
       const float* __restrict below = weight + w.width;
-      for (int x = lo; x < hi; ++x)
+      for (int x = a; x < b; ++x)
         south[x] = share(pen[x] - pen[x + s], wet[x], wet[x + s], std::max(weight[x], below[x]));
-      std::fill(south + hi, south + w.width, 0.0f);
-    } else {
-      std::fill_n(south, w.width, 0.0f);
     }
   }
 }
@@ -1065,6 +1063,7 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   const int chunk = static_cast<int>(std::floor(std::abs(m[2]) + std::abs(m[3]))) + 2;
   const bool squeezes = in.gradient_scale > 0.0f;
   swept_ = substeps > 1;
+  faces_in_range_ = false;
   if (!swept_) {
     // 3. One step: the drag and the film split (which reads the step's input, wet_,
     // untouched), the brush gives what the canvas took, and the squeeze's faces.
@@ -1091,6 +1090,25 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
     // gathered grids (wet_, pigment_) to the new_ ones and its squeeze back; the last
     // sub-step's squeeze is applied as the result is scattered, as a short step's is.
     if (transfers) std::fill_n(exchanged_.begin(), cells, 0.0f);
+    // The faces a sub-step's squeeze can move paint across: around each row's active span.
+    std::fill(face_east_.begin(), face_east_.begin() + static_cast<std::ptrdiff_t>(win_.padded()),
+              0.0f);
+    std::fill(face_south_.begin(), face_south_.begin() + static_cast<std::ptrdiff_t>(win_.padded()),
+              0.0f);
+    face_lo_.assign(static_cast<std::size_t>(rows), 0);
+    face_hi_.assign(static_cast<std::size_t>(rows), 0);
+    for (int y = 0; y < rows; ++y) {
+      int lo = cols, hi = 0;
+      for (int near = std::max(y - 1, 0); near <= std::min(y + 1, rows - 1); ++near) {
+        const auto k = static_cast<std::size_t>(near);
+        if (span_hi_[k] <= span_lo_[k]) continue;
+        lo = std::min(lo, span_lo_[k] - 1);
+        hi = std::max(hi, span_hi_[k]);
+      }
+      face_lo_[static_cast<std::size_t>(y)] = std::clamp(lo, 0, cols);
+      face_hi_[static_cast<std::size_t>(y)] = std::clamp(hi, 0, cols);
+    }
+    faces_in_range_ = true;
     const double walked = std::hypot(move_x, move_y);
     parallel_rows(rows, cols, [&](int r0, int r1) { prepare_rows(1, wet_.data(), r0, r1); });
     double progress = 0.0;  // of the step's path, after this sub-step

@@ -159,7 +159,9 @@ class Stepper {
   std::vector<float> contact_weight_;     // how fully the head moves each cell's paint, 0..1
   std::vector<float> drag_weight_;  // a blade's share of each cell's paint it carries (see step)
   std::vector<float> face_east_, face_south_;  // squeeze: signed share crossing each face
-  std::vector<float> xfer_ratio_;              // xfer_ / the source's paint height
+  std::vector<int> face_lo_, face_hi_;         // a long step's face range per row (squeeze_rows)
+  bool faces_in_range_ = false;
+  std::vector<float> xfer_ratio_;  // xfer_ / the source's paint height
   // A long step's film split runs in its sub-steps (see step): the paint each cell exchanged
   // over them all (signed, as xfer_), and the brush paint of one row as that sub-step meets it.
   std::vector<float> exchanged_;
