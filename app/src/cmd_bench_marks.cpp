@@ -37,11 +37,12 @@ constexpr double kSweepDpis[] = {150.0, 300.0, 600.0, 1200.0};
 
 // One head and body's marks over the sweeps.
 struct Sweep {
+  std::string head, body;
   std::vector<paintcore::MarkFigures> by_spacing, by_dpi;
 };
 
 Sweep sweep(const std::string& head, paintcore::PaintBody body, const paintcore::MarkStroke& base) {
-  Sweep s;
+  Sweep s{head, std::string(paintcore::body_info(body).name), {}, {}};
   for (const double spacing : kSweepSpacingsMm) {
     paintcore::MarkStroke stroke = base;
     stroke.spacing_mm = spacing;
@@ -63,13 +64,13 @@ void print_sweep_header() {
               "2");
 }
 
-void print_sweep(const std::string& head, const std::string& body, const Sweep& s) {
+void print_sweep(const Sweep& s) {
   const auto& sp = s.by_spacing;
   const auto& dp = s.by_dpi;
   std::printf(
       "%-8s %-6s %7.2f %7.2f %7.2f %7.2f %6.1f %6.1f %7.1f %7.4f %7.4f %7.4f %7.4f %7.4f "
       "%7.4f\n",
-      head.c_str(), body.c_str(), 100 * sp[0].trace_rms_share, 100 * sp[1].trace_rms_share,
+      s.head.c_str(), s.body.c_str(), 100 * sp[0].trace_rms_share, 100 * sp[1].trace_rms_share,
       100 * sp[2].trace_rms_share, 100 * sp[3].trace_rms_share, sp[2].trace_peak, sp[3].trace_peak,
       100 * sp[1].lift_rim_share, dp[0].furrow_rms_mm, dp[1].furrow_rms_mm, dp[2].furrow_rms_mm,
       dp[3].furrow_rms_mm, sp[0].furrow_rms_mm, sp[3].furrow_rms_mm);
@@ -126,7 +127,7 @@ void run(BenchMarksArgs args) {
   ProgressReporter progress("bench marks", "marks");
   const std::uint64_t total = heads.size() * bodies.size() * (args.sweeps ? 2 : 1);
   std::uint64_t done = 0;
-  std::vector<std::pair<std::string, Sweep>> sweeps;
+  std::vector<Sweep> sweeps;
   for (const std::string& head : heads)
     for (const paintcore::PaintBody body : bodies) {
       const paintcore::MarkFigures f = paintcore::measure_mark(head, body, args.stroke);
@@ -172,16 +173,13 @@ void run(BenchMarksArgs args) {
       if (args.json)
         std::cout << nlohmann::json{{"head", head}, {"body", body_name}, {"sweeps", sweep_json(s)}}
                   << "\n";
-      sweeps.emplace_back(head + "\t" + body_name, std::move(s));
+      sweeps.push_back(std::move(s));
       progress.update(++done, total);
     }
   if (args.json || sweeps.empty()) return;
   progress.clear();
   print_sweep_header();
-  for (const auto& [key, s] : sweeps) {
-    const auto tab = key.find('\t');
-    print_sweep(key.substr(0, tab), key.substr(tab + 1), s);
-  }
+  for (const Sweep& s : sweeps) print_sweep(s);
 }
 
 const CommandRegistrar registrar("bench marks", [](CLI::App& root) {

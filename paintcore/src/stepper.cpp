@@ -366,6 +366,14 @@ void Stepper::transfer_rows(const StepInputs& in, int r0, int r1) {
   }
 }
 
+bool Stepper::shifted_span(int y, Shift shift, int& lo, int& hi) const {
+  // Row y's active span, where a sub-step's contact (the step's, shifted) can lie: the cells
+  // whose shifted cell is in the window. False when none is.
+  lo = std::max(span_lo_[static_cast<std::size_t>(y)], -shift.x);
+  hi = std::min(span_hi_[static_cast<std::size_t>(y)], win_.width - shift.x);
+  return hi > lo && y + shift.y >= 0 && y + shift.y < win_.height;
+}
+
 void Stepper::shifted_transfer_rows(const StepInputs& in, Shift shift, float relax,
                                     const float* wet, float* new_wet, float* new_pigment, int r0,
                                     int r1) {
@@ -387,19 +395,14 @@ void Stepper::shifted_transfer_rows(const StepInputs& in, Shift shift, float rel
   }
   for (int y = r0; y < r1; ++y) {
     const int from_y = y + shift.y;
-    // The row's active span, where the shifted contact can lie.
-    const int lo = std::max(span_lo_[static_cast<std::size_t>(y)], -shift.x);
-    const int hi = std::min(span_hi_[static_cast<std::size_t>(y)], w.width - shift.x);
     const std::size_t first = static_cast<std::size_t>(y) * w.width;
-    if (hi <= lo || from_y < 0 || from_y >= w.height) {
-      // Nothing meets this row now: no exchange.
-      const int a = span_lo_[static_cast<std::size_t>(y)],
-                b = span_hi_[static_cast<std::size_t>(y)];
-      if (b > a)
-        std::fill(xfer_.begin() + static_cast<std::ptrdiff_t>(first + a),
-                  xfer_.begin() + static_cast<std::ptrdiff_t>(first + b), 0.0f);
-      continue;
-    }
+    // Cells of the span beyond the shifted contact exchange nothing.
+    const int a = span_lo_[static_cast<std::size_t>(y)], b = span_hi_[static_cast<std::size_t>(y)];
+    if (b > a)
+      std::fill(xfer_.begin() + static_cast<std::ptrdiff_t>(first + a),
+                xfer_.begin() + static_cast<std::ptrdiff_t>(first + b), 0.0f);
+    int lo, hi;
+    if (!shifted_span(y, shift, lo, hi)) continue;
     const std::size_t from_first =
         static_cast<std::size_t>(from_y) * w.width + static_cast<std::size_t>(lo + shift.x);
     const std::int32_t* cell = brush_cell_.data() + from_first;
@@ -415,10 +418,6 @@ void Stepper::shifted_transfer_rows(const StepInputs& in, Shift shift, float rel
                                                             in.inv_deposit_share /
                                                             static_cast<float>(sharing);
     }
-    // Cells of the span beyond the shifted contact exchange nothing.
-    const int a = span_lo_[static_cast<std::size_t>(y)], b = span_hi_[static_cast<std::size_t>(y)];
-    std::fill(xfer_.begin() + static_cast<std::ptrdiff_t>(first + a),
-              xfer_.begin() + static_cast<std::ptrdiff_t>(first + b), 0.0f);
     const std::size_t row = static_cast<std::size_t>(y + 1) * w.stride() + 1 + lo;
     const std::size_t from_row = static_cast<std::size_t>(from_y + 1) * w.stride() + 1 +
                                  static_cast<std::size_t>(lo + shift.x);
@@ -444,13 +443,11 @@ void Stepper::shifted_transfer_to_brush(Brush& brush, int slot_count, Shift shif
   float* volume = brush.volume_mm().data();
   float* pigment = brush.pigment_mm().data();
   for (int y = r0; y < r1; ++y) {
-    const int from_y = y + shift.y;
-    const int lo = std::max(span_lo_[static_cast<std::size_t>(y)], -shift.x);
-    const int hi = std::min(span_hi_[static_cast<std::size_t>(y)], w.width - shift.x);
-    if (hi <= lo || from_y < 0 || from_y >= w.height) continue;
+    int lo, hi;
+    if (!shifted_span(y, shift, lo, hi)) continue;
     const std::size_t first = static_cast<std::size_t>(y) * w.width;
     const std::int32_t* cell =
-        brush_cell_.data() + static_cast<std::size_t>(from_y) * w.width + shift.x;
+        brush_cell_.data() + static_cast<std::size_t>(y + shift.y) * w.width + shift.x;
     for (int x = lo; x < hi; ++x) {
       if (cell[x] < 0) continue;
       const auto bc = static_cast<std::size_t>(cell[x]);
@@ -528,10 +525,9 @@ void Stepper::sub_step_penetration_rows(Shift shift, float level_offset_mm, int 
     const std::ptrdiff_t row = (y + 1) * s + 1;
     float* pen = pen_now_.data() + row;
     std::fill_n(pen, w.width, 0.0f);
+    int lo, hi;
+    if (!shifted_span(y, shift, lo, hi)) continue;
     const int from_y = y + shift.y;
-    if (from_y < 0 || from_y >= w.height) continue;
-    const int lo = std::max(span_lo_[static_cast<std::size_t>(y)], -shift.x);
-    const int hi = std::min(span_hi_[static_cast<std::size_t>(y)], w.width - shift.x);
     const std::ptrdiff_t from_row = (from_y + 1) * s + 1 + shift.x;
     const std::int32_t* cell =
         brush_cell_.data() + static_cast<std::size_t>(from_y) * w.width + shift.x;
@@ -541,24 +537,6 @@ void Stepper::sub_step_penetration_rows(Shift shift, float level_offset_mm, int 
     for (int x = lo; x < hi; ++x)
       pen[x] =
           cell[x] >= 0 ? std::max(ground[x] + wet[x] - (level[x] + level_offset_mm), 0.0f) : 0.0f;
-  }
-}
-
-void Stepper::copy_span_rows(int slot_count, int r0, int r1) {
-  // A sub-step without a squeeze: its result, new_ grids, is the next one's input, the
-  // gathered grids (only the rows' spans differ).
-  const Window& w = win_;
-  const std::size_t n = w.padded();
-  for (int k = 0; k <= slot_count; ++k) {
-    const float* q =
-        k == 0 ? new_wet_.data() : new_pigment_.data() + static_cast<std::size_t>(k - 1) * n;
-    float* out = k == 0 ? wet_.data() : pigment_.data() + static_cast<std::size_t>(k - 1) * n;
-    for (int y = r0; y < r1; ++y) {
-      const int lo = span_lo_[static_cast<std::size_t>(y)];
-      const int hi = span_hi_[static_cast<std::size_t>(y)];
-      const std::size_t row = static_cast<std::size_t>(y + 1) * w.stride() + 1;
-      std::copy(q + row + lo, q + row + hi, out + row + lo);
-    }
   }
 }
 
@@ -653,9 +631,8 @@ void Stepper::even_out_brush(Brush& brush, int slot_count, double share) {
   // A blade (a head without bristles) is one plate: its paint spreads across it freely, one
   // "column" the width of the grid.
   const std::size_t cells = brush.cell_count();
-  const bool bristles = brush.head().bristles.spacing_mm > 0.0;
   const auto across = static_cast<std::size_t>(brush.cells_across());
-  const std::size_t columns = bristles ? across : 1;
+  const std::size_t columns = brush.blade() ? 1 : across;
   const std::vector<Brush::CellRun>& runs = brush.covered_runs();
   const auto even_out = [&runs, across, columns, share](float* amount) {
     thread_local std::vector<double> total, after;
@@ -706,8 +683,7 @@ double Stepper::max_step_seconds(const SimulationParams& params, double cell_mm)
 }
 
 double Stepper::max_step_cells(const SimulationParams& params, const Brush& brush) {
-  return brush.head().bristles.spacing_mm > 0.0 ? max_step_cells(params, brush.cells_across())
-                                                : 1.0;
+  return brush.blade() ? 1.0 : max_step_cells(params, brush.cells_across());
 }
 
 double Stepper::max_step_cells(const SimulationParams& params, int brush_cells) {
@@ -826,7 +802,7 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   in.placement = place_brush(pose, brush.cells_across(), 1.0 + brush.head().splay * pressure);
   // A head without bristles is a blade: rigid, it carries all the paint above its underside
   // (drag 1, contact_rows.cpp); bristles drag a share of what they touch.
-  in.blade = !(brush.head().bristles.spacing_mm > 0.0);
+  in.blade = brush.blade();
   const double drag = in.blade ? 1.0 : params.drag;
   const BrushPlacement& placement = in.placement;
   // The window: the canvas cells the brush grid can cover, plus one cell that advection
@@ -934,7 +910,6 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   in.relax = static_cast<float>(transfer_relaxation(distance_mm, seconds, params));
   in.deposit_share = static_cast<float>(params.deposit_share);
   in.tip_film_mm = static_cast<float>(params.tip_film_mm);
-  in.lift_off = lift_off;
   if (lift_off) {
     // The brush leaves the paint: the film between the tips still touching (the lift eased
     // the pressure off, Painting::end_stroke) and the canvas breaks in its middle, at once
@@ -1022,19 +997,21 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
     const std::size_t n = win_.padded();
     // (Where it did not press, its underside lies somewhere above the paint: it presses there
     // in no sub-step.)
-    for (std::size_t i = 0; i < n; ++i)
-      head_level_[i] = pen_[i] > 0.0f ? ground_[i] + wet_[i] - pen_[i] : 1e30f;
+    if (in.gradient_scale > 0.0f)  // (only the squeeze measures against it)
+      for (std::size_t i = 0; i < n; ++i)
+        head_level_[i] = pen_[i] > 0.0f ? ground_[i] + wet_[i] - pen_[i] : 1e30f;
   }
   if (in.sharing_binds) share_brush_cells(cells, in.inv_deposit_share);
-  int pass = 1;  // of the advection's sub-steps
+  bool first_pass = true;  // of the advection's sub-steps
   const auto advect_rows = [&](int r0, int r1) {
     for (int y = r0; y < r1; ++y) {
       const int lo = span_lo_[static_cast<std::size_t>(y)];
       const int hi = span_hi_[static_cast<std::size_t>(y)];
       // Outside the span the step's grids hold the input (the squeeze reads neighbours);
-      // from a third sub-step on, the grid written holds it already (two grids alternate).
+      // after the first pass the grid written holds it already (a long step's sub-steps go
+      // from the gathered grids to the new_ ones and back within the spans only).
       const std::size_t row = static_cast<std::size_t>(y + 1) * win_.stride() + 1;
-      for (std::size_t k = 0; k < from_.size() && pass <= 2; ++k) {
+      for (std::size_t k = 0; k < from_.size() && first_pass; ++k) {
         std::copy_n(from_[k] + row, lo, to_[k] + row);
         std::copy_n(from_[k] + row + hi, cols - hi, to_[k] + row + hi);
       }
@@ -1147,14 +1124,12 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
         if (transfers) clamp_brush(brush, slot_count);
         break;
       }
+      // (Without a squeeze the faces stay 0, zeroed above: the sub-step's result is copied.)
       parallel_rows(rows, cols, [&](int r0, int r1) {
-        if (squeezes)
-          apply_squeeze_rows(slot_count, r0, r1);
-        else
-          copy_span_rows(slot_count, r0, r1);
+        apply_squeeze_rows(slot_count, r0, r1);
         prepare_rows(j + 1, wet_.data(), r0, r1);
       });
-      ++pass;
+      first_pass = false;
     }
   }
   // Paint in the bristles flows toward the tips that gave theirs away: over every

@@ -103,7 +103,6 @@ class Stepper {
     float deposit_share;  // the canvas's share of the joint film
     float inv_deposit_share;
     float tip_film_mm;  // most paint a brush cell's tips present to the canvas
-    bool lift_off;      // the brush leaves the paint (see step)
     float footing_mm;   // the ground and dry paint around the brush's centre (mean)
     float ground_fill;  // how much of a valley below the footing the paint fills
     // Canvas cells sharing a brush cell may together take more than it holds: each deposit
@@ -127,12 +126,12 @@ class Stepper {
   struct Shift {
     int x, y;
   };
+  bool shifted_span(int y, Shift shift, int& lo, int& hi) const;
   void shifted_transfer_rows(const StepInputs& in, Shift shift, float relax, const float* wet,
                              float* new_wet, float* new_pigment, int r0, int r1);
   void shifted_transfer_to_brush(Brush& brush, int slot_count, Shift shift, int r0, int r1);
   void squeeze_rows(const float* pen_grid, Shift shift, float c, int r0, int r1);
   void sub_step_penetration_rows(Shift shift, float level_offset_mm, int r0, int r1);
-  void copy_span_rows(int slot_count, int r0, int r1);
   void apply_squeeze_rows(int slot_count, int r0, int r1);
   void share_brush_cells(std::size_t cells, float inv_deposit_share);
   void transfer_to_brush(Brush& brush, int slot_count, int r0, int r1);

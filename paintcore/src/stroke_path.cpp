@@ -60,18 +60,6 @@ std::array<double, 2> StrokeSegment::at(double t) const {
           p0_[1] + h01 * (p1_[1] - p0_[1]) + h10 * m0_[1] + h11 * m1_[1]};
 }
 
-double StrokeSegment::max_speed() const {
-  if (straight_) return std::hypot(p1_[0] - p0_[0], p1_[1] - p0_[1]);
-  double fastest = 0.0;
-  std::array<double, 2> last = p0_;
-  for (int k = 1; k <= kChords; ++k) {
-    const auto next = at(static_cast<double>(k) / kChords);
-    fastest = std::max(fastest, std::hypot(next[0] - last[0], next[1] - last[1]) * kChords);
-    last = next;
-  }
-  return 1.02 * fastest;
-}
-
 double heading_for_travel(double travel_rad) {
   return travel_rad - 0.5 * std::numbers::pi;
 }

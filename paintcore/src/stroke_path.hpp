@@ -15,10 +15,6 @@ class StrokeSegment {
   StrokeSegment(std::array<double, 2> from, std::array<double, 2> to,
                 const std::array<double, 2>* before);
   std::array<double, 2> at(double t) const;  // t in [0, 1]
-  // The most the point moves per unit of t (the longest of 32 chords, times 32, with a 2 %
-  // margin on a curve for the speed's variation within a chord): at least the arc length,
-  // and exactly the chord's length on a straight segment.
-  double max_speed() const;
   // Its arc length (cells), and the parameter t at which the arc from `from` is `share` of it:
   // exact on a straight segment, over 32 chords on a curve (the brush steps by distance
   // along the path, not by the curve's parameter, whose speed varies).

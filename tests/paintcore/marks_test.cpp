@@ -499,7 +499,7 @@ TEST(Marks, AFastCircleStaysRound) {
   // The first segment of a stroke has no sample before it: a straight chord.
   const StrokeSegment first({0, 0}, {2, 0}, nullptr);
   EXPECT_NEAR(first.at(0.5)[1], 0.0, 1e-12);
-  EXPECT_NEAR(first.max_speed(), 2.0, 1e-12);
+  EXPECT_NEAR(first.length(), 2.0, 1e-12);
 }
 
 TEST(Marks, TheBrushStepsByDistanceAlongItsPath) {

@@ -32,6 +32,9 @@ class Brush {
   int cells_across() const { return cells_; }  // the grid is cells_across^2, row-major
   std::size_t cell_count() const { return static_cast<std::size_t>(cells_) * cells_; }
   const BrushHead& head() const { return head_; }
+  // A head without bristles (the palette knife) is a rigid blade: it pushes paint at its
+  // leading edge, steps a cell at a time and spreads its paint across all of it (Stepper).
+  bool blade() const { return !(head_.bristles.spacing_mm > 0.0); }
   const BrushSettings& settings() const { return settings_; }
 
   // Height of the head's underside above its tip (mm) and whether the head covers a cell.
