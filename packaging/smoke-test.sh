@@ -19,12 +19,14 @@ export XDG_DATA_HOME="$root/xdg-data" XDG_CONFIG_HOME="$root/xdg-config" \
 for file in usr/share/applications/impasto.desktop usr/share/mime/packages/impasto.xml \
   usr/share/thumbnailers/impasto.thumbnailer usr/share/icons/hicolor/scalable/apps/impasto.svg \
   usr/share/icons/hicolor/48x48/apps/impasto.png usr/lib/udev/rules.d/70-impasto-tablets.rules \
-  usr/share/man/man1/impasto.1.gz usr/share/impasto/brushes/round.brush; do
+  usr/share/man/man1/impasto.1.gz usr/share/impasto/brushes/round.brush \
+  usr/share/doc/impasto/copyright usr/share/doc/impasto/NOTICE; do
   [ -f "$root/unpacked/$file" ] || { echo "smoke test: the package lacks /$file" >&2; exit 1; }
 done
 dpkg-deb -f "$deb" Depends | grep -q libtbb || { echo "smoke test: no shlibdeps" >&2; exit 1; }
 
-"$impasto" --version
+"$impasto" --version | grep -q "Apache License 2.0" ||
+  { echo "smoke test: impasto --version does not name the licence" >&2; exit 1; }
 "$impasto" pigments list >/dev/null
 "$impasto" replay "$root/unpacked/usr/share/impasto/strokes/demo.dat" --save demo.impasto \
   -o demo.png >/dev/null

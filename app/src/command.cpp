@@ -4,7 +4,9 @@
 #include <exception>
 #include <iostream>
 #include <map>
+#include <string>
 
+#include "about_text.hpp"
 #include "command_line.hpp"
 #include "impasto/files/memory_budget.hpp"
 #include "impasto_version.hpp"
@@ -86,7 +88,7 @@ void run_command_in_process(const std::string& command_line) {
 int run_command_line(int argc, char** argv) {
   CLI::App root{"Impasto: interactive 2.5D painting with thick, spectrally rendered paint"};
   root.require_subcommand(0, 1);
-  root.set_version_flag("--version", "impasto " IMPASTO_VERSION);
+  root.set_version_flag("--version", std::string("impasto " IMPASTO_VERSION "\n") + kLicenceText);
   root.failure_message(failure_message);
   root.footer(
       "Options mean the same in every command (-o/--out the output file, --save the painting, "

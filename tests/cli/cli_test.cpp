@@ -98,6 +98,14 @@ TEST_F(Cli, TopLevelHelpListsEveryCommandAndPointsToTheVocabulary) {
   EXPECT_EQ(impasto("help").out, r.out);
 }
 
+TEST_F(Cli, VersionNamesTheLicence) {
+  const CommandRun r = impasto("--version");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.out.rfind("impasto ", 0), 0u) << r.out;
+  EXPECT_NE(r.out.find("Apache License 2.0"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("NOTICE"), std::string::npos) << r.out;
+}
+
 TEST_F(Cli, EverySubCommandHasAHelpWithoutOldSpellings) {
   // The help texts in process (a program run each would take seconds), then two as run.
   for (const std::string& path : command_paths()) {

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "about_text.hpp"
 #include "impasto_version.hpp"
 #include "window/eyedropper.hpp"
 #include "window/shortcuts.hpp"
@@ -121,6 +122,7 @@ void draw_help_windows(WindowState& s) {
           "2.5D thick paint: a fluid on a height field that the brush\n"
           "pushes, picks up and deposits, coloured from measured pigment\n"
           "spectra through the Kubelka-Munk model.");
+      ImGui::TextUnformatted(kLicenceText);
       ImGui::TextDisabled("impasto --help lists the commands; docs/ in the sources.");
     }
     ImGui::End();
