@@ -4,14 +4,25 @@
 #include "impasto/data/pigments.hpp"
 #include "impasto/data/spectral_csv.hpp"
 #include "impasto/files/confined_path.hpp"
+#include "impasto/files/data_dir.hpp"
 #include "impasto/files/message_text.hpp"
 
 namespace impasto::data {
 namespace {
 
+// The library a pigment file's '# flakes:' may reach into: its own folder, except for the
+// bundled pigments, whose flakes live beside them in the data folder (data/flakes). A user's
+// or a --pigments folder never reaches the folder above it (its owner's home, say).
+std::filesystem::path flake_library(const std::filesystem::path& folder) {
+  std::error_code error;
+  const std::filesystem::path data = files::data_dir();
+  if (std::filesystem::equivalent(folder, data / "pigments", error)) return data;
+  return folder;
+}
+
 // The '# flakes:' file of a pigment, relative to the pigment file's folder and inside its
-// library, the folder above (data/ holds pigments/ and flakes/): no absolute path, no climbing
-// out, no symlink out. It must exist (the renderer reads it, knowing the flake format).
+// library (above): no absolute path, no climbing out, no symlink out. It must exist (the
+// renderer reads it, knowing the flake format).
 std::filesystem::path flake_file(const std::map<std::string, std::string>& metadata,
                                  const std::filesystem::path& pigment_file) {
   const auto entry = metadata.find("flakes");
@@ -20,7 +31,7 @@ std::filesystem::path flake_file(const std::map<std::string, std::string>& metad
   if (entry->second.empty()) throw std::runtime_error(where + "names no file");
   const std::filesystem::path folder = std::filesystem::absolute(pigment_file).parent_path();
   const std::filesystem::path file = files::confined_path(
-      folder.parent_path(), folder, entry->second, pigment_file.string() + ": field 'flakes'");
+      flake_library(folder), folder, entry->second, pigment_file.string() + ": field 'flakes'");
   if (!std::filesystem::is_regular_file(file)) {
     throw std::runtime_error(where + files::excerpt(file.string()) + " is not a file");
   }

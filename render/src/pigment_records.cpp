@@ -23,6 +23,9 @@ namespace fs = std::filesystem;
 
 constexpr std::string_view kFileMark = "#impasto-record-file ";
 constexpr const char* kGroundPigment = "Titanium White";  // as spectral_palette.cpp
+// The carried flake paints kept in the cache, the most recently used: a painting's few, many
+// times over (each record is a folder of a few kB).
+constexpr std::size_t kKeptCarriedPigments = 256;
 
 // "key = value" of a flake paint file, or empty.
 std::string flake_field(const std::string& text, const std::string& key) {
@@ -88,24 +91,39 @@ data::Pigment pigment_from_record(const std::string& record, const std::string& 
   data::Pigment pigment = data::parse_pigment_text(text, where);
   const auto flakes = pigment.metadata.find("flakes");
   if (flakes == pigment.metadata.end()) return pigment;
-  bool found = false;
-  for (const auto& file : files) found = found || file.first == flakes->second;
-  if (!found)
+  // A record carries its flake file and that file's n,k table: nothing else is written.
+  const auto carried = [&](const std::string& name) -> const std::string* {
+    for (const auto& file : files)
+      if (file.first == name) return &file.second;
+    return nullptr;
+  };
+  const std::string* flake_text = carried(flakes->second);
+  if (flake_text == nullptr)
     throw std::runtime_error(where + ": pigment " + files::excerpt(pigment.name) +
                              " names flake file " + files::excerpt(flakes->second) +
                              " but does not carry it");
+  const std::string table = flake_field(*flake_text, "nk_table");
+  for (const auto& file : files) {
+    if (file.first != flakes->second && file.first != table)
+      throw std::runtime_error(where + ": carries a file its pigment does not need, " +
+                               files::excerpt(file.first));
+  }
   char hash[17];
   std::snprintf(hash, sizeof hash, "%016llx", static_cast<unsigned long long>(util::fnv1a(record)));
-  const fs::path folder = cache_root() / hash;
-  fs::create_directories(folder);
+  const fs::path root = cache_root();
+  const fs::path folder = root / hash;
+  fs::create_directory(folder);
   for (const auto& [name, contents] : files) {
     const fs::path path = folder / name;
     std::error_code error;
-    if (fs::is_regular_file(path, error) && fs::file_size(path, error) == contents.size() &&
+    if (fs::is_regular_file(fs::symlink_status(path, error)) &&
+        fs::file_size(path, error) == contents.size() &&
         files::read_whole_file(path, "carried flake file") == contents)
       continue;
     files::write_file_atomically(path, contents);
   }
+  files::touch_cache_entry(folder);
+  files::trim_cache(root, kKeptCarriedPigments);
   pigment.flakes = folder / flakes->second;
   return pigment;
 }

@@ -126,6 +126,47 @@ TEST_F(CarriedPigments, AFlakePigmentCarriesItsFlakeFiles) {
             data::PigmentDatabase::defaults().get("Aluminium Metallic").K.values);
 }
 
+// With HOME and XDG_CACHE_HOME unset (a service, a thumbnailer's sandbox) the flake files a
+// painting carries do not go to /tmp/impasto-carried-flakes-UID, where another user may have
+// planted a symlink into a folder of this user's: the folder it points at stays untouched.
+TEST_F(CarriedPigments, WithNoHomeAPlantedSymlinkInTheTempFolderIsNotFollowed) {
+  const paintcore::Painting p = painted_with("Aluminium Metallic");
+  const fs::path planted =
+      fs::temp_directory_path() / ("impasto-carried-flakes-" + std::to_string(getuid()));
+  const fs::path victim = folder_.dir() / "private";
+  fs::create_directories(victim);
+  std::error_code absent;
+  if (fs::symlink_status(planted, absent).type() == fs::file_type::not_found)
+    fs::create_directory_symlink(victim, planted);
+  const std::string home = std::getenv("HOME") ? std::getenv("HOME") : "";
+  unsetenv("HOME");
+  unsetenv("XDG_CACHE_HOME");
+  const auto carried = render::carried_pigments(p);
+  setenv("HOME", home.c_str(), 1);
+  setenv("XDG_CACHE_HOME", (folder_.dir() / "cache").c_str(), 1);
+  if (fs::is_symlink(planted) && fs::read_symlink(planted) == victim) fs::remove(planted);
+  const fs::path flakes = carried->at("Aluminium Metallic").flakes;
+  EXPECT_TRUE(fs::is_regular_file(flakes));
+  EXPECT_NE(flakes.string().rfind(planted.string(), 0), 0u) << flakes;
+  EXPECT_TRUE(fs::is_empty(victim));
+}
+
+// A record carries its flake file and that file's table, nothing more: a crafted painting
+// cannot make the program write files of its choosing.
+TEST_F(CarriedPigments, ARecordCarryingAnUnneededFileIsRefused) {
+  const std::string record =
+      render::pigment_record(data::PigmentDatabase::defaults().get("Aluminium Metallic")) +
+      "#impasto-record-file notes.txt\nanything at all\n";
+  try {
+    render::pigment_from_record(record, "the painting's pigment 'Aluminium Metallic'");
+    ADD_FAILURE() << "the extra file was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("carries a file its pigment does not need, 'notes.txt'"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST_F(CarriedPigments, OlderPaintingsWithoutRecordsRenderWithTheLibrary) {
   paintcore::Painting::set_pigment_record_source({});  // as before version 4
   const fs::path file = folder_.dir() / "old.impasto";

@@ -149,6 +149,20 @@ TEST(SessionRegistry, OnlySessionsWithWorkInThemAreWorthRecovering) {
   EXPECT_TRUE(has_work_to_recover(entry)) << "an unreadable recording is the user's to judge";
 }
 
+// A FIFO under an entry's name, or as the recording an entry names, is skipped or refused
+// without being opened for reading: opening it would wait for a writer forever (recover
+// --list and the window's start hung).
+TEST(SessionRegistry, AFifoInTheRecoveryFolderIsSkippedWithoutWaiting) {
+  TempDir dir("impasto_registry_fifo");
+  ASSERT_EQ(mkfifo((dir.path() / "planted.session").c_str(), 0600), 0);
+  EXPECT_TRUE(unfinished_sessions(dir.path()).empty());
+  SessionEntry entry;
+  entry.strokes = dir.path() / "pipe.strokes";
+  entry.autosave = dir.path() / "none.autosave.impasto";
+  ASSERT_EQ(mkfifo(entry.strokes.c_str(), 0600), 0);
+  EXPECT_TRUE(has_work_to_recover(entry)) << "an unreadable recording is the user's to judge";
+}
+
 TEST(SessionRegistry, AnEntryIsOfferedOnlyOnceItsSessionIsGone) {
   TempDir dir("impasto_registry");
   const fs::path strokes = dir.path() / "s.strokes";

@@ -6,7 +6,9 @@
 #include <filesystem>
 #include <fstream>
 
+#include "impasto/data/pigment_library.hpp"
 #include "impasto/data/pigments.hpp"
+#include "impasto/files/data_dir.hpp"
 #include "impasto/data/spectral_csv.hpp"
 
 namespace impasto::data {
@@ -44,23 +46,44 @@ void write_pigment(const fs::path& file, const std::string& flakes) {
                       << "\nwavelength_nm,K,S\n400,1,2\n";
 }
 
-TEST(DataFileSafety, AFlakesPathStaysInsideTheLibrary) {
-  const fs::path library = scratch("impasto_confined_flakes");
-  fs::create_directories(library / "pigments");
-  fs::create_directories(library / "flakes");
-  std::ofstream(library / "flakes/mine.flake") << "format = impasto-flake-paint 1\n";
-  write_pigment(library / "pigments/shiny.csv", "../flakes/mine.flake");
-  EXPECT_EQ(pigment_error(library / "pigments"), "");
-  write_pigment(library / "pigments/shiny.csv", "/etc/shadow");
-  EXPECT_NE(pigment_error(library / "pigments")
-                .find("shiny.csv: field 'flakes': '/etc/shadow' is an absolute path"),
-            std::string::npos);
-  write_pigment(library / "pigments/shiny.csv", "../../../../etc/passwd");
-  EXPECT_NE(pigment_error(library / "pigments").find("climbs out with '..'"), std::string::npos);
-  fs::create_symlink("/etc/passwd", library / "flakes/out.flake");
-  write_pigment(library / "pigments/shiny.csv", "../flakes/out.flake");
-  EXPECT_NE(pigment_error(library / "pigments").find("through a symlink"), std::string::npos);
-  fs::remove_all(library);
+// A pigment folder's files name only files inside that folder: a --pigments or user folder
+// never reaches the folder above it (its owner's home, with ~/.ssh beside it).
+TEST(DataFileSafety, AFlakesPathStaysInsideThePigmentFolder) {
+  const fs::path home = scratch("impasto_confined_flakes");
+  const fs::path folder = home / "my-pigments";
+  fs::create_directories(folder);
+  fs::create_directories(home / ".ssh");
+  std::ofstream(home / ".ssh/id_rsa") << "-----BEGIN OPENSSH PRIVATE KEY-----\n";
+  std::ofstream(folder / "mine.flake") << "format = impasto-flake-paint 1\n";
+  write_pigment(folder / "shiny.csv", "mine.flake");
+  EXPECT_EQ(pigment_error(folder), "");
+  write_pigment(folder / "shiny.csv", "../.ssh/id_rsa");
+  EXPECT_NE(pigment_error(folder).find("shiny.csv: field 'flakes': '../.ssh/id_rsa' climbs out"),
+            std::string::npos)
+      << pigment_error(folder);
+  fs::create_directories(home / "flakes");
+  std::ofstream(home / "flakes/mine.flake") << "format = impasto-flake-paint 1\n";
+  write_pigment(folder / "shiny.csv", "../flakes/mine.flake");
+  EXPECT_NE(pigment_error(folder).find("climbs out with '..'"), std::string::npos);
+  write_pigment(folder / "shiny.csv", "/etc/shadow");
+  EXPECT_NE(
+      pigment_error(folder).find("shiny.csv: field 'flakes': '/etc/shadow' is an absolute path"),
+      std::string::npos);
+  write_pigment(folder / "shiny.csv", "../../../../etc/passwd");
+  EXPECT_NE(pigment_error(folder).find("climbs out with '..'"), std::string::npos);
+  fs::create_symlink(home / ".ssh/id_rsa", folder / "out.flake");
+  write_pigment(folder / "shiny.csv", "out.flake");
+  EXPECT_NE(pigment_error(folder).find("through a symlink"), std::string::npos);
+  fs::remove_all(home);
+}
+
+// The bundled pigments keep their flakes in the data folder beside them (data/flakes).
+TEST(DataFileSafety, TheBundledFlakePaintsReachTheDataFoldersFlakes) {
+  const PigmentFolderScan scan = scan_pigment_folder(files::data_dir() / "pigments");
+  EXPECT_TRUE(scan.problems.empty()) << scan.problems.front();
+  int with_flakes = 0;
+  for (const auto& loaded : scan.pigments) with_flakes += loaded.pigment.flakes.empty() ? 0 : 1;
+  EXPECT_EQ(with_flakes, 2);
 }
 
 TEST(DataFileSafety, DevicesAndFoldersAreRefusedByName) {

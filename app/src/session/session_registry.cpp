@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <impasto/input/stroke_file.hpp>
@@ -131,8 +132,16 @@ std::vector<SessionEntry> unfinished_sessions(const std::filesystem::path& folde
   std::error_code error;
   for (const auto& item : std::filesystem::directory_iterator(folder, error)) {
     if (item.path().extension() != ".session") continue;
-    const int fd = ::open(item.path().c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+    // Only plain files: opening a FIFO planted under this name would wait for a writer forever.
+    std::error_code type_error;
+    if (item.symlink_status(type_error).type() != std::filesystem::file_type::regular) continue;
+    const int fd = ::open(item.path().c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
     if (fd < 0) continue;
+    struct stat info {};
+    if (::fstat(fd, &info) != 0 || !S_ISREG(info.st_mode)) {  // swapped in since the check
+      ::close(fd);
+      continue;
+    }
     // A running session holds its entry's lock; the lock of a dead one is gone with it.
     const bool live = ::flock(fd, LOCK_SH | LOCK_NB) != 0;
     std::string text;
