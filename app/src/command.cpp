@@ -5,6 +5,7 @@
 #include <iostream>
 #include <map>
 #include <string>
+#include <system_error>
 
 #include "about_text.hpp"
 #include "command_line.hpp"
@@ -111,10 +112,19 @@ int run_command_line(int argc, char** argv) {
     return root.exit(e);
   } catch (const std::bad_alloc&) {
     // Loaders and renderers name what they allocate; this is what escaped them.
+    const files::MemoryBudget budget = files::memory_budget();
     std::cerr << "impasto: out of memory (an allocation was refused; files are checked against "
                  "a budget of "
-              << files::describe_bytes(files::memory_budget_bytes())
-              << ", set by IMPASTO_MEMORY_BUDGET_MB)\n";
+              << files::describe_bytes(budget.bytes) << ", set by " << budget.source
+              << "; IMPASTO_MEMORY_BUDGET_MB sets it)\n";
+    return 1;
+  } catch (const std::system_error& e) {
+    // The system refused a thread or a mapping: say which limits were in force, not errno alone.
+    const files::MemoryBudget budget = files::memory_budget();
+    std::cerr << "impasto: the system refused a resource (" << e.what()
+              << "): threads or memory beyond this process's limits (the memory left: "
+              << files::describe_bytes(budget.bytes) << ", set by " << budget.source
+              << "; `ulimit -v` and `ulimit -u` show the limits, --threads 1 needs fewer)\n";
     return 1;
   } catch (const std::exception& e) {
     std::cerr << "impasto: " << e.what() << "\n";

@@ -106,6 +106,24 @@ TEST_F(Cli, VersionNamesTheLicence) {
   EXPECT_NE(r.out.find("NOTICE"), std::string::npos) << r.out;
 }
 
+// The memory budget follows the process's limits, not the machine's RAM: under `ulimit -v`
+// a 55-byte stroke file varnishing a 16384² canvas fails at once naming its line and the
+// limit (it once took 3.9 GB and ended with a bare std::bad_alloc).
+TEST_F(Cli, AHugeVarnishFailsByLineUnderAnAddressSpaceLimit) {
+#if defined(__SANITIZE_ADDRESS__)
+  GTEST_SKIP() << "AddressSanitizer maps terabytes of shadow memory: no RLIMIT_AS fits it";
+#else
+  std::ofstream(dir_ / "v.strokes")
+      << "impasto-strokes 1\ncanvas 16384 16384 150\nvarnish gloss 0.5\n";
+  const CommandRun r = impasto("replay v.strokes -q", "prlimit --as=2000000000");
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_NE(r.err.find("v.strokes:3: "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("more than the memory budget of"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("ulimit -v (RLIMIT_AS)"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("bad_alloc"), std::string::npos) << r.err;
+#endif
+}
+
 TEST_F(Cli, EverySubCommandHasAHelpWithoutOldSpellings) {
   // The help texts in process (a program run each would take seconds), then two as run.
   for (const std::string& path : command_paths()) {

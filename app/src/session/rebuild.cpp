@@ -4,6 +4,8 @@
 #include <optional>
 #include <stdexcept>
 
+#include "impasto/files/memory_budget.hpp"
+
 namespace impasto::app {
 namespace {
 
@@ -54,7 +56,7 @@ bool replay_from(paintcore::Painting& painting, const input::StrokeFile& file, s
     try {
       player.apply(event);
     } catch (const std::exception& e) {
-      throw std::runtime_error(file.where(i) + ": " + e.what());
+      throw std::runtime_error(file.where(i) + ": " + files::error_text(e));
     }
     if (options.progress) options.progress(i + 1, file.events.size());
   }

@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <type_traits>
 
+#include "impasto/files/memory_budget.hpp"
+
 namespace impasto::app {
 namespace {
 
@@ -168,7 +170,7 @@ paintcore::Painting replay(const input::StrokeFile& file, const ReplayOptions& o
     try {
       player.apply(file.events[i]);
     } catch (const std::exception& e) {
-      throw std::runtime_error(file.where(i) + ": " + e.what());
+      throw std::runtime_error(file.where(i) + ": " + files::error_text(e));
     }
     if (options.progress) options.progress(i + 1, file.events.size());
   }
