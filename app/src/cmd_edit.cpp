@@ -75,7 +75,7 @@ const CommandRegistrar registrar("edit", [](CLI::App& root) {
       ->check(CLI::IsMember(varnishes))
       ->capture_default_str();
   cmd->add_option("--varnish-thickness", args->varnish_thickness_mm, "The coat's thickness, mm")
-      ->check(CLI::Range(1e-4, paintcore::kMaxVarnishMm))
+      ->check(CLI::Range(paintcore::kMinVarnishMm, paintcore::kMaxVarnishMm))
       ->capture_default_str();
   cmd->add_option("--region", args->region,
                   "Varnish only the rectangle X,Y,W,H (cells, after --crop and --size)");

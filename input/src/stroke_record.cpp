@@ -172,8 +172,10 @@ VarnishEvent parse_varnish(const Fields& f, const LineContext& where) {
   }
   varnish.finish = *finish;
   varnish.thickness_mm = parse_double(f[2], where, "thickness");
-  if (!(varnish.thickness_mm > 0.0 && varnish.thickness_mm <= paintcore::kMaxVarnishMm))
-    where.fail("thickness", shortest(varnish.thickness_mm) + " mm is outside (0, " +
+  if (!(varnish.thickness_mm >= paintcore::kMinVarnishMm &&
+        varnish.thickness_mm <= paintcore::kMaxVarnishMm))
+    where.fail("thickness", shortest(varnish.thickness_mm) + " mm is outside [" +
+                                shortest(paintcore::kMinVarnishMm) + ", " +
                                 shortest(paintcore::kMaxVarnishMm) + "]");
   if (f.size() == 7) {
     constexpr std::int64_t kMaxCells = 1 << 16;

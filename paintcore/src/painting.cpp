@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
@@ -147,6 +148,24 @@ void Painting::load_brush(const std::vector<PigmentMixPart>& mix, double volume_
   if (p.slots.size() + new_names.size() > kMaxPigmentSlots)
     throw std::runtime_error("load_brush: the mix needs more than " +
                              std::to_string(kMaxPigmentSlots) + " pigment slots in all");
+  {  // the paint must fit on the head before anything changes
+    const double area = p.canvas.spec().cell_area_mm2();
+    const double height = volume_mm3 / (static_cast<double>(p.brush.covered_cells()) * area);
+    const std::size_t cells = p.brush.cell_count();
+    float held = 0.0f;  // the fullest cell of the head now
+    for (std::size_t c = 0; c < cells; ++c)
+      if (p.brush.covers()[c]) held = std::max(held, p.brush.volume_mm()[c]);
+    if (held + height > kMaxPaintHeightMm) {
+      const double room = std::max(0.0, static_cast<double>(kMaxPaintHeightMm - held)) *
+                          static_cast<double>(p.brush.covered_cells()) * area;
+      char why[200];
+      std::snprintf(why, sizeof why,
+                    "load_brush: %g mm³ is more than this head holds: at most %.4g mm³ more "
+                    "(%g mm of paint a brush cell)",
+                    volume_mm3, room, static_cast<double>(kMaxPaintHeightMm));
+      throw std::runtime_error(why);
+    }
+  }
   end_stroke();
   // Slots allocated here belong to this operation: undo forgets them again.
   p.history.begin(p.brush, p.ledger, p.slots, p.canvas.dry_layers().size(), p.canvas.tile_count());

@@ -37,8 +37,8 @@ constexpr std::uint32_t kMaxStringBytes = 4096;
 // A pigment record is a spectral CSV with its flake data: kilobytes; 16 MB is far beyond any.
 constexpr std::uint32_t kMaxRecordBytes = 16u << 20;
 constexpr std::uint32_t kMaxPigmentRecords = 4 * kMaxPigmentSlots;
-// No cell holds a metre of paint: larger amounts (FLT_MAX in a crafted file) are refused.
-constexpr float kMaxAmountMm = 1000.0f;
+// Larger amounts (FLT_MAX in a crafted file) are refused: painting never leaves them.
+constexpr float kMaxAmountMm = kMaxPaintHeightMm;
 // Pigment beyond kMaxPigmentRatio times a cell's paint plus kPigmentSlackMm cannot come from
 // painting (real cells hold pigment = paint, to rounding); pigment in less paint than
 // kMinPaintedVolumeMm (a denormal, where 1 / volume overflows) is dropped with it.

@@ -201,10 +201,10 @@ void Painting::apply_varnish(Finish finish, double thickness_mm, std::optional<C
   Impl& p = *impl_;
   if (static_cast<int>(finish) >= kFinishCount)
     throw std::runtime_error("apply_varnish: field 'finish' is not a finish");
-  if (!(thickness_mm > 0.0 && thickness_mm <= kMaxVarnishMm))
-    throw std::runtime_error("apply_varnish: field 'thickness_mm' must be in (0, " +
-                             std::to_string(kMaxVarnishMm) + "], got " +
-                             std::to_string(thickness_mm));
+  if (!(thickness_mm >= kMinVarnishMm && thickness_mm <= kMaxVarnishMm))
+    throw std::runtime_error("apply_varnish: field 'thickness_mm' must be in [" +
+                             std::to_string(kMinVarnishMm) + ", " + std::to_string(kMaxVarnishMm) +
+                             "], got " + std::to_string(thickness_mm));
   const CellRect whole{0, 0, p.canvas.width_cells(), p.canvas.height_cells()};
   CellRect r = region.value_or(whole);
   if (region) {

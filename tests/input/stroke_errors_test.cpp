@@ -78,9 +78,11 @@ INSTANTIATE_TEST_SUITE_P(
                   "bad.strokes:2: field 'finish': unknown finish 'shiny' (known: gloss, satin, "
                   "matte)"},
         ErrorCase{"VarnishTooThick", kHeader + "varnish gloss 2\n",
-                  "bad.strokes:2: field 'thickness': 2 mm is outside (0, 1]"},
+                  "bad.strokes:2: field 'thickness': 2 mm is outside [1e-04, 1]"},
         ErrorCase{"VarnishNoThickness", kHeader + "varnish gloss 0\n",
-                  "bad.strokes:2: field 'thickness': 0 mm is outside (0, 1]"},
+                  "bad.strokes:2: field 'thickness': 0 mm is outside [1e-04, 1]"},
+        ErrorCase{"VarnishDenormalThickness", kHeader + "varnish gloss 1e-320\n",
+                  "bad.strokes:2: field 'thickness': 1e-320 mm is outside [1e-04, 1]"},
         ErrorCase{"VarnishHalfARegion", kHeader + "varnish gloss 0.05 1 2\n",
                   "bad.strokes:2: 'varnish' takes a finish and a thickness in mm, then "
                   "optionally a region x y width height in cells; found 4 field(s)"},

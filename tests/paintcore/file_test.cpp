@@ -64,6 +64,32 @@ TEST_F(PaintingFileTest, SaveThenLoadGivesTheSameState) {
   EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir_), {}), 1);
 }
 
+// What can be painted can be saved and opened again: a brush loaded to the most a head holds
+// (kMaxPaintHeightMm a cell) reopens, and a load beyond it is refused when it is made, naming
+// how much more the head takes, not when the painting is opened (once: a 0.5 mm round took
+// 400 mm³ and the saved painting failed to load, "field 'brush.volume' ... above 1000 mm").
+TEST_F(PaintingFileTest, ABrushLoadedToItsLimitReopensAndMoreIsRefusedWhenLoaded) {
+  Painting p(CanvasSpec{64, 64, 300.0, 1});
+  p.set_brush(BrushSettings{"round", 0.5, 0.5});
+  const double area = p.canvas().spec().cell_area_mm2();
+  const double capacity = static_cast<double>(kMaxPaintHeightMm) * p.brush().covered_cells() * area;
+  try {
+    p.load_brush({{"red", 1.0}}, 400.0);
+    ADD_FAILURE() << "400 mm³ on a 0.5 mm head (" << capacity << " mm³ at most) was taken";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("load_brush: 400 mm³ is more than this head holds"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(p.brush_totals().volume, 0.0) << "a refused load changes nothing";
+  p.load_brush({{"red", 1.0}}, 0.999 * capacity);
+  EXPECT_THROW(p.load_brush({{"red", 1.0}}, 0.01 * capacity), std::runtime_error);
+  const auto file = dir_ / "full.impasto";
+  p.save(file);
+  const Painting q = Painting::load(file);
+  EXPECT_EQ(q.state_hash(), p.state_hash());
+}
+
 TEST_F(PaintingFileTest, TheBrushKeepsItsBodyBristlesAndTheParameters) {
   Painting p(test::flat_spec(64, 64), 1);
   SimulationParams params;

@@ -19,6 +19,10 @@ inline constexpr int kTileSize = 64;                      // cells along a tile 
 inline constexpr int kTileCells = kTileSize * kTileSize;  // cells in a tile
 inline constexpr int kMaxPigmentSlots = 16;               // pigment slots of a painting
 inline constexpr int kMaxCanvasCells = 1 << 17;           // per side
+// No cell of the canvas or the brush holds a metre of paint: a load that would put more on
+// a brush cell is refused, and a painting file holding more is refused as crafted, so what
+// is painted can always be saved and opened again.
+inline constexpr float kMaxPaintHeightMm = 1000.0f;
 static_assert(kCrackTileCells == kTileCells, "crack tiles are canvas tiles");
 
 struct CanvasSpec {

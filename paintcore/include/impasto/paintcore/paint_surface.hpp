@@ -109,7 +109,10 @@ PaintMedium mix(const PaintMedium& a, double a_volume, const PaintMedium& b, dou
 // finish, and the first paint on the bare ground all of it.
 inline constexpr double kSurfaceFilmMm = 0.01;
 
-// Varnish coats: thickness in mm of paint height, at most this much a coat.
+// Varnish coats: thickness in mm of paint height, kMinVarnishMm to kMaxVarnishMm a coat, one
+// range wherever a thickness is accepted (the stroke file, `edit`, the window, the engine).
+// Thinner than a tenth of a micrometre a coat does nothing a render shows.
+inline constexpr double kMinVarnishMm = 1e-4;
 inline constexpr double kMaxVarnishMm = 1.0;
 // A coat flows before it sets, from the peaks of the relief under it into its valleys
 // (docs/surface.md, "Varnish"): each cell's coat is the thickness plus levelled_share of the
