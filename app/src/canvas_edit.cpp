@@ -1,7 +1,11 @@
 #include "canvas_edit.hpp"
 
 #include <cstdio>
+#include <filesystem>
+#include <iterator>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 #include "impasto/render/relief_maps.hpp"
 #include "impasto/render/render_painting.hpp"
@@ -99,6 +103,21 @@ std::string CanvasEditResult::summary(const paintcore::Painting& painting) const
 void export_painting(const paintcore::Painting& painting, const ExportRequest& request) {
   if (request.image.empty() && request.height_map.empty() && request.normal_map.empty())
     throw std::runtime_error("export: nothing to write (give -o, --height-map or --normal-map)");
+  // Two outputs into one file would leave only the last: refuse before writing either.
+  const std::pair<const char*, const std::filesystem::path*> outputs[] = {
+      {"-o", &request.image},
+      {"--height-map", &request.height_map},
+      {"--normal-map", &request.normal_map}};
+  for (std::size_t i = 0; i < std::size(outputs); ++i)
+    for (std::size_t j = i + 1; j < std::size(outputs); ++j) {
+      const std::filesystem::path &a = *outputs[i].second, &b = *outputs[j].second;
+      std::error_code error;
+      if (!a.empty() && !b.empty() &&
+          (std::filesystem::weakly_canonical(a, error) ==
+           std::filesystem::weakly_canonical(b, error)))
+        throw std::runtime_error(std::string("export: ") + outputs[i].first + " and " +
+                                 outputs[j].first + " name the same file, " + a.string());
+    }
   std::optional<paintcore::Painting> refined;
   if (request.scale != 1) refined.emplace(painting.refined(request.scale));
   const paintcore::Painting& source = refined ? *refined : painting;

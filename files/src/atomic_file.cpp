@@ -11,6 +11,9 @@
 #include <cstdio>
 #include <cstring>
 #include <stdexcept>
+#include <string>
+
+#include "impasto/util/fnv1a.hpp"
 
 namespace impasto::files {
 namespace {
@@ -18,8 +21,23 @@ namespace {
 constexpr std::size_t kBufferBytes = 1 << 20;
 constexpr const char* kTempTag = ".impasto-tmp-";
 
+// A name may use the file system's 255 bytes; the temp name adds up to 41 ("." and
+// ".impasto-tmp-PID-RANDOM"), so a long name is cut to its first bytes (at a UTF-8
+// character's start) and its hash, which keeps one target's temps apart from another's.
+constexpr std::size_t kLongNameBytes = 200;
+constexpr std::size_t kKeptNameBytes = 160;
+
 std::string temp_prefix(const std::filesystem::path& target) {
-  return "." + target.filename().string() + kTempTag;
+  std::string name = target.filename().string();
+  if (name.size() > kLongNameBytes) {
+    std::size_t cut = kKeptNameBytes;
+    while (cut > 0 && (static_cast<unsigned char>(name[cut]) & 0xC0) == 0x80) --cut;
+    char hash[20];
+    std::snprintf(hash, sizeof hash, "~%016llx",
+                  static_cast<unsigned long long>(util::fnv1a(name)));
+    name = name.substr(0, cut) + hash;
+  }
+  return "." + name + kTempTag;
 }
 
 std::uint64_t random_word() {

@@ -136,6 +136,20 @@ TEST_F(CanvasEditCommand, ExportWritesTheScaledImageAndTheMaps) {
   EXPECT_THROW(run("export " + painting().string()), std::runtime_error);
 }
 
+// The height and normal maps (or the image) in one file would leave only the last written.
+TEST_F(CanvasEditCommand, ExportRefusesOneFileForTwoOutputs) {
+  try {
+    run("export " + painting().string() + " --height-map " + file("m.png").string() +
+        " --normal-map " + file("./m.png").string());
+    ADD_FAILURE() << "one file for both maps was taken";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("--height-map and --normal-map name the same file"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_FALSE(fs::exists(file("m.png")));
+}
+
 // A stroke file's `varnish` record (the window's Image > Varnish records it) replays to the
 // same painting as `impasto edit --varnish` on the painting the strokes before it made.
 TEST_F(CanvasEditCommand, AVarnishRecordReplaysAsEditVarnishDoes) {

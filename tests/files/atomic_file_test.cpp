@@ -49,6 +49,22 @@ TEST(AtomicFile, WritesANewFileAndLeavesNoTemp) {
   EXPECT_TRUE(others(folder.path(), {"a.txt"}).empty());
 }
 
+// A name up to the file system's 255 bytes saves, multi-byte characters included (73 CJK
+// characters, 219 bytes, once failed: the temp name beside it was longer than a name may be).
+TEST(AtomicFile, ANameOfTheFileSystemsFullLengthSaves) {
+  test::TempFolder folder;
+  std::string cjk;
+  for (int i = 0; i < 82; ++i) cjk += "\xe7\x94\xbb";  // 画, 3 bytes
+  for (const std::string& name : {std::string(255, 'a'), cjk + ".impasto", cjk + "ab"}) {
+    ASSERT_LE(name.size(), 255u);
+    write_file_atomically(folder / name, "first");
+    write_file_atomically(folder / name, "second");
+    EXPECT_EQ(contents(folder / name), "second") << name.size() << " bytes";
+    EXPECT_TRUE(others(folder.path(), {name}).empty()) << name.size() << " bytes";
+    std::filesystem::remove(folder / name);
+  }
+}
+
 TEST(AtomicFile, ReplacesTheOldFile) {
   test::TempFolder folder;
   put(folder / "a.txt", "old contents");
