@@ -164,12 +164,12 @@ const CommandRegistrar registrar("bench color", [](CLI::App& root) {
                 "one object a line: n, light, mean_de00, max_de00, ns_per_cell (n = 0: full "
                 "spectrum), storage, worst");
   cmd->add_option("--nodes", args->nodes, "Wavelength counts to test (1..16)")
-      ->check(CLI::Range(1, 16));
+      ->check(finite_range(1, 16));
   cmd->add_option("--lights", args->lights, "Lights (D65, A, F11, blackbody:K, FILE.csv)");
   add_choice_option(*cmd, "--weights", args->weights, kNodeWeightsNames,
                     "Nodes and XYZ weights (optimised and fitted: trained on the palette)");
   cmd->add_option("--cells", args->timing_cells, "Cells per timing run (0: no timing)")
-      ->check(CLI::Range(0, 10000000));
+      ->check(finite_range(0, 10000000));
   cmd->add_flag("!--no-half", args->half, "Skip the half-storage rows");
   cmd->callback([args] { run(*args); });
 });

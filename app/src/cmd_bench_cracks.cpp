@@ -184,7 +184,7 @@ const CommandRegistrar registrar("bench cracks", [](CLI::App& root) {
   auto args = std::make_shared<BenchCracksArgs>();
   add_json_flag(*cmd, args->json, "every row");
   cmd->add_option("--paths", args->paths, "Monte Carlo paths per geometry")
-      ->check(CLI::Range(std::uint64_t{100}, std::uint64_t{100000000}));
+      ->check(finite_range(std::uint64_t{100}, std::uint64_t{100000000}));
   cmd->add_option("--seed", args->seed, "Monte Carlo seed");
   cmd->callback([args] { run(*args); });
 });

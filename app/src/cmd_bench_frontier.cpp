@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "command.hpp"
+#include "vocabulary.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).
 namespace impasto::app::bench_frontier_cmd {
@@ -225,12 +226,12 @@ const CommandRegistrar registrar("bench frontier", [](CLI::App& root) {
   cmd->add_flag("--json", args->json,
                 "One JSON object per row: light, n, rule, storage, mean_de00, max_de00, "
                 "ns_per_cell, build_ms, cached_ms, frontier");
-  cmd->add_option("--nodes", args->nodes, "Wavelength counts (1..16)")->check(CLI::Range(1, 16));
+  cmd->add_option("--nodes", args->nodes, "Wavelength counts (1..16)")->check(finite_range(1, 16));
   cmd->add_option("--lights", args->lights, "Lights (D65, A, F11, blackbody:K, FILE.csv)");
   cmd->add_option("--rules", args->rules, "Node rules")
       ->check(CLI::IsMember(util::names_of(kNodeWeightsNames)));
   cmd->add_option("--cells", args->timing_cells, "Cells per timing run")
-      ->check(CLI::Range(1, 10000000));
+      ->check(finite_range(1, 10000000));
   cmd->add_option("--svg", args->svg, "Also plot mean error against ns per cell to FILE.svg");
   cmd->callback([args] { run(*args); });
 });

@@ -278,10 +278,10 @@ void setup(CLI::App& root) {
                        : std::string("64..16384 cells a side");
           },
           ""));
-  cmd->add_option("--frames", args->frames, "Frames to time")->check(CLI::Range(1, 1000));
+  cmd->add_option("--frames", args->frames, "Frames to time")->check(finite_range(1, 1000));
   cmd->add_option("--brush", args->brush_px, "Brush width in cells for the latency")
-      ->check(CLI::Range(4, 1000));
-  cmd->add_option("--samples", args->samples, "Pen samples to time")->check(CLI::Range(2, 10000));
+      ->check(finite_range(4, 1000));
+  cmd->add_option("--samples", args->samples, "Pen samples to time")->check(finite_range(2, 10000));
   add_wavelengths_option(*cmd, args->wavelengths, false, "the shaders take 1..16");
   add_json_flag(*cmd, args->json, "the frame, view and latency medians in one object");
   cmd->callback([args] { run(*args); });

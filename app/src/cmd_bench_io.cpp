@@ -222,10 +222,10 @@ const CommandRegistrar registrar("bench io", [](CLI::App& root) {
   add_size_option(*cmd, args->size, "the synthetic painting's (default 16384x16384)");
   cmd->add_option("--painted", args->painted_percent,
                   "Percent of the synthetic canvas's tiles that hold paint")
-      ->check(CLI::Range(0.0, 100.0))
+      ->check(finite_range(0.0, 100.0))
       ->capture_default_str();
   cmd->add_option("--runs", args->runs, "Saves and loads (the median is reported)")
-      ->check(CLI::Range(1, 100))
+      ->check(finite_range(1, 100))
       ->capture_default_str();
   cmd->add_option("--dir", args->dir, "Folder the file is saved in (default: the temp folder)");
   add_save_option(*cmd, args->save,

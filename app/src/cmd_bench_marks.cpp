@@ -193,7 +193,7 @@ const CommandRegistrar registrar("bench marks", [](CLI::App& root) {
       ->check(CLI::IsMember(paint_body_names_list()));
   add_dpi_option(*cmd, args->stroke.dpi, {}, 20.0, 1200.0);
   cmd->add_option("--head-mm", args->stroke.size_mm, "Head width (mm)")
-      ->check(CLI::Range(0.5, 50.0))
+      ->check(finite_range(0.5, 50.0))
       ->capture_default_str();
   add_deprecated_option(*cmd, "--size", "--head-mm", [args](const std::string& text) {
     // --size is a canvas's WxH everywhere else; here it was the head's width in mm.
@@ -208,7 +208,7 @@ const CommandRegistrar registrar("bench marks", [](CLI::App& root) {
     args->stroke.size_mm = mm;
   });
   cmd->add_option("--spacing", args->stroke.spacing_mm, "Distance between pen samples (mm)")
-      ->check(CLI::Range(0.001, 10.0));
+      ->check(finite_range(0.001, 10.0));
   add_threads_option(*cmd, args->stroke.threads);
   cmd->add_flag("!--no-sweeps", args->sweeps,
                 "Skip the second table (sample spacings 0.05-2 mm, 150-1200 dpi)");

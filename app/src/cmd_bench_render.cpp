@@ -23,6 +23,7 @@
 
 #include "command.hpp"
 #include "impasto/util/statistics.hpp"
+#include "vocabulary.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).
 namespace impasto::app::bench_render_cmd {
@@ -265,10 +266,10 @@ const CommandRegistrar registrar("bench render", [](CLI::App& root) {
       ->check(CLI::IsMember(util::names_of(render::kNodeWeightsNames)))
       ->capture_default_str();
   cmd->add_option("--runs", args->runs, "Relights per thread count (the median is reported)")
-      ->check(CLI::Range(1, 100))
+      ->check(finite_range(1, 100))
       ->capture_default_str();
   cmd->add_option("--threads", args->threads, "The many-thread case (0: all cores)")
-      ->check(CLI::Range(0, 1024));
+      ->check(finite_range(0, 1024));
   cmd->add_flag("--reference", args->reference,
                 "The scalar per-cell reference code, shading recomputed every time (the "
                 "renderer as it was before the spectral kernels)");

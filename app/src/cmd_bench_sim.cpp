@@ -68,10 +68,10 @@ const CommandRegistrar registrar("bench sim", [](CLI::App& root) {
   add_json_flag(*cmd, args->json, "one object a line, per brush size");
   cmd->add_option("--runs", args->runs, "Runs per brush size (the median is reported)");
   cmd->add_option("--steps", args->steps, "Timed simulation steps per run")
-      ->check(CLI::Range(1, 1000000));
+      ->check(finite_range(1, 1000000));
   add_threads_option(*cmd, args->threads);
   cmd->add_option("--brush", args->brushes, "Brush sizes in cells across")
-      ->check(CLI::Range(1, 1024));
+      ->check(finite_range(1, 1024));
   cmd->callback([args] { run(*args); });
 });
 

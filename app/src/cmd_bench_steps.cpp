@@ -81,13 +81,13 @@ const CommandRegistrar registrar("bench steps", [](CLI::App& root) {
       "Long steps' cost and error against one-cell steps: a big brush's arc through wet paint");
   add_json_flag(*cmd, args->json, "one object a line, per brush size and share");
   cmd->add_option("--runs", args->runs, "Timed runs of each stroke (the median is reported)")
-      ->check(CLI::Range(1, 100));
+      ->check(finite_range(1, 100));
   add_threads_option(*cmd, args->threads);
   cmd->add_option("--brush", args->brushes, "Brush sizes in cells across")
-      ->check(CLI::Range(8, 1024));
+      ->check(finite_range(8, 1024));
   cmd->add_option("--share", args->shares,
                   "long_step_share values to compare with one-cell steps (share of the width)")
-      ->check(CLI::Range(0.0, 0.5));
+      ->check(finite_range(0.0, 0.5));
   cmd->add_option("--param", args->params, vocabulary_help("--param"));
   cmd->callback([args] { run(*args); });
 });

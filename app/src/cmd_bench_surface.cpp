@@ -287,10 +287,10 @@ const CommandRegistrar registrar("bench surface", [](CLI::App& root) {
   auto args = std::make_shared<BenchSurfaceArgs>();
   add_json_flag(*cmd, args->json, "the costs, the kernel shares and the spread shares");
   cmd->add_option("--realisations", args->realisations, "Random surfaces per kernel reference")
-      ->check(CLI::Range(1, 10000))
+      ->check(finite_range(1, 10000))
       ->capture_default_str();
   cmd->add_option("--photons", args->photons, "Photons per random walk")
-      ->check(CLI::Range(100, 100000000))
+      ->check(finite_range(100, 100000000))
       ->capture_default_str();
   add_size_option(*cmd, args->size, "the synthetic test canvas of the cost (256x256)");
   cmd->callback([args] { run(*args); });

@@ -350,34 +350,36 @@ void setup(CLI::App& root) {
       "(xdotool)");
   cmd->add_option("--canvas", args->canvases, "Canvas sizes in cells, WIDTHxHEIGHT")
       ->capture_default_str();
-  cmd->add_option("--window-width", args->window_w, "Window width")->check(CLI::Range(320, 8192));
-  cmd->add_option("--window-height", args->window_h, "Window height")->check(CLI::Range(240, 8192));
-  cmd->add_option("--brush", args->brush_cells, "Brush width in cells")->check(CLI::Range(1, 4096));
+  cmd->add_option("--window-width", args->window_w, "Window width")->check(finite_range(320, 8192));
+  cmd->add_option("--window-height", args->window_h, "Window height")
+      ->check(finite_range(240, 8192));
+  cmd->add_option("--brush", args->brush_cells, "Brush width in cells")
+      ->check(finite_range(1, 4096));
   add_dpi_option(*cmd, args->dpi);
   cmd->add_option("--load", args->load_mm3, "Paint loaded on the brush, mm3 (Burnt Sienna)")
-      ->check(CLI::Range(0.0, 10000.0));
-  cmd->add_option("--circles", args->circles, "Circles drawn")->check(CLI::Range(1, 100));
+      ->check(finite_range(0.0, 10000.0));
+  cmd->add_option("--circles", args->circles, "Circles drawn")->check(finite_range(1, 100));
   cmd->add_option("--moves", args->moves, "Mouse moves a circle or a drag, 8 ms apart")
-      ->check(CLI::Range(8, 10000));
+      ->check(finite_range(8, 10000));
   CLI::Option* zoom =
       cmd->add_option("--zoom", args->zoom_clicks,
                       "Wheel clicks instead of circles (in and out by turns): the latency of a "
                       "zoom step's first frame")
-          ->check(CLI::Range(1, 1000));
+          ->check(finite_range(1, 1000));
   cmd->add_option("--zoom-interval", args->zoom_interval_s, "Seconds between wheel clicks")
-      ->check(CLI::Range(0.0, 60.0))
+      ->check(finite_range(0.0, 60.0))
       ->capture_default_str();
   CLI::Option* rotate =
       cmd->add_option("--rotate", args->rotate_drags,
                       "Right-button drags instead of circles, each a whole turn of the view "
                       "(--moves moves), a second apart: the latency of a rotation's frames")
-          ->check(CLI::Range(1, 1000))
+          ->check(finite_range(1, 1000))
           ->excludes(zoom);
   cmd->add_option("--light-drag", args->light_drags,
                   "Drags of the Light panel's disc instead of circles (--moves moves each, a "
                   "second apart; found in a screenshot, ImageMagick's import): the latency of "
                   "a light change's frames")
-      ->check(CLI::Range(1, 1000))
+      ->check(finite_range(1, 1000))
       ->excludes(zoom)
       ->excludes(rotate);
   add_json_flag(*cmd, args->json, "the latencies of each canvas");

@@ -223,7 +223,7 @@ const CommandRegistrar registrar("cracks", [](CLI::App& root) {
   g->add_option("--age-years", gen->settings.age_years, "Age of the painting (years)")
       ->check(CLI::NonNegativeNumber);
   g->add_option("--jitter", gen->settings.jitter, "Island jitter, 0..1")
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(finite_range(0.0, 1.0));
   add_choice_option(*g, "--shape", gen->shape, kCavityShapeNames,
                     "Crack section (craquelure: a groove)");
   add_out_option(*g, gen->out, "the depths as a 16-bit grey PNG");
@@ -262,7 +262,7 @@ const CommandRegistrar registrar("cracks", [](CLI::App& root) {
       ->check(CLI::PositiveNumber);
   b->add_option("--exposed-layer", brush->exposed_layer,
                 "Dry layer the walls expose (0 = lowest); default: the canvas ground")
-      ->check(CLI::Range(0, 254));
+      ->check(finite_range(0, 254));
   add_always_json(*b);
   b->callback([brush] { run_brush(*brush); });
 
@@ -275,9 +275,9 @@ const CommandRegistrar registrar("cracks", [](CLI::App& root) {
   c->add_option("--rho0", cav->rho0, "Wall reflectance, 0..1");
   c->add_option("--sun-zenith", cav->light.sun_zenith_deg,
                 "Corrected model: the sun's angle from the canvas normal (degrees)")
-      ->check(CLI::Range(0.0, 90.0));
+      ->check(finite_range(0.0, 90.0));
   c->add_option("--sky", cav->light.sky_share, "Corrected model: the sky's share of the light")
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(finite_range(0.0, 1.0));
   add_always_json(*c);
   c->callback([cav] { run_cavity(*cav); });
 
@@ -286,7 +286,7 @@ const CommandRegistrar registrar("cracks", [](CLI::App& root) {
       "table", "Measure the Monte Carlo correction table of Gouffé's formula (offline)");
   add_out_option(*t, tab->out, "the table, a CSV (data/cracks/cavity_table*.csv)")->required();
   t->add_option("--paths", tab->paths, "Monte Carlo paths per shape and L/R")
-      ->check(CLI::Range(std::uint64_t{100}, std::uint64_t{100000000}));
+      ->check(finite_range(std::uint64_t{100}, std::uint64_t{100000000}));
   t->add_option("--seed", tab->seed, "Monte Carlo seed");
   t->add_option("--light-geometry", tab->light,
                 "beam:ZENITH_DEG (a beam tilted across grooves; data/cracks/"

@@ -33,7 +33,7 @@ struct EditArgs {
 
 void run(const EditArgs& args) {
   CanvasEdit edit;
-  if (!args.crop.empty()) edit.crop = render::parse_cell_region(args.crop);
+  if (!args.crop.empty()) edit.crop = render::parse_cell_region(args.crop, "--crop");
   if (args.size) edit.size = std::pair{args.size->width, args.size->height};
   edit.anchor = paintcore::parse_canvas_anchor(args.anchor);
   edit.varnish = render::parse_varnish(args.varnish);
@@ -75,18 +75,18 @@ const CommandRegistrar registrar("edit", [](CLI::App& root) {
       ->check(CLI::IsMember(varnishes))
       ->capture_default_str();
   cmd->add_option("--varnish-thickness", args->varnish_thickness_mm, "The coat's thickness, mm")
-      ->check(CLI::Range(paintcore::kMinVarnishMm, paintcore::kMaxVarnishMm))
+      ->check(finite_range(paintcore::kMinVarnishMm, paintcore::kMaxVarnishMm))
       ->capture_default_str();
   cmd->add_option("--region", args->region,
                   "Varnish only the rectangle X,Y,W,H (cells, after --crop and --size)");
   cmd->add_option("--dry", args->dry,
                   "Last, let the wet paint and varnish dry by this fraction, 0..1 (as a stroke "
                   "file's dry record)")
-      ->check(CLI::Range(0.0, 1.0));
+      ->check(finite_range(0.0, 1.0));
   add_save_option(*cmd, args->save, "the edited painting")->required();
   cmd->add_option("--history-mb", args->history_mb,
                   "Undo history kept in the saved file, newest steps first (0: none)")
-      ->check(CLI::Range(0.0, 1e6))
+      ->check(finite_range(0.0, 1e6))
       ->capture_default_str();
   cmd->callback([args] { run(*args); });
 });

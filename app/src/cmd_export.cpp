@@ -28,7 +28,7 @@ const CommandRegistrar registrar("export", [](CLI::App& root) {
   cmd->add_option("--scale", args->request.scale,
                   "Pixels per cell (1, 2, 4, ... 16): heights and paint interpolated smoothly "
                   "(Catmull-Rom) and shaded at the finer grid; the maps too")
-      ->check(CLI::Range(1, 16))
+      ->check(finite_range(1, 16))
       ->capture_default_str();
   add_out_option(*cmd, args->image,
                  "the render at --scale, default light and settings (impasto render has them "

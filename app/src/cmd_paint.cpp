@@ -41,11 +41,11 @@ void setup(CLI::App& root) {
                 "Do not record this session's input (nor keep it for crash recovery)");
   cmd->add_option("--autosave-seconds", args->options.autosave_seconds,
                   "Autosave to the recovery folder at least this often while painting")
-      ->check(CLI::Range(5.0, 86400.0));
+      ->check(finite_range(5.0, 86400.0));
   cmd->add_option("--window-width", args->options.window_width, "Window width in pixels")
-      ->check(CLI::Range(320, 8192));
+      ->check(finite_range(320, 8192));
   cmd->add_option("--window-height", args->options.window_height, "Window height in pixels")
-      ->check(CLI::Range(240, 8192));
+      ->check(finite_range(240, 8192));
   add_size_option(*cmd, args->size, "for a new canvas (default 1024x768)");
   add_dpi_option(*cmd, args->options.new_canvas.dpi, "for a new canvas");
   add_wavelengths_option(*cmd, args->options.wavelengths, false,

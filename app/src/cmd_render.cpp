@@ -180,16 +180,16 @@ const CommandRegistrar registrar("render", [](CLI::App& root) {
                     "The light's kind (diffuse: overcast, no sparkles)");
   cmd->add_option("--light-size", args->light_size_deg,
                   "Apparent diameter of the light in degrees (the sun: 0.53)")
-      ->check(CLI::Range(1e-3, 90.0))
+      ->check(finite_range(1e-3, 90.0))
       ->capture_default_str();
   cmd->add_option("--light-distance", args->light_distance_mm,
                   "Point and spot lights: mm from the canvas centre along --light-dir")
-      ->check(CLI::Range(1.0, 1e7))
+      ->check(finite_range(1.0, 1e7))
       ->capture_default_str();
   cmd->add_option("--ambient", args->ambient,
                   "Share of the light arriving from the whole sky, 0..1 (the rest from "
                   "--light-dir)")
-      ->check(CLI::Range(0.0, 1.0))
+      ->check(finite_range(0.0, 1.0))
       ->capture_default_str();
   add_choice_option(*cmd, "--display", args->display, kDisplayEncodingNames,
                     "The PNG's encoding (an EXR is always linear-srgb)");
@@ -215,7 +215,7 @@ const CommandRegistrar registrar("render", [](CLI::App& root) {
                 "Render through the OpenGL shaders, headless (EGL or OSMesa); 1..16 nodes");
   cmd->add_option("--zoom", args->zoom,
                   "Close-up: pixels per cell, cracks shaded inside (with --region)")
-      ->check(CLI::Range(1, 256));
+      ->check(finite_range(1, 256));
   cmd->add_option("--region", args->region, "Close-up region X,Y,W,H in cells (default: all)");
   add_threads_option(*cmd, args->threads);
   add_surface_options(*cmd, args->surface);

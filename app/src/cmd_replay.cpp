@@ -176,7 +176,7 @@ const CommandRegistrar registrar("replay", [](CLI::App& root) {
   add_threads_option(*cmd, args->threads);
   cmd->add_option("--source-dpi", args->source_dpi,
                   "Pixels per inch of a libmypaint .dat recording")
-      ->check(CLI::Range(1.0, 20000.0))
+      ->check(finite_range(1.0, 20000.0))
       ->capture_default_str();
   cmd->add_flag("--no-auto-load", args->no_auto_load,
                 "Do not load the brush for recordings that carry no paint");
@@ -190,7 +190,7 @@ const CommandRegistrar registrar("replay", [](CLI::App& root) {
                     "The light's kind for --out (diffuse: no sparkles)");
   cmd->add_option("--light-size", args->light_size_deg,
                   "Apparent diameter of the light for --out, degrees (the sun: 0.53)")
-      ->check(CLI::Range(1e-3, 90.0))
+      ->check(finite_range(1e-3, 90.0))
       ->capture_default_str();
   add_deprecated_option(*cmd, "--png", "-o/--out",
                         [args](const std::string& file) { args->old_png = file; });

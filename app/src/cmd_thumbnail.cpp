@@ -4,6 +4,7 @@
 
 #include "command.hpp"
 #include "thumbnail.hpp"
+#include "vocabulary.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).
 namespace impasto::app::thumbnail_cmd {
@@ -22,7 +23,7 @@ const CommandRegistrar registrar("thumbnail", [](CLI::App& root) {
   cmd->add_option("painting", args->painting, "The .impasto painting file")->required();
   cmd->add_option("out", args->out, "The PNG to write")->required();
   cmd->add_option("size", args->size, "Longest side in pixels (never enlarged)")
-      ->check(CLI::Range(1, 4096))
+      ->check(finite_range(1, 4096))
       ->capture_default_str();
   cmd->callback([args] { write_thumbnail(args->painting, args->out, args->size); });
 });

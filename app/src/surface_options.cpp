@@ -24,7 +24,7 @@ void add_surface_options(CLI::App& command, SurfaceArgs& args) {
       .add_option("--medium-amount", args.medium_amount,
                   "ghs: share of medium in the paint, 0 (tube paint, dries satin) to 1 (the "
                   "medium's finish)")
-      ->check(CLI::Range(0.0, 1.0))
+      ->check(finite_range(0.0, 1.0))
       ->capture_default_str();
   std::vector<std::string> varnishes{"none"};
   for (const auto& name : util::names_of(render::surface::kFinishNames)) varnishes.push_back(name);

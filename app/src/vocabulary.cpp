@@ -4,6 +4,8 @@
 #include <impasto/paintcore/paint_body.hpp>
 #include <impasto/render/render_settings.hpp>
 
+#include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <stdexcept>
@@ -189,6 +191,18 @@ int parse_wavelengths(const std::string& text, bool full_allowed) {
   return n;
 }
 
+CLI::Validator finite_number() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double value = std::strtod(text.c_str(), &end);
+        if (end != text.c_str() && *end == '\0' && !std::isfinite(value))
+          return "Value " + text + " is not a finite number";
+        return {};
+      },
+      "FINITE");
+}
+
 CLI::Option* add_size_option(CLI::App& cmd, std::optional<CanvasSize>& size,
                              std::string_view detail, bool old_square_number) {
   return cmd
@@ -210,13 +224,13 @@ CLI::Option* add_size_option(CLI::App& cmd, std::optional<CanvasSize>& size,
 
 CLI::Option* add_dpi_option(CLI::App& cmd, std::optional<double>& dpi, std::string_view detail) {
   return cmd.add_option("--dpi", dpi, vocabulary_help("--dpi", detail))
-      ->check(CLI::Range(1.0, 20000.0));
+      ->check(finite_range(1.0, 20000.0));
 }
 
 CLI::Option* add_dpi_option(CLI::App& cmd, double& dpi, std::string_view detail, double min_dpi,
                             double max_dpi) {
   return cmd.add_option("--dpi", dpi, vocabulary_help("--dpi", detail))
-      ->check(CLI::Range(min_dpi, max_dpi))
+      ->check(finite_range(min_dpi, max_dpi))
       ->capture_default_str();
 }
 
@@ -247,7 +261,7 @@ CLI::Option* add_json_flag(CLI::App& cmd, bool& json, std::string_view detail) {
 
 CLI::Option* add_threads_option(CLI::App& cmd, int& threads) {
   return cmd.add_option("--threads", threads, vocabulary_help("--threads", {}))
-      ->check(CLI::Range(0, 1024));
+      ->check(finite_range(0, 1024));
 }
 
 CLI::Option* add_deprecated_option(CLI::App& cmd, const std::string& old_name,

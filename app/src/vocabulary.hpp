@@ -19,6 +19,19 @@ namespace impasto::app {
 // The shared options. `detail` is added after the shared meaning (": ..."), for what this
 // command does with it.
 // old_square_number: a bare N (the old spelling of a square canvas) is NxN, with a warning.
+// A value that is a number refuses NaN and infinities ("nan", "inf"): CLI11's Range lets NaN
+// through, every comparison with it being false.
+CLI::Validator finite_number();
+// CLI::Range(min, max) that also refuses NaN and infinities, with Range's own description
+// ("FLOAT in [0 - 1]"): the range check of every numeric option.
+template <typename T>
+CLI::Validator finite_range(T min, T max) {
+  const CLI::Validator range = CLI::Range(min, max);
+  CLI::Validator checked = range & finite_number();
+  checked.description(range.get_description());
+  return checked;
+}
+
 CLI::Option* add_size_option(CLI::App& cmd, std::optional<CanvasSize>& size,
                              std::string_view detail = {}, bool old_square_number = false);
 CLI::Option* add_dpi_option(CLI::App& cmd, std::optional<double>& dpi,

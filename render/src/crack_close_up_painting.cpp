@@ -88,7 +88,7 @@ void write_close_up_image(Image image, const std::filesystem::path& path) {
   write_png(path, image);
 }
 
-CellRegion parse_cell_region(std::string_view text) {
+CellRegion parse_cell_region(std::string_view text, std::string_view option) {
   int v[4] = {0, 0, 0, 0};
   const char* p = text.data();
   const char* end = text.data() + text.size();
@@ -96,10 +96,20 @@ CellRegion parse_cell_region(std::string_view text) {
     const auto [next, ec] = std::from_chars(p, end, v[i]);
     const bool last = i == 3;
     if (ec != std::errc{} || (last ? next != end : (next == end || *next != ','))) {
-      throw std::runtime_error("--region " + std::string(text) +
+      throw std::runtime_error(std::string(option) + " " + std::string(text) +
                                ": expected X,Y,W,H in cells, e.g. 10,20,8,6");
     }
     p = last ? next : next + 1;
+  }
+  // Within a canvas's reach, so that x + w and the like cannot overflow.
+  constexpr int kMax = paintcore::kMaxCanvasCells;
+  const char* names[4] = {"X", "Y", "W", "H"};
+  for (int i = 0; i < 4; ++i) {
+    const int lo = i < 2 ? -kMax : 1;
+    if (v[i] < lo || v[i] > kMax)
+      throw std::runtime_error(std::string(option) + " " + std::string(text) + ": " + names[i] +
+                               " " + std::to_string(v[i]) + " is outside " + std::to_string(lo) +
+                               ".." + std::to_string(kMax));
   }
   return {v[0], v[1], v[2], v[3]};
 }

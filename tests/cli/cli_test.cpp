@@ -124,6 +124,22 @@ TEST_F(Cli, AHugeVarnishFailsByLineUnderAnAddressSpaceLimit) {
 #endif
 }
 
+// A numeric option refuses NaN and infinities by name (CLI11's range check lets NaN through):
+// `--history-mb nan` once reached the save.
+TEST_F(Cli, NumericOptionsRefuseNanAndInfinity) {
+  const std::string small = painting().string();
+  for (const std::string& args : {"edit " + small + " --dry 0.1 --save e.impasto --history-mb nan",
+                                  "render " + small + " -o r.png --ambient inf",
+                                  "export " + small + " -o x.png --scale nan"}) {
+    const CommandRun r = impasto(args);
+    EXPECT_NE(r.status, 0) << args;
+    EXPECT_TRUE(r.err.find("is not a finite number") != std::string::npos ||
+                r.err.find("could not be converted") != std::string::npos)
+        << args << ": " << r.err;
+  }
+  EXPECT_FALSE(fs::exists(dir_ / "e.impasto"));
+}
+
 TEST_F(Cli, EverySubCommandHasAHelpWithoutOldSpellings) {
   // The help texts in process (a program run each would take seconds), then two as run.
   for (const std::string& path : command_paths()) {

@@ -259,4 +259,13 @@ TEST(CrackCloseUp, RegionTextIsParsedOrRefused) {
   for (const char* bad : {"", "1,2,3", "1,2,3,4,5", "1,2,x,4", "1, 2,3,4", "1,2,3,4 "}) {
     EXPECT_THROW(parse_cell_region(bad), std::runtime_error) << bad;
   }
+  // Beyond a canvas's reach (x + w would overflow an int): refused naming the field.
+  try {
+    parse_cell_region("2147483647,0,10,10", "--crop");
+    ADD_FAILURE() << "an x of 2^31 - 1 was taken";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "--crop 2147483647,0,10,10: X 2147483647 is outside -131072..131072");
+  }
+  EXPECT_THROW(parse_cell_region("0,0,0,5"), std::runtime_error);
 }

@@ -100,7 +100,8 @@ void render_painting_close_up_to_file(const paintcore::Painting& painting,
 void check_close_up_region(const CellRegion& region, int pixels_per_cell, int width_cells,
                            int height_cells);
 
-// "X,Y,W,H" in cells; throws std::runtime_error naming the text when malformed.
-CellRegion parse_cell_region(std::string_view text);
+// "X,Y,W,H" in cells, X and Y within ±kMaxCanvasCells and W, H in 1..kMaxCanvasCells;
+// throws std::runtime_error naming the option and the text when malformed or out of reach.
+CellRegion parse_cell_region(std::string_view text, std::string_view option = "--region");
 
 }  // namespace impasto::render
