@@ -17,6 +17,7 @@
 #include <string>
 
 #include "command.hpp"
+#include "impasto/files/message_text.hpp"
 #include "pigment_curves.hpp"
 #include "vocabulary.hpp"
 
@@ -42,9 +43,10 @@ void run_list(bool json) {
                       {"binder", binder == p.metadata.end() ? "" : binder->second}});
       continue;
     }
-    std::printf("%-32s %4.0f-%4.0f nm  %-10s %s\n", p.name.c_str(), p.K.wavelengths_nm.front(),
-                p.K.wavelengths_nm.back(), library.origins()[i].layer.c_str(),
-                binder == p.metadata.end() ? "" : binder->second.c_str());
+    std::printf("%-32s %4.0f-%4.0f nm  %-10s %s\n", files::terminal_text(p.name).c_str(),
+                p.K.wavelengths_nm.front(), p.K.wavelengths_nm.back(),
+                library.origins()[i].layer.c_str(),
+                files::terminal_text(binder == p.metadata.end() ? "" : binder->second).c_str());
   }
   if (json) std::cout << rows.dump(2) << "\n";
 }

@@ -10,6 +10,7 @@
 #include "about_text.hpp"
 #include "command_line.hpp"
 #include "impasto/files/memory_budget.hpp"
+#include "impasto/files/message_text.hpp"
 #include "impasto_version.hpp"
 #include "pigment_folder_option.hpp"
 #include "vocabulary.hpp"
@@ -127,7 +128,7 @@ int run_command_line(int argc, char** argv) {
               << "; `ulimit -v` and `ulimit -u` show the limits, --threads 1 needs fewer)\n";
     return 1;
   } catch (const std::exception& e) {
-    std::cerr << "impasto: " << e.what() << "\n";
+    std::cerr << "impasto: " << files::terminal_text(e.what(), true) << "\n";
     return 1;
   }
   if (root.get_subcommands().empty()) {

@@ -10,6 +10,7 @@
 #include <iostream>
 #include <stdexcept>
 
+#include "impasto/files/message_text.hpp"
 #include "progress.hpp"
 
 namespace impasto::app {
@@ -145,11 +146,11 @@ std::string vocabulary_help(std::string_view names, std::string_view detail) {
 }
 
 void warn(const std::string& text) {
-  std::cerr << "impasto: warning: " << text << "\n";
+  std::cerr << "impasto: warning: " << files::terminal_text(text, true) << "\n";
 }
 
 void note(const std::string& text) {
-  if (!quiet()) std::cout << text << "\n";
+  if (!quiet()) std::cout << files::terminal_text(text, true) << "\n";
 }
 
 CanvasSize parse_canvas_size(const std::string& text, std::string_view option) {

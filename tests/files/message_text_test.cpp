@@ -14,6 +14,14 @@ TEST(MessageText, EscapesControlCharacters) {
   EXPECT_EQ(excerpt(std::string("\0\x7f", 2)), "'\\x00\\x7f'");
 }
 
+// Names printed to a terminal: an escape code cannot reach it; a message's own lines stay.
+TEST(MessageText, TerminalTextEscapesControlCharactersButAMessagesLines) {
+  EXPECT_EQ(terminal_text("red \x1b[31m name\n"), "red \\x1b[31m name\\n");
+  EXPECT_EQ(terminal_text("a.strokes:3: bad\n  see docs", true), "a.strokes:3: bad\n  see docs");
+  EXPECT_EQ(terminal_text("bell\a\x7f", true), "bell\\x07\\x7f");
+  EXPECT_EQ(terminal_text("C:\\path"), "C:\\path");
+}
+
 TEST(MessageText, CutsLongText) {
   const std::string long_text(60'000'000, 'x');
   const std::string q = excerpt(long_text);

@@ -1,4 +1,5 @@
 #include "window/panels.hpp"
+#include "impasto/files/message_text.hpp"
 #include "window/edit_help_menus.hpp"
 #include "window/enum_combo.hpp"
 #include "window/light_disc_look.hpp"
@@ -147,8 +148,12 @@ void file_menu(PanelContext& c) {
       if (ImGui::MenuItem("New...", keys(Command::kNew))) command = FileCommand::kNew;
       if (ImGui::MenuItem("Open...", keys(Command::kOpen))) command = FileCommand::kOpen;
       if (ImGui::BeginMenu("Open recent", !s.recent.empty())) {
-        for (const auto& file : s.recent) {
-          if (ImGui::MenuItem(file.string().c_str())) ask(PendingAction::kOpenRecent, file);
+        for (std::size_t i = 0; i < s.recent.size(); ++i) {
+          const auto& file = s.recent[i];
+          ImGui::PushID(static_cast<int>(i));  // two names may read alike once escaped
+          if (ImGui::MenuItem(files::terminal_text(file.string()).c_str()))
+            ask(PendingAction::kOpenRecent, file);
+          ImGui::PopID();
         }
         ImGui::EndMenu();
       }
