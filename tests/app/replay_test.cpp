@@ -101,6 +101,18 @@ wipe
   expect_conserved(painting, 1e-5);
 }
 
+// A recording at a high dpi that names no brush replays with the default head narrowed to
+// what the cells allow (it once failed: "6 mm is 1181 cells at this DPI", naming no line).
+TEST(Replay, AFineCanvasNarrowsTheDefaultBrushToFit) {
+  std::istringstream text(
+      "impasto-strokes 1\ncanvas 600 600 5000\npen 0 1 1 0.5 0 0 0 1\n"
+      "pen 0.01 2 2 0.5 0 0 0 1\npen 0.02 2 2 0 0 0 0 0\n");
+  const auto file = input::parse_strokes(text, "fine.strokes");
+  const paintcore::Painting painting = replay(file, {});
+  EXPECT_LE(painting.brush().cells_across(), paintcore::kMaxBrushCells);
+  EXPECT_GT(painting.canvas_totals().volume, 0.0);
+}
+
 TEST(Replay, UnknownToolNamesTheFileAndLine) {
   std::istringstream text("impasto-strokes 1\ntool trowel\n");
   const auto file = input::parse_strokes(text, "bad.strokes");

@@ -99,6 +99,22 @@ TEST(ThinFilm, LosslessStacksConserveEnergyAtAnyAngle) {
   EXPECT_EQ(clear.transmittance, 1.0);
 }
 
+// Many thick layers, low-index ones at grazing light (the light evanescent in them): the
+// characteristic matrix's entries grow as e^(phase) and once overflowed to NaN pixels (a
+// flake file of 100+ layers). The stack stays finite, conserves energy and, where no light
+// gets through, reflects it all.
+TEST(ThinFilm, AThickManyLayeredStackStaysFiniteAtEveryAngle) {
+  std::vector<FilmLayer> stack;
+  for (int i = 0; i < 200; ++i) stack.push_back({i % 2 == 0 ? 2.6 : 1.0, 100000});
+  for (double c : {0.02, 0.1, 0.5, 1.0}) {
+    const FilmOptics o = thin_film_optics(stack, 1.48, 1.48, 400, c);
+    ASSERT_TRUE(std::isfinite(o.reflectance) && std::isfinite(o.transmittance)) << c;
+    EXPECT_GE(o.reflectance, 0.0);
+    EXPECT_LE(o.reflectance, 1.0 + 1e-9);
+    EXPECT_NEAR(o.reflectance + o.transmittance, 1.0, 1e-6) << c;
+  }
+}
+
 TEST(ThinFilm, RutileIndexFollowsDevore) {
   EXPECT_NEAR(rutile_index(550), 2.648, 0.002);
   EXPECT_GT(rutile_index(420), rutile_index(700));  // normal dispersion

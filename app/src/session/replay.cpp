@@ -2,6 +2,7 @@
 
 #include <impasto/data/pigments.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -55,7 +56,14 @@ const std::vector<std::string>& demo_palette() {
 SessionPlayer::SessionPlayer(paintcore::Painting& painting, const ReplayOptions& options,
                              bool auto_load)
     : painting_(painting), options_(options), auto_load_(auto_load) {
-  if (painting_.brush().empty()) painting_.set_brush(options_.default_brush);
+  if (painting_.brush().empty()) {
+    // The default head no wider than the canvas's cells allow (at 5000 dpi 6 mm is 1181 cells):
+    // the recording did not ask for its size, so it is not an error in the recording.
+    paintcore::BrushSettings settings = options_.default_brush;
+    const double widest_mm = paintcore::kMaxBrushCells * painting_.canvas().cell_mm();
+    settings.size_mm = std::min(settings.size_mm, widest_mm);
+    painting_.set_brush(settings);
+  }
 }
 
 void SessionPlayer::begin_auto_stroke() {
