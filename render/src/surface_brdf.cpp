@@ -32,16 +32,6 @@ double binder_index(double wavelength_nm, double n_d) {
   return n_d + kCauchyB * (1.0 / (um * um) - 1.0 / (0.5893 * 0.5893));
 }
 
-double fresnel_dielectric(double cos_i, double n) {
-  const double c = std::clamp(cos_i, 0.0, 1.0);
-  const double sin_t2 = (1.0 - c * c) / (n * n);
-  if (sin_t2 >= 1.0) return 1.0;
-  const double cos_t = std::sqrt(1.0 - sin_t2);
-  const double rs = (c - n * cos_t) / (c + n * cos_t);
-  const double rp = (n * c - cos_t) / (n * c + cos_t);
-  return 0.5 * (rs * rs + rp * rp);
-}
-
 double smith_shadowing(double cos_theta, double slope_rms) {
   const double mu = std::clamp(cos_theta, 0.0, 1.0);
   if (!(slope_rms > 0.0)) return 1.0;

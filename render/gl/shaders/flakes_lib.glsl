@@ -157,15 +157,6 @@ float flake_cos_inside_binder(float cos_out, float eta) {
   return sqrt(max(0.0, 1.0 - sin2_out / (eta * eta)));
 }
 
-float flake_fresnel_dielectric(float cos_i, float eta) {
-  float sin2_t = (1.0 - cos_i * cos_i) / (eta * eta);
-  if (sin2_t >= 1.0) return 1.0;
-  float cos_t = sqrt(1.0 - sin2_t);
-  float rs = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
-  float rp = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
-  return 0.5 * (rs * rs + rp * rp);
-}
-
 float flake_direct_fraction(float t_per_depth, float depth) {
   float x = t_per_depth * depth;
   if (x < 1e-6) return 1.0 - 0.5 * x;
@@ -255,8 +246,8 @@ int flake_cell(int f, ivec2 cell, vec3 n, float height, float concentration, flo
     }
   }
 
-  float energy = beam * cos_light / cos_light_in * (1.0 - flake_fresnel_dielectric(cos_light, eta)) *
-                 (1.0 - flake_fresnel_dielectric(cos_view, eta)) * cos_alpha;
+  float energy = beam * cos_light / cos_light_in * (1.0 - fresnel_dielectric(cos_light, eta)) *
+                 (1.0 - fresnel_dielectric(cos_view, eta)) * cos_alpha;
   float surface_area = area / n.z;
   float per_area = energy / (FLAKE_PI * delta_in * delta_in * eta * eta * cos_view_in * surface_area);
   float scale = per_area * weight * flake_light_strength;

@@ -82,17 +82,6 @@ float ghs_kernel(vec2 roughness, float wavelength_nm, float source_sigma, float 
   return sum / sqrt(GHS_PI);
 }
 
-// surface::fresnel_dielectric: unpolarised, exact.
-float ghs_fresnel(float cos_i, float n) {
-  float c = clamp(cos_i, 0.0, 1.0);
-  float sin_t2 = (1.0 - c * c) / (n * n);
-  if (sin_t2 >= 1.0) return 1.0;
-  float cos_t = sqrt(1.0 - sin_t2);
-  float rs = (c - n * cos_t) / (c + n * cos_t);
-  float rp = (n * c - cos_t) / (n * c + cos_t);
-  return 0.5 * (rs * rs + rp * rp);
-}
-
 // GhsBrdf's tables at cos_i, interpolated as table_lookup does: (renormalisation, albedo).
 vec2 ghs_table_at(int column, int block, int node, float cos_i) {
   float u = clamp(cos_i, 0.0, 1.0) * float(GHS_TABLE_SIZE - 1);
@@ -117,7 +106,7 @@ float ghs_brdf(int block, int node, float cos_i, float cos_o, float rho, float c
   vec2 in_second = ghs_table_at(GHS_SECOND_TABLE, block, node, cos_i);
   vec2 out_second = ghs_table_at(GHS_SECOND_TABLE, block, node, cos_o);
   vec2 roughness = texelFetch(ghs_tables, ivec3(GHS_TABLE_SIZE + 1, block, node), 0).rg;
-  return ghs_fresnel(cos_half, ghs_optics(block, node).x) * renorm * in_second.x *
+  return fresnel_dielectric(cos_half, ghs_optics(block, node).x) * renorm * in_second.x *
              out_second.x *
              ghs_kernel(roughness, ghs_wavelength_nm[node], ghs_source_sigma, ghs_subcell_slope,
                         cos_i, cos_o, rho) +

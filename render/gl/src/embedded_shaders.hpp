@@ -4,6 +4,7 @@
 namespace impasto::render_gl::shaders {
 
 extern const char* const fullscreen_vert;            // full-viewport triangle, uv 0..1
+extern const char* const optics_lib;                 // fresnel_dielectric (no #version)
 extern const char* const km_lib;                     // K-M layer and compositing (no #version)
 extern const char* const shading_lib;                // normals and Blinn-Phong (no #version)
 extern const char* const surface_ghs_lib;            // the ghs surface model (no #version)

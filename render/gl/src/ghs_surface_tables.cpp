@@ -140,7 +140,7 @@ const char* surface_ghs_glsl() {
       "\n#define GHS_BLOCKS " + std::to_string(GhsSurfaceTables::kBlocks) +
       "\n#define GHS_WET_BLOCK " + std::to_string(GhsSurfaceTables::kWetBlock) +
       "\n#define GHS_SECOND_TABLE " + std::to_string(GhsSurfaceTables::kSecondTable) + "\n" +
-      shaders::surface_ghs_lib;
+      shaders::optics_lib + shaders::surface_ghs_lib;
   return source.c_str();
 }
 

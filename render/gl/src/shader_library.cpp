@@ -31,6 +31,10 @@ static_assert(std::tuple_size_v<decltype(render::CrackTableData::last_F)> ==
 
 }  // namespace
 
+const char* optics_glsl() {
+  return shaders::optics_lib;
+}
+
 const char* km_glsl() {
   return shaders::km_lib;
 }
@@ -47,7 +51,8 @@ const char* flakes_glsl() {
       "#define MAX_FLAKES " + std::to_string(FlakeTextures::kMaxFlakePigments) +
       "\n#define FLAKE_ORIENTATION_SAMPLES " +
       std::to_string(flakes::FlakeTables::kOrientationSamples) + "\n#define FLAKE_ANGLE_SAMPLES " +
-      std::to_string(flakes::FlakeTables::kAngleSamples) + "\n" + shaders::flakes_lib;
+      std::to_string(flakes::FlakeTables::kAngleSamples) + "\n" + shaders::optics_lib +
+      shaders::flakes_lib;
   return source.c_str();
 }
 

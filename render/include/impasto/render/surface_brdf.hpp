@@ -15,6 +15,7 @@
 #include <cmath>
 #include <string_view>
 
+#include "impasto/flakes/fresnel.hpp"
 #include "impasto/paintcore/paint_surface.hpp"
 #include "impasto/util/enum_names.hpp"
 
@@ -32,8 +33,8 @@ struct Roughness {
 double binder_index(double wavelength_nm, double n_d = 1.48);
 
 // Unpolarised Fresnel reflectance of light meeting a dielectric of index n (from air) at an
-// incidence cosine cos_i (exact s and p average; 1 at grazing, ((n−1)/(n+1))² head on).
-double fresnel_dielectric(double cos_i, double n);
+// incidence cosine cos_i: the one formula, flakes/fresnel.hpp.
+using flakes::fresnel_dielectric;
 
 // One wavelength of a rough surface's reflection.
 struct GhsParams {
