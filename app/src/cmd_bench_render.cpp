@@ -16,6 +16,7 @@
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <thread>
@@ -46,8 +47,8 @@ double process_cpu_ms() {
 }
 
 struct BenchRenderArgs {
-  std::string painting;  // empty: synthetic
-  std::string size = "4096x4096";
+  std::string painting;            // empty: synthetic
+  std::optional<CanvasSize> size;  // unset: 4096x4096
   std::string wavelengths = "8";
   std::string weights{
       util::name_of(render::kNodeWeightsNames, render::RenderSettings{}.node_weights)};
@@ -126,11 +127,8 @@ struct Timing {
 };
 
 void run(const BenchRenderArgs& args) {
-  int width = 0, height = 0;
-  if (std::sscanf(args.size.c_str(), "%dx%d", &width, &height) != 2 || width < 1 || height < 1 ||
-      width > paintcore::kMaxCanvasCells || height > paintcore::kMaxCanvasCells) {
-    throw std::runtime_error("--size " + args.size + ": expected WIDTHxHEIGHT in cells");
-  }
+  const CanvasSize size = args.size.value_or(CanvasSize{4096, 4096});
+  const int width = size.width, height = size.height;
   std::unique_ptr<paintcore::Painting> file;
   paintcore::Canvas synthetic({1, 1, 150.0, 1});
   std::vector<std::string> slots = kSlots;
@@ -258,8 +256,7 @@ const CommandRegistrar registrar("bench render", [](CLI::App& root) {
       "render", "Whole-canvas render: first render, relight with 1 and all threads, PNG encode");
   cmd->add_option("painting", args->painting,
                   "A .impasto painting (default: a synthetic one of --size)");
-  cmd->add_option("--size", args->size, "Synthetic canvas WIDTHxHEIGHT in cells")
-      ->capture_default_str();
+  add_size_option(*cmd, args->size, "the synthetic canvas (default 4096x4096)");
   cmd->add_option("--wavelengths", args->wavelengths, "Nodes 1..16, or full")
       ->capture_default_str();
   cmd->add_option("--weights", args->weights, "Nodes and XYZ weights")

@@ -276,13 +276,8 @@ void run(const BenchWindowArgs& args) {
   std::filesystem::create_directories(dir);
   std::vector<Latency> results;
   for (const std::string& canvas : args.canvases) {
-    int w = 0, h = 0;
-    char x = 0;
-    std::istringstream in(canvas);
-    if (!(in >> w >> x >> h) || x != 'x' || w < 1 || h < 1) {
-      throw std::runtime_error("--canvas wants WIDTHxHEIGHT in cells, not '" + canvas + "'");
-    }
-    results.push_back(measure(args, w, h, dir));
+    const CanvasSize size = parse_canvas_size(canvas, "--canvas");
+    results.push_back(measure(args, size.width, size.height, dir));
   }
   std::filesystem::remove_all(dir);
   if (args.json) {

@@ -24,7 +24,11 @@ CLI::Validator parsing_check(std::string description,
         try {
           text = parse(text);
         } catch (const std::exception& e) {
-          return e.what();
+          // CLI11 puts the option's name before the message: drop the parser's own.
+          std::string message = e.what();
+          if (message.starts_with("--") && message.find(": ") != std::string::npos)
+            message.erase(0, message.find(": ") + 2);
+          return message;
         }
         return {};
       },

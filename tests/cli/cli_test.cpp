@@ -140,6 +140,20 @@ TEST_F(Cli, NumericOptionsRefuseNanAndInfinity) {
   EXPECT_FALSE(fs::exists(dir_ / "e.impasto"));
 }
 
+// WxH is read by one parser wherever a canvas size is taken (--size of replay and bench
+// render, --canvas of bench window), and its message names the option once.
+TEST_F(Cli, ACanvasSizeIsReadByOneParserEverywhere) {
+  for (const std::string& args : {std::string("replay short.strokes --size 64by48"),
+                                  std::string("bench render --size 64by48")}) {
+    session();
+    const CommandRun r = impasto(args);
+    EXPECT_NE(r.status, 0) << args;
+    EXPECT_NE(r.err.find("impasto: --size: expected WIDTHxHEIGHT in cells (1..131072 each)"),
+              std::string::npos)
+        << args << ": " << r.err;
+  }
+}
+
 TEST_F(Cli, EverySubCommandHasAHelpWithoutOldSpellings) {
   // The help texts in process (a program run each would take seconds), then two as run.
   for (const std::string& path : command_paths()) {
