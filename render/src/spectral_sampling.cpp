@@ -1,5 +1,6 @@
 #include "impasto/render/spectral_sampling.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -79,6 +80,36 @@ SpectralSampling make_spectral_sampling(const data::Spectrum& light,
   // The measure: W(λ) = E(λ)(x̄ + ȳ + z̄)(λ) times the grid step, one point per grid wavelength.
   std::vector<double> masses(grid.size());
   for (std::size_t j = 0; j < grid.size(); ++j) masses[j] = power[j] * cmf_sum[j] * range.step_nm;
+  // A light of no more visible lines than nodes (a laser, three narrow LED lines): its own
+  // wavelengths are the exact rule, whatever the weights asked for. The other nodes (the
+  // palette and the GPU hold `nodes` of them) go to dark wavelengths spread over the range,
+  // with no weight.
+  const auto lit = std::count_if(masses.begin(), masses.end(), [](double m) { return m > 0.0; });
+  if (lit == 0)
+    throw std::runtime_error(
+        "spectral sampling: light '" + light.name + "' has no power where the eye sees (" +
+        std::to_string(range.first_nm) + "-" + std::to_string(range.last_nm) + " nm)");
+  if (lit <= nodes) {
+    std::vector<std::size_t> chosen;
+    for (std::size_t j = 0; j < grid.size(); ++j)
+      if (masses[j] > 0.0) chosen.push_back(j);
+    const std::size_t dark = static_cast<std::size_t>(nodes) - chosen.size();
+    std::vector<std::size_t> unlit;
+    for (std::size_t j = 0; j < grid.size(); ++j)
+      if (!(masses[j] > 0.0)) unlit.push_back(j);
+    for (std::size_t k = 0; k < dark; ++k)
+      chosen.push_back(unlit[(2 * k + 1) * unlit.size() / (2 * dark)]);
+    std::sort(chosen.begin(), chosen.end());
+    for (const std::size_t j : chosen) {
+      const double e = masses[j] > 0.0 ? power[j] * range.step_nm : 0.0;
+      sampling.wavelengths_nm.push_back(static_cast<float>(grid[j]));
+      sampling.to_xyz.push_back({static_cast<float>(e * cmf.x.at(grid[j])),
+                                 static_cast<float>(e * cmf.y.at(grid[j])),
+                                 static_cast<float>(e * cmf.z.at(grid[j]))});
+    }
+    normalise_to_white(sampling);
+    return sampling;
+  }
   const QuadratureRule rule = gauss_rule(grid, masses, nodes);
 
   if (weights != NodeWeights::impasto) {  // the palette-trained ones start from it

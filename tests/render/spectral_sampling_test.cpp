@@ -124,3 +124,42 @@ TEST(SpectralSampling, InterpolatoryWeightsAreExactForLowDegreeReflectance) {
     for (std::size_t c = 0; c < 3; ++c) EXPECT_NEAR(xyz[c], reference[c], 1e-5) << "N=" << n;
   }
 }
+
+// A light of fewer visible lines than nodes (three 1 nm lines): its own wavelengths are the
+// exact rule, the other nodes weightless, for every kind of weights (the default render once
+// failed with "gauss_rule: 8 nodes requested but the measure has 3 points of positive mass").
+TEST(SpectralSampling, ALightOfFewLinesUsesItsOwnWavelengths) {
+  const auto& cmf = impasto::data::cie1931_2deg();
+  Spectrum lines{"three lines", {}, {}};
+  for (int nm = 360; nm <= 830; ++nm) {
+    lines.wavelengths_nm.push_back(nm);
+    lines.values.push_back(nm == 450 || nm == 545 || nm == 610 ? 1.0 : 0.0);
+  }
+  const SpectralSampling full = make_spectral_sampling(lines, cmf, 0);
+  const std::vector<float> full_r = reflectance_at(full, cubic_reflectance);
+  const auto expected = reflectance_to_xyz(full, full_r.data());
+  for (auto weights :
+       {impasto::render::NodeWeights::interpolatory, impasto::render::NodeWeights::impasto}) {
+    for (int n : {3, 8, 16}) {
+      const SpectralSampling rule = make_spectral_sampling(lines, cmf, n, {}, weights);
+      ASSERT_EQ(rule.size(), n);
+      int lit = 0;
+      for (std::size_t i = 0; i < rule.wavelengths_nm.size(); ++i) {
+        const bool on_a_line = rule.wavelengths_nm[i] == 450.0f ||
+                               rule.wavelengths_nm[i] == 545.0f || rule.wavelengths_nm[i] == 610.0f;
+        lit += on_a_line ? 1 : 0;
+        if (!on_a_line) {
+          EXPECT_EQ(rule.to_xyz[i][1], 0.0f) << rule.wavelengths_nm[i];
+        }
+        if (i > 0) {
+          EXPECT_LT(rule.wavelengths_nm[i - 1], rule.wavelengths_nm[i]);
+        }
+      }
+      EXPECT_EQ(lit, 3) << "N=" << n;
+      const std::vector<float> r = reflectance_at(rule, cubic_reflectance);
+      const auto xyz = reflectance_to_xyz(rule, r.data());
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(xyz[c], expected[c], 1e-6) << "N=" << n;
+    }
+  }
+  EXPECT_EQ(make_spectral_sampling(lines, cmf, 2).size(), 2);  // fewer nodes than lines: Gauss
+}
