@@ -123,7 +123,8 @@ void export_painting(const paintcore::Painting& painting, const ExportRequest& r
   const paintcore::Painting& source = refined ? *refined : painting;
   if (!request.image.empty()) {
     render::check_render_memory(source.canvas(), request.image.string());
-    render::render_painting_to_file(source, request.settings, request.image);
+    render::render_painting_to_file(source, request.settings, request.image, {},
+                                    request.supersample);
   }
   if (!request.height_map.empty() || !request.normal_map.empty()) {
     const render::HeightGrid heights = render::surface_heights(source.canvas());

@@ -45,6 +45,7 @@ struct ExportRequest {
   std::filesystem::path height_map;  // .png (16-bit) or .exr (float mm), or empty
   std::filesystem::path normal_map;  // .png, or empty
   render::RenderSettings settings;   // the image's light and look
+  int supersample = 1;               // the image's samples a pixel each way (1..4), box-filtered
 };
 
 // Writes what the request names; the maps at the same scale as the image (their pixel is a

@@ -30,6 +30,12 @@ const CommandRegistrar registrar("export", [](CLI::App& root) {
                   "(Catmull-Rom) and shaded at the finer grid; the maps too")
       ->check(finite_range(1, 16))
       ->capture_default_str();
+  cmd->add_option("--supersample", args->request.supersample,
+                  "Samples a pixel each way (1, 2, 4): the image shaded that much finer and "
+                  "box-filtered in linear light, so weave and furrows finer than a pixel do not "
+                  "alias (docs/canvas-and-export.md: cost and error)")
+      ->check(finite_range(1, render::kMaxSupersample))
+      ->capture_default_str();
   add_out_option(*cmd, args->image,
                  "the render at --scale, default light and settings (impasto render has them "
                  "all; the window's Image menu uses its light)");

@@ -54,6 +54,7 @@ struct RenderArgs {
   double ambient = RenderSettings{}.ambient;
   bool gpu = false;     // through the GLSL shaders, headless
   int zoom = 0;         // > 0: the close-up of --region at this many pixels per cell
+  int supersample = 1;  // samples a pixel each way, box-filtered (CPU only)
   std::string region;   // "X,Y,W,H" in cells
   SurfaceArgs surface;  // --surface, --medium, --varnish (docs/surface.md)
   bool json = false;    // timings and the image's size as JSON
@@ -107,6 +108,10 @@ void run(const RenderArgs& args) {
   apply_surface_options(args.surface, settings);
   validate(settings);
   image_file_type(args.out);  // a bad extension fails now, not after the render
+  if (args.supersample > 1 && (args.gpu || args.zoom > 0))
+    throw std::runtime_error(
+        "--supersample: the CPU render of the whole painting only (not with "
+        "--gpu or --zoom)");
   const auto start = Clock::now();
   const paintcore::Painting painting = paintcore::Painting::load(args.painting, args.threads);
   check_render_memory(painting.canvas(), args.painting);
@@ -138,7 +143,7 @@ void run(const RenderArgs& args) {
 #endif
   } else {
     ProgressReporter progress("render", "tiles");
-    render_painting_to_file(painting, settings, args.out, progress.callback());
+    render_painting_to_file(painting, settings, args.out, progress.callback(), args.supersample);
     write_subsurface_map_if_asked(args.surface, painting, settings);
   }
   const double render_seconds = seconds_since(render_start);
@@ -217,6 +222,11 @@ const CommandRegistrar registrar("render", [](CLI::App& root) {
                   "Close-up: pixels per cell, cracks shaded inside (with --region)")
       ->check(finite_range(1, 256));
   cmd->add_option("--region", args->region, "Close-up region X,Y,W,H in cells (default: all)");
+  cmd->add_option("--supersample", args->supersample,
+                  "Samples a pixel each way (1, 2, 4): shaded that much finer and box-filtered "
+                  "in linear light, so weave and furrows finer than a pixel do not alias")
+      ->check(finite_range(1, render::kMaxSupersample))
+      ->capture_default_str();
   add_threads_option(*cmd, args->threads);
   add_surface_options(*cmd, args->surface);
   cmd->callback([args] { run(*args); });
