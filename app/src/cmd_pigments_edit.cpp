@@ -4,6 +4,7 @@
 #include <impasto/data/pigment_library.hpp>
 #include <impasto/data/pigment_user_layer.hpp>
 #include <impasto/data/pigments.hpp>
+#include <impasto/data/spectral_csv.hpp>
 #include <impasto/render/pigment_swatches.hpp>
 
 #include <cstdio>
@@ -177,8 +178,10 @@ const CommandRegistrar registrar("pigments edit", [](CLI::App& root) {
   CLI::App* add = group->add_subcommand("add", "Add a pigment to the user layer");
   add->add_option("name", a->name, "The new pigment's name")->required();
   add->add_option("--copy-of", a->copy_of, "Start from this pigment's K, S and metadata");
-  add->add_option("--k", a->k, "Flat K (with --s)")->check(CLI::NonNegativeNumber);
-  add->add_option("--s", a->s, "Flat S (with --k)")->check(CLI::NonNegativeNumber);
+  add->add_option("--k", a->k, "Flat K (with --s)")
+      ->check(finite_range(0.0, impasto::data::kMaxKubelkaMunk));
+  add->add_option("--s", a->s, "Flat S (with --k)")
+      ->check(finite_range(0.0, impasto::data::kMaxKubelkaMunk));
   add->add_option("--set", a->set, "Metadata KEY=VALUE (binder, colour_index, licence, ...)");
   add->add_flag("--force", a->force, "Replace the user layer's pigment of that name");
   add->callback([a] { run_add(*a); });

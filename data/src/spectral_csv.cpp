@@ -35,7 +35,7 @@ constexpr std::array<QuantityInfo, 6> kQuantities{{
     {SpectralQuantity::transmittance, "transmittance", 0.0, 1.0},
     {SpectralQuantity::spectral_power, "spectral_power", 0.0, kInf},
     {SpectralQuantity::cmf, "cmf", 0.0, kInf},
-    {SpectralQuantity::kubelka_munk, "kubelka_munk", 0.0, kInf},
+    {SpectralQuantity::kubelka_munk, "kubelka_munk", 0.0, kMaxKubelkaMunk},
 }};
 
 const QuantityInfo& info(SpectralQuantity quantity) {

@@ -12,6 +12,11 @@
 namespace impasto::data {
 
 // What the values mean (the `# quantity:` line); it sets the range the loader accepts.
+// The largest Kubelka-Munk K or S a file may hold (white's S is 1; real paints stay below
+// 1e3): beyond it K (K + 2S) leaves the float range the renderer computes in, so a value no
+// render can use is refused where it is read or entered, not when a render meets it.
+inline constexpr double kMaxKubelkaMunk = 1e6;
+
 enum class SpectralQuantity {
   unspecified,     // no quantity line: values need only be finite
   reflectance,     // 0..1
