@@ -122,6 +122,9 @@ StrokeFile parse_bdalab_svc(std::istream& in, const std::string& source_name,
         const double azimuth_deg = detail::parse_double(fields[4], where, "azimuth") / 10.0;
         const double altitude_deg = detail::parse_double(fields[5], where, "altitude") / 10.0;
         if (altitude_deg < 0.0 || altitude_deg > 90.0) where.fail("altitude", "outside 0..900");
+        // An angle in tenths of a degree: one turn either way (the recordings give 0..3599).
+        if (azimuth_deg < -360.0 || azimuth_deg > 360.0)
+          where.fail("azimuth", "outside -3600..3600");
         const Tilt tilt = tilt_from_azimuth_altitude(azimuth_deg, altitude_deg);
         s.tilt_x_deg = static_cast<float>(tilt.x_deg);
         s.tilt_y_deg = static_cast<float>(tilt.y_deg);

@@ -118,6 +118,8 @@ TEST(BdalabImport, CountMismatchAndBadColumns) {
   EXPECT_EQ(error_of("1\n1 2 0 1 0 inf 5\n"),
             "bad.svc:2: field 'altitude': 'inf' is not a finite number");
   EXPECT_EQ(error_of("x\n"), "bad.svc:1: field 'count': expected an integer, found 'x'");
+  EXPECT_EQ(error_of("1\n1 2 0 1 1e300 900 5\n"),
+            "bad.svc:2: field 'azimuth': outside -3600..3600");
 }
 
 // Real .svc files in public datasets have a count one off from their lines: they load with a
