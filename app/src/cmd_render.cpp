@@ -2,6 +2,7 @@
 #include <impasto/paintcore/painting.hpp>
 #include <impasto/render/crack_close_up.hpp>
 #include <impasto/render/render_painting.hpp>
+#include <impasto/render/spectral_palette.hpp>
 
 #include <chrono>
 #include <cmath>
@@ -147,6 +148,8 @@ void run(const RenderArgs& args) {
     write_subsurface_map_if_asked(args.surface, painting, settings);
   }
   const double render_seconds = seconds_since(render_start);
+  // Which wavelengths rendered it, and why (a small palette cannot train the optimised rule).
+  const std::string rule = SpectralPalette(settings, painting).sampling().rule;
   if (args.json) {
     // Rendering and writing the file are one call: render_seconds holds both.
     std::cout << nlohmann::json{{"out", args.out},
@@ -155,6 +158,7 @@ void run(const RenderArgs& args) {
                                 {"close_up", args.zoom > 0},
                                 {"gpu", args.gpu},
                                 {"wavelengths", settings.wavelengths},
+                                {"rule", rule},
                                 {"load_seconds", load_seconds},
                                 {"render_seconds", render_seconds}}
               << "\n";
@@ -163,7 +167,8 @@ void run(const RenderArgs& args) {
   char timing[64];
   std::snprintf(timing, sizeof timing, "%.2f s", render_seconds);
   note("wrote " + args.out + " (" + std::to_string(width) + "x" + std::to_string(height) +
-       (args.zoom > 0 ? ", close-up" : "") + ", rendered in " + timing + ")");
+       (args.zoom > 0 ? ", close-up" : "") + ", rendered in " + timing + "; wavelengths: " + rule +
+       ")");
 }
 
 const CommandRegistrar registrar("render", [](CLI::App& root) {

@@ -128,13 +128,15 @@ SpectralSampling build_palette_rule(const data::Spectrum& light,
                                     const std::vector<data::Pigment>& pigments,
                                     const data::Spectrum& ground) {
   const PaletteTrainingSet training(light, cmf, range, pigments, ground);
+  SpectralSampling sampling;
   if (weights == NodeWeights::fitted) {
-    SpectralSampling sampling =
-        make_spectral_sampling(light, cmf, nodes, range, NodeWeights::interpolatory);
+    sampling = make_spectral_sampling(light, cmf, nodes, range, NodeWeights::interpolatory);
     training.fit_readout(sampling);
-    return sampling;
+  } else {
+    sampling = optimise_nodes(training, light, cmf, nodes, range).sampling;
   }
-  return optimise_nodes(training, light, cmf, nodes, range).sampling;
+  sampling.rule = util::name_of(kNodeWeightsNames, weights);
+  return sampling;
 }
 
 namespace {
@@ -268,7 +270,9 @@ std::optional<SpectralSampling> load_node_rule(const NodeRuleKey& key,
     files::InputFile file(path, "node rule", kMaxRuleFileBytes);
     std::string text(static_cast<std::size_t>(file.size()), '\0');
     file.read_exact(text.data(), text.size());
-    return parse_node_rule(text, key, range);
+    SpectralSampling sampling = parse_node_rule(text, key, range);
+    sampling.rule = util::name_of(kNodeWeightsNames, key.weights);
+    return sampling;
   } catch (const std::exception& error) {
     std::cerr << "impasto: warning: ignoring the cached node rule " << path.string() << ": "
               << error.what() << "; building it again\n";
@@ -327,10 +331,19 @@ SpectralSampling make_palette_sampling(const data::Spectrum& light,
   // Too few training paints for the readout's 3(N − 1) free weights: a rule fitted to them
   // would fit those paints and little else (a single pigment's four glazes), so the Gaussian
   // rule, which needs no paints, serves.
-  if (!trained || nodes == 0 ||
-      training_paints(pigments).size() <
-          kMinTrainingPaintsPerNode * static_cast<std::size_t>(nodes)) {
-    return stand_in();
+  if (!trained || nodes == 0) return stand_in();
+  if (SpectralSampling lines = stand_in(); lines.light_lines) return lines;  // exact already
+  if (const std::size_t paints = training_paints(pigments).size();
+      paints < kMinTrainingPaintsPerNode * static_cast<std::size_t>(nodes)) {
+    SpectralSampling sampling = stand_in();
+    if (sampling.rule == "interpolatory")
+      sampling.rule = "interpolatory: the " +
+                      std::string(util::name_of(kNodeWeightsNames, weights)) +
+                      " rule trains on at least " +
+                      std::to_string(kMinTrainingPaintsPerNode * static_cast<std::size_t>(nodes)) +
+                      " paints for " + std::to_string(nodes) + " wavelengths; this palette gives " +
+                      std::to_string(paints);
+    return sampling;
   }
   const NodeRuleKey key = palette_rule_key(light, cmf, nodes, range, weights, pigments, ground);
 

@@ -66,6 +66,7 @@ SpectralSampling make_spectral_sampling(const data::Spectrum& light,
   SpectralSampling sampling;
   if (nodes == 0) {
     sampling.full_spectrum = true;
+    sampling.rule = "the full spectrum";
     for (std::size_t j = 0; j < grid.size(); ++j) {
       const double e = power[j] * range.step_nm;
       sampling.wavelengths_nm.push_back(static_cast<float>(grid[j]));
@@ -100,6 +101,8 @@ SpectralSampling make_spectral_sampling(const data::Spectrum& light,
     for (std::size_t k = 0; k < dark; ++k)
       chosen.push_back(unlit[(2 * k + 1) * unlit.size() / (2 * dark)]);
     std::sort(chosen.begin(), chosen.end());
+    sampling.rule = "the light's own " + std::to_string(lit) + " lines (exact)";
+    sampling.light_lines = true;
     for (const std::size_t j : chosen) {
       const double e = masses[j] > 0.0 ? power[j] * range.step_nm : 0.0;
       sampling.wavelengths_nm.push_back(static_cast<float>(grid[j]));
@@ -112,6 +115,9 @@ SpectralSampling make_spectral_sampling(const data::Spectrum& light,
   }
   const QuadratureRule rule = gauss_rule(grid, masses, nodes);
 
+  sampling.rule = std::string(util::name_of(kNodeWeightsNames, weights == NodeWeights::impasto
+                                                                   ? NodeWeights::impasto
+                                                                   : NodeWeights::interpolatory));
   if (weights != NodeWeights::impasto) {  // the palette-trained ones start from it
     for (std::size_t i = 0; i < rule.nodes.size(); ++i) {
       std::array<double, 3> w{0.0, 0.0, 0.0};

@@ -230,6 +230,33 @@ TEST_F(NodeCache, APaletteTooSmallToTrainOnGetsTheGaussianRule) {
   expect_same(rule, make_spectral_sampling(light, data::cie1931_2deg(), 8, kCoarse,
                                            NodeWeights::interpolatory));
   EXPECT_LT(training_paints(one).size(), 8 * kMinTrainingPaintsPerNode);
+  // And says so: `render` prints the rule with its reason.
+  EXPECT_EQ(rule.rule,
+            "interpolatory: the optimised rule trains on at least 32 paints for 8 wavelengths; "
+            "this palette gives " +
+                std::to_string(training_paints(one).size()));
+}
+
+// A light of fewer lines than nodes is rendered exactly by its own lines: no palette rule is
+// trained for it, and the rule says so.
+TEST_F(NodeCache, ALightOfFewLinesIsItsOwnRuleWhateverThePalette) {
+  const auto& db = data::PigmentDatabase::defaults();
+  std::vector<data::Pigment> palette;
+  for (const char* name :
+       {"Burnt Sienna", "Cobalt Blue", "Pyrrole Red", "Hansa Yellow Opaque", "Titanium White",
+        "Carbon Black", "Quinacridone Magenta", "Phthalo Green (Blue Shade)", "Yellow Ochre"})
+    palette.push_back(db.get(name));
+  data::Spectrum lines{"lines", {}, {}};
+  for (int nm = 360; nm <= 830; ++nm) {
+    lines.wavelengths_nm.push_back(nm);
+    lines.values.push_back(nm == 460 || nm == 550 || nm == 620 ? 1.0 : 0.0);
+  }
+  const SpectralSampling rule =
+      make_palette_sampling(lines, data::cie1931_2deg(), 8, kCoarse, NodeWeights::optimised,
+                            palette, hiding_reflectance(db.get("Titanium White")));
+  EXPECT_TRUE(rule.light_lines);
+  EXPECT_EQ(rule.rule, "the light's own 3 lines (exact)");
+  EXPECT_EQ(rule.size(), 8);
 }
 
 TEST(RenderDefaults, TheOptimisedRuleIsTheDefault) {

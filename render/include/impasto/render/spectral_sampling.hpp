@@ -2,6 +2,7 @@
 // The wavelengths a painting is rendered at for one light, and how reflectance sampled at
 // them becomes CIE XYZ (IMPaSTo §5.4).
 #include <array>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -57,6 +58,10 @@ struct SpectralSampling {
   std::vector<std::array<float, 3>> to_xyz;  // per node, scaled so a perfect white has Y = 1
   std::array<double, 3> white_xyz{};         // XYZ of a perfect white reflector: Σ_i to_xyz[i]
   bool full_spectrum = false;                // every grid wavelength rather than a rule
+  bool light_lines = false;  // the light's own few lines: exact, no trained rule does better
+  // How the wavelengths and weights were chosen, for the user ("optimised", "interpolatory:
+  // the palette has too few paints to train the optimised rule", ...); not part of the rule.
+  std::string rule;
 
   int size() const { return static_cast<int>(wavelengths_nm.size()); }
 };
