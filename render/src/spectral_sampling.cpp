@@ -64,16 +64,18 @@ SpectralSampling make_spectral_sampling(const data::Spectrum& light,
   }
 
   SpectralSampling sampling;
+  // Grid wavelength j as a node of the full-spectrum weights E x̄ Δλ etc. (times `share`).
+  const auto add_grid_node = [&](std::size_t j, double share) {
+    const double e = share * power[j] * range.step_nm;
+    sampling.wavelengths_nm.push_back(static_cast<float>(grid[j]));
+    sampling.to_xyz.push_back({static_cast<float>(e * cmf.x.at(grid[j])),
+                               static_cast<float>(e * cmf.y.at(grid[j])),
+                               static_cast<float>(e * cmf.z.at(grid[j]))});
+  };
   if (nodes == 0) {
     sampling.full_spectrum = true;
     sampling.rule = "the full spectrum";
-    for (std::size_t j = 0; j < grid.size(); ++j) {
-      const double e = power[j] * range.step_nm;
-      sampling.wavelengths_nm.push_back(static_cast<float>(grid[j]));
-      sampling.to_xyz.push_back({static_cast<float>(e * cmf.x.at(grid[j])),
-                                 static_cast<float>(e * cmf.y.at(grid[j])),
-                                 static_cast<float>(e * cmf.z.at(grid[j]))});
-    }
+    for (std::size_t j = 0; j < grid.size(); ++j) add_grid_node(j, 1.0);
     normalise_to_white(sampling);
     return sampling;
   }
@@ -103,13 +105,7 @@ SpectralSampling make_spectral_sampling(const data::Spectrum& light,
     std::sort(chosen.begin(), chosen.end());
     sampling.rule = "the light's own " + std::to_string(lit) + " lines (exact)";
     sampling.light_lines = true;
-    for (const std::size_t j : chosen) {
-      const double e = masses[j] > 0.0 ? power[j] * range.step_nm : 0.0;
-      sampling.wavelengths_nm.push_back(static_cast<float>(grid[j]));
-      sampling.to_xyz.push_back({static_cast<float>(e * cmf.x.at(grid[j])),
-                                 static_cast<float>(e * cmf.y.at(grid[j])),
-                                 static_cast<float>(e * cmf.z.at(grid[j]))});
-    }
+    for (const std::size_t j : chosen) add_grid_node(j, masses[j] > 0.0 ? 1.0 : 0.0);
     normalise_to_white(sampling);
     return sampling;
   }
