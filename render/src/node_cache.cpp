@@ -324,37 +324,32 @@ SpectralSampling make_palette_sampling(const data::Spectrum& light,
                                        const std::vector<data::Pigment>& pigments,
                                        const data::Spectrum& ground) {
   const bool trained = weights == NodeWeights::fitted || weights == NodeWeights::optimised;
-  const auto stand_in = [&] {
-    return make_spectral_sampling(light, cmf, nodes, range,
-                                  trained ? NodeWeights::interpolatory : weights);
-  };
-  // Too few training paints for the readout's 3(N − 1) free weights: a rule fitted to them
-  // would fit those paints and little else (a single pigment's four glazes), so the Gaussian
-  // rule, which needs no paints, serves.
-  if (!trained || nodes == 0) return stand_in();
-  if (SpectralSampling lines = stand_in(); lines.light_lines) return lines;  // exact already
+  // The Gaussian rule, which needs no paints: what serves until (or instead of) a trained one.
+  SpectralSampling stand_in = make_spectral_sampling(
+      light, cmf, nodes, range, trained ? NodeWeights::interpolatory : weights);
+  // A light's own few lines are exact already. Too few training paints for the readout's
+  // 3(N − 1) free weights: a rule fitted to them would fit those paints and little else (a
+  // single pigment's four glazes), so the Gaussian rule serves, saying why.
+  if (!trained || nodes == 0 || stand_in.light_lines) return stand_in;
   if (const std::size_t paints = training_paints(pigments).size();
       paints < kMinTrainingPaintsPerNode * static_cast<std::size_t>(nodes)) {
-    SpectralSampling sampling = stand_in();
-    if (sampling.rule == "interpolatory")
-      sampling.rule = "interpolatory: the " +
-                      std::string(util::name_of(kNodeWeightsNames, weights)) +
-                      " rule trains on at least " +
-                      std::to_string(kMinTrainingPaintsPerNode * static_cast<std::size_t>(nodes)) +
-                      " paints for " + std::to_string(nodes) + " wavelengths; this palette gives " +
-                      std::to_string(paints);
-    return sampling;
+    stand_in.rule = "interpolatory: the " + std::string(util::name_of(kNodeWeightsNames, weights)) +
+                    " rule trains on at least " +
+                    std::to_string(kMinTrainingPaintsPerNode * static_cast<std::size_t>(nodes)) +
+                    " paints for " + std::to_string(nodes) + " wavelengths; this palette gives " +
+                    std::to_string(paints);
+    return stand_in;
   }
   const NodeRuleKey key = palette_rule_key(light, cmf, nodes, range, weights, pigments, ground);
 
   Registry& r = registry();
   std::unique_lock<std::mutex> lock(r.mutex);
   if (const auto found = r.built.find(key.hash); found != r.built.end()) return found->second;
-  if (background_scope && r.failed.count(key.hash) != 0) return stand_in();
+  if (background_scope && r.failed.count(key.hash) != 0) return stand_in;
   if (const auto found = r.building.find(key.hash); found != r.building.end()) {
     if (background_scope) {
       background_scope->note_stand_in();
-      return stand_in();
+      return stand_in;
     }
     const std::shared_future<SpectralSampling> pending = found->second;
     lock.unlock();
@@ -416,7 +411,7 @@ SpectralSampling make_palette_sampling(const data::Spectrum& light,
       r.idle.notify_all();
     });
   }
-  return stand_in();
+  return stand_in;
 }
 
 }  // namespace impasto::render
