@@ -26,13 +26,17 @@ double BrushHead::height(double u, double v) const {
   return rise * (1.0 - std::clamp(field(u, v), 0.0, 1.0));
 }
 
+long BrushHead::bristle_column(double u_mm) const {
+  if (!(bristles.spacing_mm > 0.0)) return 0;
+  // A column's tip lies at the head's centre line (u = 0): a narrow head is one bristle.
+  return std::lround(std::floor(u_mm / bristles.spacing_mm + 0.5));
+}
+
 double BrushHead::bristle_height_mm(double u_mm) const {
   const Bristles& b = bristles;
   if (b.spacing_mm <= 0.0 || b.depth_mm <= 0.0) return 0.0;
-  // A column's tip lies at the head's centre line (u = 0): a narrow head is one bristle.
-  const double position = u_mm / b.spacing_mm + 0.5;
-  const double column = std::floor(position);
-  const double phase = position - column;  // 0..1 across one column, its tip at 0.5
+  const long column = bristle_column(u_mm);
+  const double phase = u_mm / b.spacing_mm + 0.5 - static_cast<double>(column);  // tip at 0.5
   // Each column's length varies by a fixed pseudo-random amount (the same on every run).
   auto bits = static_cast<std::uint64_t>(static_cast<std::int64_t>(column)) * 0x9E3779B97F4A7C15ull;
   bits ^= bits >> 31;

@@ -21,6 +21,16 @@ namespace {
 // the edge of what the relief resolves (it is band-limited below 4 cells a column).
 constexpr double kBrushFlowBatchCells = 4.0;
 
+// The squeeze is a diffusion of paint down the head's pressure. Its explicit pass moves at
+// most an eighth of the pressure difference across a face (to stay stable), so a furrow of a
+// given width in mm, spanning more cells on a finer grid, evens out at a rate per pass that
+// falls as the cell's square while the passes per mm rise only as the cell: on a fine grid
+// the squeeze fell behind and the bristles' furrows faded with the dpi, on a coarse one it ran
+// ahead. A step (a cell travelled) makes kSqueezePassCellMm / cell_mm passes' worth of
+// squeeze, in whole passes each saturating at its share (Stepper::squeeze_passes), so the
+// squeeze per mm travelled is the same on every grid: one full pass at 254 dpi.
+constexpr double kSqueezePassCellMm = 0.1;
+
 constexpr std::size_t kBaseCacheTiles = 256;
 
 // Sets the one-cell border of a padded grid to zero.
@@ -59,7 +69,7 @@ double footing_mm(const Canvas& canvas, int cx, int cy) {
 
 }  // namespace
 
-void Stepper::resize(int slot_count, std::size_t brush_cells, int substeps) {
+void Stepper::resize(int slot_count, std::size_t brush_cells, int substeps, int squeeze_passes) {
   const Window& w = win_;
   const std::size_t n = w.padded();
   const std::size_t cells = static_cast<std::size_t>(w.width) * w.height;
@@ -79,8 +89,8 @@ void Stepper::resize(int slot_count, std::size_t brush_cells, int substeps) {
     zero_border(faces->data(), w.width, w.height);
   }
   if (xfer_ratio_.size() < cells) xfer_ratio_.resize(cells);
-  if (substeps > 1) {
-    if (exchanged_.size() < cells) exchanged_.resize(cells);
+  if (substeps > 1 && exchanged_.size() < cells) exchanged_.resize(cells);
+  if (substeps > 1 || squeeze_passes > 1) {
     for (auto* grid : {&head_level_, &pen_now_})
       if (grid->size() < n) grid->resize(n);
     zero_border(pen_now_.data(), w.width, w.height);
@@ -459,13 +469,14 @@ void Stepper::shifted_transfer_to_brush(Brush& brush, int slot_count, Shift shif
   }
 }
 
-IMPASTO_SIMD_CLONES void Stepper::squeeze_rows(const float* pen_grid, Shift shift, float c, int r0,
-                                               int r1) {
+IMPASTO_SIMD_CLONES void Stepper::squeeze_rows(const float* pen_grid, Shift shift, float c,
+                                               float reach, int r0, int r1) {
   // The squeeze: paint flows across each face between cells, from the side the head presses
   // deeper to the other, flux = h v with v = 2 c dp per face. Faces, not cell velocities: a
   // cell-centred gradient cannot see a checkerboard, which then grew under a still brush.
-  // Saturated at an eighth of the penetration difference and a quarter of the source's
-  // paint per face, so four faces together never overshoot or take more than a cell holds.
+  // Saturated at `reach` (at most 1) times an eighth of the penetration difference and at a
+  // quarter of the source's paint per face, so four faces together never overshoot or take
+  // more than a cell holds.
   // pen_grid: how deep the head presses each cell; its contact (how fully it moves the
   // paint) is the step's shifted by `shift` (a long step's sub-step: see
   // shifted_transfer_rows). (Branch-free, and faces on padded grids whose border stays 0:
@@ -473,10 +484,12 @@ IMPASTO_SIMD_CLONES void Stepper::squeeze_rows(const float* pen_grid, Shift shif
   const Window& w = win_;
   const std::ptrdiff_t s = w.stride();
   // The signed share of the source's paint that crosses (> 0: from this cell).
-  const auto share = [c](float dp, float h_from, float h_to, float contact) {
+  const float saturation = 16.0f / reach;
+  const auto share = [c, saturation](float dp, float h_from, float h_to, float contact) {
     // (A hair below 0 from float rounding moves nothing: divided by the 1e-30 floor, it blew up.)
     const float h = std::max(dp > 0.0f ? h_from : h_to, 0.0f);
-    const float flux = std::min(2.0f * c * h * std::abs(dp) / (1.0f + 16.0f * c * h), 0.25f * h);
+    const float flux =
+        std::min(2.0f * c * h * std::abs(dp) / (1.0f + saturation * c * h), 0.25f * h);
     const float ratio = contact * flux / std::max(h, 1e-30f);
     return dp > 0.0f ? ratio : -ratio;
   };
@@ -509,6 +522,52 @@ IMPASTO_SIMD_CLONES void Stepper::squeeze_rows(const float* pen_grid, Shift shif
         south[x] = share(pen[x] - pen[x + s], wet[x], wet[x + s], std::max(weight[x], below[x]));
     }
   }
+}
+
+Stepper::SqueezePasses Stepper::squeeze_passes(double cell_mm) {
+  const double passes_wanted = kSqueezePassCellMm / cell_mm;
+  const int passes = std::max(1, static_cast<int>(std::ceil(passes_wanted - 1e-9)));
+  return {passes, static_cast<float>(std::min(passes_wanted / passes, 1.0))};
+}
+
+void Stepper::squeeze_in_passes(Shift shift, float level_offset_mm, float c, SqueezePasses plan,
+                                int slot_count) {
+  // The squeeze of a step (or sub-step) in plan.passes passes of c / passes each: all but the
+  // last are applied here (the step's result back into its input grids, then copied on as
+  // the next pass's input, the head's pressure measured again on the paint as moved); the
+  // last pass's faces are left for the caller to apply, as one pass's are.
+  const Window& w = win_;
+  const int rows = w.height, cols = w.width;
+  const float per_pass = c / static_cast<float>(plan.passes);
+  const std::size_t n = w.padded();
+  // (The first pass measures the step's own pressure: a sub-step's, or a short step's.)
+  const float* pen = swept_ ? pen_now_.data() : pen_.data();
+  for (int pass = 1; pass < plan.passes; ++pass) {
+    parallel_rows(rows, cols,
+                  [&](int r0, int r1) { squeeze_rows(pen, shift, per_pass, plan.reach, r0, r1); });
+    // (Applied in full before any row is copied on: a row's pass reads its neighbours' input.)
+    parallel_rows(rows, cols, [&](int r0, int r1) { apply_squeeze_rows(slot_count, r0, r1); });
+    parallel_rows(rows, cols, [&](int r0, int r1) {
+      for (int y = r0; y < r1; ++y) {
+        const int lo = span_lo_[static_cast<std::size_t>(y)];
+        const int hi = span_hi_[static_cast<std::size_t>(y)];
+        if (hi <= lo) continue;
+        const std::size_t row = static_cast<std::size_t>(y + 1) * w.stride() + 1;
+        for (int k = 0; k <= slot_count; ++k) {
+          const std::size_t plane = k == 0 ? 0 : static_cast<std::size_t>(k - 1) * n;
+          const float* from = (k == 0 ? wet_.data() : pigment_.data() + plane) + row;
+          float* to = (k == 0 ? new_wet_.data() : new_pigment_.data() + plane) + row;
+          std::copy(from + lo, from + hi, to + lo);
+        }
+      }
+    });
+    parallel_rows(rows, cols, [&](int r0, int r1) {
+      sub_step_penetration_rows(shift, level_offset_mm, r0, r1);
+    });
+    pen = pen_now_.data();
+  }
+  parallel_rows(rows, cols,
+                [&](int r0, int r1) { squeeze_rows(pen, shift, per_pass, plan.reach, r0, r1); });
 }
 
 void Stepper::sub_step_penetration_rows(Shift shift, float level_offset_mm, int r0, int r1) {
@@ -621,20 +680,25 @@ void Stepper::clamp_brush(Brush& brush, int slot_count) {
 }
 
 void Stepper::even_out_brush(Brush& brush, int slot_count, double share) {
-  // Paint flows along the hairs, not across them: each covered cell moves `share` of the way
-  // to the mean of its column of bristles (the head's +v axis runs along the travel, so a column
-  // of cells is what one bristle lays). Evened out over the whole brush, every bristle held
-  // the same paint to the end and a running-dry stroke faded evenly through the weave instead
-  // of breaking into streaks where bristles ran dry. Each column's float total is kept
-  // exactly: what rounding added or lost goes back into its fullest cell (the first of the
-  // fullest, in index order). The sums run in index order, so their bits are fixed.
-  // A blade (a head without bristles) is one plate: its paint spreads across it freely, one
-  // "column" the width of the grid.
+  // Paint flows along the hairs and between the hairs of one bristle, not from bristle to
+  // bristle: each covered cell moves `share` of the way to the mean of its column of bristles
+  // (the head's +v axis runs along the travel, so a column is what one bristle lays; it spans
+  // the cells of Brush::bristle_of_cell_column). Evened out over the whole brush, every
+  // bristle held the same paint to the end and a running-dry stroke faded evenly through the
+  // weave instead of breaking into streaks where bristles ran dry. Evened out along each
+  // column of cells alone, the streaks followed the grid: a splayed head meets some of its
+  // cell columns with two canvas cells and some with one, and those ran dry first in a stripe
+  // every few cells (5.8 for a fan at any dpi) that read as furrows. Each column's float
+  // total is kept exactly: what rounding added or lost goes back into its fullest cell (the
+  // first of the fullest, in index order). The sums run in index order, so their bits are
+  // fixed. A blade (a head without bristles) is one plate: its paint spreads across it
+  // freely, one column the width of the grid.
   const std::size_t cells = brush.cell_count();
   const auto across = static_cast<std::size_t>(brush.cells_across());
-  const std::size_t columns = brush.blade() ? 1 : across;
+  const std::size_t columns = brush.bristle_columns();
+  const std::uint32_t* bristle_of = brush.bristle_of_cell_column().data();
   const std::vector<Brush::CellRun>& runs = brush.covered_runs();
-  const auto even_out = [&runs, across, columns, share](float* amount) {
+  const auto even_out = [&runs, across, columns, bristle_of, share](float* amount) {
     thread_local std::vector<double> total, after;
     thread_local std::vector<std::size_t> count, fullest;
     total.assign(columns, 0.0);
@@ -644,10 +708,10 @@ void Stepper::even_out_brush(Brush& brush, int slot_count, double share) {
     // Walks the covered cells in index order with each one's column (runs may wrap a row).
     const auto each = [&](auto&& visit) {
       for (const auto [begin, end] : runs) {
-        std::size_t u = columns > 1 ? begin % across : 0;
+        std::size_t u = begin % across;
         for (std::size_t c = begin; c < end; ++c) {
-          visit(c, u);
-          if (columns > 1 && ++u == across) u = 0;
+          visit(c, static_cast<std::size_t>(bristle_of[u]));
+          if (++u == across) u = 0;
         }
       }
     };
@@ -867,7 +931,8 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   const int wy0 = move_y > 0.0 ? std::max(y0 - back_y, 0) : y0;
   const int wy1 = move_y < 0.0 ? std::min(y1 + back_y, canvas.height_cells()) : y1;
   win_ = Window{wx0, wy0, wx1 - wx0, wy1 - wy0};
-  resize(slot_count, brush.cell_count(), substeps);
+  const SqueezePasses squeeze = squeeze_passes(canvas.cell_mm());
+  resize(slot_count, brush.cell_count(), substeps, squeeze.passes);
   find_bases(canvas);
 
   // The tip sinks depth_mm below the surface it rests on: the ground and dry paint, and the
@@ -990,16 +1055,15 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
     if (span_hi_[static_cast<std::size_t>(y)] <= span_lo_[static_cast<std::size_t>(y)])
       span_lo_[static_cast<std::size_t>(y)] = span_hi_[static_cast<std::size_t>(y)] = 0;
   }
-  if (substeps > 1) {
-    need_shares(rows, cols, quadrant_x, quadrant_y);
+  if (substeps > 1) need_shares(rows, cols, quadrant_x, quadrant_y);
+  if ((substeps > 1 || squeeze.passes > 1) && in.gradient_scale > 0.0f) {
     // The head's underside over each cell, where the step's contact found it pressing: what a
-    // sub-step's penetration measures against.
+    // sub-step's penetration, and a squeeze pass's after the first, measures against. (Where
+    // it did not press, its underside lies somewhere above the paint: it presses there in no
+    // sub-step. Only the squeeze measures against it.)
     const std::size_t n = win_.padded();
-    // (Where it did not press, its underside lies somewhere above the paint: it presses there
-    // in no sub-step.)
-    if (in.gradient_scale > 0.0f)  // (only the squeeze measures against it)
-      for (std::size_t i = 0; i < n; ++i)
-        head_level_[i] = pen_[i] > 0.0f ? ground_[i] + wet_[i] - pen_[i] : 1e30f;
+    for (std::size_t i = 0; i < n; ++i)
+      head_level_[i] = pen_[i] > 0.0f ? ground_[i] + wet_[i] - pen_[i] : 1e30f;
   }
   if (in.sharing_binds) share_brush_cells(cells, in.inv_deposit_share);
   bool first_pass = true;  // of the advection's sub-steps
@@ -1052,9 +1116,12 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
     if (transfers || squeezes) {
       parallel_row_chunks(rows, chunk, cols, [&](int r0, int r1) {
         if (transfers) transfer_to_brush(brush, slot_count, r0, r1);
-        if (squeezes) squeeze_rows(pen_.data(), Shift{0, 0}, in.gradient_scale, r0, r1);
+        if (squeezes && squeeze.passes == 1)
+          squeeze_rows(pen_.data(), Shift{0, 0}, in.gradient_scale, squeeze.reach, r0, r1);
       });
       if (transfers) clamp_brush(brush, slot_count);
+      if (squeezes && squeeze.passes > 1)
+        squeeze_in_passes(Shift{0, 0}, 0.0f, in.gradient_scale, squeeze, slot_count);
     }
   } else {
     // 3. A long step: its sub-steps each drag, split the film and squeeze with the head
@@ -1115,10 +1182,7 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
             if (transfers) shifted_transfer_to_brush(brush, slot_count, here, 0, rows);
           },
           [&] {
-            if (squeezes)
-              parallel_rows(rows, cols, [&](int r0, int r1) {
-                squeeze_rows(pen_now_.data(), here, c, r0, r1);
-              });
+            if (squeezes) squeeze_in_passes(here, level_offset, c, squeeze, slot_count);
           });
       if (j == substeps) {
         if (transfers) clamp_brush(brush, slot_count);

@@ -39,6 +39,13 @@ class Stepper {
   // The longest time one step may take so that the squeeze moves paint at most half a cell
   // where the penetration's slope is 1.
   static double max_step_seconds(const SimulationParams& params, double cell_mm);
+  // How a step's squeeze is made on a grid of cell_mm: whole passes, each saturating at
+  // `reach` (<= 1) of a full pass's limit (stepper.cpp, kSqueezePassCellMm).
+  struct SqueezePasses {
+    int passes;
+    float reach;
+  };
+  static SqueezePasses squeeze_passes(double cell_mm);
   // The longest move of one step, in cells: 1, or for a brush at least long_step_from_cells
   // across, long_step_share of its width (if that is more).
   static double max_step_cells(const SimulationParams& params, int brush_cells);
@@ -111,7 +118,7 @@ class Stepper {
     bool blade;  // a head without bristles (see step)
   };
 
-  void resize(int slot_count, std::size_t brush_cells, int substeps);
+  void resize(int slot_count, std::size_t brush_cells, int substeps, int squeeze_passes);
   const float* base_heights(const Canvas& canvas, int tile_index);
   void find_bases(const Canvas& canvas);
   void gather_rows(const StepInputs& in, int r0, int r1);
@@ -130,7 +137,9 @@ class Stepper {
   void shifted_transfer_rows(const StepInputs& in, Shift shift, float relax, const float* wet,
                              float* new_wet, float* new_pigment, int r0, int r1);
   void shifted_transfer_to_brush(Brush& brush, int slot_count, Shift shift, int r0, int r1);
-  void squeeze_rows(const float* pen_grid, Shift shift, float c, int r0, int r1);
+  void squeeze_rows(const float* pen_grid, Shift shift, float c, float reach, int r0, int r1);
+  void squeeze_in_passes(Shift shift, float level_offset_mm, float c, SqueezePasses plan,
+                         int slot_count);
   void sub_step_penetration_rows(Shift shift, float level_offset_mm, int r0, int r1);
   void apply_squeeze_rows(int slot_count, int r0, int r1);
   void share_brush_cells(std::size_t cells, float inv_deposit_share);

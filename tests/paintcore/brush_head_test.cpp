@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -122,6 +124,59 @@ TEST(Brush, RasterisesTheHeadAtTheCellSize) {
   settings.stiffness = 0.0;
   const Brush soft(load_named_brush_head("round", kBrushes), settings, 0.1, 0);
   EXPECT_GT(soft.max_depth_mm(), brush.max_depth_mm());
+}
+
+TEST(Brush, CellColumnsBelongToTheBristleAtTheirCentre) {
+  // An 8 mm round at 0.1 mm cells: its 0.45 mm columns of bristles, one centred on the head's
+  // middle, span 4 or 5 cell columns each, in order across the head; a knife is one plate.
+  BrushSettings settings;
+  settings.size_mm = 8.0;
+  const Brush round(load_named_brush_head("round", kBrushes), settings, 0.1, 0);
+  const std::vector<std::uint32_t>& bristle = round.bristle_of_cell_column();
+  ASSERT_EQ(bristle.size(), 80u);
+  EXPECT_EQ(bristle.front(), 0u);
+  EXPECT_EQ(round.bristle_columns(), static_cast<std::size_t>(bristle.back()) + 1);
+  // 4 mm either side of the middle column's 0.225 mm: 8.5 spacings, 9 columns a side.
+  EXPECT_EQ(round.bristle_columns(), 19u);
+  for (std::size_t i = 0; i < bristle.size(); ++i) {
+    const double u_mm = (static_cast<double>(i) + 0.5) * 0.1 - 4.0;
+    EXPECT_EQ(static_cast<long>(bristle[i]) - static_cast<long>(bristle[39]),
+              round.head().bristle_column(u_mm) - round.head().bristle_column(-0.05))
+        << i;
+    if (i > 0) {
+      EXPECT_LE(bristle[i] - bristle[i - 1], 1u);
+    }
+  }
+  const Brush knife(load_named_brush_head("knife", kBrushes), settings, 0.1, 0);
+  EXPECT_EQ(knife.bristle_columns(), 1u);
+}
+
+TEST(Brush, FurrowsFinerThanTheGridFade) {
+  // The bristles' relief stays whole down to 4 cells a column and fades to nothing at 2 (the
+  // Nyquist limit): a round's 0.45 mm columns at 150 dpi are 2.66 cells and keep a third.
+  BrushSettings settings;
+  settings.size_mm = 8.0;
+  const BrushHead head = load_named_brush_head("round", kBrushes);
+  BrushHead smooth = head;
+  smooth.bristles = {};
+  // The bristles' relief: the footprint less the smooth head's, its range across the middle row.
+  const auto relief = [&](double cell_mm) {
+    const Brush brush(head, settings, cell_mm, 0), plain(smooth, settings, cell_mm, 0);
+    const int n = brush.cells_across();
+    double most = -1e9, least = 1e9;
+    for (int i = n / 4; i < 3 * n / 4; ++i) {
+      const std::size_t k = static_cast<std::size_t>(n / 2) * n + i;
+      const double h = brush.footprint_mm()[k] - plain.footprint_mm()[k];
+      most = std::max(most, h);
+      least = std::min(least, h);
+    }
+    return most - least;
+  };
+  const double whole = relief(0.45 / 4.5);
+  EXPECT_GT(relief(0.45 / 4.0), 0.7 * whole);
+  EXPECT_GT(relief(0.45 / 2.66), 0.15 * whole);
+  EXPECT_LT(relief(0.45 / 2.66), 0.5 * whole);
+  EXPECT_LT(relief(0.45 / 1.9), 0.01 * whole);
 }
 
 TEST(Brush, RejectsAbsurdSettings) {

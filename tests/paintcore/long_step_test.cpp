@@ -233,6 +233,26 @@ TEST(LongSteps, BenchmarkMeasuresTheReferenceAsExact) {
   EXPECT_LT(std::abs(results[1].volume_error_mm3), 1e-4 * results[1].volume_mm3);
 }
 
+TEST(Stepper, TheSqueezePerMillimetreIsTheSameOnEveryGrid) {
+  // A cell travelled makes 0.1 mm / cell_mm full passes' worth of squeeze, in whole passes
+  // each saturating at its share: one full pass at 254 dpi, a weaker one on coarser grids,
+  // and more passes on finer ones.
+  for (const double dpi : {75.0, 150.0, 254.0, 300.0, 600.0, 1200.0}) {
+    SCOPED_TRACE(dpi);
+    const double cell_mm = 25.4 / dpi;
+    const Stepper::SqueezePasses plan = Stepper::squeeze_passes(cell_mm);
+    EXPECT_GE(plan.passes, 1);
+    EXPECT_GT(plan.reach, 0.0f);
+    EXPECT_LE(plan.reach, 1.0f);
+    EXPECT_NEAR(plan.passes * plan.reach, 0.1 / cell_mm, 1e-5);
+    if (plan.passes > 1) {
+      EXPECT_GT(plan.reach * plan.passes, plan.passes - 1);  // no pass to spare
+    }
+  }
+  EXPECT_EQ(Stepper::squeeze_passes(0.1).passes, 1);
+  EXPECT_FLOAT_EQ(Stepper::squeeze_passes(0.1).reach, 1.0f);
+}
+
 TEST(StepperBaseCache, AWindowOverMoreUnpaintedTilesThanTheCacheHoldsStaysValid) {
   // A brush window over 17 x 17 never painted tiles (more than the 256 the weave cache
   // keeps): the cache used to be emptied midway through the window's lookups, leaving the

@@ -58,6 +58,13 @@ class Brush {
     std::size_t begin, end;
   };
   const std::vector<CellRun>& covered_runs() const { return covered_runs_; }
+  // The column of bristles each column of cells lies in (0 .. bristle_columns() - 1, in
+  // order across u); a blade is one column. Paint in the brush flows along a bristle's hairs
+  // and between the hairs of one bristle, not from bristle to bristle.
+  const std::vector<std::uint32_t>& bristle_of_cell_column() const {
+    return bristle_of_cell_column_;
+  }
+  std::size_t bristle_columns() const { return bristle_columns_; }
   // Penetration depth (mm) below the paint surface at pressure 1; softer heads sink deeper.
   double max_depth_mm() const;
 
@@ -86,6 +93,8 @@ class Brush {
   std::vector<float> footprint_mm_;
   std::vector<std::uint8_t> covers_;
   std::vector<CellRun> covered_runs_;
+  std::vector<std::uint32_t> bristle_of_cell_column_;
+  std::size_t bristle_columns_ = 0;
   float rim_mm_ = 0.0f;
   std::vector<float> padded_footprint_mm_, padded_coverage_;
   std::vector<float> padded_footprint_mm_t_, padded_coverage_t_;

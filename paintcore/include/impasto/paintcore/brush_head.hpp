@@ -50,6 +50,8 @@ struct BrushHead {
   double height(double u, double v) const;
   // Height (mm) the bristles add at u_mm across the head (0 at a bristle's tip).
   double bristle_height_mm(double u_mm) const;
+  // Which column of bristles lies at u_mm across the head (column 0 at the centre line).
+  long bristle_column(double u_mm) const;
 };
 
 inline constexpr int kMaxPerturbations = 64;
