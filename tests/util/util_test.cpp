@@ -28,6 +28,28 @@ TEST(KeyValueField, FindsTheFirstLineWithTheKey) {
             "last line without a newline");
 }
 
+TEST(LineEncoding, AnyNameRoundTripsOnOneLine) {
+  std::string every_byte;
+  for (int c = 1; c < 256; ++c) every_byte += static_cast<char>(c);
+  for (const std::string& name : {std::string("/home/a b/50% grey.impasto"),
+                                  std::string("line\nbreak\ttab\r"), every_byte, std::string()}) {
+    const std::string line = line_encoded(name);
+    EXPECT_EQ(line.find_first_of(std::string("\n\r\x7f", 3)), std::string::npos);
+    EXPECT_EQ(line_decoded(line), name);
+  }
+  EXPECT_EQ(line_encoded("50%\n"), "50%25%0A");
+  EXPECT_EQ(line_decoded("%0a%0A"), "\n\n");  // either case of hex digit
+}
+
+TEST(LineEncoding, APercentWithoutTwoHexDigitsStandsForItself) {
+  // A hand-edited or torn line decodes to what it says and never throws (the session
+  // registry's own decoder read "%zz" with std::stoi, which threw).
+  EXPECT_EQ(line_decoded("%zz"), "%zz");
+  EXPECT_EQ(line_decoded("%4z%"), "%4z%");
+  EXPECT_EQ(line_decoded("a%4"), "a%4");
+  EXPECT_EQ(line_decoded("%%41"), "%A");
+}
+
 TEST(Fnv1a, MatchesThePublishedTestVectors) {
   // From the FNV reference (isthe.com/chongo/tech/comp/fnv): "" and "a", 64-bit FNV-1a.
   EXPECT_EQ(fnv1a(""), 0xcbf29ce484222325ull);

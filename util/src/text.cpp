@@ -23,4 +23,43 @@ std::string key_value_field(std::string_view text, std::string_view key) {
   return {};
 }
 
+std::string line_encoded(std::string_view name) {
+  static constexpr char kHex[] = "0123456789ABCDEF";
+  std::string out;
+  out.reserve(name.size());
+  for (const char ch : name) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c < 0x20 || c == 0x7f || c == '%') {
+      out += '%';
+      out += kHex[c >> 4];
+      out += kHex[c & 15];
+    } else {
+      out += ch;
+    }
+  }
+  return out;
+}
+
+std::string line_decoded(std::string_view line) {
+  const auto hex_value = [](char ch) {
+    if (ch >= '0' && ch <= '9') return ch - '0';
+    if (ch >= 'a' && ch <= 'f') return ch - 'a' + 10;
+    if (ch >= 'A' && ch <= 'F') return ch - 'A' + 10;
+    return -1;
+  };
+  std::string out;
+  out.reserve(line.size());
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const int high = line[i] == '%' && i + 2 < line.size() ? hex_value(line[i + 1]) : -1;
+    const int low = high >= 0 ? hex_value(line[i + 2]) : -1;
+    if (low >= 0) {
+      out += static_cast<char>(high * 16 + low);
+      i += 2;
+    } else {
+      out += line[i];
+    }
+  }
+  return out;
+}
+
 }  // namespace impasto::util

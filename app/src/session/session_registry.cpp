@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <impasto/input/stroke_file.hpp>
+#include <impasto/util/text.hpp>
 
 #include <algorithm>
 #include <cerrno>
@@ -19,43 +20,14 @@ namespace {
 
 constexpr const char* kMagic = "impasto-session 1";
 
-// A path on one line: '%' and control characters as %XX.
-std::string encode(const std::string& text) {
-  static constexpr char kHex[] = "0123456789abcdef";
-  std::string out;
-  for (char c : text) {
-    const auto u = static_cast<unsigned char>(c);
-    if (c == '%' || u < 0x20 || u == 0x7f) {
-      out += '%';
-      out += kHex[u >> 4];
-      out += kHex[u & 15];
-    } else {
-      out += c;
-    }
-  }
-  return out;
-}
-
-std::string decode(const std::string& text) {
-  std::string out;
-  for (std::size_t i = 0; i < text.size(); ++i) {
-    if (text[i] == '%' && i + 2 < text.size()) {
-      out += static_cast<char>(std::stoi(text.substr(i + 1, 2), nullptr, 16));
-      i += 2;
-    } else {
-      out += text[i];
-    }
-  }
-  return out;
-}
-
 std::string entry_text(const SessionEntry& e) {
   std::ostringstream text;
   text << kMagic << "\n";
   text << "pid " << e.pid << "\n";
-  text << "painting " << (e.painting ? encode(e.painting->string()) : std::string("new")) << "\n";
-  text << "strokes " << encode(e.strokes.string()) << "\n";
-  text << "autosave " << encode(e.autosave.string()) << "\n";
+  text << "painting "
+       << (e.painting ? util::line_encoded(e.painting->string()) : std::string("new")) << "\n";
+  text << "strokes " << util::line_encoded(e.strokes.string()) << "\n";
+  text << "autosave " << util::line_encoded(e.autosave.string()) << "\n";
   return text.str();
 }
 
@@ -74,9 +46,9 @@ SessionEntry parse_entry(const std::filesystem::path& file, const std::string& t
     const std::string key = line.substr(0, space);
     const std::string value = line.substr(space + 1);
     if (key == "pid") e.pid = std::atol(value.c_str());
-    if (key == "painting" && value != "new") e.painting = decode(value);
-    if (key == "strokes") e.strokes = decode(value);
-    if (key == "autosave") e.autosave = decode(value);
+    if (key == "painting" && value != "new") e.painting = util::line_decoded(value);
+    if (key == "strokes") e.strokes = util::line_decoded(value);
+    if (key == "autosave") e.autosave = util::line_decoded(value);
   }
   if (e.strokes.empty()) throw std::runtime_error(file.string() + ": names no recording");
   // The autosave lives beside the entry, whatever the entry says.

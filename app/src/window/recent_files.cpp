@@ -1,52 +1,22 @@
 #include "window/recent_files.hpp"
 
 #include <algorithm>
-#include <cctype>
-#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <string>
 #include <string_view>
 
 #include "impasto/files/atomic_file.hpp"
+#include "impasto/util/text.hpp"
 
 namespace impasto::app::window {
 namespace {
 
 constexpr std::size_t kMaxRecent = 10;
 // The list's first line since names may hold any byte: each name on one line, its control
-// characters and '%' written as %XX. A list without it (older) holds names as they are.
+// characters and '%' written as %XX (util::line_encoded). A list without it (older) holds
+// names as they are.
 constexpr std::string_view kHeader = "# impasto-recent 2";
-
-std::string encoded(const std::string& name) {
-  std::string out;
-  for (const char ch : name) {
-    const auto c = static_cast<unsigned char>(ch);
-    if (c < 0x20 || c == 0x7f || c == '%') {
-      char hex[4];
-      std::snprintf(hex, sizeof hex, "%%%02X", c);
-      out += hex;
-    } else {
-      out += ch;
-    }
-  }
-  return out;
-}
-
-std::string decoded(const std::string& line) {
-  std::string out;
-  for (std::size_t i = 0; i < line.size(); ++i) {
-    if (line[i] == '%' && i + 2 < line.size() &&
-        std::isxdigit(static_cast<unsigned char>(line[i + 1])) &&
-        std::isxdigit(static_cast<unsigned char>(line[i + 2]))) {
-      out += static_cast<char>(std::stoi(line.substr(i + 1, 2), nullptr, 16));
-      i += 2;
-    } else {
-      out += line[i];
-    }
-  }
-  return out;
-}
 
 std::filesystem::path recent_list_path() {
   const auto folder = window_config_folder();
@@ -77,7 +47,7 @@ std::vector<std::filesystem::path> load_recent_files() {
       is_encoded = true;
       continue;
     }
-    if (!line.empty()) files.emplace_back(is_encoded ? decoded(line) : line);
+    if (!line.empty()) files.emplace_back(is_encoded ? util::line_decoded(line) : line);
   }
   return files;
 }
@@ -93,7 +63,7 @@ void remember_recent_file(const std::filesystem::path& file) {
   if (files.size() > kMaxRecent) files.resize(kMaxRecent);
   std::filesystem::create_directories(list.parent_path(), error);
   std::string text = std::string(kHeader) + "\n";
-  for (const auto& f : files) text += encoded(f.string()) + "\n";
+  for (const auto& f : files) text += util::line_encoded(f.string()) + "\n";
   try {
     impasto::files::write_file_atomically(list, text);
   } catch (const std::runtime_error&) {

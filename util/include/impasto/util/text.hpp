@@ -13,4 +13,11 @@ std::string_view trim(std::string_view text);
 // empty lines, lines starting with '#' and lines without '=' skipped), or "" when none is.
 std::string key_value_field(std::string_view text, std::string_view key);
 
+// A name of any bytes on one line: its control characters (below 0x20, and 0x7f) and '%'
+// written as %XX (two upper-case hex digits), every other byte as it is.
+std::string line_encoded(std::string_view name);
+// The name back from line_encoded's line. A '%' not followed by two hex digits stands for
+// itself (a hand-edited or torn line decodes to what it says, and never throws).
+std::string line_decoded(std::string_view line);
+
 }  // namespace impasto::util
