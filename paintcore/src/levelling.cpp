@@ -10,12 +10,12 @@ namespace impasto::paintcore {
 namespace {
 
 constexpr int kMaxIterations = 48;  // the flow is capped per iteration, so few suffice
-// ... on a grid of 0.1 mm. The flow is a diffusion whose explicit iteration is stable only up
-// to a step in proportion to the cell's square: a furrow a given width in mm spans more
-// cells on a finer grid, and 48 capped iterations levelled less of it (fluid paint's furrows
-// grew with the dpi, 0.007 mm RMS at 300 dpi, 0.027 at 1200). Finer grids take
-// (0.1 mm / cell)^2 times the iterations, at most kMaxFineIterations times: converged to 500
-// dpi; at 1200 dpi half the way, as the full count costs some 15 s a stroke there.
+// ... on a grid of kReferenceCellMm. The flow is a diffusion whose explicit iteration is
+// stable only up to a step in proportion to the cell's square: a furrow a given width in mm
+// spans more cells on a finer grid, and 48 capped iterations levelled less of it (fluid
+// paint's furrows grew with the dpi, 0.007 mm RMS at 300 dpi, 0.027 at 1200). Finer grids
+// take (kReferenceCellMm / cell)^2 times the iterations, at most kMaxFineIterations times:
+// converged to 500 dpi; at 1200 dpi half the way, as the full count costs some 15 s a stroke.
 constexpr double kMaxFineIterations = 4.0;
 
 }  // namespace
@@ -79,8 +79,9 @@ LevellingReport settle_wet_paint(Canvas& canvas, const std::vector<int>& tiles, 
       body(k * kTileCells + static_cast<std::size_t>(c), x0 + c % kTileSize, y0 + c / kTileSize);
   };
   const double held_depth_drop = info.yield_stress_pa * cell_mm / kPaintWeightPaPerMm;
-  const int iterations = static_cast<int>(std::lround(
-      kMaxIterations * std::clamp(0.01 / (cell_mm * cell_mm), 1.0, kMaxFineIterations)));
+  const double finer = kReferenceCellMm / cell_mm;
+  const int iterations = static_cast<int>(
+      std::lround(kMaxIterations * std::clamp(finer * finer, 1.0, kMaxFineIterations)));
   const double seconds = params.settle_time_s / iterations;
   const auto surface = [](const Tile& t, int c) {
     return static_cast<double>(t.base_height_mm[static_cast<std::size_t>(c)]) +

@@ -26,10 +26,9 @@ constexpr double kBrushFlowBatchCells = 4.0;
 // given width in mm, spanning more cells on a finer grid, evens out at a rate per pass that
 // falls as the cell's square while the passes per mm rise only as the cell: on a fine grid
 // the squeeze fell behind and the bristles' furrows faded with the dpi, on a coarse one it ran
-// ahead. A step (a cell travelled) makes kSqueezePassCellMm / cell_mm passes' worth of
+// ahead. A step (a cell travelled) makes kReferenceCellMm / cell_mm passes' worth of
 // squeeze, in whole passes each saturating at its share (Stepper::squeeze_passes), so the
 // squeeze per mm travelled is the same on every grid: one full pass at 254 dpi.
-constexpr double kSqueezePassCellMm = 0.1;
 
 constexpr std::size_t kBaseCacheTiles = 256;
 
@@ -525,7 +524,7 @@ IMPASTO_SIMD_CLONES void Stepper::squeeze_rows(const float* pen_grid, Shift shif
 }
 
 Stepper::SqueezePasses Stepper::squeeze_passes(double cell_mm) {
-  const double passes_wanted = kSqueezePassCellMm / cell_mm;
+  const double passes_wanted = kReferenceCellMm / cell_mm;
   const int passes = std::max(1, static_cast<int>(std::ceil(passes_wanted - 1e-9)));
   return {passes, static_cast<float>(std::min(passes_wanted / passes, 1.0))};
 }

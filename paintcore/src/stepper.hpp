@@ -40,7 +40,7 @@ class Stepper {
   // where the penetration's slope is 1.
   static double max_step_seconds(const SimulationParams& params, double cell_mm);
   // How a step's squeeze is made on a grid of cell_mm: whole passes, each saturating at
-  // `reach` (<= 1) of a full pass's limit (stepper.cpp, kSqueezePassCellMm).
+  // `reach` (<= 1) of a full pass's limit (stepper.cpp, kReferenceCellMm).
   struct SqueezePasses {
     int passes;
     float reach;

@@ -185,17 +185,20 @@ TEST(Marks, HeavyPaintKeepsBristleFurrowsFluidPaintLevelsThem) {
   EXPECT_LT(fluid.furrow_rms_mm, 0.6 * heavy.furrow_rms_mm);
 }
 
+// A 16 mm standard stroke (marks_benchmark.hpp) of `head` in `body` on a grid of `dpi`.
+MarkFigures short_mark(const std::string& head, PaintBody body, double dpi) {
+  MarkStroke stroke;
+  stroke.length_mm = 16.0;
+  stroke.dpi = dpi;
+  return measure_mark(head, body, stroke);
+}
+
 TEST(Marks, FurrowsAreSetInMillimetresNotByTheGrid) {
   // A heavy flat's furrows are as deep on a grid four times finer (the squeeze keeps its
   // strength per mm travelled, Stepper::squeeze_passes: with one pass a step it fell behind
-  // on fine grids, 0.053 mm RMS at 300 dpi, 0.029 at 1200) and stand at the head's bristle
-  // spacing there too.
-  MarkStroke stroke;
-  stroke.length_mm = 16.0;
-  stroke.dpi = 300.0;
-  const MarkFigures coarse = measure_mark("flat", PaintBody::heavy, stroke);
-  stroke.dpi = 1200.0;
-  const MarkFigures fine = measure_mark("flat", PaintBody::heavy, stroke);
+  // on fine grids, 0.053 mm RMS at 300 dpi, 0.029 at 1200).
+  const MarkFigures coarse = short_mark("flat", PaintBody::heavy, 300.0);
+  const MarkFigures fine = short_mark("flat", PaintBody::heavy, 1200.0);
   EXPECT_GT(coarse.furrow_rms_mm, 0.02 * coarse.middle_mm);
   EXPECT_NEAR(fine.furrow_rms_mm, coarse.furrow_rms_mm, 0.3 * coarse.furrow_rms_mm);
 }
@@ -204,12 +207,8 @@ TEST(Marks, FluidPaintLevelsItsFurrowsAsMuchOnAFinerGrid) {
   // Fluid paint levels a round's furrows; on a grid twice as fine the levelling's iterations
   // grow with the cell's inverse square (levelling.cpp), or they level less of them (0.007
   // mm RMS at 300 dpi, 0.014 at 600 with 48 iterations on both).
-  MarkStroke stroke;
-  stroke.length_mm = 16.0;
-  stroke.dpi = 300.0;
-  const MarkFigures coarse = measure_mark("round", PaintBody::fluid, stroke);
-  stroke.dpi = 600.0;
-  const MarkFigures fine = measure_mark("round", PaintBody::fluid, stroke);
+  const MarkFigures coarse = short_mark("round", PaintBody::fluid, 300.0);
+  const MarkFigures fine = short_mark("round", PaintBody::fluid, 600.0);
   EXPECT_NEAR(fine.furrow_rms_mm, coarse.furrow_rms_mm, 0.3 * coarse.furrow_rms_mm);
 }
 
@@ -219,10 +218,7 @@ TEST(Marks, ASplayedHeadLeavesNoStripesOfTheGrid) {
   // one. Evened out per column of cells, those ran dry first, in stripes 5.8 cells apart
   // that drowned the bristles' furrows (0.25 mm at 600 dpi). Paint in a bristle is shared
   // between its hairs: the furrows stand at the bristles' 1.09 mm.
-  MarkStroke stroke;
-  stroke.length_mm = 16.0;
-  stroke.dpi = 600.0;
-  const MarkFigures fan = measure_mark("fan", PaintBody::heavy, stroke);
+  const MarkFigures fan = short_mark("fan", PaintBody::heavy, 600.0);
   EXPECT_NEAR(fan.furrow_period_mm, fan.bristle_spacing_mm, 0.15 * fan.bristle_spacing_mm);
 }
 
@@ -517,12 +513,7 @@ TEST(Marks, PaintIsConservedOnFinerAndCoarserGrids) {
   for (const double dpi : {150.0, 600.0})
     for (const char* head : {"round", "knife"}) {
       SCOPED_TRACE(std::string(head) + " " + std::to_string(dpi));
-      const Painting p = paint_session(head, PaintBody::heavy, 0, dpi);
-      const PaintTotals expected = test::expected_totals(p), present = test::present_totals(p);
-      EXPECT_LT(test::relative_error(present.volume, expected.volume), 1e-5);
-      for (std::size_t s = 0; s < expected.pigment.size(); ++s)
-        EXPECT_LT(test::relative_error(present.pigment[s], expected.pigment[s]), 1e-5) << s;
-      EXPECT_EQ(p.nonfinite_count(), 0u);
+      test::expect_conserved(paint_session(head, PaintBody::heavy, 0, dpi));
     }
 }
 

@@ -9,6 +9,11 @@
 
 namespace impasto::paintcore {
 
+// The cell (mm, 254 dpi) on which the explicit flows' limits a pass were set: the squeeze and
+// the levelling make more passes on finer grids, so that what they move per mm is the same
+// on every grid (stepper.cpp, levelling.cpp).
+inline constexpr double kReferenceCellMm = 0.1;
+
 struct SimulationParams {
   // Transfer: where brush and canvas paint touch, the joint film splits between the two
   // surfaces. The canvas's part relaxes toward deposit_share of the joint film by
