@@ -9,20 +9,12 @@
 #include <string>
 
 #include "impasto/render/crack_close_up.hpp"
+#include "impasto/render/display.hpp"
 #include "impasto/render/render_painting.hpp"
 #include "impasto/render/spectral_palette.hpp"
 #include "impasto/render/tile_renderer.hpp"
 
 namespace impasto::render {
-namespace {
-
-// Linear to the sRGB curve (IEC 61966-2-1).
-float srgb_encode(float linear) {
-  const float x = std::clamp(linear, 0.0f, 1.0f);
-  return x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f;
-}
-
-}  // namespace
 
 Image render_painting_close_up(const paintcore::Painting& painting, const RenderSettings& settings,
                                const CellRegion& region, int pixels_per_cell) {
@@ -84,7 +76,7 @@ void write_close_up_image(Image image, const std::filesystem::path& path) {
     write_exr(path, image);
     return;
   }
-  for (float& v : image.rgb) v = srgb_encode(v);
+  for (float& v : image.rgb) v = static_cast<float>(srgb_encoded(v));
   write_png(path, image);
 }
 

@@ -4,6 +4,8 @@
 
 #include "impasto/render/display_ocio.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -72,6 +74,11 @@ OCIO::TransformRcPtr srgb_curve() {
 }
 
 }  // namespace
+
+double srgb_encoded(double linear) {
+  linear = std::clamp(linear, 0.0, 1.0);
+  return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1 / 2.4) - 0.055;
+}
 
 OCIO::TransformRcPtr display_ocio_transform(DisplayEncoding encoding) {
   switch (encoding) {

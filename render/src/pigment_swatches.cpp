@@ -8,15 +8,6 @@
 #include "impasto/render/display.hpp"
 
 namespace impasto::render {
-namespace {
-
-double srgb_encode(double linear) {
-  linear = std::clamp(linear, 0.0, 1.0);
-  return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1 / 2.4) - 0.055;
-}
-
-}  // namespace
-
 data::Spectrum tint_reflectance(const data::Pigment& pigment, const data::Pigment& white,
                                 double white_parts) {
   data::Spectrum out{"R", pigment.K.wavelengths_nm, {}};
@@ -59,7 +50,7 @@ SwatchColour describe_colour(std::string label, data::Spectrum reflectance,
   const auto m = xyz_to_linear_srgb();
   for (int i = 0; i < 3; ++i) {
     c.srgb[static_cast<std::size_t>(i)] =
-        srgb_encode(m[3 * i] * d65[0] + m[3 * i + 1] * d65[1] + m[3 * i + 2] * d65[2]);
+        srgb_encoded(m[3 * i] * d65[0] + m[3 * i + 1] * d65[1] + m[3 * i + 2] * d65[2]);
   }
   return c;
 }

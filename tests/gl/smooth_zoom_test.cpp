@@ -12,6 +12,7 @@
 
 #include "gl_test_slots.hpp"
 #include "impasto/paintcore/canvas.hpp"
+#include "impasto/render/box_filter.hpp"
 #include "impasto/render/tile_renderer.hpp"
 #include "impasto/render_gl/canvas_renderer.hpp"
 #include "impasto/render_gl/framebuffer.hpp"
@@ -146,6 +147,47 @@ TEST(SmoothZoom, ZoomedOutPixelsAreTheCpuImageBoxFiltered) {
             << "/255 (one cell a pixel: " << worst_nearest * 255 << "/255)\n";
   EXPECT_LE(worst, 2.0 / 255.0);
   EXPECT_GT(worst_nearest, 10.0 * worst);  // the test can tell averaging from picking a cell
+}
+
+// Between whole cells a pixel (the fit zoom of most canvases) each pixel averages the cells
+// its footprint covers, each by its share: a pixel's centre alone would pick one cell and
+// skip others, so the weave and furrows would beat against the pixels as moiré.
+TEST(SmoothZoom, ZoomedOutBetweenWholeCellsEveryCellCountsByItsShare) {
+  auto context = create_headless_context();
+  const paintcore::Canvas canvas = dome_canvas();
+  const render::RenderSettings settings = linear_settings();
+  const int W = canvas.width_cells(), H = canvas.height_cells();
+  render::TileRenderer cpu(settings, test::kWhiteRedUltramarine);
+  cpu.render_all(canvas);
+  const render::Image reference = cpu.image();
+  CanvasRenderer renderer(W, H, settings,
+                          render::SpectralPalette(settings, test::kWhiteRedUltramarine));
+  renderer.upload_all(canvas);
+  for (const double cells_per_pixel : {1.25, 1.7, 2.5}) {
+    const int w = static_cast<int>(W / cells_per_pixel), h = static_cast<int>(H / cells_per_pixel);
+    const std::vector<float> view = draw(renderer, 1.0 / cells_per_pixel, w, h);
+    const render::Image box = render::box_filtered(reference, cells_per_pixel, w, h);
+    double worst = 0.0, worst_centre_cell = 0.0;
+    for (int y = 0; y < h; ++y) {
+      for (int x = 0; x < w; ++x) {
+        // The cell under the pixel's centre, which a point sample would show.
+        const int cx = static_cast<int>(0.5 * W + (x + 0.5 - 0.5 * w) * cells_per_pixel);
+        const int cy = static_cast<int>(0.5 * H + (y + 0.5 - 0.5 * h) * cells_per_pixel);
+        for (int c = 0; c < 3; ++c) {
+          const float expected = box.pixel(x, y)[c];
+          worst = std::max(
+              worst,
+              double(std::abs(view[static_cast<std::size_t>(3 * (y * w + x) + c)] - expected)));
+          worst_centre_cell =
+              std::max(worst_centre_cell, double(std::abs(reference.pixel(cx, cy)[c] - expected)));
+        }
+      }
+    }
+    std::cout << "[ " << cells_per_pixel << " cells a pixel ] GPU vs the box filter: max "
+              << worst * 255 << "/255 (the centre's cell: " << worst_centre_cell * 255 << "/255)\n";
+    EXPECT_LE(worst, 2.0 / 255.0) << cells_per_pixel;
+    EXPECT_GT(worst_centre_cell, 5.0 * worst) << cells_per_pixel;  // it can tell them apart
+  }
 }
 
 }  // namespace

@@ -191,23 +191,51 @@ vec3 interpolated_colour(vec2 cell_position, ivec2 cell) {
   return shade_surface(xyz, shade_normalized(normal), volume, visibility) + sparkles;
 }
 
-// Zoomed out: the shaded colours of up to 4 x 4 cells spread over the pixel's footprint,
-// averaged in linear XYZ (no speckle from one cell standing for many). n x n samples for
-// about n cells a pixel each way, so a view near one pixel a cell (the window's fit) still
-// costs one cell a pixel. With bilinear (the ghs model zoomed in: it shades per node, after
-// the colour, so it cannot blend colour and normal first), the shaded colours of the four
-// nearest cell centres, blended bilinearly.
+// The cells a zoomed-out pixel covers along one axis: its footprint [a, a + span) in cells
+// meets cells first .. first + count - 1; weight(i) is how much of the footprint cell i holds.
+struct Coverage {
+  float a;
+  float span;
+  int first;
+  int count;
+};
+
+Coverage coverage(float centre, float span) {
+  float a = centre - 0.5 * span;
+  int first = int(floor(a));
+  return Coverage(a, span, first, int(ceil(a + span)) - first);
+}
+
+float coverage_weight(Coverage axis, int i) {
+  float cell = float(axis.first + i);
+  return (min(axis.a + axis.span, cell + 1.0) - max(axis.a, cell)) / axis.span;
+}
+
+// Zoomed out: the shaded colours of the cells under the pixel's footprint averaged in
+// linear XYZ, each weighted by the share of the footprint it holds — a box filter, so fine
+// relief (the weave, furrows) shows as its average, not as moiré beating against the
+// pixels. The footprint is the pixel's axis-aligned extent in cells (a turned view's a
+// little wider). Beyond 16 cells (over about 3 cells a pixel) n x n cells spread over the
+// footprint stand for them, n about the cells a pixel each way, at most 4. With bilinear
+// (the ghs model zoomed in: it shades per node, after the colour, so it cannot blend colour
+// and normal first), the shaded colours of the four nearest cell centres, blended
+// bilinearly.
 vec3 footprint_colour(vec2 cell_position, float cells_per_pixel, bool allow_close_up,
                       bool bilinear, out bool any_inside) {
-  int n = bilinear ? 2 : int(clamp(floor(cells_per_pixel + 0.5), 1.0, 4.0));
   mat2 to_cells = mat2(screen_to_cell[0].xy, screen_to_cell[1].xy);
+  vec2 extent = abs(to_cells[0]) + abs(to_cells[1]);  // the footprint's size in cells
+  Coverage along_x = coverage(cell_position.x, max(extent.x, 1e-4));
+  Coverage along_y = coverage(cell_position.y, max(extent.y, 1e-4));
+  bool exact = !bilinear && cells_per_pixel > 1.0 && along_x.count * along_y.count <= 16;
+  int n = bilinear ? 2 : int(clamp(floor(cells_per_pixel + 0.5), 1.0, 4.0));
+  ivec2 counts = exact ? ivec2(along_x.count, along_y.count) : ivec2(n);
   vec2 corner = cell_position - 0.5;
   ivec2 c0 = ivec2(floor(corner));
   vec2 f = corner - vec2(c0);
   vec3 sum = vec3(0.0);
-  int inside = 0;
-  for (int j = 0; j < n; ++j) {
-    for (int i = 0; i < n; ++i) {
+  float weight_inside = 0.0;
+  for (int j = 0; j < counts.y; ++j) {
+    for (int i = 0; i < counts.x; ++i) {
       ivec2 c;
       vec2 at;
       float weight = 1.0;
@@ -215,20 +243,25 @@ vec3 footprint_colour(vec2 cell_position, float cells_per_pixel, bool allow_clos
         c = clamp(c0 + ivec2(i, j), ivec2(0), canvas_cells - 1);
         at = vec2(c) + 0.5;
         weight = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y);
+      } else if (exact) {
+        c = ivec2(along_x.first + i, along_y.first + j);
+        at = vec2(c) + 0.5;
+        weight = coverage_weight(along_x, i) * coverage_weight(along_y, j);
       } else {
         vec2 offset = (vec2(i, j) + 0.5) / float(n) - 0.5;  // within the pixel
         at = cell_position + to_cells * offset;
         c = ivec2(floor(at));
-        if (any(lessThan(c, ivec2(0))) || any(greaterThanEqual(c, canvas_cells))) continue;
+      }
+      if (!bilinear && (any(lessThan(c, ivec2(0))) || any(greaterThanEqual(c, canvas_cells)))) {
+        continue;
       }
       // One call of cell_colour in the whole shader: the compiled shader holds one copy.
-      vec3 colour = cell_colour(c, at, allow_close_up);
-      sum += bilinear ? weight * colour : colour;
-      ++inside;
+      sum += weight * cell_colour(c, at, allow_close_up);
+      weight_inside += weight;
     }
   }
-  any_inside = inside > 0;
-  return inside == 0 ? vec3(0.0) : bilinear ? sum : sum / float(inside);
+  any_inside = weight_inside > 0.0;
+  return any_inside ? sum / weight_inside : vec3(0.0);
 }
 
 void main() {
