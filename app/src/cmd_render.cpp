@@ -41,7 +41,7 @@ struct RenderArgs {
   std::string weights{util::name_of(kNodeWeightsNames, RenderSettings{}.node_weights)};
   std::string storage{util::name_of(kReflectanceStorageNames, RenderSettings{}.storage)};
   double thickness_scale_mm = RenderSettings{}.thickness_scale_mm;
-  bool saunderson = false;
+  bool no_saunderson = false;
   int threads = 0;
   std::string light_type{util::name_of(kLightTypeNames, RenderSettings{}.light_type)};
   double light_size_deg = RenderSettings{}.light_size_deg;
@@ -94,7 +94,7 @@ void run(const RenderArgs& args) {
   settings.node_weights = parse_node_weights(args.weights);
   settings.storage = parse_reflectance_storage(args.storage);
   settings.thickness_scale_mm = args.thickness_scale_mm;
-  settings.saunderson = args.saunderson;
+  settings.saunderson = !args.no_saunderson;
   settings.threads = args.threads;
   settings.light_type = parse_light_type(args.light_type);
   settings.light_size_deg = args.light_size_deg;
@@ -212,7 +212,8 @@ const CommandRegistrar registrar("render", [](CLI::App& root) {
   cmd->add_option("--thickness-scale", args->thickness_scale_mm,
                   "mm of paint per unit of K-M optical thickness")
       ->capture_default_str();
-  cmd->add_flag("--saunderson", args->saunderson, "Apply the Saunderson surface correction");
+  cmd->add_flag("--no-saunderson", args->no_saunderson,
+                "The bare K-M reflectance, without the paint's surface over it (Saunderson)");
   cmd->add_flag("--no-flakes", args->no_flakes, "Flake pigments without their sparkles");
   add_choice_option(*cmd, "--flake-depth", args->flake_depth, kFlakeDepthNames,
                     "Flake depth model (docs/flakes.md: Eq. 5 or Eq. 6)");

@@ -55,19 +55,32 @@ SwatchColour describe_colour(std::string label, data::Spectrum reflectance,
   return c;
 }
 
+data::Spectrum seen_through_surface(data::Spectrum inside) {
+  const data::Saunderson surface;
+  for (double& r : inside.values) r = surface.to_measured(r);
+  return inside;
+}
+
 std::vector<SwatchColour> standard_swatches(const data::Pigment& pigment,
                                             const data::Pigment& white,
                                             const data::Spectrum& light) {
+  const data::Saunderson surface;
+  const auto swatch = [&](std::string label, data::Spectrum inside) {
+    return describe_colour(std::move(label), seen_through_surface(std::move(inside)), light);
+  };
   std::vector<SwatchColour> out;
-  out.push_back(describe_colour("masstone", tint_reflectance(pigment, white, 0), light));
+  out.push_back(swatch("masstone", tint_reflectance(pigment, white, 0)));
   for (int parts : {1, 4, 9}) {
-    out.push_back(describe_colour("tint 1:" + std::to_string(parts),
-                                  tint_reflectance(pigment, white, parts), light));
+    out.push_back(
+        swatch("tint 1:" + std::to_string(parts), tint_reflectance(pigment, white, parts)));
   }
-  out.push_back(describe_colour(
-      "glaze over white", glaze_reflectance(pigment, kGlazeThickness, kGlazeWhiteGround), light));
-  out.push_back(describe_colour(
-      "glaze over black", glaze_reflectance(pigment, kGlazeThickness, kGlazeBlackGround), light));
+  // The grounds as measured, under the glaze as the paint sees them from inside.
+  out.push_back(
+      swatch("glaze over white",
+             glaze_reflectance(pigment, kGlazeThickness, surface.to_internal(kGlazeWhiteGround))));
+  out.push_back(
+      swatch("glaze over black",
+             glaze_reflectance(pigment, kGlazeThickness, surface.to_internal(kGlazeBlackGround))));
   return out;
 }
 

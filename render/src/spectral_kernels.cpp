@@ -112,7 +112,7 @@ void cells_to_xyz(const PaddedPalette& palette, float* reflectance, int count, f
     if (palette.saunderson) {
       for (int b = 0; b < padded; b += kLanes) {
         for (int i = 0; i < kLanes; ++i) {
-          r[b + i] = data::saunderson_to_measured(r[b + i], k1, k2);
+          r[b + i] = data::saunderson_body(r[b + i], k1, k2);
         }
       }
     }

@@ -408,6 +408,8 @@ void TileRenderer::shade_region(const paintcore::Canvas& canvas, int tile_index,
   const auto ambient = static_cast<float>(settings_.ambient);
   const auto k1 = static_cast<float>(settings_.saunderson_k1);
   const auto k2 = static_cast<float>(settings_.saunderson_k2);
+  // The sky's reflection in the paint's surface (shade::blinn_phong): k1 with the surface on.
+  const float sky = settings_.saunderson ? k1 : 0.0f;
   const shade::Vec3 to_light =
       shade::light_direction(static_cast<float>(settings_.light_azimuth_deg * kDegreesToRadians),
                              static_cast<float>(settings_.light_elevation_deg * kDegreesToRadians));
@@ -513,7 +515,7 @@ void TileRenderer::shade_region(const paintcore::Canvas& canvas, int tile_index,
           }
           if (relief_.occlusion) visibility.occlusion = relief::occlusion(field, gx, gy, relief_);
           const shade::Shading shading =
-              shade::blinn_phong(normal, to_light, ambient, material, visibility);
+              shade::blinn_phong(normal, to_light, ambient, material, visibility, sky);
           factors[0] = shading.diffuse;
           factors[1] = shading.specular;
           cache.shading_wet[cell] = wet_volume;
@@ -587,7 +589,7 @@ void TileRenderer::shade_region(const paintcore::Canvas& canvas, int tile_index,
       if (relief_.shadows) visibility.shadow = relief::shadow(field, gx, gy, max_height_, relief_);
       if (relief_.occlusion) visibility.occlusion = relief::occlusion(field, gx, gy, relief_);
       const shade::Shading shading =
-          shade::blinn_phong(normal, to_light, ambient, material, visibility);
+          shade::blinn_phong(normal, to_light, ambient, material, visibility, sky);
       float* out = &cache.rgb[3 * cell];
       if (surface_) {  // the ghs surface model (surface_shading.hpp) in place of Blinn-Phong
         surface_->shade(normal, to_light, visibility, wet_volume * inverse_gloss,

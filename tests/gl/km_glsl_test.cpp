@@ -142,7 +142,7 @@ void main() {
   float azimuth = 0.2 * float(x), elevation = 0.05 + 0.045 * float(y);
   vec3 l = vec3(cos(elevation) * cos(azimuth), cos(elevation) * sin(azimuth), sin(elevation));
   vec2 m = shade_blend(vec2(0.04, 12.0), vec2(0.35, 80.0), float(x - 8) / 16.0);
-  result = vec4(shade_blinn_phong(n, l, 0.25, m), l.x, l.z);
+  result = vec4(shade_blinn_phong(n, l, 0.25, m, vec2(1.0), 0.03), l.x, l.z);
 })glsl");
   double worst = 0.0;
   for (int y = 0; y < kKmGridSide; ++y) {
@@ -154,7 +154,7 @@ void main() {
       ASSERT_NEAR(p[2], l.x, 2e-6f);
       ASSERT_NEAR(p[3], l.z, 2e-6f);
       const shade::Material m = shade::blend({0.04f, 12.0f}, {0.35f, 80.0f}, float(x - 8) / 16.0f);
-      const shade::Shading cpu = shade::blinn_phong(n, l, 0.25f, m);
+      const shade::Shading cpu = shade::blinn_phong(n, l, 0.25f, m, {}, 0.03f);
       EXPECT_NEAR(p[0], cpu.diffuse, 1e-5f * std::max(1.0f, cpu.diffuse)) << x << "," << y;
       EXPECT_NEAR(p[1], cpu.specular, 1e-5f) << x << "," << y;
       worst = std::max(

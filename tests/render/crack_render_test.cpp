@@ -35,6 +35,10 @@ RenderSettings linear_matte() {
   // which agree bit for bit in uncracked cells with its weights (with the optimised rule's
   // they differ by float ulps, as spectral_kernels_test.cpp allows).
   settings.node_weights = NodeWeights::interpolatory;
+  // The cavity's reflectance as the model gives it: no paint surface over it (with the
+  // Saunderson correction, on by default, a black cavity shows k1 and the two paths' float
+  // divisions differ by ulps).
+  settings.saunderson = false;
   return settings;
 }
 

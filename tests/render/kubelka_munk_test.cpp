@@ -161,7 +161,16 @@ TEST(KubelkaMunkMix, ConcentrationsWeightCoefficients) {
 }
 
 TEST(KubelkaMunkSaunderson, FixesBlackAndWhiteEnds) {
-  EXPECT_FLOAT_EQ(km::saunderson(0.0f, 0.03f, 0.65f), 0.03f);
-  EXPECT_FLOAT_EQ(km::saunderson(1.0f, 0.03f, 0.65f), 1.0f);
+  // The body alone: black stays black (the surface's k1 is the specular term's), a perfect
+  // white loses only what the surface reflects, and no interface changes nothing.
+  EXPECT_FLOAT_EQ(km::saunderson(0.0f, 0.03f, 0.65f), 0.0f);
+  EXPECT_FLOAT_EQ(km::saunderson(1.0f, 0.03f, 0.65f), 0.97f);
   EXPECT_EQ(km::saunderson(0.4f, 0.0f, 0.0f), 0.4f);
+  // With the surface's reflection it is what an instrument reads, and the fit's inverse
+  // undoes it.
+  for (double r : {0.0, 0.05, 0.3, 0.9}) {
+    const double measured = impasto::data::saunderson_to_measured(r, 0.03, 0.65);
+    EXPECT_NEAR(measured, 0.03 + impasto::data::saunderson_body(r, 0.03, 0.65), 1e-15);
+    EXPECT_NEAR(impasto::data::saunderson_to_internal(measured, 0.03, 0.65), r, 1e-15);
+  }
 }

@@ -45,6 +45,9 @@ std::vector<Change> shading_changes() {
       {"shadow_light_diameter_deg", [](RenderSettings& s) { s.shadow_light_diameter_deg *= 4.0; }},
       {"shadow_reach_mm", [](RenderSettings& s) { s.shadow_reach_mm = 0.15; }},
       {"occlusion_radius_mm", [](RenderSettings& s) { s.occlusion_radius_mm *= 3.0; }},
+      // The sky's reflection in the paint's surface, and the body seen through it.
+      {"saunderson", [](RenderSettings& s) { s.saunderson = !s.saunderson; }},
+      {"saunderson_k1", [](RenderSettings& s) { s.saunderson_k1 += 0.01; }},
   };
 }
 
@@ -52,8 +55,6 @@ std::vector<Change> shading_changes() {
 std::vector<Change> colour_changes() {
   return {
       {"light", [](RenderSettings& s) { s.light = "A"; }},
-      {"saunderson", [](RenderSettings& s) { s.saunderson = !s.saunderson; }},
-      {"saunderson_k1", [](RenderSettings& s) { s.saunderson_k1 += 0.01; }},
       {"thickness_scale_mm", [](RenderSettings& s) { s.thickness_scale_mm *= 2.0; }},
       {"display", [](RenderSettings& s) { s.display = DisplayEncoding::linear_srgb; }},
   };
@@ -95,9 +96,7 @@ TEST(ShadingKey, TheCopyTakesEachShadingAndUniformSettingAndLeavesTheRest) {
                                            ? CrackModel::Gouffe
                                            : CrackModel::Corrected;
                      }});
-  for (const Change& change : colour_changes()) {
-    if (change.name.starts_with("saunderson")) changes.push_back(change);
-  }
+
   for (const Change& change : changes) {
     RenderSettings changed;
     change.apply(changed);

@@ -10,6 +10,7 @@
 #include "image_checks.hpp"
 #include "impasto/data/lights.hpp"
 #include "impasto/data/pigments.hpp"
+#include "impasto/render/kubelka_munk.hpp"
 #include "impasto/render/paint_layer.hpp"
 #include "three_pigment_palette.hpp"
 
@@ -62,20 +63,32 @@ TEST(TileRenderer, FlatPaintShowsItsKubelkaMunkColour) {
   renderer.render_all(canvas);
   const Image image = renderer.image();
 
-  // The expected colours, straight from the per-cell functions and the display transform.
+  // The expected colours, straight from the per-cell functions, the paint's surface (on by
+  // default: the body seen through it, and the ambient light's share of the sky reflected
+  // by it, k1, as white) and the display transform.
+  ASSERT_TRUE(settings.saunderson);
   const SpectralPalette& palette = renderer.palette();
   const DisplayTransform display(DisplayEncoding::srgb);
+  const auto k1 = static_cast<float>(settings.saunderson_k1);
+  const auto seen = [&](std::vector<float> reflectance, float* rgb) {
+    for (float& v : reflectance) {
+      v = km::saunderson(v, k1, static_cast<float>(settings.saunderson_k2));
+    }
+    node_reflectance_to_xyz(palette, reflectance.data(), rgb);
+    for (int c = 0; c < 3; ++c) {
+      rgb[c] += static_cast<float>(settings.ambient) * k1 * palette.white_xyz()[c];
+    }
+    display.apply(rgb, 1);
+  };
   std::vector<float> r(palette.ground(), palette.ground() + palette.nodes());
   float ground_rgb[3];
-  node_reflectance_to_xyz(palette, r.data(), ground_rgb);
-  display.apply(ground_rgb, 1);
+  seen(r, ground_rgb);
   const PigmentShare shares[2] = {{2, 0.2f}, {0, 0.3f}};
   // The painted cells hold 1 mm of paint: 1 / thickness_scale_mm units of optical depth.
   composite_paint_layer(palette, shares, static_cast<float>(1.0 / settings.thickness_scale_mm),
                         r.data());
   float paint_rgb[3];
-  node_reflectance_to_xyz(palette, r.data(), paint_rgb);
-  display.apply(paint_rgb, 1);
+  seen(r, paint_rgb);
 
   const float* paint = image.pixel(kTileSize + 10, 20);  // inside the paint, flat there
   const float* bare = image.pixel(5, 5);
@@ -91,6 +104,9 @@ TEST(TileRenderer, FlatPaintShowsItsKubelkaMunkColour) {
 
 TEST(TileRenderer, D65GroundOfPerfectWhiteIsDisplayWhite) {
   RenderSettings settings = matte_settings();
+  // Under a uniform sky: what the paint's surface does not let into the body (k1) it
+  // reflects, so a perfect white stays white (under a lamp that share goes to the highlight).
+  settings.ambient = 1.0;
   const data::Spectrum white{"white", {300.0, 900.0}, {1.0, 1.0}};
   for (int nodes : {1, 8, 16, 0}) {  // 0: every nanometre
     settings.wavelengths = nodes;

@@ -114,10 +114,15 @@ vec3 cell_normal(ivec2 cell) {
                              cell_mm);
 }
 
+// The share of a uniform sky the paint's surface reflects: k1 with the surface on
+// (saunderson_k.x < 0: off), as the CPU's TileRenderer passes shade::blinn_phong.
+float sky_reflectance() { return max(saunderson_k.x, 0.0); }
+
 // Colour, normal, wetness and relief light to a shaded colour (display XYZ, no sparkles).
 vec3 shade_surface(vec3 xyz, vec3 normal, float volume, vec2 visibility) {
   vec2 material = shade_blend(dry_material, wet_material, volume * inverse_gloss_mm);
-  vec2 shading = shade_blinn_phong(normal, to_light, ambient, material, visibility);
+  vec2 shading = shade_blinn_phong(normal, to_light, ambient, material, visibility,
+                                   sky_reflectance());
   return light_intensity * (xyz * shading.x + white_xyz * shading.y);
 }
 
@@ -158,7 +163,7 @@ vec3 cell_colour(ivec2 cell, vec2 cell_position, bool allow_close_up) {
     vec3 uncracked = shade_cell(xyz_uncracked, surface_xyz, normal, volume, visibility) + sparkles;
     vec4 inside = crack_close_up_colour(cell, canvas_cells, fract(cell_position), crack, cell_mm,
                                         uncracked, xyz_ground, to_light, ambient, dry_material,
-                                        white_xyz, light_intensity);
+                                        sky_reflectance(), white_xyz, light_intensity);
     shaded = inside.w > 0.0 ? inside.xyz : uncracked;
   }
   return subsurface_light(cell, shaded);

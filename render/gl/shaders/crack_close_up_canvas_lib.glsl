@@ -43,8 +43,8 @@ bool close_up_along_x(ivec2 cell, ivec2 cells) {
 // cell shaded as if uncracked; ground_reflectance_xyz: the ground's colour before shading.
 vec4 crack_close_up_colour(ivec2 cell, ivec2 cells, vec2 in_cell, vec4 crack, float cell_mm,
                            vec3 surface_xyz, vec3 ground_reflectance_xyz, vec3 to_light,
-                           float ambient, vec2 dry_material, vec3 white_xyz,
-                           float light_intensity) {
+                           float ambient, vec2 dry_material, float sky_reflectance,
+                           vec3 white_xyz, float light_intensity) {
   vec4 dims = texelFetch(crack_shapes, cell, 0);
   float code = abs(crack.w) - 1.0;
   int shape = int(floor(code / crack_table_stride));
@@ -57,7 +57,7 @@ vec4 crack_close_up_colour(ivec2 cell, ivec2 cells, vec2 in_cell, vec4 crack, fl
   if (crack.w > 0.0) {
     // A crack through the film shows the bare canvas, shaded as the CPU shades it.
     vec2 s = shade_blinn_phong(vec3(dims.z, dims.w, sqrt(max(0.0, 1.0 - dot(dims.zw, dims.zw)))),
-                               to_light, ambient, dry_material);
+                               to_light, ambient, dry_material, vec2(1.0), sky_reflectance);
     walls_xyz = light_intensity * (ground_reflectance_xyz * s.x + white_xyz * s.y);
   }
   vec3 walls = xyz_to_linear_rgb * walls_xyz;

@@ -25,9 +25,10 @@ float km_composite(vec2 layer, float below) {
   return layer.x + layer.y * layer.y * below / denominator;
 }
 
-// Reflectance seen from the air: k1 external, k2 internal surface reflection. The C++
-// reference is data::saunderson_to_measured (data/include/impasto/data/kubelka_munk.hpp),
-// which km::saunderson and the CPU kernels call.
+// The body's light leaving through the paint's surface: k1 external, k2 internal surface
+// reflection; the surface's own reflection (k1) is the shading's specular term. The C++
+// reference is data::saunderson_body (data/include/impasto/data/kubelka_munk.hpp), which
+// km::saunderson and the CPU kernels call.
 float km_saunderson(float R, float k1, float k2) {
-  return k1 + (1.0 - k1) * (1.0 - k2) * R / (1.0 - k2 * R);
+  return (1.0 - k1) * (1.0 - k2) * R / (1.0 - k2 * R);
 }

@@ -43,7 +43,16 @@ constexpr Real saunderson_to_measured(Real internal, Real k1, Real k2) {
   return k1 + (Real(1) - k1) * (Real(1) - k2) * internal / (Real(1) - k2 * internal);
 }
 
-// and its inverse, measured → body reflectance.
+// The body's share of it alone, (1 − k1)(1 − k2) R / (1 − k2 R): the light that crossed the
+// surface into the paint and back out, without the surface's own reflection k1. A renderer
+// whose surface model draws that reflection (a specular term, a Fresnel) adds this, so k1
+// is not counted twice; an instrument that includes the surface reads the two summed.
+template <std::floating_point Real>
+constexpr Real saunderson_body(Real internal, Real k1, Real k2) {
+  return (Real(1) - k1) * (Real(1) - k2) * internal / (Real(1) - k2 * internal);
+}
+
+// The inverse of saunderson_to_measured, measured → body reflectance.
 template <std::floating_point Real>
 constexpr Real saunderson_to_internal(Real measured, Real k1, Real k2) {
   return (measured - k1) / (Real(1) - k1 - k2 + k2 * measured);

@@ -81,13 +81,15 @@ inline void accumulate_pigment(float concentration, float pigment_absorption,
   scattering += concentration * pigment_scattering;
 }
 
-// Saunderson correction: the K-M reflectance inside the paint film seen from the air, with
-// k1 the external (front-surface) and k2 the internal reflection coefficient:
-//   R_measured = k1 + (1 − k1)(1 − k2) R / (1 − k2 R).
-// The Golden data in data/ are corrected for the interface; data::kSaundersonK1 and K2 undo
-// it. The formula is data::saunderson_to_measured, the K/S fit's, here on floats.
+// The paint's surface over its body (Saunderson), k1 the external (front-surface) and k2 the
+// internal reflection coefficient: the body's light as it leaves through the surface,
+//   (1 − k1)(1 − k2) R / (1 − k2 R),
+// without the surface's own reflection k1, which the shading's specular term draws (an
+// instrument that includes the surface reads k1 + this: data::saunderson_to_measured, the K/S
+// fit's). The K and S in data/ were fitted through this interface; data::kSaundersonK1 and
+// K2 are its coefficients. docs/rendering.md, "The paint's surface". Here on floats.
 inline float saunderson(float reflectance, float k1, float k2) {
-  return data::saunderson_to_measured(reflectance, k1, k2);
+  return data::saunderson_body(reflectance, k1, k2);
 }
 
 }  // namespace impasto::render::km

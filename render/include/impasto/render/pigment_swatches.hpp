@@ -2,7 +2,9 @@
 // A pigment's colours as a painter checks them (docs/pigments.md): the masstone, tints with
 // white and glazes over white and black, each as reflectance, XYZ, L*a*b* under a light and
 // sRGB (Bradford-adapted from the light's white to D65). Kubelka–Munk throughout: opaque
-// layers by R∞ of the concentration-weighted K and S, glazes as a finite layer on a ground.
+// layers by R∞ of the concentration-weighted K and S, glazes as a finite layer on a ground;
+// the swatches seen through the paint's surface as an instrument that includes it reads
+// them (data::Saunderson: the renderer's flat layer under a uniform sky).
 #include <array>
 #include <string>
 #include <vector>
@@ -23,7 +25,7 @@ struct SwatchColour {
 
 // Glazes: a layer of thickness X in the database's units (K·X and S·X; S of the reference
 // white = 1), thin enough to show the ground through most pigments. The grounds: white
-// R = 0.9 and black R = 0.04 at every wavelength.
+// R = 0.9 and black R = 0.04 at every wavelength, as measured (through the paint's surface).
 inline constexpr double kGlazeThickness = 0.5;
 inline constexpr double kGlazeWhiteGround = 0.9, kGlazeBlackGround = 0.04;
 
@@ -35,7 +37,10 @@ data::Spectrum tint_reflectance(const data::Pigment& pigment, const data::Pigmen
 data::Spectrum glaze_reflectance(const data::Pigment& pigment, double thickness, double ground);
 SwatchColour describe_colour(std::string label, data::Spectrum reflectance,
                              const data::Spectrum& light);
-// Masstone, tints 1:1, 1:4, 1:9, glazes over white and black.
+// A reflectance inside the paint (tint_reflectance, glaze_reflectance) as measured through
+// its surface: data::Saunderson's k1 + body.
+data::Spectrum seen_through_surface(data::Spectrum inside);
+// Masstone, tints 1:1, 1:4, 1:9, glazes over white and black, seen through the surface.
 std::vector<SwatchColour> standard_swatches(const data::Pigment& pigment,
                                             const data::Pigment& white,
                                             const data::Spectrum& light);

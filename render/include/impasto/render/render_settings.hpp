@@ -60,9 +60,12 @@ struct RenderSettings {
   double thickness_scale_mm = 0.005;
   // The canvas ground (gesso) reflectance; unset: R∞ of the palette's "Titanium White".
   std::optional<data::Spectrum> ground;
-  // Saunderson surface correction of the top reflectance (off: the data are interface-
-  // corrected K-M values, and the specular term already shows the surface).
-  bool saunderson = false;
+  // The paint's surface over its body (Saunderson; km::saunderson): the K-M reflectance as
+  // it leaves through the surface, the surface's own reflection left to the specular term.
+  // On: the bundled K and S were fitted through this interface, and a flat layer of what a
+  // fit was given renders back its measurement (tests/render/measured_paint_test.cpp). Off:
+  // the bare K-M reflectance, as before 2026-12-06 (mid-tones some 9 dE00 too light).
+  bool saunderson = true;
   double saunderson_k1 = data::kSaundersonK1;  // the paint-air interface's defaults, as
   double saunderson_k2 = data::kSaundersonK2;  // the K/S fit takes them
 

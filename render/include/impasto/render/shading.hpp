@@ -65,12 +65,16 @@ struct Visibility {
 inline constexpr float kOcclusionDirectShare = 0.3f;
 
 // Lambert plus ambient, normalised so that flat canvas shows its K-M reflectance exactly
-// (the K-M data describe paint seen at the light's elevation), plus Blinn-Phong specular
-// for a viewer straight above (view vector +z). The relief's shadow dims the direct light
-// and its highlight; its occlusion dims the ambient light and, by kOcclusionDirectShare,
-// the direct light (both 1 leave the terms as they are, bit for bit).
+// (the K-M data describe paint seen at the light's elevation), plus the surface's own light:
+// Blinn-Phong specular of the direct light (its share, 1 - ambient) for a viewer straight
+// above (view vector +z), and `sky_reflectance` of the ambient light, the share of a uniform
+// sky the surface reflects (the paint's k1 when its body is seen through its surface,
+// RenderSettings::saunderson; 0: none). Under a uniform sky a flat layer so shows body + k1,
+// what an instrument that includes the surface reads. The relief's shadow dims the direct
+// light and its highlight; its occlusion dims the ambient light and its reflection and, by
+// kOcclusionDirectShare, the direct light (both 1 leave the terms as they are, bit for bit).
 inline Shading blinn_phong(Vec3 normal, Vec3 to_light, float ambient, Material material,
-                           Visibility visibility = {}) {
+                           Visibility visibility = {}, float sky_reflectance = 0.0f) {
   const float flat_lambert = std::max(to_light.z, 0.05f);
   const float lambert = std::max(dot(normal, to_light), 0.0f) / flat_lambert;
   const Vec3 half_vector = normalized_or_up({to_light.x, to_light.y, to_light.z + 1.0f});
@@ -81,7 +85,8 @@ inline Shading blinn_phong(Vec3 normal, Vec3 to_light, float ambient, Material m
   const float direct =
       visibility.shadow * (1.0f - kOcclusionDirectShare * (1.0f - visibility.occlusion));
   return {ambient * visibility.occlusion + (1.0f - ambient) * lambert * direct,
-          specular * visibility.shadow};
+          (1.0f - ambient) * specular * visibility.shadow +
+              ambient * sky_reflectance * visibility.occlusion};
 }
 
 }  // namespace impasto::render::shade

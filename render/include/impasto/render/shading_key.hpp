@@ -26,11 +26,14 @@ void for_each_shading_setting(Visit&& visit) {
   visit(&RenderSettings::shadow_light_diameter_deg);
   visit(&RenderSettings::shadow_reach_mm);
   visit(&RenderSettings::occlusion_radius_mm);
+  // The sky's reflection in the paint's surface (k1 when on; shade::blinn_phong).
+  visit(&RenderSettings::saunderson);
+  visit(&RenderSettings::saunderson_k1);
 }
 
 // The colour settings the window's shader reads as uniforms, which it takes with the shading
 // (render_gl::CanvasRenderer::set_shading) rather than with a new palette: the Saunderson
-// interface and the crack correction.
+// interface (also in the list above: the sky's reflection) and the crack correction.
 template <class Visit>
 void for_each_shader_colour_setting(Visit&& visit) {
   visit(&RenderSettings::saunderson);

@@ -1,0 +1,109 @@
+// Measured paint given back: a flat, fully covering layer of each mixture a K/S fit was given
+// renders within 1 CIEDE2000 of its measurement, under the instrument's geometry. The mixtures are
+// data/measurements/golden_synthetic_mixtures.csv: drawdowns of the bundled pigments as an
+// instrument that includes the surface's reflection reads them (Saunderson k1 0.03, k2 0.65),
+// under D65. This is what decides how the renderer models the paint's surface.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <iostream>
+#include <numeric>
+#include <string>
+#include <vector>
+
+#include "impasto/data/colorimetry.hpp"
+#include "impasto/data/data_dir.hpp"
+#include "impasto/data/ks_fit.hpp"
+#include "impasto/data/lights.hpp"
+#include "impasto/render/display.hpp"
+#include "impasto/render/tile_renderer.hpp"
+
+namespace impasto::render {
+namespace {
+
+using paintcore::kTileSize;
+
+// One flat tile holding `depth_mm` of the mixture (concentrations by volume), no weave.
+paintcore::Canvas flat_layer(const std::vector<double>& concentrations, float depth_mm) {
+  const int slots = static_cast<int>(concentrations.size());
+  paintcore::Canvas canvas({kTileSize, kTileSize, 254.0, 0});
+  paintcore::Tile& tile = canvas.ensure_tile(0, slots);
+  const double total = std::accumulate(concentrations.begin(), concentrations.end(), 0.0);
+  tile.wet_volume_mm.fill(depth_mm);
+  for (int s = 0; s < slots; ++s) {
+    const auto amount =
+        static_cast<float>(depth_mm * concentrations[static_cast<std::size_t>(s)] / total);
+    std::fill_n(tile.pigment(s), paintcore::kTileCells, amount);
+  }
+  return canvas;
+}
+
+struct Errors {
+  double mean = 0.0, max = 0.0;
+  std::string worst;
+};
+
+// Each sample's flat layer rendered with `settings` (display linear sRGB) against its
+// measured reflectance, both as CIELAB under D65.
+Errors rendered_against_measured(RenderSettings settings, const data::KsFitProblem& problem) {
+  settings.display = DisplayEncoding::linear_srgb;
+  const data::Spectrum d65 = data::light_from_spec("D65");
+  const data::Xyz white = data::white_point(d65);
+  const auto to_xyz = invert_3x3(xyz_to_linear_srgb());
+  TileRenderer renderer(settings, problem.pigment_names);
+  Errors errors;
+  for (const data::KsSample& sample : problem.samples) {
+    renderer.render_all(flat_layer(sample.concentrations, 2.0f));  // 400 optical units: opaque
+    const float* rgb = renderer.image().pixel(kTileSize / 2, kTileSize / 2);
+    data::Xyz rendered;
+    double* out[3] = {&rendered.X, &rendered.Y, &rendered.Z};
+    for (int i = 0; i < 3; ++i) {
+      *out[i] = 100.0 * (to_xyz[static_cast<std::size_t>(3 * i)] * rgb[0] +
+                         to_xyz[static_cast<std::size_t>(3 * i + 1)] * rgb[1] +
+                         to_xyz[static_cast<std::size_t>(3 * i + 2)] * rgb[2]);
+    }
+    const double de =
+        data::ciede2000(data::xyz_to_lab(rendered, white),
+                        data::xyz_to_lab(data::reflectance_to_xyz(sample.reflectance, d65), white));
+    errors.mean += de / static_cast<double>(problem.samples.size());
+    if (de > errors.max) {
+      errors.max = de;
+      errors.worst = sample.name;
+    }
+  }
+  return errors;
+}
+
+TEST(MeasuredPaint, AFlatOpaqueLayerRendersBackItsMeasurement) {
+  const data::KsFitProblem problem = data::read_ks_measurements(data::data_dir() / "measurements" /
+                                                                "golden_synthetic_mixtures.csv");
+  ASSERT_GE(problem.samples.size(), 10u);
+  // The instrument's geometry: the light from the whole sky (an integrating sphere), the
+  // surface's reflection read with the body's. Everything else as by default.
+  RenderSettings defaults;
+  defaults.ambient = 1.0;
+  RenderSettings without_surface = defaults;
+  without_surface.saunderson = false;
+  RenderSettings full_spectrum = defaults;
+  full_spectrum.wavelengths = 0;
+  const Errors now = rendered_against_measured(defaults, problem);
+  const Errors exact = rendered_against_measured(full_spectrum, problem);
+  const Errors bare = rendered_against_measured(without_surface, problem);
+  // Under the default light (a quarter from the sky, the rest from 30 degrees off the
+  // viewer): the highlight's white in place of the sky's.
+  const Errors lamp = rendered_against_measured(RenderSettings{}, problem);
+  std::cout << "[ measured ] dE00 mean / max over " << problem.samples.size()
+            << " samples: default " << now.mean << " / " << now.max << " (" << now.worst
+            << "); full spectrum " << exact.mean << " / " << exact.max << " (" << exact.worst
+            << "); no surface correction " << bare.mean << " / " << bare.max << " (" << bare.worst
+            << ")\n";
+  // The surface's model, judged on the full spectrum: every sample within 1 dE00.
+  EXPECT_LT(exact.max, 1.0) << exact.worst;
+  // The default 8 nodes add their own error (their rule is trained on the bare K-M
+  // reflectance, not through the surface: up to 1.9 on the blue masstone, docs/rendering.md).
+  EXPECT_LT(now.mean, 0.5);
+  EXPECT_GT(bare.mean, 3.0);  // the test can tell the surface's model apart
+}
+
+}  // namespace
+}  // namespace impasto::render
