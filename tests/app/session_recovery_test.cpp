@@ -8,6 +8,7 @@
 #include <unistd.h>
 #include <impasto/input/stroke_file.hpp>
 
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -185,6 +186,43 @@ TEST(SessionRegistry, AnEntryIsOfferedOnlyOnceItsSessionIsGone) {
     live.end_cleanly();
   }
   EXPECT_TRUE(unfinished_sessions(dir.path()).empty()) << "a cleanly ended session was offered";
+}
+
+// Another window (another process) holding a painting is found by the file, whatever path
+// names it; this process's own sessions and other paintings are not; once that process is gone
+// its entry is an unfinished session, no longer a running one.
+TEST(SessionRegistry, AnotherProcessWithThePaintingOpenIsFound) {
+  TempDir dir("impasto_registry_others");
+  const fs::path painting = dir.path() / "shared.impasto";
+  std::ofstream(painting) << "x";
+  LiveSession mine(dir.path(), "mine", painting, dir.path() / "mine.strokes");
+  int ready[2];
+  ASSERT_EQ(::pipe(ready), 0);
+  const pid_t other = ::fork();
+  ASSERT_GE(other, 0);
+  if (other == 0) {
+    // The other window: through another spelling of the same path.
+    LiveSession theirs(dir.path(), "theirs", dir.path() / "." / "shared.impasto",
+                       dir.path() / "theirs.strokes");
+    LiveSession elsewhere(dir.path(), "elsewhere", dir.path() / "other.impasto",
+                          dir.path() / "elsewhere.strokes");
+    const char byte = 1;
+    if (::write(ready[1], &byte, 1) != 1) ::_exit(1);
+    ::pause();
+    ::_exit(0);
+  }
+  char byte = 0;
+  ASSERT_EQ(::read(ready[0], &byte, 1), 1);
+  const std::vector<SessionEntry> found = other_sessions_with(dir.path(), painting);
+  ::kill(other, SIGKILL);
+  ::waitpid(other, nullptr, 0);
+  ::close(ready[0]);
+  ::close(ready[1]);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].id, "theirs");
+  EXPECT_EQ(found[0].pid, static_cast<long>(other));
+  EXPECT_TRUE(other_sessions_with(dir.path(), painting).empty()) << "a dead window still counted";
+  EXPECT_EQ(unfinished_sessions(dir.path()).size(), 2u);
 }
 
 // A short session: a loaded brush and a few strokes on a small canvas.

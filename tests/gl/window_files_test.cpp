@@ -1,7 +1,8 @@
 // The window's file dialog, unsaved-changes prompt and notifications, under Xvfb, driven by
 // real input events (xdotool): Save as saves where the dialog says and asks before replacing
 // a file, the quit prompt's Save / Discard / Cancel do what they say, and a file that cannot
-// be opened shows as an error notification. What the window shows is read from its title
+// be opened shows as an error notification, and Save asks before replacing a file another
+// window saved meanwhile. What the window shows is read from its title
 // and from screenshots of it (import).
 #include <gtest/gtest.h>
 
@@ -12,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "impasto/paintcore/painting.hpp"
 #include "window_driver.hpp"
 
 namespace {
@@ -251,6 +253,54 @@ TEST(WindowFiles, AnErrorShowsAsANotification) {
   window.tap(kAcceptX, kAcceptY);
   EXPECT_TRUE(wait_for([&] { return red_pixels() > 3000; })) << "no error notification";
   EXPECT_EQ(window.title(), "Untitled \u2014 Impasto");  // nothing was opened
+  fs::remove_all(home);
+}
+
+
+// One painting saved from two places: Save notices that the file changed on disk since this
+// window opened it and asks (Overwrite, Save as..., Reload, Cancel) instead of replacing the
+// other's work. Cancel keeps it; Overwrite replaces it; the window's own save is then known,
+// and the next Save goes straight through.
+TEST(WindowFiles, SaveAsksWhenTheFileChangedOnDisk) {
+  ASSERT_NE(std::getenv("DISPLAY"), nullptr) << "run under xvfb-run -a";
+  if (!have_xdotool()) GTEST_SKIP() << "xdotool or ImageMagick's import is not installed";
+  const fs::path home = test_dir("impasto_window_changed_on_disk");
+  const fs::path shared = home / "shared.impasto";
+  impasto::paintcore::Painting({96, 64, 150.0, 0}).save(shared);
+  Window window(home, at_home({shared.string()}));
+  ASSERT_TRUE(window.up());
+  EXPECT_EQ(window.title(), "shared.impasto \u2014 Impasto");
+
+  // Another window saves its own painting over the file.
+  impasto::paintcore::Painting({128, 96, 150.0, 0}).save(shared);
+  const std::string theirs = read_text(shared);
+  paint(window, 300);
+  ASSERT_TRUE(wait_for([&] { return window.title().starts_with("\u2022 shared"); }));
+  window.key("ctrl+s");
+  std::vector<Button> prompt;  // Overwrite, Save as..., Reload, Cancel
+  ASSERT_TRUE(wait_for([&] { return (prompt = buttons_near_centre(window)).size() == 4; }))
+      << "Save replaced a file changed on disk without asking";
+  EXPECT_EQ(read_text(shared), theirs);
+  window.tap(prompt[3].x, prompt[3].y);  // Cancel: their painting stays
+  ASSERT_TRUE(wait_for([&] { return buttons_near_centre(window).empty(); }));
+  EXPECT_EQ(read_text(shared), theirs);
+  EXPECT_TRUE(window.title().starts_with("\u2022 shared")) << window.title();
+
+  window.key("ctrl+s");
+  ASSERT_TRUE(wait_for([&] { return (prompt = buttons_near_centre(window)).size() == 4; }));
+  window.tap(prompt[0].x, prompt[0].y);  // Overwrite
+  ASSERT_TRUE(wait_for([&] { return window.title() == "shared.impasto \u2014 Impasto"; }))
+      << window.title();
+  EXPECT_NE(read_text(shared), theirs);
+  EXPECT_EQ(impasto::paintcore::Painting::load(shared).canvas().width_cells(), 96);
+
+  // Its own save is known: the next Save asks nothing.
+  paint(window, 420);
+  ASSERT_TRUE(wait_for([&] { return window.title().starts_with("\u2022 shared"); }));
+  window.key("ctrl+s");
+  EXPECT_TRUE(wait_for([&] { return window.title() == "shared.impasto \u2014 Impasto"; }))
+      << window.title();
+  EXPECT_TRUE(buttons_near_centre(window).empty());
   fs::remove_all(home);
 }
 

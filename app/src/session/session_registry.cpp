@@ -98,8 +98,12 @@ void LiveSession::end_cleanly() {
   fd_ = -1;
 }
 
-std::vector<SessionEntry> unfinished_sessions(const std::filesystem::path& folder,
-                                              std::vector<std::string>* problems) {
+namespace {
+
+// The entries in `folder` whose lock is held (`held`: running sessions) or free (unfinished
+// ones), newest first.
+std::vector<SessionEntry> entries(const std::filesystem::path& folder, bool held,
+                                  std::vector<std::string>* problems) {
   std::vector<std::pair<std::filesystem::file_time_type, SessionEntry>> found;
   std::error_code error;
   for (const auto& item : std::filesystem::directory_iterator(folder, error)) {
@@ -117,7 +121,7 @@ std::vector<SessionEntry> unfinished_sessions(const std::filesystem::path& folde
     // A running session holds its entry's lock; the lock of a dead one is gone with it.
     const bool live = ::flock(fd, LOCK_SH | LOCK_NB) != 0;
     std::string text;
-    if (!live) {
+    if (live == held) {
       char buffer[4096];
       ssize_t n = 0;
       while ((n = ::read(fd, buffer, sizeof buffer)) > 0 && text.size() < 65536) {
@@ -125,7 +129,7 @@ std::vector<SessionEntry> unfinished_sessions(const std::filesystem::path& folde
       }
     }
     ::close(fd);
-    if (live) continue;
+    if (live != held) continue;
     try {
       SessionEntry entry = parse_entry(item.path(), text);
       std::error_code time_error;
@@ -141,6 +145,29 @@ std::vector<SessionEntry> unfinished_sessions(const std::filesystem::path& folde
   std::vector<SessionEntry> sessions;
   for (auto& [when, entry] : found) sessions.push_back(std::move(entry));
   return sessions;
+}
+
+}  // namespace
+
+std::vector<SessionEntry> unfinished_sessions(const std::filesystem::path& folder,
+                                              std::vector<std::string>* problems) {
+  return entries(folder, false, problems);
+}
+
+std::vector<SessionEntry> other_sessions_with(const std::filesystem::path& folder,
+                                              const std::filesystem::path& painting) {
+  std::vector<SessionEntry> others;
+  std::error_code error;
+  const auto wanted = std::filesystem::weakly_canonical(painting, error);
+  for (SessionEntry& entry : entries(folder, true, nullptr)) {
+    if (entry.pid == static_cast<long>(::getpid()) || !entry.painting) continue;
+    std::error_code entry_error;
+    if (std::filesystem::weakly_canonical(*entry.painting, entry_error) == wanted && !error &&
+        !entry_error) {
+      others.push_back(std::move(entry));
+    }
+  }
+  return others;
 }
 
 bool has_work_to_recover(const SessionEntry& session) {

@@ -47,6 +47,11 @@ class LiveSession {
 std::vector<SessionEntry> unfinished_sessions(const std::filesystem::path& folder,
                                               std::vector<std::string>* problems = nullptr);
 
+// The running sessions of other processes (other windows) that opened `painting`, the same
+// file by its canonical path: a window opening it says so.
+std::vector<SessionEntry> other_sessions_with(const std::filesystem::path& folder,
+                                              const std::filesystem::path& painting);
+
 // Whether an unfinished session holds anything to recover: an autosave, or a recording with
 // more than its header (canvas, brush, where it began). An unreadable recording counts.
 bool has_work_to_recover(const SessionEntry& session);

@@ -33,7 +33,9 @@
 #include <thread>
 #include <utility>
 
+#include "impasto/files/message_text.hpp"
 #include "latency_lines.hpp"
+#include "session/disk_stamp.hpp"
 #include "session/preview.hpp"
 #include "session/rebuild.hpp"
 #include "session/recovery_folder.hpp"
@@ -157,6 +159,7 @@ class PaintWindow {
  private:
   void create_window();
   void start_session();
+  void opened_file(const std::filesystem::path& file);
   void sync_gpu();
   void handle_canvas_input();
   void handle_shortcuts();
@@ -477,14 +480,10 @@ void PaintWindow::start_session() {
     if (strokes) return paintcore::Painting(replay_canvas(*strokes, ReplayOptions{}));
     return paintcore::Painting(options_.new_canvas);
   }();
-  if (options_.painting) {
-    state_.file = options_.painting;
-    remember_recent_file(*options_.painting);
-    state_.recent = load_recent_files();
-  }
   open_board_for(options_.painting);
   worker_ = std::make_unique<SimWorker>(std::move(painting),
                                         begin_session(options_.painting, options_.painting));
+  if (options_.painting) opened_file(*options_.painting);
   // Sessions that did not end cleanly are offered for recovery (not in scripted replays).
   if (!options_.replay) {
     try {
@@ -520,6 +519,27 @@ void PaintWindow::start_session() {
     }
     worker_->finish_stroke();
     worker_->set_auto_load(false);
+  }
+}
+
+// The window now shows `file` as it is on disk: its name, its stamp (Save asks before
+// replacing what another window saves over it later), the recent list; and a word when
+// another window has it open too.
+void PaintWindow::opened_file(const std::filesystem::path& file) {
+  state_.file = file;
+  state_.file_stamp = stamp_of(file);
+  remember_recent_file(file);
+  state_.recent = load_recent_files();
+  try {
+    for (const SessionEntry& other : other_sessions_with(recovery_folder(), file)) {
+      state_.notifications.warning(files::terminal_text(file.filename().string()) +
+                                   " is open in another Impasto window too (process " +
+                                   std::to_string(other.pid) +
+                                   "): Save asks before replacing what either saves.");
+      break;
+    }
+  } catch (const std::exception&) {
+    // no recovery folder: no other window can be known
   }
 }
 
@@ -906,10 +926,11 @@ void PaintWindow::update_pick_cursor() {
 
 FileActions PaintWindow::file_actions() {
   FileActions actions;
-  actions.save = [this](const std::filesystem::path& file) {
+  actions.save_over = [this](const std::filesystem::path& file) {
     try {
       worker_->save(file);
       state_.file = file;
+      state_.file_stamp = stamp_of(file);
       remember_recent_file(file);
       state_.recent = load_recent_files();
     } catch (const std::exception& e) {
@@ -925,6 +946,14 @@ FileActions PaintWindow::file_actions() {
     }
     state_.notifications.info("Saved " + file.string());
     return true;
+  };
+  actions.save = [this, save_over = actions.save_over](const std::filesystem::path& file) {
+    // Over the file this window read or wrote, changed since: ask before replacing that work.
+    if (state_.file && file == *state_.file && changed_on_disk(file, state_.file_stamp)) {
+      state_.ask_changed_on_disk = true;
+      return false;
+    }
+    return save_over(file);
   };
   actions.export_image = [this](const std::filesystem::path& file) {
     try {
@@ -971,9 +1000,7 @@ void PaintWindow::run_pending_action() {
         end_session();
         worker_->replace_painting(std::move(opened), begin_session(file, file));
         open_board_for(file);
-        state_.file = file;
-        remember_recent_file(file);
-        state_.recent = load_recent_files();
+        opened_file(file);
         state_.notifications.info("Opened " + file.string());
         worker_->with_painting([&](const paintcore::Painting& p) {
           if (!p.load_warning().empty()) state_.notifications.warning(p.load_warning());

@@ -115,6 +115,49 @@ void unsaved_prompt(PanelContext& c) {
   ImGui::EndPopup();
 }
 
+// Save found the painting's file changed on disk since this window read or wrote it (another
+// window, or another program, saved it): Overwrite it, Save as another file, Reload it (this
+// window's unsaved paint is dropped) or Cancel.
+void changed_on_disk_prompt(PanelContext& c) {
+  WindowState& s = c.state;
+  if (s.ask_changed_on_disk) {
+    ImGui::OpenPopup("Changed on disk");
+    s.ask_changed_on_disk = false;
+  }
+  if (!ImGui::BeginPopupModal("Changed on disk", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    return;
+  }
+  const std::string name =
+      s.file ? files::terminal_text(s.file->filename().string()) : std::string("The painting");
+  ImGui::Text("%s changed on disk since this window opened or saved it.", name.c_str());
+  ImGui::TextDisabled("Another window or program saved it. Overwrite replaces that work.");
+  ImGui::Spacing();
+  const ImVec2 button(100.0f, 0.0f);
+  if (ImGui::Button("Overwrite", button)) {
+    ImGui::CloseCurrentPopup();
+    if (s.file) c.files.save_over(*s.file);
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Save as...", button)) {
+    ImGui::CloseCurrentPopup();
+    s.file_browser.open(browser_request(FilePurpose::kSavePainting, s));
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Reload", button)) {
+    ImGui::CloseCurrentPopup();
+    if (s.file) {
+      s.pending = PendingAction::kOpen;  // the user chose to drop this window's paint
+      s.pending_path = *s.file;
+      s.pending_confirmed = true;
+    }
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Cancel", button) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::EndPopup();
+}
+
 void file_menu(PanelContext& c) {
   WindowState& s = c.state;
   const bool unsaved = c.worker.stats().events_since_save > 0;
@@ -214,6 +257,7 @@ void file_menu(PanelContext& c) {
   }
 
   unsaved_prompt(c);
+  changed_on_disk_prompt(c);
 
   const FileBrowserResult chosen = s.file_browser.draw();
   const bool continuing = std::exchange(
@@ -224,7 +268,8 @@ void file_menu(PanelContext& c) {
         ask(PendingAction::kOpen, chosen.file);
         break;
       case FilePurpose::kSavePainting: {
-        const bool saved = c.files.save(chosen.file);
+        // The dialog asked before replacing a file that is there.
+        const bool saved = c.files.save_over(chosen.file);
         // Saved for the prompt's sake: its action goes on; not saved: nothing is discarded.
         if (continuing && saved) s.pending_confirmed = true;
         if (continuing && !saved) s.pending = PendingAction::kNone;

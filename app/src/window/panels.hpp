@@ -28,7 +28,11 @@ struct PaintingSnapshot {
 struct FileActions {
   std::function<void()> new_painting;  // uses state.new_*
   std::function<void(const std::filesystem::path&)> open;
-  std::function<bool(const std::filesystem::path&)> save;          // false: failed (and said why)
+  // false: not saved (said why, or the file changed on disk since this window read or wrote
+  // it: state.ask_changed_on_disk, and the window asks).
+  std::function<bool(const std::filesystem::path&)> save;
+  // Saves whatever is on disk: the user chose to replace it (the dialog or the prompt asked).
+  std::function<bool(const std::filesystem::path&)> save_over;
   std::function<void(const std::filesystem::path&)> export_image;  // .png or .exr
 };
 

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "session/disk_stamp.hpp"
 #include "window/brush_presets.hpp"
 #include "window/eyedropper.hpp"
 #include "window/file_browser.hpp"
@@ -111,6 +112,8 @@ struct WindowState {
 
   // --- files ---
   std::optional<std::filesystem::path> file;  // the painting's file, once saved or opened
+  std::optional<DiskStamp> file_stamp;        // that file as this window last read or wrote it
+  bool ask_changed_on_disk = false;           // Save found `file` changed since: ask what to do
   std::vector<std::filesystem::path> recent;
   PendingAction pending = PendingAction::kNone;
   bool pending_confirmed = false;    // no unsaved changes, or the user said to go ahead
