@@ -3,6 +3,8 @@
 // the heading of a brush that trails the hand.
 #include <array>
 
+#include "impasto/paintcore/brush_pose.hpp"  // follow_heading, heading_for_travel
+
 namespace impasto::paintcore {
 
 // A cubic Hermite segment from `from` to `to` (canvas cells). Its tangent at `from` points
@@ -27,13 +29,5 @@ class StrokeSegment {
   bool straight_ = true;
   std::array<double, kChords + 1> lengths_{};  // arc length from `from` at t = k / kChords
 };
-
-// The heading (radians) of a head that trails the hand: after moving distance d along
-// travel direction `travel_rad`, it turns by 1 - exp(-d / follow_length) of the way to
-// the heading that puts the head's +v axis along the travel. Heads are symmetric under a half
-// turn, so it turns the short way modulo pi (a brush drawn back does not flip over).
-double follow_heading(double heading_rad, double travel_rad, double distance, double follow_length);
-// The heading that puts the head's +v axis along the travel direction.
-double heading_for_travel(double travel_rad);
 
 }  // namespace impasto::paintcore

@@ -1,7 +1,7 @@
 // The window's everyday tools end to end, under Xvfb, driven by real X input (xdotool): the
 // eyedropper picks the paint of a stroke and loads the brush with it, Ctrl+S saves the
-// painting (with that brush), and a brush preset saved in the window is read back by the
-// next window and applied.
+// painting (with that brush), a brush preset saved in the window is read back by the next
+// window and applied, and the brush's outline follows the pointer over the canvas.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -228,6 +228,46 @@ TEST(WindowTools, APresetSavedInTheWindowIsReadBackByTheNextWindowAndApplied) {
   }
   ASSERT_TRUE(applied) << read_text(recording);
   EXPECT_EQ(brushes.back(), knife_brush);
+  fs::remove_all(dir);
+}
+
+// The brush on the canvas: its outline follows the pointer over the canvas (a ring of the
+// round head's size around it, nothing elsewhere), and goes when the pointer is over a panel.
+TEST(WindowTools, TheBrushOutlineFollowsThePointerOverTheCanvas) {
+  ASSERT_NE(std::getenv("DISPLAY"), nullptr) << "run under xvfb-run -a";
+  if (!have_xdotool()) GTEST_SKIP() << "xdotool or ImageMagick's import is not installed";
+  const fs::path dir = test_dir("impasto_window_outline");
+  Window window(dir, dir / "outline.strokes", {});
+  ASSERT_TRUE(window.up()) << "the window did not open";
+  // Dark pixels on the bare (near-white) canvas: near the point, and anywhere else on it.
+  const auto dark_pixels = [&](int px, int py, int& near, int& elsewhere) {
+    const impasto::render::Image s = window.screenshot();
+    near = elsewhere = 0;
+    if (s.width != 1000 || s.height != 700) return false;
+    for (int y = 135; y < 565; ++y) {
+      for (int x = 30; x < 610; ++x) {
+        const float* p = s.pixel(x, y);
+        if (p[0] + p[1] + p[2] > 1.2f) continue;
+        (std::hypot(x - px, y - py) < 25.0 ? near : elsewhere) += 1;
+      }
+    }
+    return true;
+  };
+  int near = 0, elsewhere = 0;
+  for (const auto& [x, y] : {std::pair{300, 350}, std::pair{450, 250}}) {
+    window.move(x - 6, y - 3);
+    window.move(x, y);
+    // (Until the canvas is shown, the window's background is dark everywhere.)
+    EXPECT_TRUE(wait_for([&] {
+      return dark_pixels(x, y, near, elsewhere) && near > 20 && near < 600 && elsewhere == 0;
+    })) << "no ring around the pointer at "
+        << x << "," << y << " alone (" << near << " dark pixels within 25 px, " << elsewhere
+        << " elsewhere)";
+  }
+  window.move(800, 300);  // over the palette panel
+  EXPECT_TRUE(wait_for([&] { return dark_pixels(450, 250, near, elsewhere) && near == 0; }))
+      << "the outline stayed on the canvas with the pointer over a panel";
+  EXPECT_EQ(elsewhere, 0);
   fs::remove_all(dir);
 }
 

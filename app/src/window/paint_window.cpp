@@ -41,6 +41,8 @@
 #include "session/recovery_folder.hpp"
 #include "session/session_registry.hpp"
 #include "session/session_start.hpp"
+#include "window/brush_outline.hpp"
+#include "window/brush_outline_overlay.hpp"
 #include "window/canvas_menu.hpp"
 #include "window/edit_help_menus.hpp"
 #include "window/eyedropper.hpp"
@@ -160,6 +162,7 @@ class PaintWindow {
   void create_window();
   void start_session();
   void opened_file(const std::filesystem::path& file);
+  void draw_brush_at(const PaintingSnapshot& painting, double x, double y);
   void sync_gpu();
   void handle_canvas_input();
   void handle_shortcuts();
@@ -254,8 +257,10 @@ class PaintWindow {
     bool repeat;
   };
   std::vector<KeyPress> key_presses_;
-  PickGesture pick_gesture_;  // the eyedropper's presses on the canvas
-  bool pick_cursor_ = false;  // the cursor is the eyedropper's this frame
+  PickGesture pick_gesture_;        // the eyedropper's presses on the canvas
+  bool pick_cursor_ = false;        // the cursor is the eyedropper's this frame
+  BrushOutline brush_outline_;      // the brush at the pointer
+  bool pointer_on_canvas_ = false;  // no panel, menu or dialog at the pointer
   GLFWcursor* crosshair_ = nullptr;
   std::string head_before_knife_ = "round";  // where B returns to from the knife (K)
   int window_w_ = 0, window_h_ = 0;          // this frame's window size
@@ -543,6 +548,17 @@ void PaintWindow::opened_file(const std::filesystem::path& file) {
   }
 }
 
+// The brush's outline at the pointer (window pixels), unless a panel, menu or dialog has it.
+void PaintWindow::draw_brush_at(const PaintingSnapshot& painting, double x, double y) {
+  const bool in_window = x >= 0.0 && y >= 0.0 && x < window_w_ && y < window_h_;
+  if (!in_window || !pointer_on_canvas_ || painting.brush_cells < 1) return;
+  const auto cell = state_.view.window_to_cell(x, y, window_w_, window_h_);
+  brush_outline_.pointer_at(cell[0], cell[1], painting.brush_cells);
+  draw_brush_outline(brush_outline_.on_screen(painting.brush_head, painting.brush_cells,
+                                              state_.mouse_pressure, state_.view, window_w_,
+                                              window_h_));
+}
+
 // The palette board kept beside the painting, or a clean one.
 void PaintWindow::open_board_for(const std::optional<std::filesystem::path>& painting) {
   try {
@@ -618,6 +634,8 @@ PaintingSnapshot PaintWindow::snapshot() {
     s.dry_layers = p.canvas().dry_layers().size();
     s.slots = p.pigment_slots();
     s.brush_volume_mm3 = p.brush_totals().volume;
+    s.brush_head = p.brush().head();
+    s.brush_cells = p.brush().cells_across();
     return s;
   });
 }
@@ -778,6 +796,8 @@ void PaintWindow::handle_canvas_input() {
   double x = 0, y = 0;
   glfwGetCursorPos(window_, &x, &y);
   pick_cursor_ = pick_gesture_.held() || (picking && !ui_at(x, y));
+  // (Asked here, between frames: within one, ImGui's implicit Debug window covers the canvas.)
+  pointer_on_canvas_ = !ui_at(x, y);
   update_pick_cursor();
   state_.cursor_cell = state_.view.window_to_cell(x, y, window_w_, window_h_);
   // Zoom about the cursor with the wheel, down to single cells and up to 64 px a cell.
@@ -1103,10 +1123,12 @@ void PaintWindow::draw_frame(bool take_screenshot) {
     ImGui::EndMainMenuBar();
   }
   draw_help_windows(state_);
+  double cursor_x = 0, cursor_y = 0;
+  glfwGetCursorPos(window_, &cursor_x, &cursor_y);
   if (pick_cursor_) {
-    double cursor_x = 0, cursor_y = 0;
-    glfwGetCursorPos(window_, &cursor_x, &cursor_y);
     draw_pick_cursor(state_, static_cast<float>(cursor_x), static_cast<float>(cursor_y));
+  } else {
+    draw_brush_at(painting, cursor_x, cursor_y);
   }
   pigment_drift_.draw(state_, *worker_);
   std::optional<RecoveryPreview> preview;

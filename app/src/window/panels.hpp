@@ -2,6 +2,7 @@
 // The Dear ImGui panels of the painting window: menu bar (file), palette, brush, light,
 // layers, history and the status bar. They change WindowState and submit session events;
 // they never touch the painting directly.
+#include <impasto/paintcore/brush_head.hpp>
 #include <impasto/render/spectral_palette.hpp>
 
 #include <cstddef>
@@ -22,6 +23,8 @@ struct PaintingSnapshot {
   std::size_t undo_depth = 0, redo_depth = 0, dry_layers = 0;
   std::vector<std::string> slots;
   double brush_volume_mm3 = 0.0;
+  paintcore::BrushHead brush_head;  // the head and its grid width, for the brush outline
+  int brush_cells = 0;
 };
 
 // File operations, carried out by the window (they replace or write the painting).

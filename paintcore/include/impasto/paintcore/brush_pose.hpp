@@ -37,6 +37,16 @@ struct BrushPlacement {
 // `spread` (>= 1) widens the footprint about its centre: bristles splaying under pressure.
 BrushPlacement place_brush(const BrushPose& pose, int brush_cells, double spread = 1.0);
 
+// How a head with no twist of its own (a mouse, a tablet without barrel rotation) is turned:
+// the heading (twist, radians) that trails the hand (Painting), and the brush outline the
+// window draws at the pointer follows the same rule. After moving distance d along travel
+// direction `travel_rad`, it turns by 1 - exp(-d / follow_length) of the way to the heading
+// that puts the head's +v axis along the travel. Heads are symmetric under a half turn, so it
+// turns the short way modulo pi (a brush drawn back does not flip over).
+double follow_heading(double heading_rad, double travel_rad, double distance, double follow_length);
+// The heading that puts the head's +v axis along the travel direction.
+double heading_for_travel(double travel_rad);
+
 // The pose for a pen sample: position mm -> cells, pressure (clamped to 0..1) times the
 // brush's full depth, angles degrees -> radians. Throws std::runtime_error naming the field
 // of a sample holding NaN or infinity.

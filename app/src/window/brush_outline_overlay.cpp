@@ -1,0 +1,20 @@
+#include "window/brush_outline_overlay.hpp"
+
+#include <imgui.h>
+
+namespace impasto::app::window {
+
+void draw_brush_outline(const std::vector<Point2>& screen) {
+  if (screen.size() < 3) return;
+  std::vector<ImVec2> points;
+  points.reserve(screen.size());
+  for (const Point2& p : screen) {
+    points.emplace_back(static_cast<float>(p[0]), static_cast<float>(p[1]));
+  }
+  ImDrawList* draw = ImGui::GetForegroundDrawList();
+  const int count = static_cast<int>(points.size());
+  draw->AddPolyline(points.data(), count, IM_COL32(0, 0, 0, 200), ImDrawFlags_Closed, 3.0f);
+  draw->AddPolyline(points.data(), count, IM_COL32(255, 255, 255, 230), ImDrawFlags_Closed, 1.2f);
+}
+
+}  // namespace impasto::app::window
