@@ -165,7 +165,7 @@ void eyedropper_panel(WindowState& s, SimWorker& worker) {
     }
     if (ImGui::Button("Load onto brush")) {
       load_onto_brush(worker, picked_load(p, s.load_volume_mm3, s.paint_body));
-      s.message = "brush loaded with the picked paint";
+      s.notifications.info("brush loaded with the picked paint");
     }
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("wipe the brush and load %.0f mm³ of this mix (%s body)", s.load_volume_mm3,

@@ -436,7 +436,8 @@ void PaintWindow::handle_recovery(const RecoveryChoice& choice) {
         return;
       case RecoveryChoice::kRecover: {
         if (worker_->stats().events_since_save > 0) {
-          state_.message = "save or close this painting first (File menu), then recover";
+          state_.notifications.warning(
+              "save or close this painting first (File menu), then recover");
           return;
         }
         if (previewing_ != choice.index || !preview_) {
@@ -468,7 +469,7 @@ void PaintWindow::handle_recovery(const RecoveryChoice& choice) {
         return;
     }
   } catch (const std::exception& e) {
-    state_.message = std::string("cannot recover: ") + e.what();
+    state_.notifications.error(std::string("cannot recover: ") + e.what());
     return;
   }
   discard_session(entry);
@@ -567,7 +568,8 @@ void PaintWindow::open_board_for(const std::optional<std::filesystem::path>& pai
       return;
     }
   } catch (const std::exception& e) {
-    state_.message = e.what();
+    state_.notifications.warning("the palette board beside the painting was not read: " +
+                                 std::string(e.what()));
   }
   board_panel_.replace(PaletteBoard());
 }
@@ -1252,7 +1254,6 @@ void PaintWindow::run() {
     if (state_.quit) break;
     update_title();
     // Reports written to the older status line are shown as notifications.
-    if (!state_.message.empty()) state_.notifications.warning(std::exchange(state_.message, {}));
     handle_shortcuts();
     poll_tablets();
     handle_canvas_input();

@@ -45,9 +45,9 @@ void PigmentDriftNote::draw(WindowState& state, SimWorker& worker) {
         render::use_library_pigments(painting, replaceable);
       });
       state.settings_changed = true;  // the palette is rebuilt from the new records
-      state.message = "the painting now uses the library's pigments (save to keep them)";
+      state.notifications.info("the painting now uses the library's pigments (save to keep them)");
     } catch (const std::exception& e) {
-      state.message = e.what();
+      state.notifications.error(e.what());
     }
     dismissed_ = true;
   }

@@ -60,7 +60,7 @@ void apply_preset(const BrushPreset& preset, WindowState& s, SimWorker& worker) 
   s.pressure_from_speed = preset.pressure_from_speed;
   s.eyedropper.tool = false;
   worker.submit(brush_event(s));
-  s.message = "brush: " + preset.name;
+  s.notifications.info("brush: " + preset.name);
 }
 
 void reload_presets(WindowState& s) {
@@ -68,7 +68,7 @@ void reload_presets(WindowState& s) {
   try {
     shipped = shipped_presets_dir();
   } catch (const std::exception& e) {
-    s.message = e.what();  // no data folder: only the user's presets
+    s.notifications.warning(e.what());  // no data folder: only the user's presets
   }
   s.presets = load_brush_presets(shipped, user_presets_dir(), s.brush_heads);
 }
@@ -76,7 +76,7 @@ void reload_presets(WindowState& s) {
 void save_user_preset(WindowState& s, const std::string& name) {
   const std::filesystem::path folder = user_presets_dir();
   if (folder.empty()) {
-    s.message = "cannot save a preset: neither XDG_CONFIG_HOME nor HOME is set";
+    s.notifications.error("cannot save a preset: neither XDG_CONFIG_HOME nor HOME is set");
     return;
   }
   try {
@@ -84,9 +84,9 @@ void save_user_preset(WindowState& s, const std::string& name) {
     const std::filesystem::path file = folder / preset_file_name(name);
     write_brush_preset(preset, file);
     reload_presets(s);
-    s.message = "saved preset " + file.string();
+    s.notifications.info("saved preset " + file.string());
   } catch (const std::exception& e) {
-    s.message = e.what();
+    s.notifications.error(e.what());
   }
 }
 
@@ -94,8 +94,11 @@ void delete_user_preset(WindowState& s, const BrushPreset& preset) {
   if (!preset.user) return;
   std::error_code error;
   std::filesystem::remove(preset.file, error);
-  s.message = error ? "cannot delete " + preset.file.string() + ": " + error.message()
-                    : "deleted preset " + preset.name;
+  if (error) {
+    s.notifications.error("cannot delete " + preset.file.string() + ": " + error.message());
+  } else {
+    s.notifications.info("deleted preset " + preset.name);
+  }
   reload_presets(s);
 }
 

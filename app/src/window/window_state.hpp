@@ -127,7 +127,6 @@ struct WindowState {
   float new_dpi = 150.0f;
   // What the window has to say (errors, warnings, results): shown as notifications.
   Notifications notifications;
-  std::string message;  // older reports; the frame loop moves them to `notifications`
 
   // --- status ---
   double frame_ms = 0.0;
