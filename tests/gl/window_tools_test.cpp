@@ -1,15 +1,18 @@
 // The window's everyday tools end to end, under Xvfb, driven by real X input (xdotool): the
 // eyedropper picks the paint of a stroke and loads the brush with it, Ctrl+S saves the
 // painting (with that brush), a brush preset saved in the window is read back by the next
-// window and applied, and the brush's outline follows the pointer over the canvas.
+// window and applied, the brush's outline follows the pointer over the canvas, and a stroke
+// with an empty brush says so.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "impasto/paintcore/painting.hpp"
@@ -268,6 +271,40 @@ TEST(WindowTools, TheBrushOutlineFollowsThePointerOverTheCanvas) {
   EXPECT_TRUE(wait_for([&] { return dark_pixels(450, 250, near, elsewhere) && near == 0; }))
       << "the outline stayed on the canvas with the pointer over a panel";
   EXPECT_EQ(elsewhere, 0);
+  fs::remove_all(dir);
+}
+
+// A stroke with nothing on the brush paints nothing: the window says so beside the pointer,
+// once (a second stroke gets no note).
+TEST(WindowTools, AStrokeWithAnEmptyBrushSaysSoOnce) {
+  ASSERT_NE(std::getenv("DISPLAY"), nullptr) << "run under xvfb-run -a";
+  if (!have_xdotool()) GTEST_SKIP() << "xdotool or ImageMagick's import is not installed";
+  const fs::path dir = test_dir("impasto_window_empty_brush");
+  Window window(dir, dir / "empty.strokes", {});
+  ASSERT_TRUE(window.up()) << "the window did not open";
+  // The note's yellow text, below and right of the pointer at y = 300, x up to 400.
+  const auto note_pixels = [&] {
+    const impasto::render::Image s = window.screenshot();
+    int yellow = 0;
+    if (s.width != 1000 || s.height != 700) return 0;
+    for (int y = 305; y < 345; ++y) {
+      for (int x = 200; x < 900; ++x) {
+        const float* p = s.pixel(x, y);
+        if (p[0] > 0.8f && p[1] > 0.6f && p[2] < 0.6f) ++yellow;
+      }
+    }
+    return yellow;
+  };
+  EXPECT_EQ(note_pixels(), 0);
+  window.scrub(200, 400, 300);
+  EXPECT_TRUE(wait_for([&] { return note_pixels() > 50; })) << "no note about the empty brush";
+  EXPECT_TRUE(wait_for([&] { return note_pixels() == 0; }, std::chrono::seconds(15)))
+      << "the note stayed";
+  window.scrub(200, 400, 300);
+  for (int i = 0; i < 5; ++i) {
+    EXPECT_EQ(note_pixels(), 0) << "told twice";
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  }
   fs::remove_all(dir);
 }
 

@@ -17,4 +17,15 @@ void draw_brush_outline(const std::vector<Point2>& screen) {
   draw->AddPolyline(points.data(), count, IM_COL32(255, 255, 255, 230), ImDrawFlags_Closed, 1.2f);
 }
 
+void draw_pointer_note(float x, float y, const char* text) {
+  ImDrawList* draw = ImGui::GetForegroundDrawList();
+  const ImVec2 size = ImGui::CalcTextSize(text);
+  const ImVec2 at(x + 18.0f, y + 18.0f);
+  constexpr float kPad = 6.0f;
+  draw->AddRectFilled(ImVec2(at.x - kPad, at.y - kPad),
+                      ImVec2(at.x + size.x + kPad, at.y + size.y + kPad), IM_COL32(30, 30, 34, 235),
+                      4.0f);
+  draw->AddText(at, IM_COL32(255, 220, 120, 255), text);
+}
+
 }  // namespace impasto::app::window

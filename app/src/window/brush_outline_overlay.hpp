@@ -1,6 +1,7 @@
 #pragma once
-// Draws the brush outline (brush_outline.hpp) over the canvas, in ImGui's foreground list: a
-// dark line under a light one, so it shows on any paint.
+// What the window draws at the pointer over the canvas, in ImGui's foreground list: the brush
+// outline (brush_outline.hpp), a dark line under a light one so it shows on any paint, and a
+// short note beside the pointer.
 #include <vector>
 
 #include "window/brush_outline.hpp"
@@ -8,5 +9,7 @@
 namespace impasto::app::window {
 
 void draw_brush_outline(const std::vector<Point2>& screen);
+// `text` on a dark box just below and right of the pointer at (x, y).
+void draw_pointer_note(float x, float y, const char* text);
 
 }  // namespace impasto::app::window

@@ -71,6 +71,9 @@
 namespace impasto::app::window {
 namespace {
 
+// How long a note beside the pointer stays (the empty brush's).
+constexpr double kPointerNote_s = 5.0;
+
 using Clock = std::chrono::steady_clock;
 
 // Set by SIGTERM, SIGINT and SIGHUP (a logout, Ctrl+C): the window closes at the next frame,
@@ -163,6 +166,7 @@ class PaintWindow {
   void start_session();
   void opened_file(const std::filesystem::path& file);
   void draw_brush_at(const PaintingSnapshot& painting, double x, double y);
+  void note_an_empty_brush();
   void sync_gpu();
   void handle_canvas_input();
   void handle_shortcuts();
@@ -261,6 +265,8 @@ class PaintWindow {
   bool pick_cursor_ = false;        // the cursor is the eyedropper's this frame
   BrushOutline brush_outline_;      // the brush at the pointer
   bool pointer_on_canvas_ = false;  // no panel, menu or dialog at the pointer
+  bool told_empty_brush_ = false;   // the empty-brush note was shown this session
+  double empty_brush_note_until_s_ = 0.0;
   GLFWcursor* crosshair_ = nullptr;
   std::string head_before_knife_ = "round";  // where B returns to from the knife (K)
   int window_w_ = 0, window_h_ = 0;          // this frame's window size
@@ -549,12 +555,27 @@ void PaintWindow::opened_file(const std::filesystem::path& file) {
   }
 }
 
+// A stroke begun with nothing on the brush paints nothing: say so where the pointer is, once a
+// session (only when every event is applied, so a Load brush still queued is not missed).
+void PaintWindow::note_an_empty_brush() {
+  if (told_empty_brush_ || !worker_->idle()) return;
+  const double on_brush =
+      worker_->with_painting([](const paintcore::Painting& p) { return p.brush_totals().volume; });
+  if (on_brush > 0.0) return;
+  told_empty_brush_ = true;
+  empty_brush_note_until_s_ = glfwGetTime() + kPointerNote_s;
+}
+
 // The brush's outline at the pointer (window pixels), unless a panel, menu or dialog has it.
 void PaintWindow::draw_brush_at(const PaintingSnapshot& painting, double x, double y) {
   const bool in_window = x >= 0.0 && y >= 0.0 && x < window_w_ && y < window_h_;
   if (!in_window || !pointer_on_canvas_ || painting.brush_cells < 1) return;
   const auto cell = state_.view.window_to_cell(x, y, window_w_, window_h_);
   brush_outline_.pointer_at(cell[0], cell[1], painting.brush_cells);
+  if (glfwGetTime() < empty_brush_note_until_s_) {
+    draw_pointer_note(static_cast<float>(x), static_cast<float>(y),
+                      "The brush is empty: choose paint in the Palette, then Load brush");
+  }
   draw_brush_outline(brush_outline_.on_screen(painting.brush_head, painting.brush_cells,
                                               state_.mouse_pressure, state_.view, window_w_,
                                               window_h_));
@@ -713,7 +734,10 @@ void PaintWindow::pen_sample(const PointerEvent& at, bool tip_down) {
   sample.time_s = at.time_s - session_start_s_;  // the event's own time
   sample.x_mm = cell[0] * cell_mm;
   sample.y_mm = cell[1] * cell_mm;
-  if (tip_down && !canvas_feed_.in_stroke()) speed_pressure_.start_stroke();
+  if (tip_down && !canvas_feed_.in_stroke()) {
+    speed_pressure_.start_stroke();
+    note_an_empty_brush();
+  }
   const float pressure = state_.pressure_from_speed
                              ? speed_pressure_.at(sample.x_mm, sample.y_mm, sample.time_s)
                              : state_.mouse_pressure;
