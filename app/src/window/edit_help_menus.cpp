@@ -72,6 +72,11 @@ void help_menu(WindowState& s) {
 
 void draw_help_windows(WindowState& s) {
   const ImGuiIO& io = ImGui::GetIO();
+  // Escape closes them, as it closes the dialogs (a popup over them takes it first).
+  if ((s.show_shortcuts || s.show_about) && !ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId) &&
+      ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
+    s.show_shortcuts = s.show_about = false;
+  }
   if (s.show_shortcuts) {
     ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x * 0.5f, io.DisplaySize.y * 0.5f),
                             ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));

@@ -14,6 +14,7 @@
 #include <impasto/data/pigments.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -310,9 +311,14 @@ void palette_panel(PanelContext& c) {
                 "on canvas: a stroke with this brush, load and pressure,\nas rendered "
                 "(median wet thickness %.2f mm)",
                 s.swatch_thickness_mm);
-  chip("##on_canvas", s.swatch_on_canvas_rgb, 48.0f, on_canvas_tip);
+  // No parts (a cleared mix): neutral chips, not the last mix's colours.
+  constexpr std::array<float, 3> kNoMix{0.5f, 0.5f, 0.5f};
+  constexpr const char* kNoMixTip = "no mix: give pigments parts below";
+  chip("##on_canvas", any ? s.swatch_on_canvas_rgb : kNoMix, 48.0f,
+       any ? on_canvas_tip : kNoMixTip);
   ImGui::SameLine();
-  chip("##masstone", s.swatch_masstone_rgb, 48.0f, "masstone: the mix, opaque");
+  chip("##masstone", any ? s.swatch_masstone_rgb : kNoMix, 48.0f,
+       any ? "masstone: the mix, opaque" : kNoMixTip);
   ImGui::SameLine();
   ImGui::BeginGroup();
   ImGui::SetNextItemWidth(120.0f);
