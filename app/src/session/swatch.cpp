@@ -13,13 +13,12 @@
 namespace impasto::app {
 namespace {
 
-constexpr double kMmPerInch = 25.4;
 constexpr double kStrokeSpeedMmPerS = 50.0;
 constexpr double kSampleSpacingMm = 0.2;
 constexpr double kMaxSwatchBrushCells = 128.0;
 
 int cells_for(double mm, double dpi) {
-  return std::max(1, static_cast<int>(std::ceil(mm / kMmPerInch * dpi)));
+  return std::max(1, static_cast<int>(std::ceil(mm / paintcore::kMmPerInch * dpi)));
 }
 
 // The stroke's length and the room the brush needs around it.
@@ -33,7 +32,7 @@ double stroke_margin_mm(const SwatchStroke& stroke) {
 }  // namespace
 
 double swatch_dpi(const SwatchStroke& stroke) {
-  return std::min(stroke.dpi, kMaxSwatchBrushCells / stroke.brush.size_mm * kMmPerInch);
+  return std::min(stroke.dpi, kMaxSwatchBrushCells / stroke.brush.size_mm * paintcore::kMmPerInch);
 }
 
 void paint_standard_stroke(paintcore::Painting& painting, const SwatchStroke& stroke,

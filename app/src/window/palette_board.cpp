@@ -7,15 +7,13 @@
 namespace impasto::app::window {
 namespace {
 
-constexpr double kMmPerInch = 25.4;
-
 paintcore::CanvasSpec board_spec(double width_mm, double height_mm, double dpi) {
   if (!(width_mm > 0.0) || !(height_mm > 0.0) || !(dpi > 0.0) || !std::isfinite(width_mm) ||
       !std::isfinite(height_mm) || !std::isfinite(dpi)) {
     throw std::runtime_error("palette board: size and dpi must be finite and positive");
   }
-  return {static_cast<int>(std::lround(width_mm / kMmPerInch * dpi)),
-          static_cast<int>(std::lround(height_mm / kMmPerInch * dpi)), dpi, 1};
+  return {static_cast<int>(std::lround(width_mm / paintcore::kMmPerInch * dpi)),
+          static_cast<int>(std::lround(height_mm / paintcore::kMmPerInch * dpi)), dpi, 1};
 }
 
 }  // namespace

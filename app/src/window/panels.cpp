@@ -159,6 +159,67 @@ void changed_on_disk_prompt(PanelContext& c) {
   ImGui::EndPopup();
 }
 
+// The New painting dialog's size: a standard size (turned for landscape) or a custom one in
+// cells, mm, cm or inches, at a resolution; the cells it makes, shown and kept in
+// new_width / new_height.
+void new_painting_size(WindowState& s) {
+  const auto standard = [&](int i) { return kStandardSizes[static_cast<std::size_t>(i)]; };
+  const auto set_standard = [&] {
+    if (s.new_standard < 0) return;
+    const StandardSize size = standard(s.new_standard);
+    s.new_width_mm = s.new_landscape ? size.height_mm : size.width_mm;
+    s.new_height_mm = s.new_landscape ? size.width_mm : size.height_mm;
+  };
+  const std::string current =
+      s.new_standard < 0 ? std::string("custom") : std::string(standard(s.new_standard).name);
+  ImGui::SetNextItemWidth(160.0f);
+  if (ImGui::BeginCombo("size", current.c_str())) {
+    if (ImGui::Selectable("custom", s.new_standard < 0)) s.new_standard = -1;
+    for (int i = 0; i < static_cast<int>(kStandardSizes.size()); ++i) {
+      if (ImGui::Selectable(std::string(standard(i).name).c_str(), s.new_standard == i)) {
+        s.new_standard = i;
+        set_standard();
+      }
+    }
+    ImGui::EndCombo();
+  }
+  ImGui::SameLine();
+  if (ImGui::Checkbox("landscape", &s.new_landscape)) {
+    if (s.new_standard >= 0) {
+      set_standard();
+    } else if ((s.new_width_mm < s.new_height_mm) == s.new_landscape) {
+      std::swap(s.new_width_mm, s.new_height_mm);
+    }
+  }
+  ImGui::SetNextItemWidth(160.0f);
+  int unit = static_cast<int>(s.new_unit);
+  const std::string unit_name(kSizeUnitNames[static_cast<std::size_t>(unit)]);
+  if (ImGui::BeginCombo("unit", unit_name.c_str())) {
+    for (int i = 0; i < static_cast<int>(kSizeUnitNames.size()); ++i) {
+      const std::string name(kSizeUnitNames[static_cast<std::size_t>(i)]);
+      if (ImGui::Selectable(name.c_str(), unit == i)) s.new_unit = static_cast<SizeUnit>(i);
+    }
+    ImGui::EndCombo();
+  }
+  const double dpi = std::max(1.0, static_cast<double>(s.new_dpi));
+  const char* format = s.new_unit == SizeUnit::cells ? "%.0f" : "%.2f";
+  for (auto [label, mm] :
+       {std::pair{"width", &s.new_width_mm}, std::pair{"height", &s.new_height_mm}}) {
+    double value = size_from_mm(*mm, s.new_unit, dpi);
+    ImGui::SetNextItemWidth(160.0f);
+    if (ImGui::InputDouble(label, &value, 0.0, 0.0, format)) {
+      *mm = size_in_mm(value, s.new_unit, dpi);
+      s.new_standard = -1;  // typed: a custom size
+    }
+  }
+  ImGui::SetNextItemWidth(160.0f);
+  ImGui::InputFloat("DPI", &s.new_dpi, 10.0f, 50.0f, "%.0f");
+  s.new_width = cells_across(s.new_width_mm, dpi);
+  s.new_height = cells_across(s.new_height_mm, dpi);
+  ImGui::TextDisabled("%d x %d cells, %.0f x %.0f mm", s.new_width, s.new_height, s.new_width_mm,
+                      s.new_height_mm);
+}
+
 void file_menu(PanelContext& c) {
   WindowState& s = c.state;
   const bool unsaved = c.worker.stats().events_since_save > 0;
@@ -245,9 +306,7 @@ void file_menu(PanelContext& c) {
   if (browse) s.file_browser.open(browser_request(*browse, s));
 
   if (ImGui::BeginPopupModal("New painting", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-    ImGui::InputInt("width (cells)", &s.new_width);
-    ImGui::InputInt("height (cells)", &s.new_height);
-    ImGui::InputFloat("DPI", &s.new_dpi, 10.0f, 50.0f, "%.0f");
+    new_painting_size(s);
     if (ImGui::Button("Create")) {
       ImGui::CloseCurrentPopup();
       ask(PendingAction::kNew);

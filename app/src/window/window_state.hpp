@@ -22,6 +22,7 @@
 
 #include "session/disk_stamp.hpp"
 #include "window/brush_presets.hpp"
+#include "window/canvas_size_choice.hpp"
 #include "window/eyedropper.hpp"
 #include "window/file_browser.hpp"
 #include "window/notifications.hpp"
@@ -123,8 +124,14 @@ struct WindowState {
   FileCommand file_command = FileCommand::kNone;
   FileBrowser file_browser{window_config_folder().empty() ? std::filesystem::path()
                                                           : window_config_folder() / "folders.txt"};
+  // The New painting dialog: the size in mm (shown in new_unit), a standard size or custom
+  // (-1), its orientation; new_width/new_height are the cells it makes at new_dpi.
   int new_width = 1024, new_height = 768;
   float new_dpi = 150.0f;
+  double new_width_mm = 1024 * 25.4 / 150.0, new_height_mm = 768 * 25.4 / 150.0;
+  SizeUnit new_unit = SizeUnit::mm;
+  int new_standard = -1;
+  bool new_landscape = true;
   // What the window has to say (errors, warnings, results): shown as notifications.
   Notifications notifications;
 
