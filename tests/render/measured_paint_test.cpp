@@ -54,7 +54,8 @@ Errors rendered_against_measured(RenderSettings settings, const data::KsFitProbl
   Errors errors;
   for (const data::KsSample& sample : problem.samples) {
     renderer.render_all(flat_layer(sample.concentrations, 2.0f));  // 400 optical units: opaque
-    const float* rgb = renderer.image().pixel(kTileSize / 2, kTileSize / 2);
+    const Image image = renderer.image();
+    const float* rgb = image.pixel(kTileSize / 2, kTileSize / 2);
     data::Xyz rendered;
     double* out[3] = {&rendered.X, &rendered.Y, &rendered.Z};
     for (int i = 0; i < 3; ++i) {
