@@ -297,6 +297,29 @@ PenDecoder::PenDecoder(ReportDescriptor descriptor, DecoderOptions options)
   area_.from_model = first.area_from_model;
   area_.width_mm = static_cast<double>(first.x.logical_max - first.x.logical_min) * first.mm_per_x;
   area_.height_mm = static_cast<double>(first.y.logical_max - first.y.logical_min) * first.mm_per_y;
+  pressure_max_.clear();
+  for (const PenReportLayout& l : layouts_) pressure_max_.push_back(l.pressure.logical_max);
+}
+
+namespace {
+
+// The pressure range a value past the declared maximum shows: the model's maximum when it
+// holds the value, else the smallest 2^k - 1 that does (within the field's bits).
+std::int64_t grown_pressure_max(std::int64_t value, const PenAxis& axis,
+                                std::optional<std::int64_t> model_max) {
+  if (model_max && *model_max >= value) return *model_max;
+  std::int64_t full = std::max<std::int64_t>(axis.logical_max, 1);
+  while (full < value && full < (std::int64_t{1} << 40)) full = 2 * full + 1;
+  return std::max(full, value);
+}
+
+}  // namespace
+
+std::int64_t PenDecoder::pressure_max(std::uint8_t report_id) const {
+  for (std::size_t i = 0; i < layouts_.size(); ++i) {
+    if (report_id == 0 || layouts_[i].report_id == report_id) return pressure_max_[i];
+  }
+  return 0;
 }
 
 std::optional<PenSample> PenDecoder::decode(std::span<const std::uint8_t> report, double time_s,
@@ -325,7 +348,12 @@ std::optional<PenSample> PenDecoder::decode(std::span<const std::uint8_t> report
   s.x_mm = static_cast<double>(value(layout->x) - layout->x.logical_min) * layout->mm_per_x;
   s.y_mm = static_cast<double>(value(layout->y) - layout->y.logical_min) * layout->mm_per_y;
   if (layout->pressure.present()) {
-    s.pressure = static_cast<float>(layout->pressure.normalised(value(layout->pressure)));
+    const std::int64_t raw = value(layout->pressure);
+    std::int64_t& full = pressure_max_[static_cast<std::size_t>(layout - layouts_.data())];
+    if (raw > full) full = grown_pressure_max(raw, layout->pressure, options_.known_max_pressure);
+    PenAxis pressure = layout->pressure;
+    pressure.logical_max = full;
+    s.pressure = static_cast<float>(pressure.normalised(raw));
   }
   if (layout->tilt_x.present()) {
     s.tilt_x_deg = static_cast<float>(

@@ -94,6 +94,7 @@ TabletDecoder::TabletDecoder(std::span<const std::uint8_t> descriptor, std::uint
     options.known_width_mm = model->width_mm;
     options.known_height_mm = model->height_mm;
   }
+  if (model && model->max_pressure > 0) options.known_max_pressure = model->max_pressure;
 
   try {
     pen_.emplace(parse_report_descriptor(descriptor, "device descriptor"), options);

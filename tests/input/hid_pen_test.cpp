@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "hid_test_files.hpp"
 
 namespace impasto::input::hid {
@@ -53,6 +55,43 @@ TEST(PenDecoder, HuionReport) {
   EXPECT_EQ(eraser->buttons, paintcore::kPenEraser | paintcore::kPenInRange);
   report[1] = 0x00;
   EXPECT_EQ(pen.decode(report, 1.75)->buttons, 0u);  // out of range
+}
+
+// A tablet that sends more pressure than its descriptor declares (an XP-Pen Deco 01 v2 in
+// its default mode: up to 8191 where it says 2047): the first value past the declared
+// maximum grows the range for good, so a firm press is no longer the same as a light one.
+TEST(PenDecoder, PressurePastTheDeclaredMaximumGrowsTheRange) {
+  const std::string path = kFiles + "huion_inspiroy_h1060p__256C_006D__0010.rdesc.bin";
+  std::vector<std::uint8_t> bytes = load_descriptor_bytes(path);
+  // Tip Pressure's Logical Maximum 8191 (26 ff 1f) declared as 2047 (26 ff 07).
+  const Bytes pressure_max{0x09, 0x30, 0x26, 0xff, 0x1f};
+  const auto at = std::search(bytes.begin(), bytes.end(), pressure_max.begin(), pressure_max.end());
+  ASSERT_NE(at, bytes.end());
+  at[4] = 0x07;
+  const auto report_with = [](int pressure) {
+    Bytes report(10, 0);
+    report[0] = 10;
+    report[1] = 0x01 | 0x40;
+    put16(report, 6, pressure);
+    return report;
+  };
+  {
+    const PenDecoder pen(parse_report_descriptor(bytes, path));
+    EXPECT_EQ(pen.pressure_max(), 2047);
+    EXPECT_FLOAT_EQ(pen.decode(report_with(2047), 0.0)->pressure, 1.0f);  // as declared
+    EXPECT_FLOAT_EQ(pen.decode(report_with(6000), 0.1)->pressure, 6000.0f / 8191.0f);
+    EXPECT_EQ(pen.pressure_max(), 8191);  // 2^13 - 1: the smallest that holds 6000
+    EXPECT_FLOAT_EQ(pen.decode(report_with(2047), 0.2)->pressure, 2047.0f / 8191.0f);
+    EXPECT_FLOAT_EQ(pen.decode(report_with(8191), 0.3)->pressure, 1.0f);
+  }
+  {
+    // With the model table's levels, the first value past 2047 goes straight to them.
+    DecoderOptions options;
+    options.known_max_pressure = 8191;
+    const PenDecoder pen(parse_report_descriptor(bytes, path), options);
+    EXPECT_FLOAT_EQ(pen.decode(report_with(3000), 0.0)->pressure, 3000.0f / 8191.0f);
+    EXPECT_EQ(pen.pressure_max(), 8191);
+  }
 }
 
 TEST(PenDecoder, WacomOneReportInPhysicalUnits) {

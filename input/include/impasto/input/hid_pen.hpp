@@ -61,6 +61,9 @@ struct DecoderOptions {
   // the fallback when the descriptor's X and Y units are not lengths.
   std::optional<double> known_width_mm;
   std::optional<double> known_height_mm;
+  // The pressure levels the model table gives (its largest raw value): where a report's
+  // pressure passes the descriptor's maximum, the range grows to this (see PenDecoder).
+  std::optional<std::int64_t> known_max_pressure;
 };
 
 // The tablet's active area in mm, and whether the descriptor stated it.
@@ -84,6 +87,12 @@ class PenDecoder {
   // buttons, vendor reports) give nullopt. Positions are mm on the tablet from the top left
   // of its active area. Throws InputFormatError, naming `source`, for a pen report shorter
   // than declared.
+  //
+  // Some tablets send more pressure than their descriptor declares (an XP-Pen Deco 01 v2 in
+  // its default mode: up to 8191 where it says 2047, so every press past a quarter read as
+  // full). The first value past the declared maximum grows that report's range, for good, to
+  // the model table's maximum if it holds the value, else to the smallest 2^k - 1 that does
+  // (what the field's bits allow); pressure_max() says where it stands.
   std::optional<paintcore::PenSample> decode(std::span<const std::uint8_t> report, double time_s,
                                              const std::string& source = "report") const;
 
@@ -92,6 +101,9 @@ class PenDecoder {
   TabletArea area() const { return area_; }
   // Whether the pen was found through Wacom's vendor usages (0xFF0D).
   bool wacom_vendor_page() const { return wacom_vendor_page_; }
+  // The raw pressure read as full for the report with `report_id` (0: the first pen report):
+  // the descriptor's maximum, or the range a report showed it to have.
+  std::int64_t pressure_max(std::uint8_t report_id = 0) const;
   // Of the first pen report (each layout has its own).
   double mm_per_logical_x() const { return layouts_.front().mm_per_x; }
   double mm_per_logical_y() const { return layouts_.front().mm_per_y; }
@@ -102,6 +114,8 @@ class PenDecoder {
   DecoderOptions options_;
   TabletArea area_;
   bool wacom_vendor_page_ = false;
+  // Per layout, the pressure range the reports have shown (grown from the declared one).
+  mutable std::vector<std::int64_t> pressure_max_;
 };
 
 // The standard usage a Wacom vendor usage stands for (Linux's wacom_equivalent_usage):
