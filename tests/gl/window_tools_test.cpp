@@ -1,8 +1,8 @@
 // The window's everyday tools end to end, under Xvfb, driven by real X input (xdotool): the
 // eyedropper picks the paint of a stroke and loads the brush with it, Ctrl+S saves the
 // painting (with that brush), a brush preset saved in the window is read back by the next
-// window and applied, the brush's outline follows the pointer over the canvas, and a stroke
-// with an empty brush says so.
+// window and applied, the brush's outline follows the pointer over the canvas, a stroke
+// with an empty brush says so, and the tool bar's paint chips load the brush.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -305,6 +305,45 @@ TEST(WindowTools, AStrokeWithAnEmptyBrushSaysSoOnce) {
     EXPECT_EQ(note_pixels(), 0) << "told twice";
     std::this_thread::sleep_for(std::chrono::milliseconds(200));
   }
+  fs::remove_all(dir);
+}
+
+// Fast colour: a click on a paint's chip in the tool bar loads the brush with it (a recorded
+// load of that paint alone), Shift-click adds a part to the Palette's mix without loading,
+// and the loaded mix comes back from the recent chips with one click.
+TEST(WindowTools, APaintChipLoadsTheBrushAndARecentChipLoadsItAgain) {
+  ASSERT_NE(std::getenv("DISPLAY"), nullptr) << "run under xvfb-run -a";
+  if (!have_xdotool()) GTEST_SKIP() << "xdotool or ImageMagick's import is not installed";
+  const fs::path dir = test_dir("impasto_window_paint_strip");
+  const fs::path recording = dir / "strip.strokes";
+  Window window(dir, recording, {});
+  ASSERT_TRUE(window.up()) << "the window did not open";
+  // The strip's row in a 1000 x 700 window: chips 18 px wide, 20 apart, from x = 60; the
+  // third is Burnt Sienna. The recent row below it.
+  constexpr int kRowY = 88, kRecentY = 110;
+  const auto chip_x = [](int i) { return 69 + 20 * i; };
+  const auto loads = [&] { return lines_starting(recording, "load "); };
+  // The chips appear once the swatches are made: Burnt Sienna's is reddish brown.
+  ASSERT_TRUE(wait_for([&] {
+    const impasto::render::Image s = window.screenshot();
+    if (s.width != 1000) return false;
+    const float* p = s.pixel(chip_x(2), kRowY);
+    return p[0] > p[2] + 0.1f && p[0] > 0.25f;
+  })) << "no paint chips in the tool bar";
+  const std::size_t before = loads().size();
+  window.tap(chip_x(2), kRowY);
+  ASSERT_TRUE(wait_for([&] { return loads().size() == before + 1; })) << "the click loaded nothing";
+  EXPECT_NE(loads().back().find("\"Burnt Sienna\" 1"), std::string::npos) << loads().back();
+
+  window.ctrl_click(chip_x(3), kRowY);  // a part of Burnt Umber in the mix: no load
+  std::this_thread::sleep_for(std::chrono::milliseconds(800));
+  EXPECT_EQ(loads().size(), before + 1);
+
+  window.tap(chip_x(0), kRecentY);  // the recent Burnt Sienna
+  ASSERT_TRUE(wait_for([&] { return loads().size() == before + 2; }))
+      << "the recent chip loaded nothing";
+  EXPECT_NE(loads().back().find("\"Burnt Sienna\" 1"), std::string::npos) << loads().back();
+  EXPECT_EQ(loads().back().find("Burnt Umber"), std::string::npos) << loads().back();
   fs::remove_all(dir);
 }
 

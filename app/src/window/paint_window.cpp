@@ -1140,7 +1140,7 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   const FileActions files = file_actions();
   PanelContext context{state_, *worker_, painting, *palette_, files, board_panel_};
   draw_panels(context);
-  draw_tool_bar(state_, *worker_);
+  draw_tool_bar(state_, *worker_, painting.brush_volume_mm3);
   draw_session_banners(worker_->stats(), notice_);
   pigment_editor_.draw(state_, *palette_);
   const CanvasMenuRequest canvas_request = canvas_menu_.draw(canvas_w_, canvas_h_, state_.file);

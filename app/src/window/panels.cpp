@@ -2,7 +2,9 @@
 #include "impasto/files/message_text.hpp"
 #include "window/edit_help_menus.hpp"
 #include "window/enum_combo.hpp"
+#include "window/imgui_layout.hpp"
 #include "window/light_disc_look.hpp"
+#include "window/paint_strip.hpp"
 #include "window/palette_medium.hpp"
 #include "window/plot.hpp"
 #include "window/shortcuts.hpp"
@@ -346,10 +348,6 @@ void file_menu(PanelContext& c) {
   }
 }
 
-ImVec4 rgba(const std::array<float, 3>& rgb) {
-  return ImVec4(rgb[0], rgb[1], rgb[2], 1.0f);
-}
-
 // A colour chip with its explanation as the tooltip.
 void chip(const char* id, const std::array<float, 3>& rgb, float size, const char* tooltip) {
   ImGui::ColorButton(id, rgba(rgb), ImGuiColorEditFlags_NoTooltip, ImVec2(size, size));
@@ -406,12 +404,7 @@ void palette_panel(PanelContext& c) {
     ImGui::SetTooltip("Load onto a clean brush: paint still on it is wiped off first");
   ImGui::SameLine();
   ImGui::BeginDisabled(!any);
-  if (ImGui::Button("Load brush")) {
-    // Both go to the session, so a replay loads the same way.
-    const bool dirty = c.painting.brush_volume_mm3 > 0.0 || c.worker.stats().queued > 0;
-    if (s.wipe_before_load && dirty) c.worker.submit(input::WipeEvent{});
-    c.worker.submit(load_event(s));
-  }
+  if (ImGui::Button("Load brush")) load_palette_mix(s, c.worker, c.painting.brush_volume_mm3);
   ImGui::EndDisabled();
   ImGui::SameLine();
   if (ImGui::Button("Wipe")) c.worker.submit(input::WipeEvent{});

@@ -1,5 +1,8 @@
 #include "window/tool_bar.hpp"
 
+#include "window/imgui_layout.hpp"
+#include "window/paint_strip.hpp"
+
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
@@ -21,12 +24,6 @@ void tool_button(WindowState& s, const char* label, Command command, bool active
   if (active) ImGui::PopStyleColor();
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("%s (%s)", command_info(command).name, shortcut_text(command).c_str());
-}
-
-// The next button on this row when it fits in the bar, else on a new row.
-void flow(float width, float bar_right) {
-  const float x = ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x;
-  if (x + width < bar_right) ImGui::SameLine();
 }
 
 bool is_current(const BrushPreset& p, const WindowState& s) {
@@ -102,7 +99,7 @@ void delete_user_preset(WindowState& s, const BrushPreset& preset) {
   reload_presets(s);
 }
 
-void draw_tool_bar(WindowState& s, SimWorker& worker) {
+void draw_tool_bar(WindowState& s, SimWorker& worker, double brush_volume_mm3) {
   const ImGuiIO& io = ImGui::GetIO();
   constexpr float kPanelsWidth = 330.0f;  // the side panel (panels.cpp) on the right
   const float width = std::max(200.0f, io.DisplaySize.x - kPanelsWidth - 16.0f);
@@ -178,6 +175,7 @@ void draw_tool_bar(WindowState& s, SimWorker& worker) {
   }
   for (const std::string& error : s.presets.errors)
     ImGui::TextColored(ImVec4(1, 0.6f, 0.4f, 1), "%s", error.c_str());
+  draw_paint_strip(s, worker, brush_volume_mm3, right);
   ImGui::End();
 }
 

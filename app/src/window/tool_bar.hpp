@@ -21,6 +21,6 @@ void delete_user_preset(WindowState& state, const BrushPreset& preset);
 // Reads the shipped and the user's presets into state.presets.
 void reload_presets(WindowState& state);
 
-void draw_tool_bar(WindowState& state, SimWorker& worker);
+void draw_tool_bar(WindowState& state, SimWorker& worker, double brush_volume_mm3);
 
 }  // namespace impasto::app::window

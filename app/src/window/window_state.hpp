@@ -50,6 +50,13 @@ inline render::RenderSettings window_render_settings() {
   return settings;
 }
 
+// A mix loaded onto the brush: its parts per pigment of the database and how it looked on
+// the canvas then (the swatch), for the strip of recent mixes.
+struct RecentMix {
+  std::vector<float> parts;
+  std::array<float, 3> rgb{0.5f, 0.5f, 0.5f};
+};
+
 struct WindowState {
   // --- look (shared with the CPU renderer's settings) ---
   render::RenderSettings settings = window_render_settings();
@@ -61,7 +68,8 @@ struct WindowState {
   std::vector<std::string> illuminants;
 
   // --- paint on the brush ---
-  std::vector<float> mix_parts;  // per pigment of the database
+  std::vector<float> mix_parts;         // per pigment of the database
+  std::vector<RecentMix> recent_mixes;  // loaded lately, newest first (paint_strip.hpp)
   // Enough heavy paint for the default 6 mm round to lay a stroke about half a millimetre
   // thick and a few centimetres long (6 × 40 × 0.5 mm³), as a loaded brush does.
   float load_volume_mm3 = 120.0f;

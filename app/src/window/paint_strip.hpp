@@ -1,0 +1,28 @@
+#pragma once
+// Fast colour: a strip of the library's paints as chips (each drawn as its masstone looks
+// under the window's light) and of the mixes loaded lately. A click loads the brush with that
+// paint or mix (wiping it first when the Palette says so); Shift- or Ctrl-click adds a part of
+// the paint to the Palette's mix instead. The Palette's Load brush goes through the same
+// load_palette_mix, so every load joins the recent mixes.
+#include <vector>
+
+#include "window/sim_worker.hpp"
+#include "window/window_state.hpp"
+
+namespace impasto::app::window {
+
+// The recent mixes kept: the newest first, one each.
+inline constexpr std::size_t kRecentMixes = 8;
+
+// Loads the brush with the Palette's mix (wiping first when asked and there is paint on the
+// brush or queued) and remembers the mix among the recent ones. `brush_volume_mm3`: the paint
+// on the brush now.
+void load_palette_mix(WindowState& s, SimWorker& worker, double brush_volume_mm3);
+
+// The mix remembered: moved to the front of `recent` (kept to kRecentMixes).
+void remember_mix(std::vector<RecentMix>& recent, const RecentMix& mix);
+
+// The strip, drawn in the current ImGui window, flowing within `bar_right`.
+void draw_paint_strip(WindowState& s, SimWorker& worker, double brush_volume_mm3, float bar_right);
+
+}  // namespace impasto::app::window
