@@ -256,7 +256,6 @@ TEST(WindowFiles, AnErrorShowsAsANotification) {
   fs::remove_all(home);
 }
 
-
 // One painting saved from two places: Save notices that the file changed on disk since this
 // window opened it and asks (Overwrite, Save as..., Reload, Cancel) instead of replacing the
 // other's work. Cancel keeps it; Overwrite replaces it; the window's own save is then known,

@@ -18,7 +18,7 @@ namespace impasto::paintcore {
 inline constexpr int kTileSize = 64;                      // cells along a tile edge
 inline constexpr int kTileCells = kTileSize * kTileSize;  // cells in a tile
 inline constexpr int kMaxPigmentSlots = 16;               // pigment slots of a painting
-inline constexpr double kMmPerInch = 25.4;  // dpi and cell sizes
+inline constexpr double kMmPerInch = 25.4;                // dpi and cell sizes
 inline constexpr int kMaxCanvasCells = 1 << 17;           // per side
 // No cell of the canvas or the brush holds a metre of paint: a load that would put more on
 // a brush cell is refused, and a painting file holding more is refused as crafted, so what
