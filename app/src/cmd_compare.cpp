@@ -40,18 +40,25 @@ bool is_painting(const std::string& file) {
   return std::filesystem::path(file).extension() == ".impasto";
 }
 
+// One side of the comparison: a painting (kept, for its heights) or a PNG.
+struct Side {
+  std::optional<paintcore::Painting> painting;
+  render::Image linear;  // linear sRGB
+};
+
 // A painting rendered with the default settings, or a PNG decoded; linear sRGB either way.
-render::Image linear_image(const std::string& file) {
+Side load_side(const std::string& file) {
+  Side side;
   if (is_painting(file)) {
+    side.painting = paintcore::Painting::load(file);
     render::RenderSettings settings;
     settings.display = render::DisplayEncoding::linear_srgb;
-    return render::render_painting(paintcore::Painting::load(file), settings);
+    side.linear = render::render_painting(*side.painting, settings);
+    return side;
   }
-  render::Image image = render::read_png(file);
-  for (float& v : image.rgb) {
-    v = v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
-  }
-  return image;
+  side.linear = render::read_png(file);
+  for (float& v : side.linear.rgb) v = static_cast<float>(render::srgb_decoded(v));
+  return side;
 }
 
 std::vector<data::Lab> to_lab(const render::Image& image) {
@@ -70,7 +77,8 @@ std::vector<data::Lab> to_lab(const render::Image& image) {
 }
 
 void run(const CompareArgs& args) {
-  const render::Image a = linear_image(args.first), b = linear_image(args.second);
+  const Side first = load_side(args.first), second = load_side(args.second);
+  const render::Image &a = first.linear, &b = second.linear;
   if (a.width != b.width || a.height != b.height) {
     throw std::runtime_error("compare: " + args.first + " is " + std::to_string(a.width) + "x" +
                              std::to_string(a.height) + ", " + args.second + " is " +
@@ -94,11 +102,9 @@ void run(const CompareArgs& args) {
       {"first", args.first}, {"second", args.second},       {"width", a.width},
       {"height", a.height},  {"de00_mean", mean},           {"de00_p95", p95},
       {"de00_max", max},     {"threshold", args.threshold}, {"pixels_over", over}};
-  if (is_painting(args.first) && is_painting(args.second)) {
-    const render::HeightGrid ha =
-        render::surface_heights(paintcore::Painting::load(args.first).canvas());
-    const render::HeightGrid hb =
-        render::surface_heights(paintcore::Painting::load(args.second).canvas());
+  if (first.painting && second.painting) {
+    const render::HeightGrid ha = render::surface_heights(first.painting->canvas());
+    const render::HeightGrid hb = render::surface_heights(second.painting->canvas());
     double height_max = 0.0, height_mean = 0.0;
     for (std::size_t i = 0; i < ha.mm.size() && i < hb.mm.size(); ++i) {
       const double d = std::abs(static_cast<double>(ha.mm[i]) - hb.mm[i]);

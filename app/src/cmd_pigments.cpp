@@ -155,9 +155,11 @@ void run_fit(const FitArgs& args) {
     pigment.metadata["fitted_from"] = from + " (" + utc_timestamp() + ")";
     pigment.metadata["units"] = "K and S relative to the S of " + problem.reference_pigment;
     if (problem.saunderson) {
-      char text[96];
-      std::snprintf(text, sizeof text, "Saunderson k1 %g, k2 %g removed before fitting",
-                    problem.saunderson->k1, problem.saunderson->k2);
+      char text[128];
+      std::snprintf(text, sizeof text,
+                    "Saunderson k1 %g, k2 %g removed before fitting (the instrument read %g of k1)",
+                    problem.saunderson->k1, problem.saunderson->k2,
+                    problem.saunderson->surface_seen);
       pigment.metadata["interface"] = text;
     }
     note("wrote " + save_pigment_to_folder(out, std::move(pigment), args.force).string());

@@ -85,6 +85,16 @@ KsFitProblem read_ks_measurements(const std::filesystem::path& path) {
     }
     problem.saunderson = Saunderson{*k1, *k2};
   }
+  if (const auto found = table.metadata.find("surface_seen"); found != table.metadata.end()) {
+    const auto seen = parse_double(trim(found->second));
+    if (!problem.saunderson || !seen || !(*seen >= 0.0 && *seen <= 1.0)) {
+      throw std::runtime_error(at_line("surface_seen") +
+                               "expected '# surface_seen: SHARE' in [0, 1] (the share of the "
+                               "surface reflection k1 the instrument read), after a "
+                               "'# saunderson: K1 K2' line");
+    }
+    problem.saunderson->surface_seen = *seen;
+  }
 
   // Every "mix" line names a column; pigments are numbered in order of first mention.
   std::vector<std::vector<std::pair<std::string, double>>> mixes(table.columns.size());

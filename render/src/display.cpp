@@ -80,6 +80,11 @@ double srgb_encoded(double linear) {
   return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1 / 2.4) - 0.055;
 }
 
+double srgb_decoded(double encoded) {
+  encoded = std::clamp(encoded, 0.0, 1.0);
+  return encoded <= 0.04045 ? encoded / 12.92 : std::pow((encoded + 0.055) / 1.055, 2.4);
+}
+
 OCIO::TransformRcPtr display_ocio_transform(DisplayEncoding encoding) {
   switch (encoding) {
     case DisplayEncoding::srgb:

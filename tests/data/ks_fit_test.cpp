@@ -29,6 +29,21 @@ TEST(KubelkaMunk, SaundersonRoundTripsAndHasTheRightLimits) {
   for (double r : {0.05, 0.4, 0.8}) EXPECT_NEAR(s.to_internal(s.to_measured(r)), r, 1e-14);
 }
 
+// An instrument that reads part of the surface's reflection (a 45/0 probe reads none of it)
+// sees that share of k1 on top of the same body: the light crossing the surface does not
+// depend on where the instrument looks from.
+TEST(KubelkaMunk, SaundersonWithPartOfTheSurfaceSeen) {
+  const Saunderson all{0.03, 0.65}, part{0.03, 0.65, 0.4}, none{0.03, 0.65, 0.0};
+  EXPECT_NEAR(part.to_measured(0.0), 0.4 * 0.03, 1e-15);
+  EXPECT_NEAR(none.to_measured(0.0), 0.0, 1e-15);
+  for (double r : {0.0, 0.05, 0.4, 0.8, 1.0}) {
+    EXPECT_NEAR(all.to_measured(r) - part.to_measured(r), 0.6 * 0.03, 1e-15) << r;
+    EXPECT_NEAR(none.to_measured(r), saunderson_body(r, 0.03, 0.65), 1e-15) << r;
+    EXPECT_NEAR(part.to_internal(part.to_measured(r)), r, 1e-14) << r;
+    EXPECT_NEAR(none.to_internal(none.to_measured(r)), r, 1e-14) << r;
+  }
+}
+
 // Synthetic measurements made from known K and S by the forward model.
 KsFitProblem synthetic_problem(const std::vector<const Pigment*>& truth,
                                const std::optional<Saunderson>& saunderson) {
@@ -86,6 +101,11 @@ TEST(KsFit, RecoversKnownPigmentsFromSyntheticMixtures) {
 TEST(KsFit, RecoversThroughTheSaundersonCorrection) {
   const auto truth = four_golden_pigments();
   expect_recovered(truth, fit_kubelka_munk(synthetic_problem(truth, Saunderson{0.03, 0.65})));
+}
+
+TEST(KsFit, RecoversThroughASurfacePartlySeen) {
+  const auto truth = four_golden_pigments();
+  expect_recovered(truth, fit_kubelka_munk(synthetic_problem(truth, Saunderson{0.03, 0.65, 0.6})));
 }
 
 TEST(KsFit, ReportsResidualsOfInconsistentData) {
@@ -170,6 +190,28 @@ TEST_F(KsMeasurementsFile, ReadsMixesReferenceAndSaunderson) {
   EXPECT_EQ(p.samples[1].concentrations, (std::vector<double>{0, 2}));
   EXPECT_EQ(p.samples[2].concentrations, (std::vector<double>{3, 1}));
   EXPECT_EQ(p.samples[2].reflectance.values, (std::vector<double>{0.5, 0.6}));
+}
+
+TEST_F(KsMeasurementsFile, ReadsTheShareOfTheSurfaceSeen) {
+  write(
+      "# quantity: reflectance\n# reference: White\n# saunderson: 0.03 0.65\n"
+      "# surface_seen: 0.6\n# mix w: White=1\nwavelength_nm,w\n400,0.9\n");
+  const KsFitProblem p = read_ks_measurements(path_);
+  ASSERT_TRUE(p.saunderson.has_value());
+  EXPECT_EQ(p.saunderson->surface_seen, 0.6);
+  write(
+      "# quantity: reflectance\n# reference: W\n# saunderson: 0.03 0.65\n# mix w: W=1\n"
+      "wavelength_nm,w\n400,0.9\n");
+  EXPECT_EQ(read_ks_measurements(path_).saunderson->surface_seen, 1.0);  // by default, all
+  const std::string file = path_.string();
+  write(
+      "# quantity: reflectance\n# reference: W\n# saunderson: 0.03 0.65\n# surface_seen: 1.5\n"
+      "# mix w: W=1\nwavelength_nm,w\n400,0.9\n");
+  EXPECT_EQ(error().rfind(file + ":4:", 0), 0u) << error();
+  write(
+      "# quantity: reflectance\n# reference: W\n# surface_seen: 0.5\n# mix w: W=1\n"
+      "wavelength_nm,w\n400,0.9\n");
+  EXPECT_NE(error().find("after a '# saunderson"), std::string::npos) << error();
 }
 
 // The one range of a Saunderson coefficient, which the measurements file and the render

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -15,8 +16,8 @@
 #include "impasto/render/box_filter.hpp"
 #include "impasto/render/tile_renderer.hpp"
 #include "impasto/render_gl/canvas_renderer.hpp"
-#include "impasto/render_gl/framebuffer.hpp"
 #include "impasto/render_gl/gl_context.hpp"
+#include "impasto/render_gl/render_painting_gpu.hpp"
 
 namespace impasto::render_gl {
 namespace {
@@ -53,22 +54,32 @@ render::RenderSettings linear_settings() {
 
 // The view at `pixels_per_cell` over the whole canvas, rows top-down, RGB.
 std::vector<float> draw(CanvasRenderer& renderer, double pixels_per_cell, int w, int h) {
-  Framebuffer target(w, h, TexelFormat::kRGBA32F);
-  target.bind();
-  renderer.draw({0.5 * renderer.width_cells(), 0.5 * renderer.height_cells(), pixels_per_cell, 0.0},
-                w, h);
-  const std::vector<float> rgba = target.read_rgba_float();
-  std::vector<float> rgb(static_cast<std::size_t>(3 * w * h));
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      for (int c = 0; c < 3; ++c) {
-        rgb[static_cast<std::size_t>(3 * (y * w + x) + c)] =
-            rgba[static_cast<std::size_t>(4 * ((h - 1 - y) * w + x) + c)];
-      }
-    }
-  }
-  return rgb;
+  const CanvasView centred{0.5 * renderer.width_cells(), 0.5 * renderer.height_cells(),
+                           pixels_per_cell, 0.0};
+  return draw_to_image(renderer, centred, w, h).rgb;
 }
+
+// The dome canvas rendered on the CPU (the reference) and uploaded to a GPU renderer, for the
+// zoomed-out views.
+class ZoomedOut : public ::testing::Test {
+ protected:
+  std::unique_ptr<GlContext> context = create_headless_context();
+  const paintcore::Canvas canvas = dome_canvas();
+  const render::RenderSettings settings = linear_settings();
+  const int W = canvas.width_cells(), H = canvas.height_cells();
+  const render::Image reference = cpu_image();
+  CanvasRenderer renderer{W, H, settings,
+                          render::SpectralPalette(settings, test::kWhiteRedUltramarine)};
+
+  void SetUp() override { renderer.upload_all(canvas); }
+
+ private:
+  render::Image cpu_image() const {
+    render::TileRenderer cpu(settings, test::kWhiteRedUltramarine);
+    cpu.render_all(canvas);
+    return cpu.image();
+  }
+};
 
 TEST(SmoothZoom, ZoomedInPixelsBlendNeighbourCellsGently) {
   auto context = create_headless_context();
@@ -116,30 +127,18 @@ TEST(SmoothZoom, ZoomedInPixelsBlendNeighbourCellsGently) {
   EXPECT_LT(largest_step_smooth, 0.5 * largest_step_blocks);
 }
 
-TEST(SmoothZoom, ZoomedOutPixelsAreTheCpuImageBoxFiltered) {
-  auto context = create_headless_context();
-  const paintcore::Canvas canvas = dome_canvas();
-  const render::RenderSettings settings = linear_settings();
-  const int W = canvas.width_cells(), H = canvas.height_cells();
-  render::TileRenderer cpu(settings, test::kWhiteRedUltramarine);
-  cpu.render_all(canvas);
-  const render::Image reference = cpu.image();
-  CanvasRenderer renderer(W, H, settings,
-                          render::SpectralPalette(settings, test::kWhiteRedUltramarine));
-  renderer.upload_all(canvas);
+TEST_F(ZoomedOut, PixelsAreTheCpuImageBoxFiltered) {
   const std::vector<float> half = draw(renderer, 0.5, W / 2, H / 2);
+  const render::Image box = render::box_filtered(reference, 2.0, W / 2, H / 2);
   double worst = 0.0, worst_nearest = 0.0;
   for (int y = 0; y < H / 2; ++y) {
     for (int x = 0; x < W / 2; ++x) {
       for (int c = 0; c < 3; ++c) {
-        const float box =
-            0.25f *
-            (reference.pixel(2 * x, 2 * y)[c] + reference.pixel(2 * x + 1, 2 * y)[c] +
-             reference.pixel(2 * x, 2 * y + 1)[c] + reference.pixel(2 * x + 1, 2 * y + 1)[c]);
+        const float expected = box.pixel(x, y)[c];
         const float got = half[static_cast<std::size_t>(3 * (y * (W / 2) + x) + c)];
-        worst = std::max(worst, double(std::abs(got - box)));
-        worst_nearest = std::max(worst_nearest,
-                                 double(std::abs(reference.pixel(2 * x + 1, 2 * y + 1)[c] - box)));
+        worst = std::max(worst, double(std::abs(got - expected)));
+        worst_nearest = std::max(
+            worst_nearest, double(std::abs(reference.pixel(2 * x + 1, 2 * y + 1)[c] - expected)));
       }
     }
   }
@@ -152,17 +151,7 @@ TEST(SmoothZoom, ZoomedOutPixelsAreTheCpuImageBoxFiltered) {
 // Between whole cells a pixel (the fit zoom of most canvases) each pixel averages the cells
 // its footprint covers, each by its share: a pixel's centre alone would pick one cell and
 // skip others, so the weave and furrows would beat against the pixels as moiré.
-TEST(SmoothZoom, ZoomedOutBetweenWholeCellsEveryCellCountsByItsShare) {
-  auto context = create_headless_context();
-  const paintcore::Canvas canvas = dome_canvas();
-  const render::RenderSettings settings = linear_settings();
-  const int W = canvas.width_cells(), H = canvas.height_cells();
-  render::TileRenderer cpu(settings, test::kWhiteRedUltramarine);
-  cpu.render_all(canvas);
-  const render::Image reference = cpu.image();
-  CanvasRenderer renderer(W, H, settings,
-                          render::SpectralPalette(settings, test::kWhiteRedUltramarine));
-  renderer.upload_all(canvas);
+TEST_F(ZoomedOut, BetweenWholeCellsEveryCellCountsByItsShare) {
   for (const double cells_per_pixel : {1.25, 1.7, 2.5}) {
     const int w = static_cast<int>(W / cells_per_pixel), h = static_cast<int>(H / cells_per_pixel);
     const std::vector<float> view = draw(renderer, 1.0 / cells_per_pixel, w, h);

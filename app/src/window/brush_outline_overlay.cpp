@@ -2,7 +2,34 @@
 
 #include <imgui.h>
 
+#include "window/panels.hpp"
+
 namespace impasto::app::window {
+
+namespace {
+constexpr double kPointerNote_s = 5.0;  // how long the note beside the pointer stays
+}  // namespace
+
+void PointerOverlay::stroke_began(double on_brush_mm3, double now_s) {
+  if (told_empty_brush_ || on_brush_mm3 > 0.0) return;
+  told_empty_brush_ = true;
+  empty_brush_note_until_s_ = now_s + kPointerNote_s;
+}
+
+void PointerOverlay::draw(const PaintingSnapshot& painting, double pressure,
+                          const render_gl::CanvasView& view, int window_w, int window_h, double x,
+                          double y, double now_s) {
+  const bool in_window = x >= 0.0 && y >= 0.0 && x < window_w && y < window_h;
+  if (!in_window || !on_canvas_ || painting.brush_cells < 1) return;
+  const auto cell = view.window_to_cell(x, y, window_w, window_h);
+  outline_.pointer_at(cell[0], cell[1], painting.brush_cells);
+  if (now_s < empty_brush_note_until_s_) {
+    draw_pointer_note(static_cast<float>(x), static_cast<float>(y),
+                      "The brush is empty: choose paint in the Palette, then Load brush");
+  }
+  draw_brush_outline(outline_.on_screen(painting.brush_head, painting.brush_cells, pressure, view,
+                                        window_w, window_h));
+}
 
 void draw_brush_outline(const std::vector<Point2>& screen) {
   if (screen.size() < 3) return;

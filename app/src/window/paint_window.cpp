@@ -71,9 +71,6 @@
 namespace impasto::app::window {
 namespace {
 
-// How long a note beside the pointer stays (the empty brush's).
-constexpr double kPointerNote_s = 5.0;
-
 using Clock = std::chrono::steady_clock;
 
 // Set by SIGTERM, SIGINT and SIGHUP (a logout, Ctrl+C): the window closes at the next frame,
@@ -165,7 +162,6 @@ class PaintWindow {
   void create_window();
   void start_session();
   void opened_file(const std::filesystem::path& file);
-  void draw_brush_at(const PaintingSnapshot& painting, double x, double y);
   void note_an_empty_brush();
   void sync_gpu();
   void handle_canvas_input();
@@ -263,10 +259,7 @@ class PaintWindow {
   std::vector<KeyPress> key_presses_;
   PickGesture pick_gesture_;        // the eyedropper's presses on the canvas
   bool pick_cursor_ = false;        // the cursor is the eyedropper's this frame
-  BrushOutline brush_outline_;      // the brush at the pointer
-  bool pointer_on_canvas_ = false;  // no panel, menu or dialog at the pointer
-  bool told_empty_brush_ = false;   // the empty-brush note was shown this session
-  double empty_brush_note_until_s_ = 0.0;
+  PointerOverlay pointer_overlay_;  // the brush's outline and the empty-brush note
   GLFWcursor* crosshair_ = nullptr;
   std::string head_before_knife_ = "round";  // where B returns to from the knife (K)
   int window_w_ = 0, window_h_ = 0;          // this frame's window size
@@ -558,27 +551,10 @@ void PaintWindow::opened_file(const std::filesystem::path& file) {
 // A stroke begun with nothing on the brush paints nothing: say so where the pointer is, once a
 // session (only when every event is applied, so a Load brush still queued is not missed).
 void PaintWindow::note_an_empty_brush() {
-  if (told_empty_brush_ || !worker_->idle()) return;
-  const double on_brush =
-      worker_->with_painting([](const paintcore::Painting& p) { return p.brush_totals().volume; });
-  if (on_brush > 0.0) return;
-  told_empty_brush_ = true;
-  empty_brush_note_until_s_ = glfwGetTime() + kPointerNote_s;
-}
-
-// The brush's outline at the pointer (window pixels), unless a panel, menu or dialog has it.
-void PaintWindow::draw_brush_at(const PaintingSnapshot& painting, double x, double y) {
-  const bool in_window = x >= 0.0 && y >= 0.0 && x < window_w_ && y < window_h_;
-  if (!in_window || !pointer_on_canvas_ || painting.brush_cells < 1) return;
-  const auto cell = state_.view.window_to_cell(x, y, window_w_, window_h_);
-  brush_outline_.pointer_at(cell[0], cell[1], painting.brush_cells);
-  if (glfwGetTime() < empty_brush_note_until_s_) {
-    draw_pointer_note(static_cast<float>(x), static_cast<float>(y),
-                      "The brush is empty: choose paint in the Palette, then Load brush");
-  }
-  draw_brush_outline(brush_outline_.on_screen(painting.brush_head, painting.brush_cells,
-                                              state_.mouse_pressure, state_.view, window_w_,
-                                              window_h_));
+  if (!worker_->idle()) return;
+  pointer_overlay_.stroke_began(
+      worker_->with_painting([](const paintcore::Painting& p) { return p.brush_totals().volume; }),
+      glfwGetTime());
 }
 
 // The palette board kept beside the painting, or a clean one.
@@ -823,7 +799,7 @@ void PaintWindow::handle_canvas_input() {
   glfwGetCursorPos(window_, &x, &y);
   pick_cursor_ = pick_gesture_.held() || (picking && !ui_at(x, y));
   // (Asked here, between frames: within one, ImGui's implicit Debug window covers the canvas.)
-  pointer_on_canvas_ = !ui_at(x, y);
+  pointer_overlay_.set_on_canvas(!ui_at(x, y));
   update_pick_cursor();
   state_.cursor_cell = state_.view.window_to_cell(x, y, window_w_, window_h_);
   // Zoom about the cursor with the wheel, down to single cells and up to 64 px a cell.
@@ -1154,7 +1130,8 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   if (pick_cursor_) {
     draw_pick_cursor(state_, static_cast<float>(cursor_x), static_cast<float>(cursor_y));
   } else {
-    draw_brush_at(painting, cursor_x, cursor_y);
+    pointer_overlay_.draw(painting, state_.mouse_pressure, state_.view, window_w_, window_h_,
+                          cursor_x, cursor_y, glfwGetTime());
   }
   pigment_drift_.draw(state_, *worker_);
   std::optional<RecoveryPreview> preview;

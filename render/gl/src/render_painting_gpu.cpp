@@ -10,10 +10,6 @@
 
 namespace impasto::render_gl {
 
-namespace {
-
-// Draws the canvas through `view` into a width x height float target and reads it back as an
-// Image (rows top-down).
 render::Image draw_to_image(CanvasRenderer& renderer, const CanvasView& view, int width,
                             int height) {
   Framebuffer target(width, height, TexelFormat::kRGBA32F);
@@ -38,8 +34,6 @@ render::Image draw_to_image(CanvasRenderer& renderer, const CanvasView& view, in
   }
   return image;
 }
-
-}  // namespace
 
 render::Image render_canvas_in_current_context(const paintcore::Canvas& canvas,
                                                const render::RenderSettings& settings,

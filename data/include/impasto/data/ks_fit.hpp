@@ -53,7 +53,8 @@ Spectrum mixture_reflectance(const std::vector<const Pigment*>& pigments,
 
 // Reads a measurements CSV (docs/pigments.md): '# quantity: reflectance', one column per
 // sample, '# mix SAMPLE: Pigment A=0.25; Pigment B=0.75' for each column,
-// '# reference: PIGMENT', optional '# saunderson: K1 K2'. Errors name file and line.
+// '# reference: PIGMENT', optional '# saunderson: K1 K2' and '# surface_seen: SHARE' (the
+// share of k1 the instrument read, default 1). Errors name file and line.
 KsFitProblem read_ks_measurements(const std::filesystem::path& path);
 
 }  // namespace impasto::data

@@ -70,11 +70,21 @@ constexpr bool saunderson_coefficient_valid(double k) {
 }
 inline constexpr const char* kSaundersonCoefficientRange = "in [0, 1)";
 
-// One interface's coefficients, measured → body reflectance and back.
+// One interface's coefficients, measured → body reflectance and back. surface_seen is the
+// share of the surface's own reflection k1 the instrument read: 1 with the specular component
+// included (an integrating sphere), 0 with it excluded (45°/0° geometry), between for a probe
+// that catches part of it. The light crossing the surface, (1 − k1)(1 − k2), is the same
+// whatever the instrument sees, so a paint fitted from any geometry renders the same.
 struct Saunderson {
   double k1 = kSaundersonK1, k2 = kSaundersonK2;
-  double to_internal(double measured) const { return saunderson_to_internal(measured, k1, k2); }
-  double to_measured(double internal) const { return saunderson_to_measured(internal, k1, k2); }
+  double surface_seen = 1.0;
+  double to_internal(double measured) const {
+    const double body = measured - surface_seen * k1;
+    return body / ((1.0 - k1) * (1.0 - k2) + k2 * body);
+  }
+  double to_measured(double internal) const {
+    return surface_seen * k1 + saunderson_body(internal, k1, k2);
+  }
 };
 
 }  // namespace impasto::data

@@ -38,6 +38,8 @@ std::array<double, 9> xyz_to_linear_srgb();
 // The sRGB curve (IEC 61966-2-1) of one linear value, clamped to [0, 1] first: for the few
 // places that encode a value themselves (swatches, the close-up, benchmarks' 8-bit levels).
 double srgb_encoded(double linear);
+// The inverse of srgb_encoded: an sRGB-encoded value in [0, 1] → linear.
+double srgb_decoded(double encoded);
 // The inverse of a row-major 3x3 matrix (by cofactors; the caller's matrix is invertible).
 std::array<double, 9> invert_3x3(const std::array<double, 9>& m);
 

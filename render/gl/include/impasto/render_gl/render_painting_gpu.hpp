@@ -11,6 +11,7 @@
 #include "impasto/render/image.hpp"
 #include "impasto/render/render_settings.hpp"
 #include "impasto/render/spectral_palette.hpp"
+#include "impasto/render_gl/canvas_renderer.hpp"
 #include "impasto/render_gl/gl_context.hpp"
 
 namespace impasto::render_gl {
@@ -51,6 +52,11 @@ void render_painting_close_up_gpu_to_file(const paintcore::Painting& painting,
                                           const render::CellRegion& region, int pixels_per_cell,
                                           const std::filesystem::path& path,
                                           HeadlessBackend backend = HeadlessBackend::kAuto);
+
+// Draws the canvas through `view` into a width x height float target in the current context
+// and reads it back as an Image (rows top-down; the renderer's display encoding).
+render::Image draw_to_image(CanvasRenderer& renderer, const CanvasView& view, int width,
+                            int height);
 
 // Renders into the current context (no context made): for callers that keep one.
 render::Image render_canvas_in_current_context(const paintcore::Canvas& canvas,
