@@ -4,7 +4,8 @@
 # beside itself (usr/bin/../share/impasto), as after a moved install prefix. An installed copy
 # never reads the source tree (files::data_dir), so a missing file fails here.
 set -euo pipefail
-deb="$(realpath "${1:?usage: smoke-test.sh IMPASTO.deb}")"
+deb="$(realpath "${1:?usage: smoke-test.sh IMPASTO.deb [IMPASTO-PIGMENTS-OKUMURA.deb]}")"
+addon="${2:+$(realpath "$2")}"
 root="$(mktemp -d)"
 trap 'rm -rf "$root"' EXIT
 dpkg-deb -x "$deb" "$root/unpacked"
@@ -35,4 +36,37 @@ dpkg-deb -f "$deb" Depends | grep -q libtbb || { echo "smoke test: no shlibdeps"
 for png in demo.png relit.png thumb.png; do
   [ -s "$png" ] || { echo "smoke test: $png was not written" >&2; exit 1; }
 done
+
+# Only freely licensed data in the main package: no pigment or data file under a
+# non-commercial licence, and every pattern of a non-commercial stanza of its copyright file
+# names files outside it.
+if grep -rlE "NonCommercial|BY-NC" "$root/unpacked/usr/share/impasto"; then
+  echo "smoke test: the package holds the files above, under a non-commercial licence" >&2
+  exit 1
+fi
+awk '/^Files:/ {files=$0} /^License: .*NC/ {print files}' \
+  "$root/unpacked/usr/share/doc/impasto/copyright" | sed 's/^Files://' | tr ' ' '\n' |
+  while read -r pattern; do
+    [ -n "$pattern" ] || continue
+    for installed in "$root/unpacked/usr/share/impasto/"$pattern; do
+      if [ -e "$installed" ]; then
+        echo "smoke test: $pattern (non-commercial) is in the package" >&2
+        exit 1
+      fi
+    done
+  done
+"$impasto" pigments list | grep -q "Blue Green Shade .*bundled *CC BY 4.0" ||
+  { echo "smoke test: pigments list lacks the free set with its licence" >&2; exit 1; }
+
+# The non-commercial add-on, unpacked over the same root: its pigments join the library.
+if [ -n "$addon" ]; then
+  dpkg-deb -f "$addon" Section | grep -q "^non-free" ||
+    { echo "smoke test: the add-on is not in section non-free" >&2; exit 1; }
+  dpkg-deb -x "$addon" "$root/unpacked"
+  "$impasto" pigments list | grep -q "Titanium White .*add-on *CC BY-NC-SA 4.0" ||
+    { echo "smoke test: the add-on's pigments are not in the library" >&2; exit 1; }
+  [ "$("$impasto" pigments list | grep -c " add-on ")" -eq 27 ] ||
+    { echo "smoke test: the add-on does not hold 27 pigments" >&2; exit 1; }
+  echo "smoke test: $(basename "$addon") adds its 27 pigments to the library"
+fi
 echo "smoke test: $(basename "$deb") runs from an unpacked root (replay, render, thumbnail)"

@@ -14,7 +14,9 @@ cmake --build build/release -j "$jobs"
 ctest --test-dir build/release -j "$jobs" --timeout 600 | tee build/release/ctest.log
 # The Debian package from the same build, unpacked and run with no source tree to lean on.
 bash packaging/deb.sh build/release
-bash packaging/smoke-test.sh build/release/package/impasto_*.deb
+bash packaging/deb-okumura.sh build/release/package
+bash packaging/smoke-test.sh build/release/package/impasto_*.deb \
+  build/release/package/impasto-pigments-okumura_*.deb
 
 # -O1 -g1 replace Debug's own -g (in CMAKE_CXX_FLAGS they came first, and -g overrode -g1).
 cmake -S . -B build/sanitize -G Ninja -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="-O1 -g1" \

@@ -31,7 +31,7 @@ struct CanvasEditResult {
   bool reframed = false;        // a crop or a resize was asked for
   std::string varnished;        // "0.03 mm of satin varnish over 50x40 cells", or empty
   std::optional<double> dried;  // the fraction dried last
-  // "200x150 -> 100x90 cells; cut away 1.25 mm^3 of paint (Burnt Sienna 0.6, ...)"
+  // "200x150 -> 100x90 cells; cut away 1.25 mm^3 of paint (Red Oxide 0.6, ...)"
   std::string summary(const paintcore::Painting& painting) const;
 };
 

@@ -52,8 +52,8 @@ struct TrainingRow {
 TrainingRow train_rule(const data::Spectrum& light, const std::string& light_name, int nodes,
                        NodeWeights weights, const std::vector<data::Pigment>& pigments) {
   const auto& cmf = data::cie1931_2deg();
-  const data::Spectrum ground = hiding_reflectance(data::PigmentDatabase::defaults().get(
-      "Titanium White"));  // the ground of the accuracy samples
+  const data::Spectrum ground = hiding_reflectance(
+      data::PigmentDatabase::defaults().get("White"));  // the ground of the accuracy samples
   const auto start = std::chrono::steady_clock::now();
   // Built from scratch (what a new palette or light costs once) and kept: the accuracy rows
   // below read it from the cache.

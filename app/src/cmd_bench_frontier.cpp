@@ -140,8 +140,7 @@ std::string frontier_svg(const std::vector<FrontierRow>& rows,
 void run(const BenchFrontierArgs& args) {
   const std::vector<data::Pigment>& pigments = data::PigmentDatabase::defaults().all();
   const std::vector<ColorSample> samples = standard_color_samples(pigments);
-  const data::Spectrum ground =
-      hiding_reflectance(data::PigmentDatabase::defaults().get("Titanium White"));
+  const data::Spectrum ground = hiding_reflectance(data::PigmentDatabase::defaults().get("White"));
   std::vector<FrontierRow> rows;
   for (const std::string& light_name : args.lights) {
     const data::Spectrum light = data::light_from_spec(light_name);

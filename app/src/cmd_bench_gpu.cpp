@@ -48,8 +48,7 @@ struct BenchGpuArgs {
 // painted or not, so the frame time does not depend on where the paint is.
 paintcore::Painting striped_painting(int width, int height, int slots) {
   paintcore::Painting painting({width, height, 300.0, 1});
-  const char* names[] = {"Titanium White", "Ultramarine Blue", "Pyrrole Red",
-                         "Hansa Yellow Opaque"};
+  const char* names[] = {"White", "Blue Red Shade", "Red", "Cold Yellow"};
   for (int s = 0; s < slots; ++s) painting.slot_for(names[s]);
   return painting;
 }
@@ -72,7 +71,7 @@ void run(const BenchGpuArgs& args) {
   {
     paintcore::Painting painting = striped_painting(width, height, 4);
     painting.set_brush({"round", 20.0, 0.5});
-    painting.load_brush({{"Ultramarine Blue", 1.0}, {"Titanium White", 1.0}}, 400.0);
+    painting.load_brush({{"Blue Red Shade", 1.0}, {"White", 1.0}}, 400.0);
     painting.begin_stroke();
     for (int i = 0; i <= 20; ++i) {
       paintcore::PenSample sample;
@@ -199,7 +198,7 @@ void run(const BenchGpuArgs& args) {
     paintcore::Painting painting({size, size, 300.0, 1});
     const double cell_mm = painting.canvas().cell_mm();
     painting.set_brush({"round", args.brush_px * cell_mm, 0.5});
-    painting.load_brush({{"Pyrrole Red", 1.0}, {"Titanium White", 1.0}}, 20000.0);
+    painting.load_brush({{"Red", 1.0}, {"White", 1.0}}, 20000.0);
     render::SpectralPalette palette(settings, painting.pigment_slots());
     render_gl::CanvasRenderer renderer(size, size, settings, palette);
     renderer.upload_all(painting.canvas());

@@ -59,9 +59,8 @@ struct BenchRenderArgs {
 };
 
 // The demo palette's eight pigments: a synthetic painting holds them all.
-const std::vector<std::string> kSlots{
-    "Ultramarine Blue", "Hansa Yellow Opaque", "Quinacridone Magenta", "Phthalo Green (Blue Shade)",
-    "Titanium White",   "Burnt Sienna",        "Cobalt Blue",          "Pyrrole Red"};
+const std::vector<std::string> kSlots{"Blue Red Shade", "Cold Yellow", "Magenta",          "Green",
+                                      "White",          "Red Oxide",   "Blue Green Shade", "Red"};
 
 // A canvas with 62 % of its tiles painted (as a finished study: 2,550 of 4,096 at 4096²):
 // a dry layer of two pigments under a wet layer of three, both varying cell to cell, in

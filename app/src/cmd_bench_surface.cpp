@@ -73,8 +73,7 @@ paintcore::Canvas test_canvas(int width, int height, bool spreading = true) {
 
 SpectralPalette palette_for(const RenderSettings& settings) {
   const auto& db = data::PigmentDatabase::defaults();
-  std::vector<data::Pigment> pigments{db.get("Titanium White"), db.get("Carbon Black"),
-                                      db.get("Quinacridone Crimson")};
+  std::vector<data::Pigment> pigments{db.get("White"), db.get("Black"), db.get("Magenta")};
   return SpectralPalette(settings, data::light_from_spec(settings.light), pigments,
                          hiding_reflectance(pigments[0]));
 }

@@ -154,7 +154,7 @@ Latency measure(const BenchWindowArgs& args, int width, int height,
     std::ofstream file(strokes);
     file << "impasto-strokes 1\ncanvas " << width << " " << height << " " << args.dpi
          << "\nbrush round size=" << args.brush_cells * cell_mm << " stiffness=0.5\n";
-    if (args.load_mm3 > 0) file << "load " << args.load_mm3 << " \"Burnt Sienna\" 5\n";
+    if (args.load_mm3 > 0) file << "load " << args.load_mm3 << " \"Red Oxide\" 5\n";
   }
   const auto out = dir / (name + "-window.txt");
   const pid_t pid = start_window(
@@ -351,7 +351,7 @@ void setup(CLI::App& root) {
   cmd->add_option("--brush", args->brush_cells, "Brush width in cells")
       ->check(finite_range(1, 4096));
   add_dpi_option(*cmd, args->dpi);
-  cmd->add_option("--load", args->load_mm3, "Paint loaded on the brush, mm3 (Burnt Sienna)")
+  cmd->add_option("--load", args->load_mm3, "Paint loaded on the brush, mm3 (Red Oxide)")
       ->check(finite_range(0.0, 10000.0));
   cmd->add_option("--circles", args->circles, "Circles drawn")->check(finite_range(1, 100));
   cmd->add_option("--moves", args->moves, "Mouse moves a circle or a drag, 8 ms apart")

@@ -18,6 +18,7 @@
 
 #include "command.hpp"
 #include "impasto/files/message_text.hpp"
+#include "impasto/util/text.hpp"
 #include "pigment_curves.hpp"
 #include "vocabulary.hpp"
 
@@ -26,6 +27,14 @@ namespace impasto::app::pigments_cmd {
 namespace {
 
 using namespace impasto::data;
+
+// A metadata field in a few words, for a table: up to its first ',', '(', ':' or ';' ("CC BY
+// 4.0" of "CC BY 4.0 (credit: ...)"), or "-".
+std::string field_in_brief(const Pigment& p, const std::string& key) {
+  const auto found = p.metadata.find(key);
+  if (found == p.metadata.end() || found->second.empty()) return "-";
+  return std::string(util::trim(found->second.substr(0, found->second.find_first_of(",(:;"))));
+}
 
 void run_list(bool json) {
   const PigmentLibrary& library = active_pigment_library();
@@ -40,13 +49,17 @@ void run_list(bool json) {
                       {"to_nm", p.K.wavelengths_nm.back()},
                       {"layer", library.origins()[i].layer},
                       {"file", library.origins()[i].file.string()},
-                      {"binder", binder == p.metadata.end() ? "" : binder->second}});
+                      {"binder", binder == p.metadata.end() ? "" : binder->second},
+                      {"licence", p.metadata.contains("licence") ? p.metadata.at("licence") : ""},
+                      {"source", p.metadata.contains("source") ? p.metadata.at("source") : ""}});
       continue;
     }
-    std::printf("%-32s %4.0f-%4.0f nm  %-10s %s\n", files::terminal_text(p.name).c_str(),
+    std::printf("%-26s %4.0f-%4.0f nm  %-8s %-16s %-8s %s\n", files::terminal_text(p.name).c_str(),
                 p.K.wavelengths_nm.front(), p.K.wavelengths_nm.back(),
                 library.origins()[i].layer.c_str(),
-                files::terminal_text(binder == p.metadata.end() ? "" : binder->second).c_str());
+                files::terminal_text(field_in_brief(p, "licence")).c_str(),
+                files::terminal_text(binder == p.metadata.end() ? "" : binder->second).c_str(),
+                files::terminal_text(field_in_brief(p, "source")).c_str());
   }
   if (json) std::cout << rows.dump(2) << "\n";
 }

@@ -100,7 +100,7 @@ void run_export(const EditArgs& a) {
 }
 
 const Pigment& white_of(const PigmentDatabase& db) {
-  return db.get("Titanium White");
+  return db.get("White");
 }
 
 void run_plot(const EditArgs& a) {

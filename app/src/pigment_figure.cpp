@@ -14,6 +14,7 @@
 
 #if __has_include(<imgui.h>)  // the window build links ImGui
 #include <imgui.h>
+#include "impasto/util/text.hpp"
 #define IMPASTO_FIGURE_HAS_FONT 1
 #endif
 
@@ -232,9 +233,7 @@ void draw_text(render::Image& image, const Figure::Text& t) {
 }  // namespace
 
 void write_figure(const std::filesystem::path& path, const Figure& f) {
-  std::string extension = path.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string extension = util::ascii_lowercase(path.extension().string());
   if (extension == ".svg") {
     files::write_file_atomically(path, figure_svg(f));
     return;

@@ -6,19 +6,9 @@
 #include "impasto/data/pigment_library.hpp"
 #include "impasto/data/pigments.hpp"
 #include "impasto/files/message_text.hpp"
+#include "impasto/util/text.hpp"
 
 namespace impasto::data {
-namespace {
-
-bool equal_ignoring_case(std::string_view a, std::string_view b) {
-  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-           return std::tolower(static_cast<unsigned char>(x)) ==
-                  std::tolower(static_cast<unsigned char>(y));
-         });
-}
-
-}  // namespace
-
 PigmentDatabase PigmentDatabase::load(const std::filesystem::path& dir) {
   if (!std::filesystem::is_directory(dir)) {
     throw std::runtime_error(dir.string() + ": not a pigment folder");
@@ -62,7 +52,7 @@ const Pigment* PigmentDatabase::find(std::string_view name) const {
     if (p.name == name) return &p;
   }
   for (const auto& p : pigments_) {
-    if (equal_ignoring_case(p.name, name)) return &p;
+    if (util::equal_ignoring_case(p.name, name)) return &p;
   }
   return nullptr;
 }
@@ -71,7 +61,8 @@ const Pigment& PigmentDatabase::get(std::string_view name) const {
   if (const Pigment* p = find(name)) return *p;
   std::string known;
   for (const auto& p : pigments_) known += (known.empty() ? "" : ", ") + p.name;
-  throw std::runtime_error("unknown pigment " + files::excerpt(name) + " (known: " + known + ")");
+  throw std::runtime_error("unknown pigment " + files::excerpt(name) + " (known: " + known + ")" +
+                           where_to_get_pigment(name));
 }
 
 }  // namespace impasto::data

@@ -116,9 +116,22 @@ std::filesystem::path user_pigment_folder() {
   return {};
 }
 
+std::vector<std::filesystem::path> pigment_addon_folders() {
+  std::vector<std::filesystem::path> folders;
+  std::error_code error;
+  for (const auto& entry :
+       std::filesystem::directory_iterator(data_dir() / kPigmentAddonsFolder, error)) {
+    if (entry.is_directory(error)) folders.push_back(entry.path());
+  }
+  std::sort(folders.begin(), folders.end());
+  return folders;
+}
+
 std::vector<PigmentLayer> standard_pigment_layers(
     const std::vector<std::filesystem::path>& extra_folders) {
   std::vector<PigmentLayer> layers{{"bundled", data_dir() / "pigments", false, true}};
+  for (const auto& folder : pigment_addon_folders())
+    layers.push_back({"add-on", folder, false, false});
   if (auto user = user_pigment_folder(); !user.empty())
     layers.push_back({"user", user, true, false});
   for (const auto& folder : extra_folders) layers.push_back({"--pigments", folder, false, true});

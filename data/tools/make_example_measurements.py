@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Writes data/measurements/golden_synthetic_mixtures.csv: reflectances of opaque mixtures of
-four Golden acrylics computed with the Kubelka-Munk forward model (plus the Saunderson
+"""Writes data/measurements/synthetic_mixtures.csv: reflectances of opaque mixtures of
+four of the bundled acrylics computed with the Kubelka-Munk forward model (plus the Saunderson
 interface), rounded to 6 decimals. It exercises
 `impasto pigments fit`, which should give back the shipped K and S.
 
@@ -11,7 +11,7 @@ import math
 import pathlib
 import sys
 
-PIGMENTS = ["Titanium White", "Phthalo Blue (Green Shade)", "Pyrrole Red", "Hansa Yellow Opaque"]
+PIGMENTS = ["White", "Blue Green Shade", "Red", "Cold Yellow"]
 K1, K2 = 0.03, 0.65
 
 
@@ -40,26 +40,27 @@ def main():
         if name in PIGMENTS:
             table[name] = read_pigment(f)
     samples = {}
-    short = {"Titanium White": "white", "Phthalo Blue (Green Shade)": "blue",
-             "Pyrrole Red": "red", "Hansa Yellow Opaque": "yellow"}
+    short = {"White": "white", "Blue Green Shade": "blue",
+             "Red": "red", "Cold Yellow": "yellow"}
     for p in PIGMENTS:
         samples[f"{short[p]} masstone"] = {p: 1.0}
     for p in PIGMENTS[1:]:
         for white in (0.5, 0.9):
-            samples[f"{short[p]} tint {white:g} white"] = {"Titanium White": white, p: 1 - white}
-    for a, b in (("Phthalo Blue (Green Shade)", "Hansa Yellow Opaque"),
-                 ("Pyrrole Red", "Hansa Yellow Opaque"), ("Phthalo Blue (Green Shade)", "Pyrrole Red")):
+            samples[f"{short[p]} tint {white:g} white"] = {"White": white, p: 1 - white}
+    for a, b in (("Blue Green Shade", "Cold Yellow"),
+                 ("Red", "Cold Yellow"), ("Blue Green Shade", "Red")):
         samples[f"{short[a]} + {short[b]}"] = {a: 0.5, b: 0.5}
     wavelengths = sorted(table[PIGMENTS[0]])
     columns = {name: reflectance(mix, table) for name, mix in samples.items()}
-    out = data / "measurements" / "golden_synthetic_mixtures.csv"
+    out = data / "measurements" / "synthetic_mixtures.csv"
     with out.open("w") as f:
         f.write("# quantity: reflectance\n")
         f.write("# description: synthetic measurements of opaque drawdowns, computed from the shipped "
-                "Golden K and S with the Kubelka-Munk model and a Saunderson interface; for trying "
+                "K and S (the free Kimera set) with the Kubelka-Munk model and a Saunderson interface; for trying "
                 "'impasto pigments fit'\n")
-        f.write("# licence: derived from CC BY-NC-SA 4.0 data (see data/pigments/README.md)\n")
-        f.write("# reference: Titanium White\n")
+        f.write("# licence: CC BY 4.0, derived from M. Iwanicki's PaintMixing measurements "
+                "(see data/pigments/README.md)\n")
+        f.write("# reference: White\n")
         f.write(f"# saunderson: {K1} {K2}\n")
         for name, mix in samples.items():
             f.write(f"# mix {name}: " + "; ".join(f"{p}={c:g}" for p, c in mix.items()) + "\n")

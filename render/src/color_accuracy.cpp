@@ -42,8 +42,8 @@ SampledScene sample_scene(const data::Spectrum& light, int nodes, NodeWeights we
   settings.wavelengths = nodes;
   settings.node_weights = weights;
   settings.adaptation = ChromaticAdaptation::none;  // Lab below is relative to own white
-  const data::Spectrum white = hiding_reflectance(find_pigment(pigments, "Titanium White"));
-  const data::Spectrum black = hiding_reflectance(find_pigment(pigments, "Carbon Black"));
+  const data::Spectrum white = hiding_reflectance(find_pigment(pigments, "White"));
+  const data::Spectrum black = hiding_reflectance(find_pigment(pigments, "Black"));
   SpectralPalette palette(settings, light, pigments, white);
   std::vector<float> black_ground = sample_at_nodes(black, palette.sampling());
   std::vector<float> white_ground(palette.ground(), palette.ground() + palette.nodes());
@@ -155,8 +155,8 @@ double time_cells(const SampledScene& scene, ReflectanceStorage storage, int cel
 }  // namespace
 
 std::vector<ColorSample> standard_color_samples(const std::vector<data::Pigment>& pigments) {
-  const int white = index_of(pigments, "Titanium White");
-  index_of(pigments, "Carbon Black");
+  const int white = index_of(pigments, "White");
+  index_of(pigments, "Black");
   std::vector<ColorSample> samples;
   const int count = static_cast<int>(pigments.size());
   for (int p = 0; p < count; ++p) {

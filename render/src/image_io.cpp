@@ -16,6 +16,7 @@
 #include "impasto/files/memory_budget.hpp"
 #include "impasto/render/image.hpp"
 #include "impasto/render/png_encoder.hpp"
+#include "impasto/util/text.hpp"
 
 namespace impasto::render {
 namespace {
@@ -103,9 +104,7 @@ void write_exr(const std::filesystem::path& path, const Image& image) {
 }
 
 ImageFileType image_file_type(const std::filesystem::path& path) {
-  std::string extension = path.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const std::string extension = util::ascii_lowercase(path.extension().string());
   if (extension == ".png") return ImageFileType::png;
   if (extension == ".exr") return ImageFileType::exr;
   throw std::runtime_error(path.string() + ": unknown image type '" + extension +

@@ -111,7 +111,7 @@ double rule_objective(const RuleError& error) {
 std::vector<TrainingPaint> training_paints(const std::vector<data::Pigment>& pigments) {
   std::vector<TrainingPaint> paints;
   const int count = static_cast<int>(pigments.size());
-  const int white = index_of(pigments, "Titanium White");
+  const int white = index_of(pigments, "White");
   for (int p = 0; p < count; ++p) {
     // No opaque layer of one pigment: it is R∞ at any thickness, that is a bench masstone.
     for (float glaze : {kThinGlaze, kGlaze}) {

@@ -22,7 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr std::string_view kFileMark = "#impasto-record-file ";
-constexpr const char* kGroundPigment = "Titanium White";  // as spectral_palette.cpp
+constexpr const char* kGroundPigment = "White";  // as spectral_palette.cpp
 // The carried flake paints kept in the cache, the most recently used: a painting's few, many
 // times over (each record is a folder of a few kB).
 constexpr std::size_t kKeptCarriedPigments = 256;
@@ -133,7 +133,7 @@ std::shared_ptr<const std::map<std::string, data::Pigment>> carried_pigments(
   auto carried = std::make_shared<std::map<std::string, data::Pigment>>();
   for (const auto& [name, record] : painting.pigment_records()) {
     // Keyed by the slot's spelling (the record holds the library's: "pyrrole red" may
-    // carry "Pyrrole Red").
+    // carry "Red").
     carried->emplace(name,
                      pigment_from_record(record, "the painting's pigment " + files::excerpt(name)));
   }

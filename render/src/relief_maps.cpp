@@ -23,6 +23,7 @@
 #include "impasto/files/input_file.hpp"
 #include "impasto/files/memory_budget.hpp"
 #include "impasto/paintcore/paint_surface.hpp"
+#include "impasto/util/text.hpp"
 
 namespace impasto::render {
 namespace {
@@ -41,10 +42,7 @@ std::string exact(double v) {
 }
 
 std::string lower_extension(const std::filesystem::path& path) {
-  std::string e = path.extension().string();
-  std::transform(e.begin(), e.end(), e.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return e;
+  return util::ascii_lowercase(path.extension().string());
 }
 
 void append_bytes(png_structp png, png_bytep data, png_size_t size) {

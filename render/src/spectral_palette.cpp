@@ -12,7 +12,7 @@
 namespace impasto::render {
 namespace {
 
-constexpr const char* kGroundPigment = "Titanium White";
+constexpr const char* kGroundPigment = "White";
 
 }  // namespace
 

@@ -27,7 +27,7 @@ class CanvasEditCommand : public ::testing::Test {
     fs::create_directories(dir_);
     paintcore::Painting p({80, 60, 254.0, 1}, 1);
     p.set_brush(paintcore::BrushSettings{"round", 2.0, 0.5});
-    p.load_brush({{"Burnt Sienna", 1.0}}, 20.0);
+    p.load_brush({{"Red Oxide", 1.0}}, 20.0);
     p.begin_stroke();
     for (int i = 0; i < 12; ++i) {
       paintcore::PenSample s;
@@ -156,7 +156,7 @@ TEST_F(CanvasEditCommand, AVarnishRecordReplaysAsEditVarnishDoes) {
   const auto write = [&](const std::string& name, const std::string& varnish) {
     std::ofstream out(file(name));
     out << "impasto-strokes 2\ncanvas 80 60 254\nbrush round size=2 stiffness=0.5\n"
-           "load 20 \"Burnt Sienna\" 1\n";
+           "load 20 \"Red Oxide\" 1\n";
     for (int i = 0; i < 12; ++i)
       out << "pen " << 0.01 * i << " " << 0.5 + 0.5 * i << " 3 " << (i < 11 ? 0.8 : 0.0)
           << " 0 0 0 " << (i < 11 ? 17 : 16) << "\n";

@@ -35,9 +35,9 @@ class CarriedPigments : public ::testing::Test {
   }
   void TearDown() override { paintcore::Painting::set_pigment_record_source({}); }
   fs::path user() const { return folder_.user(); }
-  // Pyrrole Red's file as "My Red", its K scaled.
+  // Red's file as "My Red", its K scaled.
   void write_my_red(double k_scale) {
-    std::ifstream in(data::data_dir() / "pigments" / "pyrrole_red.csv");
+    std::ifstream in(data::data_dir() / "pigments" / "red.csv");
     std::ostringstream out;
     bool header_seen = false;
     for (std::string line; std::getline(in, line);) {
@@ -62,7 +62,7 @@ class CarriedPigments : public ::testing::Test {
 paintcore::Painting painted_with(const std::string& pigment) {
   paintcore::Painting p({64, 48, 254.0, 3}, 1);
   p.set_brush(paintcore::BrushSettings{"flat", 3.0, 0.5});
-  p.load_brush({{pigment, 1.0}, {"Titanium White", 0.2}}, 6.0);
+  p.load_brush({{pigment, 1.0}, {"White", 0.2}}, 6.0);
   test::paint_straight_stroke(p, {0.6, 0.2, 2.4, 20, 0.8f, paintcore::kPenTip});
   return p;
 }

@@ -27,7 +27,7 @@ class CompareCommand : public ::testing::Test {
     // The same canvas with one stroke across rows 40..56, x from about 30 to 100 cells.
     paintcore::Painting stroke({128, 96, 150.0, 1});
     stroke.set_brush({"round", 2.5, 0.5});
-    stroke.load_brush({{"Burnt Sienna", 1.0}}, 60.0);
+    stroke.load_brush({{"Red Oxide", 1.0}}, 60.0);
     stroke.begin_stroke();
     for (int i = 0; i <= 24; ++i) {
       paintcore::PenSample sample;

@@ -39,7 +39,7 @@ TEST(FlakeReplay, MetallicStudySparklesOnlyWhereFlakePaintIs) {
   const paintcore::Painting painting = replay(input::load_strokes_any(kMetallic), options, nullptr);
   const int aluminium = slot_of(painting, "Aluminium Metallic");
   const int pearl = slot_of(painting, "Mica Blue Pearl");
-  const int blue = slot_of(painting, "Ultramarine Blue");
+  const int blue = slot_of(painting, "Blue Red Shade");
   ASSERT_GE(aluminium, 0);
   ASSERT_GE(pearl, 0);
   ASSERT_GE(blue, 0);

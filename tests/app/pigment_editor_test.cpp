@@ -50,10 +50,9 @@ class PigmentEditorTest : public ::testing::Test {
 
 TEST_F(PigmentEditorTest, EveryTabDrawsAndTheFitMatchesTheExample) {
   PigmentEditor editor;
-  editor.open("Pyrrole Red");
-  editor.compare_with("Quinacridone Magenta");
-  editor.fit_panel().fit(
-      (data::data_dir() / "measurements" / "golden_synthetic_mixtures.csv").string());
+  editor.open("Red");
+  editor.compare_with("Magenta");
+  editor.fit_panel().fit((data::data_dir() / "measurements" / "synthetic_mixtures.csv").string());
   for (auto tab :
        {PigmentEditor::Tab::curves, PigmentEditor::Tab::metadata, PigmentEditor::Tab::import,
         PigmentEditor::Tab::fit, PigmentEditor::Tab::compare}) {
@@ -69,13 +68,13 @@ TEST_F(PigmentEditorTest, EveryTabDrawsAndTheFitMatchesTheExample) {
 }
 
 TEST_F(PigmentEditorTest, AnImportGoesToTheUserLayerAndUndoTakesItBack) {
-  std::ifstream in(data::data_dir() / "pigments" / "cobalt_blue.csv");
+  std::ifstream in(data::data_dir() / "pigments" / "blue_red_shade.csv");
   std::ofstream out(folder_.dir() / "mine.csv");
   for (std::string line; std::getline(in, line);)
     out << (line.rfind("# name:", 0) == 0 ? "# name: My Blue" : line) << '\n';
   out.close();
   PigmentEditor editor;
-  editor.open("Cobalt Blue");
+  editor.open("Blue Red Shade");
   frame(editor);
   editor.import_file(folder_.dir() / "mine.csv");
   EXPECT_EQ(editor.message(), "imported mine.csv");

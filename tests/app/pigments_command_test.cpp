@@ -42,9 +42,10 @@ class PigmentsCommand : public ::testing::Test {
 };
 
 TEST_F(PigmentsCommand, ImportThenExportLeavesNumbersAndMetadataUnchanged) {
-  const fs::path bundled = data::data_dir() / "pigments" / "quinacridone_magenta.csv";
+  const fs::path bundled = data::data_dir() / "pigments" / "magenta.csv";
   std::string text = read_text(bundled);
-  text.replace(text.find("# name: Quinacridone Magenta"), 28, "# name: My Magenta");
+  const std::string name_line = "# name: Magenta";
+  text.replace(text.find(name_line), name_line.size(), "# name: My Magenta");
   std::ofstream(folder_.dir() / "mine.csv") << text;
   run("pigments import " + (folder_.dir() / "mine.csv").string());
   ASSERT_TRUE(fs::is_regular_file(user() / "my_magenta.csv"));
@@ -69,17 +70,17 @@ TEST_F(PigmentsCommand, ImportThenExportLeavesNumbersAndMetadataUnchanged) {
 }
 
 TEST_F(PigmentsCommand, AddRenameRemoveTouchOnlyTheUserLayer) {
-  run("pigments add \"Warm Red\" --copy-of \"pyrrole red\" --set binder=oil");
+  run("pigments add \"Warm Red\" --copy-of \"red\" --set binder=oil");
   const data::Pigment& added = data::active_pigment_library().database().get("Warm Red");
   EXPECT_EQ(added.metadata.at("binder"), "oil");
-  EXPECT_NE(added.metadata.at("modified").find("copied from Pyrrole Red"), std::string::npos);
+  EXPECT_NE(added.metadata.at("modified").find("copied from Red"), std::string::npos);
   run("pigments rename \"warm red\" \"Hot Red\"");
   EXPECT_FALSE(fs::exists(user() / "warm_red.csv"));
   EXPECT_TRUE(fs::exists(user() / "hot_red.csv"));
   run("pigments remove \"Hot Red\"");
   EXPECT_FALSE(fs::exists(user() / "hot_red.csv"));
-  EXPECT_THROW(run("pigments remove \"Titanium White\""), std::runtime_error) << "bundled";
-  EXPECT_NE(data::active_pigment_library().database().find("Titanium White"), nullptr);
+  EXPECT_THROW(run("pigments remove \"White\""), std::runtime_error) << "bundled";
+  EXPECT_NE(data::active_pigment_library().database().find("White"), nullptr);
 }
 
 TEST_F(PigmentsCommand, CheckReportsEveryBadFile) {
@@ -101,15 +102,14 @@ TEST_F(PigmentsCommand, CheckReportsEveryBadFile) {
 }
 
 TEST_F(PigmentsCommand, FitRefusesToOverwriteAndKeepsMetadata) {
-  const std::string fit =
-      "pigments fit " +
-      (data::data_dir() / "measurements" / "golden_synthetic_mixtures.csv").string() + " --out " +
-      (folder_.dir() / "fit").string();
+  const std::string fit = "pigments fit " +
+                          (data::data_dir() / "measurements" / "synthetic_mixtures.csv").string() +
+                          " --out " + (folder_.dir() / "fit").string();
   run(fit);
-  const fs::path white = folder_.dir() / "fit" / "titanium_white.csv";
+  const fs::path white = folder_.dir() / "fit" / "white.csv";
   const std::string first = read_text(white);
-  EXPECT_NE(first.find("# fitted_from: golden_synthetic_mixtures.csv"), std::string::npos);
-  EXPECT_NE(first.find("# licence: CC BY-NC-SA"), std::string::npos) << "kept from the library";
+  EXPECT_NE(first.find("# fitted_from: synthetic_mixtures.csv"), std::string::npos);
+  EXPECT_NE(first.find("# licence: CC BY 4.0"), std::string::npos) << "kept from the library";
   EXPECT_THROW(run(fit), std::runtime_error);
   EXPECT_EQ(read_text(white), first);
   std::string edited = first;
@@ -120,11 +120,11 @@ TEST_F(PigmentsCommand, FitRefusesToOverwriteAndKeepsMetadata) {
 }
 
 TEST_F(PigmentsCommand, PlotWritesSvgAndPng) {
-  run("pigments plot \"Cobalt Blue\" --out " + (folder_.dir() / "p.svg").string());
-  run("pigments plot \"Cobalt Blue\" --out " + (folder_.dir() / "p.png").string());
-  EXPECT_NE(read_text(folder_.dir() / "p.svg").find("Cobalt Blue"), std::string::npos);
+  run("pigments plot \"Blue Red Shade\" --out " + (folder_.dir() / "p.svg").string());
+  run("pigments plot \"Blue Red Shade\" --out " + (folder_.dir() / "p.png").string());
+  EXPECT_NE(read_text(folder_.dir() / "p.svg").find("Blue Red Shade"), std::string::npos);
   EXPECT_GT(fs::file_size(folder_.dir() / "p.png"), 1000u);
-  EXPECT_THROW(run("pigments plot \"Cobalt Blue\" --out " + (folder_.dir() / "p.gif").string()),
+  EXPECT_THROW(run("pigments plot \"Blue Red Shade\" --out " + (folder_.dir() / "p.gif").string()),
                std::runtime_error);
 }
 

@@ -42,7 +42,7 @@ class RecoverCommand : public ::testing::Test {
     const fs::path strokes = folder_ / (id + ".strokes");
     input::StrokeFile file;
     file.events = {input::CanvasEvent{64, 48, 254.0}, input::OriginEvent{},
-                   input::LoadEvent{20.0, {{"Pyrrole Red", 1.0}}, {}}};
+                   input::LoadEvent{20.0, {{"Red", 1.0}}, {}}};
     for (int i = 0; i <= 10; ++i) {
       paintcore::PenSample s;
       s.time_s = 0.01 * i;

@@ -75,13 +75,13 @@ TEST(Replay, SessionEventsDryUndoAndWipeKeepTheLedger) {
   std::istringstream text(R"(impasto-strokes 1
 canvas 256 256 100
 brush round size=5 stiffness=0.4
-load 20 "Titanium White" 1 "Ultramarine Blue" 2
+load 20 "White" 1 "Blue Red Shade" 2
 pen 0.00 10 10 0.6 0 0 0 17
 pen 0.05 30 20 0.8 0 0 0 17
 pen 0.10 50 30 0.8 0 0 0 17
 pen 0.15 50 30 0 0 0 0 16
 dry 0.5
-load 10 "Hansa Yellow Opaque" 1
+load 10 "Cold Yellow" 1
 pen 0.20 10 50 0.7 10 -5 30 17
 pen 0.25 50 10 0.9 10 -5 30 17
 pen 0.30 50 10 0 0 0 0 16

@@ -238,7 +238,7 @@ input::SampleEvent pen(double t, double x, double y, bool down, float pressure =
 
 std::vector<input::StrokeEvent> stroke(double y) {
   std::vector<input::StrokeEvent> events;
-  events.push_back(input::LoadEvent{20.0, {{"Ultramarine Blue", 1.0}}, {}});
+  events.push_back(input::LoadEvent{20.0, {{"Blue Red Shade", 1.0}}, {}});
   for (int i = 0; i <= 8; ++i) events.push_back(pen(0.01 * i, 2.0 + 0.8 * i, y, i < 8));
   return events;
 }

@@ -22,7 +22,7 @@ TEST(SimWorkerAutosave, KeepsAFewMegabytesOfHistoryAndSaveKeepsAll) {
   paintcore::SyntheticPaintingSpec spec;
   spec.width_cells = spec.height_cells = 1024;
   spec.painted_share = 90.0 / 256.0;
-  spec.slots = {"Ultramarine Blue", "Titanium White", "Burnt Sienna", "Pyrrole Red"};
+  spec.slots = {"Blue Red Shade", "White", "Red Oxide", "Red"};
   SimWorker worker(paintcore::synthetic_painting(spec, 1), SessionRecording{});
   const std::size_t own_cap =
       worker.with_painting([](const paintcore::Painting& p) { return p.saved_history_bytes(); });

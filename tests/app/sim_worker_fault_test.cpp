@@ -39,7 +39,7 @@ paintcore::Painting small_painting() {
 std::vector<input::StrokeEvent> strokes(int count, int first = 0) {
   std::vector<input::StrokeEvent> events;
   for (int k = first; k < first + count; ++k) {
-    events.push_back(input::LoadEvent{20.0, {{"Ultramarine Blue", 1.0}}, {}});
+    events.push_back(input::LoadEvent{20.0, {{"Blue Red Shade", 1.0}}, {}});
     for (int i = 0; i <= 8; ++i) {
       paintcore::PenSample s;
       s.time_s = k + 0.01 * i;

@@ -3,26 +3,33 @@
 // simulated deposit rather than a constant.
 #include <gtest/gtest.h>
 #include <impasto/data/colorimetry.hpp>
+#include <impasto/data/data_dir.hpp>
+#include <impasto/data/pigment_library.hpp>
 #include <impasto/data/pigments.hpp>
 #include <impasto/render/display.hpp>
 #include <impasto/render/tile_renderer.hpp>
 
 #include <algorithm>
 #include <array>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
 #include <vector>
 
+#include "../common/user_pigment_folder.hpp"
 #include "session/swatch.hpp"
 
 namespace impasto::app {
 namespace {
 
-SwatchStroke ultramarine_stroke() {
+SwatchStroke blue_stroke() {
   SwatchStroke stroke;
   stroke.brush.head = "round";
   stroke.brush.size_mm = 6.0;
   stroke.brush.stiffness = 0.5;
   stroke.load.volume_mm3 = 40.0;
-  stroke.load.mix = {{"Ultramarine Blue", 1.0}};
+  stroke.load.mix = {{"Blue Red Shade", 1.0}};
   stroke.pressure = 0.6f;
   stroke.dpi = 150.0;
   stroke.weave_seed = 0;  // flat: the rendered stroke's shading comes from the paint alone
@@ -54,7 +61,7 @@ double delta_e(const DisplayRgb& a, const DisplayRgb& b) {
 // rendered whole, as the window shows it: the small swatch painting changes nothing but the
 // weave beneath the stroke (ΔE2000 0.2–0.6 seen; under 1 is not noticeable).
 TEST(Swatch, OnCanvasChipMatchesTheStrokeOnACanvas) {
-  SwatchStroke stroke = ultramarine_stroke();
+  SwatchStroke stroke = blue_stroke();
   stroke.weave_seed = 1;  // the window's canvas has a weave
   const render::RenderSettings settings = linear_settings();
   const Swatch swatch = make_swatch(stroke, settings);
@@ -77,7 +84,7 @@ TEST(Swatch, OnCanvasChipMatchesTheStrokeOnACanvas) {
 // The stroke's area spans each column's painted cells, gaps included, and nothing else; the
 // mean colour is the rendered cells' mean over it, checked against a plain loop.
 TEST(Swatch, MeanStrokeColourIsTheRenderedMeanOverTheStrokesArea) {
-  const paintcore::Painting painting = paint_swatch_stroke(ultramarine_stroke());
+  const paintcore::Painting painting = paint_swatch_stroke(blue_stroke());
   const paintcore::Canvas& canvas = painting.canvas();
   const std::vector<std::uint8_t> area = stroke_area(canvas);
   const int w = canvas.width_cells();
@@ -112,8 +119,8 @@ TEST(Swatch, MeanStrokeColourIsTheRenderedMeanOverTheStrokesArea) {
 
 TEST(Swatch, MasstoneIsTheOpaqueLayerAndThinLayersShowTheGround) {
   const render::RenderSettings settings = linear_settings();
-  const std::vector<std::vector<input::PigmentPart>> mixes = {
-      {{"Ultramarine Blue", 1.0}}, {{"Titanium White", 2.0}, {"Pyrrole Red", 1.0}}};
+  const std::vector<std::vector<input::PigmentPart>> mixes = {{{"Blue Red Shade", 1.0}},
+                                                              {{"White", 2.0}, {"Red", 1.0}}};
   const double opaque = masstone_thickness_mm(settings);
   const auto masstones = render_flat_layers(settings, mixes, opaque);
   const auto thicker = render_flat_layers(settings, mixes, 10.0 * opaque);
@@ -139,6 +146,20 @@ TEST(Swatch, ManyPigmentsRenderInBatches) {
   // A batch's palette is not a single pigment's: a rule trained on the palette differs with
   // it, the Gaussian rule does not.
   settings.node_weights = render::NodeWeights::interpolatory;
+  // More pigments than a painting has slots: the bundled ones and copies of Red in the user
+  // layer, each a pigment of its own.
+  test::UserPigmentFolder folder("impasto_swatch_batches");
+  std::filesystem::create_directories(folder.user());
+  std::ifstream bundled_red(data::data_dir() / "pigments" / "red.csv");
+  const std::string red((std::istreambuf_iterator<char>(bundled_red)), {});
+  for (int copy = 1; copy <= 4; ++copy) {
+    std::string text = red;
+    const std::string name_line = "# name: Red\n";
+    text.replace(text.find(name_line), name_line.size(),
+                 "# name: Red " + std::to_string(copy) + "\n");
+    std::ofstream(folder.user() / ("red_" + std::to_string(copy) + ".csv")) << text;
+  }
+  data::reload_active_pigment_library();
   const auto& pigments = data::PigmentDatabase::defaults().all();
   std::vector<std::vector<input::PigmentPart>> mixes;
   for (const auto& pigment : pigments) mixes.push_back({{pigment.name, 1.0}});
@@ -152,7 +173,7 @@ TEST(Swatch, ManyPigmentsRenderInBatches) {
 }
 
 TEST(Swatch, IsDeterministicAndRejectsBadMixes) {
-  const SwatchStroke stroke = ultramarine_stroke();
+  const SwatchStroke stroke = blue_stroke();
   const render::RenderSettings settings;
   const Swatch a = make_swatch(stroke, settings);
   const Swatch b = make_swatch(stroke, settings);

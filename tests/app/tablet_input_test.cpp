@@ -164,7 +164,7 @@ TEST(TabletFeed, RecordedReportStreamPaintsAndRecordsExactlyWhatTheWindowWould) 
     SimWorker worker(paintcore::Painting({g.canvas_w_cells, g.canvas_h_cells, 101.6, 1}),
                      std::move(recording));
     worker.submit(input::BrushEvent{"round", 3.0, 0.5, {}});
-    worker.submit(input::LoadEvent{200.0, {{"Pyrrole Red", 1.0}}, {}});
+    worker.submit(input::LoadEvent{200.0, {{"Red", 1.0}}, {}});
     PenFeed feed([&](input::StrokeEvent e) { worker.submit(std::move(e)); });
     // The window polls a few samples a frame: feed them in frame-sized batches.
     for (std::size_t i = 0; i < polled.samples.size(); i += 7) {

@@ -67,7 +67,7 @@ TEST(Thumbnail, ABigPaintingIsRenderedCoarseAndShowsItsPaint) {
   // pixels, the band about two pixels high.
   paintcore::Painting painting({1200, 400, 100.0, 1}, 1);
   painting.set_brush(paintcore::BrushSettings{.head = "round", .size_mm = 10.0, .stiffness = 0.5});
-  painting.load_brush({{"Pyrrole Red", 1.0}}, 3000.0);
+  painting.load_brush({{"Red", 1.0}}, 3000.0);
   painting.begin_stroke();
   for (int i = 0; i <= 40; ++i)
     painting.stroke_to({.time_s = 0.05 * i,

@@ -35,7 +35,7 @@ WindowState burnt_umber_state() {
   const auto& pigments = data::PigmentDatabase::defaults().all();
   s.mix_parts.assign(pigments.size(), 0.0f);
   for (std::size_t i = 0; i < pigments.size(); ++i)
-    if (pigments[i].name == "Burnt Umber") s.mix_parts[i] = 1.0f;
+    if (pigments[i].name == "Red Oxide") s.mix_parts[i] = 1.0f;
   return s;
 }
 

@@ -4,7 +4,7 @@
 
 namespace impasto::app::window::test {
 
-inline const std::string kWhite = "Titanium White";
-inline const std::string kBlue = "Ultramarine Blue";
+inline const std::string kWhite = "White";
+inline const std::string kBlue = "Blue Red Shade";
 
 }  // namespace impasto::app::window::test

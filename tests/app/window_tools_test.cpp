@@ -159,7 +159,7 @@ TEST(Eyedropper, TheChipsAreRenderedFromTheMix) {
   ASSERT_TRUE(picked);
   render_picked_colours(*picked, render::RenderSettings{});
   EXPECT_TRUE(picked->rendered);
-  // White with a quarter of ultramarine: a light blue, bluer than red.
+  // White with a quarter of Blue Red Shade: a light blue, bluer than red.
   EXPECT_GT(picked->masstone_rgb[2], picked->masstone_rgb[0] + 0.05f);
   EXPECT_GT(picked->masstone_rgb[2], 0.4f);
 }

@@ -78,8 +78,7 @@ void render_canvas(benchmark::State& state, Scene scene) {
   namespace render = impasto::render;
   namespace paintcore = impasto::paintcore;
   const auto& db = impasto::data::PigmentDatabase::defaults();
-  std::vector<impasto::data::Pigment> pigments{db.get("Titanium White"),
-                                               db.get("Ultramarine Blue")};
+  std::vector<impasto::data::Pigment> pigments{db.get("White"), db.get("Blue Red Shade")};
   if (scene != Scene::plain_palette) pigments.push_back(db.get("Aluminium Metallic"));
   render::RenderSettings settings;
   settings.threads = 1;

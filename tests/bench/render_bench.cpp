@@ -17,7 +17,7 @@ using namespace impasto;
 using paintcore::kTileCells;
 using paintcore::kTileSize;
 
-const std::vector<std::string> kSlots{"Titanium White", "Ultramarine Blue", "Yellow Ochre"};
+const std::vector<std::string> kSlots{"White", "Blue Red Shade", "Yellow Oxide"};
 
 // A painting covered everywhere: one dry layer and a wet layer of two pigments per tile.
 paintcore::Canvas covered_canvas(int cells) {

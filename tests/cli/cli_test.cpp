@@ -386,14 +386,14 @@ TEST_F(Cli, PigmentsListAndCheckPrintJson) {
   ASSERT_EQ(r.status, 0) << r.err;
   const nlohmann::json list = nlohmann::json::parse(r.out);
   bool white = false;
-  for (const auto& p : list) white |= p.at("name") == "Titanium White";
+  for (const auto& p : list) white |= p.at("name") == "White";
   EXPECT_TRUE(white);
   // A folder with one good pigment (exported from the library) and one broken file.
   fs::create_directories(dir_ / "mine");
-  r = impasto("pigments export \"Burnt Sienna\" -o mine/sienna.csv");
+  r = impasto("pigments export \"Red Oxide\" -o mine/sienna.csv");
   ASSERT_EQ(r.status, 0) << r.err;
-  EXPECT_EQ(r.out, "exported Burnt Sienna: mine/sienna.csv\n");
-  r = impasto("pigments export \"Burnt Sienna\" -o quiet.csv --quiet");
+  EXPECT_EQ(r.out, "exported Red Oxide: mine/sienna.csv\n");
+  r = impasto("pigments export \"Red Oxide\" -o quiet.csv --quiet");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(r.out, "");  // the note left out
   EXPECT_TRUE(fs::exists(dir_ / "quiet.csv"));
@@ -402,16 +402,16 @@ TEST_F(Cli, PigmentsListAndCheckPrintJson) {
   EXPECT_EQ(r.status, 1);
   const nlohmann::json check = nlohmann::json::parse(r.out);
   ASSERT_EQ(check.at("pigments").size(), 1u) << r.out;
-  EXPECT_EQ(check.at("pigments")[0].at("name"), "Burnt Sienna");
+  EXPECT_EQ(check.at("pigments")[0].at("name"), "Red Oxide");
   ASSERT_EQ(check.at("errors").size(), 1u) << r.out;
   EXPECT_NE(check.at("errors")[0].get<std::string>().find("broken.csv"), std::string::npos);
-  r = impasto("pigments show \"Burnt Sienna\" --json");
+  r = impasto("pigments show \"Red Oxide\" --json");
   ASSERT_EQ(r.status, 0) << r.err;
   const nlohmann::json show = nlohmann::json::parse(r.out);
   EXPECT_EQ(show.at("K").size(), show.at("nm").size());
   EXPECT_EQ(show.at("S").size(), show.at("nm").size());
   EXPECT_GT(show.at("nm").size(), 10u);
-  r = impasto("pigments swatch \"Burnt Sienna\" --json --tint 1:4");
+  r = impasto("pigments swatch \"Red Oxide\" --json --tint 1:4");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_EQ(nlohmann::json::parse(r.out).at("swatches").size(), 1u);
 }

@@ -17,8 +17,7 @@ struct ShortSession {
   static constexpr double kBrushSizeMm = 4, kBrushStiffness = 0.5;
   static constexpr double kLoadMm3 = 30;    // each stroke wipes the brush and loads this
   static constexpr double kPressure = 0.7;  // while the tip is down
-  static constexpr std::array<const char*, 3> kPigments = {"Ultramarine Blue", "Pyrrole Red",
-                                                           "Titanium White"};
+  static constexpr std::array<const char*, 3> kPigments = {"Blue Red Shade", "Red", "White"};
   struct Pen {
     double time_s, x_mm, y_mm;
     bool down;  // the last sample of a stroke lifts the tip

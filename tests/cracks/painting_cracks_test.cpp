@@ -20,7 +20,7 @@ paintcore::Painting half_painted() {
   paintcore::Painting painting({200, 150, 254.0, 0}, 1);
   painting.set_brush({"round", 4.0, 0.5});
   for (int row = 0; row < 4; ++row) {
-    painting.load_brush({{"Titanium White", 1.0}}, 40.0);
+    painting.load_brush({{"White", 1.0}}, 40.0);
     test::paint_straight_stroke(painting, {1.0, 0.4, 2.0 + 3.5 * row, 20, 0.9f});
   }
   painting.dry(1.0);

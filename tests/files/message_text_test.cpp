@@ -6,7 +6,7 @@ namespace impasto::files {
 namespace {
 
 TEST(MessageText, QuotesShortTextAsItIs) {
-  EXPECT_EQ(excerpt("Titanium White"), "'Titanium White'");
+  EXPECT_EQ(excerpt("White"), "'White'");
 }
 
 TEST(MessageText, EscapesControlCharacters) {

@@ -30,7 +30,7 @@ using paintcore::kTileSize;
 // with smoothly varying thickness and mix, a dry layer under part of it, one tile untouched.
 paintcore::Canvas make_test_canvas() {
   paintcore::Canvas canvas({150, 100, 300.0, 7});
-  const int slots = static_cast<int>(test::kWhitePhthaloRedYellowBlack.size());
+  const int slots = static_cast<int>(test::kWhiteBlueRedYellowBlack.size());
   for (int index : {0, 1, 4}) {  // tiles 2, 3 and 5 stay untouched
     paintcore::Tile& tile = canvas.ensure_tile(index, slots);
     const int x0 = (index % canvas.tiles_x()) * kTileSize;
@@ -107,11 +107,11 @@ TEST_P(CanvasImage, GpuMatchesCpuWithinTwoLevelsOf255) {
   settings.storage = c.storage;
   const paintcore::Canvas canvas = make_test_canvas();
 
-  render::TileRenderer cpu(settings, test::kWhitePhthaloRedYellowBlack);
+  render::TileRenderer cpu(settings, test::kWhiteBlueRedYellowBlack);
   cpu.render_all(canvas);
   const render::Image expected = cpu.image();
   const render::Image actual =
-      render_painting_gpu(canvas, test::kWhitePhthaloRedYellowBlack, settings);
+      render_painting_gpu(canvas, test::kWhiteBlueRedYellowBlack, settings);
 
   ASSERT_EQ(actual.width, expected.width);
   ASSERT_EQ(actual.height, expected.height);
@@ -160,7 +160,7 @@ render::Image read_back(const Framebuffer& target) {
 TEST(CanvasTiles, DirtyTileUploadsFollowStrokesUndoAndDry) {
   paintcore::Painting painting({200, 140, 150.0, 3}, 1);
   painting.set_brush({"round", 5.0, 0.5});
-  painting.load_brush({{"Ultramarine Blue", 2.0}, {"Titanium White", 1.0}}, 60.0);
+  painting.load_brush({{"Blue Red Shade", 2.0}, {"White", 1.0}}, 60.0);
   render::RenderSettings settings;
   auto context = create_headless_context();
   const paintcore::Canvas& canvas = painting.canvas();
@@ -212,7 +212,7 @@ TEST(CanvasImageErrors, FullSpectrumIsRefusedWithAClearMessage) {
   settings.wavelengths = 0;
   const paintcore::Canvas canvas({8, 8, 100.0, 0});
   try {
-    render_painting_gpu(canvas, test::kWhitePhthaloRedYellowBlack, settings);
+    render_painting_gpu(canvas, test::kWhiteBlueRedYellowBlack, settings);
     FAIL() << "full-spectrum rendering was accepted on the GPU";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find("nodes"), std::string::npos) << e.what();

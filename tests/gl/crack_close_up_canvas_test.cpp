@@ -30,7 +30,7 @@ paintcore::Painting cracked_painting() {
   paintcore::Painting painting({40, 30, 254.0, 3}, 1);
   painting.set_brush({"round", 3.0, 0.5});
   for (int row = 0; row < 2; ++row) {
-    painting.load_brush({{row == 0 ? "Pyrrole Red" : "Titanium White", 1.0}}, 40.0);
+    painting.load_brush({{row == 0 ? "Red" : "White", 1.0}}, 40.0);
     impasto::test::paint_straight_stroke(painting, {0.3, 0.2, 0.8 + 1.2 * row, 16, 0.9f});
     if (row == 0) painting.dry(1.0);
   }

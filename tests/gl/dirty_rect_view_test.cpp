@@ -29,7 +29,7 @@ TEST(DirtyRectView, FramesAlongAStrokeMatchAWholeRedrawAndShadeLess) {
   const int w = 240, h = 180;
   paintcore::Painting painting({256, 192, 150.0, 3}, 1);
   painting.set_brush({"round", 3.0, 0.5});
-  painting.load_brush({{"Ultramarine Blue", 2.0}, {"Titanium White", 1.0}}, 80.0);
+  painting.load_brush({{"Blue Red Shade", 2.0}, {"White", 1.0}}, 80.0);
   render::RenderSettings settings;
   settings.wavelengths = 4;
   settings.shadows = true;  // the longest reach: the rim toward the light

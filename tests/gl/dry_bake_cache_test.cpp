@@ -51,7 +51,7 @@ TEST(DryBakeCache, StrokesKeepTheBakeAndDryingsRenewIt) {
   auto context = create_headless_context();
   paintcore::Painting painting({kWidth, kHeight, 150.0, 3}, 1);
   painting.set_brush({"round", 4.0, 0.5});
-  painting.load_brush({{"Ultramarine Blue", 2.0}, {"Titanium White", 1.0}}, 80.0);
+  painting.load_brush({{"Blue Red Shade", 2.0}, {"White", 1.0}}, 80.0);
   stroke(painting, 6.0, 8.0, 26.0, 16.0);
   painting.dry(1.0);
   render::RenderSettings settings;
@@ -68,7 +68,7 @@ TEST(DryBakeCache, StrokesKeepTheBakeAndDryingsRenewIt) {
 
   // Wet paint across the dried stroke: its tiles are uploaded, their dry stacks not baked.
   std::uint64_t baked = renderer.dry_tiles_baked();
-  painting.load_brush({{"Titanium White", 1.0}}, 60.0);
+  painting.load_brush({{"White", 1.0}}, 60.0);
   stroke(painting, 8.0, 18.0, 24.0, 6.0);
   upload_changes();
   EXPECT_EQ(renderer.dry_tiles_baked(), baked);

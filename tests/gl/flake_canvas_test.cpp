@@ -25,7 +25,7 @@ using paintcore::kTileSize;
 // tiles 2, 3 and 5 without flakes.
 paintcore::Canvas flake_canvas() {
   paintcore::Canvas canvas({150, 100, 254.0, 5});
-  const int slots = static_cast<int>(test::kWhiteAluminiumUltramarinePearl.size());
+  const int slots = static_cast<int>(test::kWhiteAluminiumBluePearl.size());
   auto paint = [&](int index, int slot, float part, int other) {
     paintcore::Tile& tile = canvas.ensure_tile(index, slots);
     for (int cell = 0; cell < kTileCells; ++cell) {
@@ -82,16 +82,16 @@ TEST_P(FlakeCanvas, GpuSparklesMatchTheCpu) {
   settings.light_elevation_deg = 50.0;
   const paintcore::Canvas canvas = flake_canvas();
 
-  render::TileRenderer cpu(settings, test::kWhiteAluminiumUltramarinePearl);
+  render::TileRenderer cpu(settings, test::kWhiteAluminiumBluePearl);
   cpu.render_all(canvas);
   const render::Image expected = cpu.image();
   render::RenderSettings calm_settings = settings;
   calm_settings.flakes = false;
-  render::TileRenderer calm(calm_settings, test::kWhiteAluminiumUltramarinePearl);
+  render::TileRenderer calm(calm_settings, test::kWhiteAluminiumBluePearl);
   calm.render_all(canvas);
   const render::Image plain = calm.image();
   const render::Image actual =
-      render_painting_gpu(canvas, test::kWhiteAluminiumUltramarinePearl, settings);
+      render_painting_gpu(canvas, test::kWhiteAluminiumBluePearl, settings);
 
   ASSERT_EQ(actual.width, expected.width);
   ASSERT_EQ(actual.height, expected.height);
@@ -148,8 +148,8 @@ TEST(FlakeCanvasGpu, APaintingWithoutFlakePaintIsUnchanged) {
   render::RenderSettings on;
   render::RenderSettings off = on;
   off.flakes = false;
-  const render::Image a = render_painting_gpu(canvas, test::kWhiteAluminiumUltramarinePearl, on);
-  const render::Image b = render_painting_gpu(canvas, test::kWhiteAluminiumUltramarinePearl, off);
+  const render::Image a = render_painting_gpu(canvas, test::kWhiteAluminiumBluePearl, on);
+  const render::Image b = render_painting_gpu(canvas, test::kWhiteAluminiumBluePearl, off);
   EXPECT_EQ(a.rgb, b.rgb);
 }
 

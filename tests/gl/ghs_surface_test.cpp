@@ -152,10 +152,10 @@ void main() {
 
 // 150x100 cells: a dry layer with brush ridges (slopes that turn highlights toward the
 // viewer) under a blob of wet paint thinning to nothing at its edge (wetness from full to
-// none), carbon black on the left where the surface light shows most, one tile untouched.
+// none), black on the left where the surface light shows most, one tile untouched.
 paintcore::Canvas make_ridged_canvas() {
   paintcore::Canvas canvas({150, 100, 300.0, 7});
-  const int slots = static_cast<int>(test::kWhitePhthaloRedBlack.size());
+  const int slots = static_cast<int>(test::kWhiteBlueRedBlack.size());
   paintcore::DryLayer layer;
   for (int index : {0, 1, 4}) {
     paintcore::Tile& tile = canvas.ensure_tile(index, slots);
@@ -215,10 +215,10 @@ TEST_P(GhsCanvas, GpuMatchesCpuWithinHalfALevelOf255) {
   settings.light_azimuth_deg = 200.0;
   const paintcore::Canvas canvas = make_ridged_canvas();
 
-  render::TileRenderer cpu(settings, test::kWhitePhthaloRedBlack);
+  render::TileRenderer cpu(settings, test::kWhiteBlueRedBlack);
   cpu.render_all(canvas);
   const render::Image expected = cpu.image();
-  const render::Image actual = render_painting_gpu(canvas, test::kWhitePhthaloRedBlack, settings);
+  const render::Image actual = render_painting_gpu(canvas, test::kWhiteBlueRedBlack, settings);
   ASSERT_EQ(actual.width, expected.width);
   ASSERT_EQ(actual.height, expected.height);
   const auto [worst, mean, worst_x, worst_y] = test::compare_images(actual, expected);
@@ -230,7 +230,7 @@ TEST_P(GhsCanvas, GpuMatchesCpuWithinHalfALevelOf255) {
   // Not vacuous: the same canvas under Blinn-Phong differs (the ghs terms were drawn).
   render::RenderSettings blinn = settings;
   blinn.surface.model = render::SurfaceModel::blinn;
-  const render::Image blinn_image = render_painting_gpu(canvas, test::kWhitePhthaloRedBlack, blinn);
+  const render::Image blinn_image = render_painting_gpu(canvas, test::kWhiteBlueRedBlack, blinn);
   double changed = 0.0;
   for (std::size_t i = 0; i < blinn_image.rgb.size(); ++i)
     changed = std::max(changed, std::abs(double(blinn_image.rgb[i]) - actual.rgb[i]));
@@ -255,7 +255,7 @@ TEST(GhsCanvasSettings, SetSettingsAndTheLightSwitchTheModelBothWays) {
   render::RenderSettings settings;
   settings.surface.subsurface = false;
   CanvasRenderer gpu(canvas.width_cells(), canvas.height_cells(), settings,
-                     render::SpectralPalette(settings, test::kWhitePhthaloRedBlack));
+                     render::SpectralPalette(settings, test::kWhiteBlueRedBlack));
   Framebuffer target(canvas.width_cells(), canvas.height_cells(), TexelFormat::kRGBA32F);
   const auto draw_against_cpu = [&](const render::RenderSettings& s, const char* step) {
     gpu.upload_all(canvas);
@@ -263,7 +263,7 @@ TEST(GhsCanvasSettings, SetSettingsAndTheLightSwitchTheModelBothWays) {
     gpu.draw(one_pixel_per_cell(canvas.width_cells(), canvas.height_cells()), canvas.width_cells(),
              canvas.height_cells());
     const std::vector<float> rgba = target.read_rgba_float();
-    render::TileRenderer cpu(s, test::kWhitePhthaloRedBlack);
+    render::TileRenderer cpu(s, test::kWhiteBlueRedBlack);
     cpu.render_all(canvas);
     const render::Image expected = cpu.image();
     double worst = 0.0;
@@ -279,13 +279,13 @@ TEST(GhsCanvasSettings, SetSettingsAndTheLightSwitchTheModelBothWays) {
   };
   settings.surface.model = render::SurfaceModel::ghs;
   settings.surface.medium = surface::Finish::matte;
-  gpu.set_settings(settings, render::SpectralPalette(settings, test::kWhitePhthaloRedBlack));
+  gpu.set_settings(settings, render::SpectralPalette(settings, test::kWhiteBlueRedBlack));
   draw_against_cpu(settings, "ghs matte");
   settings.light_elevation_deg = 20.0;
   gpu.set_shading(settings);
   draw_against_cpu(settings, "light lowered");
   settings.surface.model = render::SurfaceModel::blinn;
-  gpu.set_settings(settings, render::SpectralPalette(settings, test::kWhitePhthaloRedBlack));
+  gpu.set_settings(settings, render::SpectralPalette(settings, test::kWhiteBlueRedBlack));
   draw_against_cpu(settings, "back to blinn");
 }
 
@@ -296,7 +296,7 @@ TEST(GhsCanvasCells, MediaAndVarnishOfEachCellMatchTheCpu) {
   paintcore::Canvas canvas = make_ridged_canvas();
   for (int index : {0, 1, 4}) {
     paintcore::Tile& tile =
-        canvas.ensure_tile(index, static_cast<int>(test::kWhitePhthaloRedBlack.size()));
+        canvas.ensure_tile(index, static_cast<int>(test::kWhiteBlueRedBlack.size()));
     tile.medium.assign(static_cast<std::size_t>(paintcore::kMediumPlanes) * kTileCells, 0.0f);
     tile.varnish.assign(static_cast<std::size_t>(paintcore::kVarnishPlanes) * kTileCells, 0.0f);
     for (int cell = 0; cell < kTileCells; ++cell) {
@@ -324,10 +324,10 @@ TEST(GhsCanvasCells, MediaAndVarnishOfEachCellMatchTheCpu) {
   settings.surface.subsurface = false;
   settings.light_elevation_deg = 25.0;
   settings.light_azimuth_deg = 200.0;
-  render::TileRenderer cpu(settings, test::kWhitePhthaloRedBlack);
+  render::TileRenderer cpu(settings, test::kWhiteBlueRedBlack);
   cpu.render_all(canvas);
   const render::Image expected = cpu.image();
-  const render::Image actual = render_painting_gpu(canvas, test::kWhitePhthaloRedBlack, settings);
+  const render::Image actual = render_painting_gpu(canvas, test::kWhiteBlueRedBlack, settings);
   double worst = 0.0;
   for (std::size_t i = 0; i < expected.rgb.size(); ++i)
     worst = std::max(worst, std::abs(double(actual.rgb[i]) - expected.rgb[i]));
@@ -335,7 +335,7 @@ TEST(GhsCanvasCells, MediaAndVarnishOfEachCellMatchTheCpu) {
   EXPECT_LE(worst, 0.5 / 255.0);
   // Not vacuous: without the cells' surfaces the CPU renders otherwise.
   paintcore::Canvas plain = make_ridged_canvas();
-  render::TileRenderer cpu_plain(settings, test::kWhitePhthaloRedBlack);
+  render::TileRenderer cpu_plain(settings, test::kWhiteBlueRedBlack);
   cpu_plain.render_all(plain);
   const render::Image plain_image = cpu_plain.image();
   double changed = 0.0;
@@ -353,11 +353,11 @@ TEST(GhsCanvasZoom, ZoomedInPixelsBlendTheFourNearestCellsShading) {
   settings.surface.model = render::SurfaceModel::ghs;
   settings.surface.subsurface = false;
   settings.display = render::DisplayEncoding::linear_srgb;  // blending is linear on both sides
-  render::TileRenderer cpu(settings, test::kWhitePhthaloRedBlack);
+  render::TileRenderer cpu(settings, test::kWhiteBlueRedBlack);
   cpu.render_all(canvas);
   const render::Image cells = cpu.image();
   CanvasRenderer gpu(canvas.width_cells(), canvas.height_cells(), settings,
-                     render::SpectralPalette(settings, test::kWhitePhthaloRedBlack));
+                     render::SpectralPalette(settings, test::kWhiteBlueRedBlack));
   gpu.upload_all(canvas);
   constexpr int kPixelsPerCell = 4, kSide = 64;  // around the canvas centre
   Framebuffer target(kSide, kSide, TexelFormat::kRGBA32F);

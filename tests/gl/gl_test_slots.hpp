@@ -5,19 +5,15 @@
 
 namespace impasto::render_gl::test {
 
-inline const std::vector<std::string> kWhitePhthaloRedYellowBlack = {
-    "Titanium White", "Phthalo Blue (Green Shade)", "Pyrrole Red", "Hansa Yellow Opaque",
-    "Carbon Black"};
-inline const std::vector<std::string> kWhitePhthaloRedBlack = {
-    "Titanium White", "Phthalo Blue (Green Shade)", "Pyrrole Red", "Carbon Black"};
-inline const std::vector<std::string> kWhiteRedBlack = {"Titanium White", "Pyrrole Red",
-                                                        "Carbon Black"};
-inline const std::vector<std::string> kWhiteRedUltramarine = {"Titanium White", "Pyrrole Red",
-                                                              "Ultramarine Blue"};
-inline const std::vector<std::string> kWhiteUltramarineSienna = {
-    "Titanium White", "Ultramarine Blue", "Burnt Sienna"};
+inline const std::vector<std::string> kWhiteBlueRedYellowBlack = {"White", "Blue Green Shade",
+                                                                  "Red", "Cold Yellow", "Black"};
+inline const std::vector<std::string> kWhiteBlueRedBlack = {"White", "Blue Green Shade", "Red",
+                                                            "Black"};
+inline const std::vector<std::string> kWhiteRedBlack = {"White", "Red", "Black"};
+inline const std::vector<std::string> kWhiteRedBlue = {"White", "Red", "Blue Red Shade"};
+inline const std::vector<std::string> kWhiteBlueRedOxide = {"White", "Blue Red Shade", "Red Oxide"};
 // Two flake paints (data/flakes) among plain pigments.
-inline const std::vector<std::string> kWhiteAluminiumUltramarinePearl = {
-    "Titanium White", "Aluminium Metallic", "Ultramarine Blue", "Mica Blue Pearl"};
+inline const std::vector<std::string> kWhiteAluminiumBluePearl = {
+    "White", "Aluminium Metallic", "Blue Red Shade", "Mica Blue Pearl"};
 
 }  // namespace impasto::render_gl::test

@@ -33,7 +33,7 @@ using paintcore::kTileSize;
 void paint_ridges(paintcore::Canvas& canvas, float height, std::initializer_list<int> tiles) {
   for (int index : tiles) {
     paintcore::Tile& tile =
-        canvas.ensure_tile(index, static_cast<int>(test::kWhiteUltramarineSienna.size()));
+        canvas.ensure_tile(index, static_cast<int>(test::kWhiteBlueRedOxide.size()));
     const int x0 = (index % canvas.tiles_x()) * kTileSize;
     const int y0 = (index / canvas.tiles_x()) * kTileSize;
     for (int y = 0; y < kTileSize; ++y) {
@@ -73,10 +73,10 @@ TEST_P(ReliefCanvas, GpuShadowsAndOcclusionMatchTheCpu) {
   settings.light_elevation_deg = light.elevation;
   const paintcore::Canvas canvas = thick_canvas();
 
-  render::TileRenderer cpu(settings, test::kWhiteUltramarineSienna);
+  render::TileRenderer cpu(settings, test::kWhiteBlueRedOxide);
   cpu.render_all(canvas);
   const render::Image expected = cpu.image();
-  const render::Image actual = render_painting_gpu(canvas, test::kWhiteUltramarineSienna, settings);
+  const render::Image actual = render_painting_gpu(canvas, test::kWhiteBlueRedOxide, settings);
   ASSERT_EQ(actual.rgb.size(), expected.rgb.size());
   const double worst = max_difference(actual, expected);
   double sum = 0.0;
@@ -91,7 +91,7 @@ TEST_P(ReliefCanvas, GpuShadowsAndOcclusionMatchTheCpu) {
   // The relief does show: without shadows and occlusion some cells are clearly lighter.
   render::RenderSettings bare = settings;
   bare.shadows = bare.occlusion = false;
-  render::TileRenderer unshadowed(bare, test::kWhiteUltramarineSienna);
+  render::TileRenderer unshadowed(bare, test::kWhiteBlueRedOxide);
   unshadowed.render_all(canvas);
   EXPECT_GT(max_difference(unshadowed.image(), expected), 0.05);
 }
@@ -111,7 +111,7 @@ TEST(ReliefCachedView, ShadowsCastIntoUnchangedTilesAreReshaded) {
   paintcore::Canvas canvas({170, 110, 150.0, 5});
   paint_ridges(canvas, 0.5f, {0, 1, 3, 4});
   CanvasRenderer renderer(canvas.width_cells(), canvas.height_cells(), settings,
-                          render::SpectralPalette(settings, test::kWhiteUltramarineSienna));
+                          render::SpectralPalette(settings, test::kWhiteBlueRedOxide));
   renderer.upload_all(canvas);
   const int w = 170, h = 110;
   const CanvasView view = one_pixel_per_cell(w, h);

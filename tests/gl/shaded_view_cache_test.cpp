@@ -104,8 +104,7 @@ TEST_P(CachedView, PartialReshadesMatchAWholeRedraw) {
   auto context = create_headless_context();
   const CanvasView view = GetParam();
   const int w = 240, h = 180;
-  paintcore::Painting painting =
-      loaded_painting({{"Ultramarine Blue", 2.0}, {"Titanium White", 1.0}});
+  paintcore::Painting painting = loaded_painting({{"Blue Red Shade", 2.0}, {"White", 1.0}});
   (void)painting.canvas().take_dirty_tiles();
   const render::RenderSettings settings = four_nodes();
   const auto uploaded = uploaded_renderer(painting, settings);
@@ -153,7 +152,7 @@ INSTANTIATE_TEST_SUITE_P(Views, CachedView,
 TEST(CachedViewPan, WholePixelPansShadeOnlyTheUncoveredStrips) {
   auto context = create_headless_context();
   const int w = 240, h = 180;
-  paintcore::Painting painting = loaded_painting({{"Pyrrole Red", 1.0}, {"Titanium White", 1.0}});
+  paintcore::Painting painting = loaded_painting({{"Red", 1.0}, {"White", 1.0}});
   stroke(painting, 14.0, 4.0, 30.0);
   const auto uploaded = uploaded_renderer(painting, four_nodes());
   CanvasRenderer& renderer = *uploaded;
@@ -196,7 +195,7 @@ TEST(CachedViewPan, WholePixelPansShadeOnlyTheUncoveredStrips) {
 TEST(CachedViewOptions, EachViewOptionReshadesEverything) {
   auto context = create_headless_context();
   const int w = 120, h = 90;
-  paintcore::Painting painting = loaded_painting({{"Pyrrole Red", 1.0}, {"Titanium White", 1.0}});
+  paintcore::Painting painting = loaded_painting({{"Red", 1.0}, {"White", 1.0}});
   stroke(painting, 14.0, 4.0, 30.0);
   const auto uploaded = uploaded_renderer(painting, four_nodes());
   CanvasRenderer& renderer = *uploaded;
@@ -242,7 +241,7 @@ TEST(CoarseFactor, TheSmallestThatFitsTheBudget) {
 TEST(CachedViewCoarse, RefinedAfterCoarseFramesMatchesAWholeRedraw) {
   auto context = create_headless_context();
   const int w = 240, h = 180;
-  paintcore::Painting painting = loaded_painting({{"Pyrrole Red", 1.0}, {"Titanium White", 1.0}});
+  paintcore::Painting painting = loaded_painting({{"Red", 1.0}, {"White", 1.0}});
   stroke(painting, 14.0, 4.0, 30.0);
   const auto uploaded = uploaded_renderer(painting, four_nodes());
   CanvasRenderer& renderer = *uploaded;
@@ -281,7 +280,7 @@ TEST(CachedViewCoarse, RefinedAfterCoarseFramesMatchesAWholeRedraw) {
 TEST(CachedViewCoarse, RefinedInBlocksMatchesAWholeRedraw) {
   auto context = create_headless_context();
   const int w = 240, h = 180;
-  paintcore::Painting painting = loaded_painting({{"Pyrrole Red", 1.0}, {"Titanium White", 1.0}});
+  paintcore::Painting painting = loaded_painting({{"Red", 1.0}, {"White", 1.0}});
   stroke(painting, 14.0, 4.0, 30.0);
   const auto uploaded = uploaded_renderer(painting, four_nodes());
   CanvasRenderer& renderer = *uploaded;
@@ -344,8 +343,7 @@ TEST(CachedViewDraft, DraftedStrokesAreRefinedToAWholeRedraw) {
   for (const CanvasView& view :
        {CanvasView{120.0, 90.0, 1.0, 0.0}, CanvasView{128.0, 96.0, 0.4, 0.3},
         CanvasView{60.0, 40.0, 2.5, -1.1}}) {
-    paintcore::Painting painting =
-        loaded_painting({{"Ultramarine Blue", 2.0}, {"Titanium White", 1.0}});
+    paintcore::Painting painting = loaded_painting({{"Blue Red Shade", 2.0}, {"White", 1.0}});
     const auto uploaded = uploaded_renderer(painting, four_nodes());
     CanvasRenderer& renderer = *uploaded;
     (void)painting.canvas().take_dirty_rects();

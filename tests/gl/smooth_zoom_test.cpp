@@ -68,14 +68,13 @@ class ZoomedOut : public ::testing::Test {
   const render::RenderSettings settings = linear_settings();
   const int W = canvas.width_cells(), H = canvas.height_cells();
   const render::Image reference = cpu_image();
-  CanvasRenderer renderer{W, H, settings,
-                          render::SpectralPalette(settings, test::kWhiteRedUltramarine)};
+  CanvasRenderer renderer{W, H, settings, render::SpectralPalette(settings, test::kWhiteRedBlue)};
 
   void SetUp() override { renderer.upload_all(canvas); }
 
  private:
   render::Image cpu_image() const {
-    render::TileRenderer cpu(settings, test::kWhiteRedUltramarine);
+    render::TileRenderer cpu(settings, test::kWhiteRedBlue);
     cpu.render_all(canvas);
     return cpu.image();
   }
@@ -88,8 +87,8 @@ TEST(SmoothZoom, ZoomedInPixelsBlendNeighbourCellsGently) {
   const int W = canvas.width_cells(), H = canvas.height_cells(), P = 5;
   GpuViewOptions smooth, blocks;
   blocks.smooth_zoom = false;
-  CanvasRenderer renderer(W, H, settings,
-                          render::SpectralPalette(settings, test::kWhiteRedUltramarine), smooth);
+  CanvasRenderer renderer(W, H, settings, render::SpectralPalette(settings, test::kWhiteRedBlue),
+                          smooth);
   renderer.upload_all(canvas);
   const std::vector<float> one = draw(renderer, 1.0, W, H);
   const std::vector<float> zoomed = draw(renderer, P, W * P, H * P);

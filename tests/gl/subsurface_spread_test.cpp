@@ -32,11 +32,11 @@ using paintcore::kTileSize;
 
 constexpr int kWidth = 100, kHeight = 70;  // four tiles, two of them partial
 
-// A thin dry layer (too thin to spread), carbon black left of x = 50 and titanium white right
+// A thin dry layer (too thin to spread), black left of x = 50 and white right
 // of it, over a gentle ridge.
 paintcore::Canvas make_edge_canvas() {
   paintcore::Canvas canvas({kWidth, kHeight, 300.0, 7});
-  const int slots = static_cast<int>(test::kWhitePhthaloRedBlack.size());
+  const int slots = static_cast<int>(test::kWhiteBlueRedBlack.size());
   paintcore::DryLayer layer;
   for (int index = 0; index < canvas.tile_count(); ++index) {
     paintcore::Tile& tile = canvas.ensure_tile(index, slots);
@@ -67,7 +67,7 @@ void glaze(paintcore::Canvas& canvas, int x0, int y0, int x1, int y1, float volu
     for (int x = x0; x < x1; ++x) {
       const int index = (y / kTileSize) * canvas.tiles_x() + x / kTileSize;
       paintcore::Tile& tile =
-          canvas.ensure_tile(index, static_cast<int>(test::kWhitePhthaloRedBlack.size()));
+          canvas.ensure_tile(index, static_cast<int>(test::kWhiteBlueRedBlack.size()));
       const auto c = static_cast<std::size_t>((y % kTileSize) * kTileSize + x % kTileSize);
       tile.wet_volume_mm[c] = volume_mm;
       tile.pigment(2)[c] = 0.1f * volume_mm;
@@ -89,7 +89,7 @@ render::Image cpu_with_spread(const paintcore::Canvas& canvas,
                               const render::RenderSettings& settings,
                               render::SubsurfaceMap* map = nullptr) {
   return render::render_canvas_with_subsurface(
-      canvas, render::SpectralPalette(settings, test::kWhitePhthaloRedBlack), settings, map);
+      canvas, render::SpectralPalette(settings, test::kWhiteBlueRedBlack), settings, map);
 }
 
 // Reads the renderer's one-pixel-a-cell image, rows top-down.
@@ -146,7 +146,7 @@ TEST(SubsurfaceSpreadGpu, GlazeOverAnEdgeMatchesTheCpuWithinHalfALevelOf255) {
   render::SubsurfaceMap map;
   const render::Image expected = cpu_with_spread(canvas, settings, &map);
   ASSERT_GT(map.cells.size(), 1000u);
-  const render::Image actual = render_painting_gpu(canvas, test::kWhitePhthaloRedBlack, settings);
+  const render::Image actual = render_painting_gpu(canvas, test::kWhiteBlueRedBlack, settings);
   const double worst = report("glaze over an edge", actual, expected);
   RecordProperty("max_difference_255", std::to_string(worst * 255));
   EXPECT_LE(worst, 0.5 / 255.0);
@@ -154,14 +154,14 @@ TEST(SubsurfaceSpreadGpu, GlazeOverAnEdgeMatchesTheCpuWithinHalfALevelOf255) {
   // Linear, where the spread is added: the same.
   render::RenderSettings linear = settings;
   linear.display = render::DisplayEncoding::linear_srgb;
-  EXPECT_LE(report("linear", render_painting_gpu(canvas, test::kWhitePhthaloRedBlack, linear),
+  EXPECT_LE(report("linear", render_painting_gpu(canvas, test::kWhiteBlueRedBlack, linear),
                    cpu_with_spread(canvas, linear)),
             0.5 / 255.0);
 
   // Not vacuous: without the spread the edge under the glaze is sharper by far.
   render::RenderSettings off = settings;
   off.surface.subsurface = false;
-  const render::Image sharp = render_painting_gpu(canvas, test::kWhitePhthaloRedBlack, off);
+  const render::Image sharp = render_painting_gpu(canvas, test::kWhiteBlueRedBlack, off);
   EXPECT_GT(test::max_difference(sharp, actual), 10.0 / 255.0);
 }
 
@@ -173,7 +173,7 @@ TEST(SubsurfaceSpreadGpu, TilesChangedAfterTheFirstDrawFollowTheCpu) {
   render::RenderSettings settings = ghs_settings();
   settings.display = render::DisplayEncoding::linear_srgb;
   CanvasRenderer gpu(kWidth, kHeight, settings,
-                     render::SpectralPalette(settings, test::kWhitePhthaloRedBlack));
+                     render::SpectralPalette(settings, test::kWhiteBlueRedBlack));
   gpu.upload_all(canvas);
   EXPECT_EQ(gpu.subsurface_cells(), 0);
   EXPECT_LE(report("no glaze", draw_cells(gpu), cpu_with_spread(canvas, settings)), 0.5 / 255.0);
@@ -204,12 +204,12 @@ TEST(SubsurfaceSpreadGpu, ThinPaintMapsNothingAndChangesNothing) {
   glaze(canvas, 30, 12, kWidth, kHeight, 0.005f);  // far thinner than a quarter cell
   render::RenderSettings settings = ghs_settings();
   CanvasRenderer gpu(kWidth, kHeight, settings,
-                     render::SpectralPalette(settings, test::kWhitePhthaloRedBlack));
+                     render::SpectralPalette(settings, test::kWhiteBlueRedBlack));
   gpu.upload_all(canvas);
   EXPECT_EQ(gpu.subsurface_cells(), 0);
   const render::Image with = draw_cells(gpu);
   settings.surface.subsurface = false;
-  gpu.set_settings(settings, render::SpectralPalette(settings, test::kWhitePhthaloRedBlack));
+  gpu.set_settings(settings, render::SpectralPalette(settings, test::kWhiteBlueRedBlack));
   gpu.upload_all(canvas);
   EXPECT_EQ(draw_cells(gpu).rgb, with.rgb);
 }
@@ -222,7 +222,7 @@ TEST(SubsurfaceSpreadGpu, MapViewShowsTheCpuMapOverThePaintingDimmed) {
   glaze(canvas, 30, 12, kWidth, kHeight, 0.3f);
   render::RenderSettings settings = ghs_settings();
   settings.display = render::DisplayEncoding::linear_srgb;
-  const render::SpectralPalette palette(settings, test::kWhitePhthaloRedBlack);
+  const render::SpectralPalette palette(settings, test::kWhiteBlueRedBlack);
   const render::SubsurfaceMap map = render::subsurface_map(canvas, palette, settings);
   const render::Image map_image = render::subsurface_map_image(map);
   CanvasRenderer gpu(kWidth, kHeight, settings, palette);

@@ -21,7 +21,7 @@ using paintcore::kTileCells;
 using paintcore::kTileSize;
 
 const std::vector<std::string>& slots() {
-  return test::kWhitePhthaloRedYellowBlack;
+  return test::kWhiteBlueRedYellowBlack;
 }
 
 render::SpectralPalette palette(const render::RenderSettings& settings) {

@@ -95,10 +95,10 @@ TEST(WindowEndToEnd, ReplayScreenshotShowsPaintAndPanelsAndRecordsTheSession) {
   EXPECT_GT(panels.bright, 200) << "no panel text drawn";
 
   // The canvas, fitted left of the panels: the white ground and the demo's strokes, which
-  // the replay loads in turn with the demo palette (ultramarine first: blue paint).
+  // the replay loads in turn with the demo palette (Blue Red Shade first: blue paint).
   const RegionStats canvas = measure(image, {20, 60, 1200 - 360, 760});
   EXPECT_GT(canvas.bright, 20000) << "no white canvas ground";
-  EXPECT_GT(canvas.blue, 500) << "no ultramarine where the first strokes were laid";
+  EXPECT_GT(canvas.blue, 500) << "no blue where the first strokes were laid";
   EXPECT_GT(canvas.saturated, 2000) << "too little coloured paint";
   EXPECT_GT(canvas.max_luma - canvas.min_luma, 0.5);
 

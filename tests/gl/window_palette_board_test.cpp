@@ -20,7 +20,7 @@ using namespace impasto::window_test;
 // The window's layout at 1000 x 700 (ImGui's default font): the Palette panel's rows of
 // pigment parts (the database's order) and the board under them.
 constexpr int kPartsX = 778, kFirstPartY = 207, kPartRowY = 23;
-constexpr int kBurntSiennaRow = 2, kCeruleanRow = 5;
+constexpr int kBlueGreenRow = 2, kColdYellowRow = 4;
 constexpr int kBoardY = 500, kFirstBlobX = 740, kSecondBlobX = 820;
 constexpr int kLayOutX = 688, kMixX = 810, kToolY = 632;
 constexpr int kPickUpX = 745, kPickUpY = 655;
@@ -84,18 +84,18 @@ TEST(WindowPaletteBoard, ScrubbingTwoBlobsLoadsTheBrushWithBoth) {
     return rgb[2] > 0.8f && rgb[0] < 0.5f;
   };
 
-  // A blob of Burnt Sienna, then one of Cerulean Blue beside it.
+  // A blob of Cold Yellow, then one of Blue Green Shade beside it.
   ASSERT_TRUE(click_until(kLayOutX, kToolY, [&] { return chosen(kLayOutX); }));
-  set_parts(window, kBurntSiennaRow, "1");
+  set_parts(window, kColdYellowRow, "1");
   ASSERT_TRUE(click_until(kFirstBlobX, kBoardY,
                           [&] {
-                            const auto brown = board_at(kFirstBlobX);
-                            return brown[0] > brown[2] + 0.1f;
+                            const auto yellow = board_at(kFirstBlobX);
+                            return yellow[0] > yellow[2] + 0.1f;
                           }))
-      << "no brown blob (" << dir / "window.png"
+      << "no yellow blob (" << dir / "window.png"
       << ")";
-  set_parts(window, kBurntSiennaRow, "0");
-  set_parts(window, kCeruleanRow, "1");
+  set_parts(window, kColdYellowRow, "0");
+  set_parts(window, kBlueGreenRow, "1");
   ASSERT_TRUE(click_until(kSecondBlobX, kBoardY,
                           [&] {
                             const auto blue = board_at(kSecondBlobX);
@@ -122,7 +122,8 @@ TEST(WindowPaletteBoard, ScrubbingTwoBlobsLoadsTheBrushWithBoth) {
   }
   ASSERT_FALSE(loads.empty()) << "Pick up onto brush loaded nothing:\n" << read_text(recording);
   std::sort(pigments.begin(), pigments.end());
-  EXPECT_EQ(pigments, (std::vector<std::string>{"Burnt Sienna", "Cerulean Blue"})) << loads.back();
+  EXPECT_EQ(pigments, (std::vector<std::string>{"Blue Green Shade", "Cold Yellow"}))
+      << loads.back();
   EXPECT_FALSE(lines_starting(recording, "wipe").empty()) << "the brush is wiped first";
 
   // The loaded brush paints on the canvas.

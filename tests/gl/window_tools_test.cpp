@@ -5,14 +5,17 @@
 // with an empty brush says so, and the tool bar's paint chips load the brush.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "impasto/paintcore/painting.hpp"
@@ -23,8 +26,8 @@ namespace {
 
 using namespace impasto::window_test;
 
-const std::string kRed = "Pyrrole Red";
-const std::string kGreen = "Phthalo Green (Blue Shade)";
+const std::string kRed = "Red";
+const std::string kGreen = "Green";
 
 // A painting of two strokes, red above green, on a 600 x 400 cell canvas at 150 dpi.
 fs::path two_stroke_painting(const fs::path& dir) {
@@ -282,13 +285,14 @@ TEST(WindowTools, AStrokeWithAnEmptyBrushSaysSoOnce) {
   const fs::path dir = test_dir("impasto_window_empty_brush");
   Window window(dir, dir / "empty.strokes", {});
   ASSERT_TRUE(window.up()) << "the window did not open";
-  // The note's yellow text, below and right of the pointer at y = 300, x up to 400.
+  // The note's yellow text, below and right of the pointer at y = 300, x up to 400, over the
+  // canvas (the Palette panel's Cold Yellow chips are yellow too, right of x = 680).
   const auto note_pixels = [&] {
     const impasto::render::Image s = window.screenshot();
     int yellow = 0;
     if (s.width != 1000 || s.height != 700) return 0;
     for (int y = 305; y < 345; ++y) {
-      for (int x = 200; x < 900; ++x) {
+      for (int x = 200; x < 620; ++x) {
         const float* p = s.pixel(x, y);
         if (p[0] > 0.8f && p[1] > 0.6f && p[2] < 0.6f) ++yellow;
       }
@@ -318,32 +322,50 @@ TEST(WindowTools, APaintChipLoadsTheBrushAndARecentChipLoadsItAgain) {
   const fs::path recording = dir / "strip.strokes";
   Window window(dir, recording, {});
   ASSERT_TRUE(window.up()) << "the window did not open";
-  // The strip's row in a 1000 x 700 window: chips 18 px wide, 20 apart, from x = 60; the
-  // third is Burnt Sienna. The recent row below it.
-  constexpr int kRowY = 88, kRecentY = 110;
+  // The strip's row in a 1000 x 700 window: chips 18 px wide, 20 apart, from x = 60, in the
+  // library's order: the ninth (i = 8) is Orange, the tenth Red. The recent row below it.
+  static constexpr int kRowY = 88, kRecentY = 110, kOrange = 8, kRed = 9, kPaints = 15;
   const auto chip_x = [](int i) { return 69 + 20 * i; };
   const auto loads = [&] { return lines_starting(recording, "load "); };
-  // The chips appear once the swatches are made: Burnt Sienna's is reddish brown.
+  // The chips appear once the swatches are made: Red's is red.
   ASSERT_TRUE(wait_for([&] {
     const impasto::render::Image s = window.screenshot();
     if (s.width != 1000) return false;
-    const float* p = s.pixel(chip_x(2), kRowY);
+    const float* p = s.pixel(chip_x(kRed), kRowY);
     return p[0] > p[2] + 0.1f && p[0] > 0.25f;
   })) << "no paint chips in the tool bar";
   const std::size_t before = loads().size();
-  window.tap(chip_x(2), kRowY);
+  window.tap(chip_x(kRed), kRowY);
   ASSERT_TRUE(wait_for([&] { return loads().size() == before + 1; })) << "the click loaded nothing";
-  EXPECT_NE(loads().back().find("\"Burnt Sienna\" 1"), std::string::npos) << loads().back();
+  EXPECT_NE(loads().back().find("\"Red\" 1"), std::string::npos) << loads().back();
 
-  window.ctrl_click(chip_x(3), kRowY);  // a part of Burnt Umber in the mix: no load
+  window.ctrl_click(chip_x(kOrange), kRowY);  // a part of Orange in the mix: no load
   std::this_thread::sleep_for(std::chrono::milliseconds(800));
   EXPECT_EQ(loads().size(), before + 1);
 
-  window.tap(chip_x(0), kRecentY);  // the recent Burnt Sienna
+  // The recent Red: its chip follows the paints on their row when there is room, else it
+  // starts the row below. A recent chip shows the mix over its tint: its top half is read.
+  std::optional<std::array<int, 2>> recent;
+  ASSERT_TRUE(wait_for([&] {
+    const impasto::render::Image s = window.screenshot();
+    if (s.width != 1000) return false;
+    for (const auto& [y, from] :
+         {std::pair{kRowY - 4, chip_x(kPaints)}, std::pair{kRecentY - 4, 60}}) {
+      for (int x = from; x < 660; ++x) {
+        const float* p = s.pixel(x, y);
+        if (p[0] > p[2] + 0.1f && p[0] > 0.25f && p[1] < 0.3f) {
+          recent = {x + 6, y};
+          return true;
+        }
+      }
+    }
+    return false;
+  })) << "no recent chip";
+  window.tap((*recent)[0], (*recent)[1]);
   ASSERT_TRUE(wait_for([&] { return loads().size() == before + 2; }))
       << "the recent chip loaded nothing";
-  EXPECT_NE(loads().back().find("\"Burnt Sienna\" 1"), std::string::npos) << loads().back();
-  EXPECT_EQ(loads().back().find("Burnt Umber"), std::string::npos) << loads().back();
+  EXPECT_NE(loads().back().find("\"Red\" 1"), std::string::npos) << loads().back();
+  EXPECT_EQ(loads().back().find("Orange"), std::string::npos) << loads().back();
   fs::remove_all(dir);
 }
 

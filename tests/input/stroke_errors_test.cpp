@@ -71,7 +71,7 @@ INSTANTIATE_TEST_SUITE_P(
         ErrorCase{"TooFewPenFields", kHeader + "pen 0 0 0\n",
                   "bad.strokes:2: 'pen' takes 8 field(s): time x y pressure tilt_x tilt_y "
                   "rotation buttons, found 3"},
-        ErrorCase{"UnknownBody", kHeader + "load 5 \"Titanium White\" 1 body=gel\n",
+        ErrorCase{"UnknownBody", kHeader + "load 5 \"White\" 1 body=gel\n",
                   "bad.strokes:2: field 'body': unknown paint body 'gel' (known: fluid, soft, "
                   "heavy, paste)"},
         ErrorCase{"VarnishUnknownFinish", kHeader + "varnish shiny 0.05\n",
@@ -90,11 +90,11 @@ INSTANTIATE_TEST_SUITE_P(
                   "bad.strokes:2: field 'width': 0 is outside 1..65536"},
         ErrorCase{"VarnishNegativeRegion", kHeader + "varnish matte 0.05 -1 2 3 4\n",
                   "bad.strokes:2: field 'x': -1 is outside 0..65536"},
-        ErrorCase{"UnknownMedium", kHeader + "load 5 \"Titanium White\" 1 medium=shiny\n",
+        ErrorCase{"UnknownMedium", kHeader + "load 5 \"White\" 1 medium=shiny\n",
                   "bad.strokes:2: field 'medium': unknown finish 'shiny' (known: gloss, satin, "
                   "matte)"},
         ErrorCase{"MediumAmountOutOfRange",
-                  kHeader + "load 5 \"Titanium White\" 1 medium=matte:1.5 body=soft\n",
+                  kHeader + "load 5 \"White\" 1 medium=matte:1.5 body=soft\n",
                   "bad.strokes:2: field 'medium': the amount of medium '1.5' is not a number in "
                   "[0, 1]"},
         ErrorCase{"Garbage", kHeader + "pen 0 1x 0 0 0 0 0 0\n",
@@ -123,14 +123,14 @@ INSTANTIATE_TEST_SUITE_P(
                   "bad.strokes:2: field 'splay': 'nan' is not a finite number"},
         ErrorCase{"LoadUnquoted", kHeader + "load 3 Titanium 1\n",
                   "bad.strokes:2: field 'pigment': pigment names are written in double quotes"},
-        ErrorCase{"LoadOddFields", kHeader + "load 3 \"Titanium White\" 1 \"Ivory Black\"\n",
+        ErrorCase{"LoadOddFields", kHeader + "load 3 \"White\" 1 \"Ivory Black\"\n",
                   "bad.strokes:2: 'load' takes a volume in mm^3 then \"pigment name\" parts "
                   "pairs"},
-        ErrorCase{"LoadUnterminated", kHeader + "load 3 \"Titanium White 1\n",
+        ErrorCase{"LoadUnterminated", kHeader + "load 3 \"White 1\n",
                   "bad.strokes:2: unterminated quoted name"},
-        ErrorCase{"LoadNegativeVolume", kHeader + "load -3 \"Titanium White\" 1\n",
+        ErrorCase{"LoadNegativeVolume", kHeader + "load -3 \"White\" 1\n",
                   "bad.strokes:2: field 'volume': must not be negative"},
-        ErrorCase{"LoadZeroParts", kHeader + "load 3 \"Titanium White\" 0\n",
+        ErrorCase{"LoadZeroParts", kHeader + "load 3 \"White\" 0\n",
                   "bad.strokes:2: field 'parts': must be positive"},
         ErrorCase{"DryTooMuch", kHeader + "dry 1.5\n",
                   "bad.strokes:2: field 'fraction': 1.5 is outside 0..1"},

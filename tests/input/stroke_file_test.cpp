@@ -35,10 +35,10 @@ StrokeFile session() {
       CanvasEvent{2048, 1536, 300.0},
       ToolEvent{"brush"},
       BrushEvent{"round", 4.5, 0.7, {{"bristles", 200.0}, {"splay", 0.125}}},
-      LoadEvent{30.0, {{"Titanium White", 2.0}, {"Ultramarine Blue (Green Shade)", 1.0}}, {}},
-      LoadEvent{5.0, {{"Titanium White", 1.0}}, "fluid"},
-      LoadEvent{5.0, {{"Titanium White", 1.0}}, "soft", "matte:0.5"},
-      LoadEvent{5.0, {{"Titanium White", 1.0}}, {}, "gloss"},
+      LoadEvent{30.0, {{"White", 2.0}, {"Blue Red Shade (Green Shade)", 1.0}}, {}},
+      LoadEvent{5.0, {{"White", 1.0}}, "fluid"},
+      LoadEvent{5.0, {{"White", 1.0}}, "soft", "matte:0.5"},
+      LoadEvent{5.0, {{"White", 1.0}}, {}, "gloss"},
       pen(0.0, 10.0, 20.0, 0.0f, paintcore::kPenInRange),
       // Values with no short decimal form: the writer must keep every bit.
       pen(0.1, 1.0 / 3.0, std::nextafter(20.0, 30.0), 1.0f / 3.0f,
@@ -80,7 +80,7 @@ TEST(StrokeFile, ReadsCommentsBlankLinesAndQuotedNames) {
       "impasto-strokes 1\n"
       "# a session\n"
       "\n"
-      "   load 12.5 \"Cadmium Red # 2\" 3 \"Titanium White\" 1   # trailing comment\n"
+      "   load 12.5 \"Cadmium Red # 2\" 3 \"White\" 1   # trailing comment\n"
       "pen 0.5 1 2 0.5 0 0 0 17\n");
   const StrokeFile file = parse_strokes(text, "memory");
   ASSERT_EQ(file.events.size(), 2u);
@@ -89,7 +89,7 @@ TEST(StrokeFile, ReadsCommentsBlankLinesAndQuotedNames) {
   ASSERT_EQ(load.mix.size(), 2u);
   EXPECT_EQ(load.mix[0].pigment, "Cadmium Red # 2");
   EXPECT_EQ(load.mix[0].parts, 3.0);
-  EXPECT_EQ(load.mix[1].pigment, "Titanium White");
+  EXPECT_EQ(load.mix[1].pigment, "White");
   const auto& s = std::get<SampleEvent>(file.events[1]).sample;
   EXPECT_EQ(s.buttons, paintcore::kPenTip | paintcore::kPenInRange);
   EXPECT_FLOAT_EQ(s.pressure, 0.5f);

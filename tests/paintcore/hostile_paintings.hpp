@@ -90,7 +90,7 @@ inline Painting empty_painting() {
 
 // The pigments of painted_tile(): names the renderer's database knows.
 inline const std::vector<std::string>& hostile_slots() {
-  static const std::vector<std::string> slots = {"Titanium White", "Ultramarine Blue"};
+  static const std::vector<std::string> slots = {"White", "Blue Red Shade"};
   return slots;
 }
 

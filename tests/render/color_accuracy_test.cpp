@@ -14,7 +14,7 @@ using namespace impasto::render;
 namespace {
 std::vector<data::Pigment> three_pigments() {
   const auto& db = data::PigmentDatabase::defaults();
-  return {db.get("Titanium White"), db.get("Carbon Black"), db.get("Quinacridone Magenta")};
+  return {db.get("White"), db.get("Black"), db.get("Magenta")};
 }
 }  // namespace
 

@@ -22,7 +22,7 @@ constexpr std::uint8_t kSpherePit = 3, kVGroove = 1;
 
 std::vector<data::Pigment> test_pigments() {
   const auto& db = data::PigmentDatabase::defaults();
-  return {db.get("Titanium White"), db.get("Carbon Black"), db.get("Pyrrole Red")};
+  return {db.get("White"), db.get("Black"), db.get("Red")};
 }
 
 // Matte and linear: a flat cell's pixel is linear in its reflectance.

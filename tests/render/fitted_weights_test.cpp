@@ -18,8 +18,7 @@ namespace {
 
 std::vector<data::Pigment> four_pigments() {
   const auto& db = data::PigmentDatabase::defaults();
-  return {db.get("Titanium White"), db.get("Carbon Black"), db.get("Diarylide Yellow"),
-          db.get("Phthalo Blue (Green Shade)")};
+  return {db.get("White"), db.get("Black"), db.get("Warm Yellow"), db.get("Blue Green Shade")};
 }
 
 // A 5-nm grid: the node search tries a fifth of the positions, so the tests stay fast under
@@ -66,7 +65,10 @@ TEST(FittedWeights, KeepNodesAndWhiteAndFitTheTrainingPaintsBetter) {
   const RuleError before = training.error_of(gauss);
   const RuleError after = training.error_of(fitted);
   EXPECT_GT(before.mean_de00, 0.0);
-  EXPECT_LT(after.mean_de00, before.mean_de00);
+  // Better by what the fit minimises (mean and the worst 1 %): the mean alone may give a
+  // little for the tail (with these four paints 2.38 -> 2.43 while the worst fall).
+  EXPECT_LT(rule_objective(after), rule_objective(before));
+  EXPECT_LT(after.tail_de00, before.tail_de00);
 }
 
 TEST(OptimisedNodes, FitTheTrainingPaintsBetterThanGauss) {

@@ -24,7 +24,7 @@ constexpr int kWhite = 0, kBlue = 1, kAluminium = 2, kPearl = 3;
 
 std::vector<data::Pigment> pigments_with_flakes() {
   const auto& db = data::PigmentDatabase::defaults();
-  return {db.get("Titanium White"), db.get("Ultramarine Blue"), db.get("Aluminium Metallic"),
+  return {db.get("White"), db.get("Blue Red Shade"), db.get("Aluminium Metallic"),
           db.get("Mica Blue Pearl")};
 }
 
@@ -32,8 +32,8 @@ std::vector<data::Pigment> pigments_with_flakes() {
 std::vector<data::Pigment> pigments_without_flakes() {
   const auto& db = data::PigmentDatabase::defaults();
   auto pigments = pigments_with_flakes();
-  pigments[kAluminium] = db.get("Carbon Black");
-  pigments[kPearl] = db.get("Pyrrole Red");
+  pigments[kAluminium] = db.get("Black");
+  pigments[kPearl] = db.get("Red");
   return pigments;
 }
 

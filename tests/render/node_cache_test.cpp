@@ -26,7 +26,7 @@ const WavelengthRange kCoarse{380.0, 730.0, 10.0};
 
 std::vector<data::Pigment> three_pigments() {
   const auto& db = data::PigmentDatabase::defaults();
-  return {db.get("Titanium White"), db.get("Pyrrole Red"), db.get("Phthalo Blue (Green Shade)")};
+  return {db.get("White"), db.get("Red"), db.get("Blue Green Shade")};
 }
 
 // Every test gets an empty cache folder of its own, and starts with nothing in memory.
@@ -222,11 +222,11 @@ TEST_F(NodeCache, InTheBackgroundTheInterpolatoryRuleStandsIn) {
 }
 TEST_F(NodeCache, APaletteTooSmallToTrainOnGetsTheGaussianRule) {
   const auto& db = data::PigmentDatabase::defaults();
-  const std::vector<data::Pigment> one{db.get("Burnt Sienna")};  // four training paints
+  const std::vector<data::Pigment> one{db.get("Red Oxide")};  // four training paints
   const data::Spectrum light = data::light_from_spec("D65");
   const SpectralSampling rule =
       make_palette_sampling(light, data::cie1931_2deg(), 8, kCoarse, NodeWeights::optimised, one,
-                            hiding_reflectance(db.get("Titanium White")));
+                            hiding_reflectance(db.get("White")));
   expect_same(rule, make_spectral_sampling(light, data::cie1931_2deg(), 8, kCoarse,
                                            NodeWeights::interpolatory));
   EXPECT_LT(training_paints(one).size(), 8 * kMinTrainingPaintsPerNode);
@@ -242,9 +242,8 @@ TEST_F(NodeCache, APaletteTooSmallToTrainOnGetsTheGaussianRule) {
 TEST_F(NodeCache, ALightOfFewLinesIsItsOwnRuleWhateverThePalette) {
   const auto& db = data::PigmentDatabase::defaults();
   std::vector<data::Pigment> palette;
-  for (const char* name :
-       {"Burnt Sienna", "Cobalt Blue", "Pyrrole Red", "Hansa Yellow Opaque", "Titanium White",
-        "Carbon Black", "Quinacridone Magenta", "Phthalo Green (Blue Shade)", "Yellow Ochre"})
+  for (const char* name : {"Red Oxide", "Blue Red Shade", "Red", "Cold Yellow", "White", "Black",
+                           "Magenta", "Green", "Yellow Oxide"})
     palette.push_back(db.get(name));
   data::Spectrum lines{"lines", {}, {}};
   for (int nm = 360; nm <= 830; ++nm) {
@@ -253,7 +252,7 @@ TEST_F(NodeCache, ALightOfFewLinesIsItsOwnRuleWhateverThePalette) {
   }
   const SpectralSampling rule =
       make_palette_sampling(lines, data::cie1931_2deg(), 8, kCoarse, NodeWeights::optimised,
-                            palette, hiding_reflectance(db.get("Titanium White")));
+                            palette, hiding_reflectance(db.get("White")));
   EXPECT_TRUE(rule.light_lines);
   EXPECT_EQ(rule.rule, "the light's own 3 lines (exact)");
   EXPECT_EQ(rule.size(), 8);

@@ -22,7 +22,7 @@ std::filesystem::path temp_file(const std::string& name) {
 paintcore::Painting painted() {
   paintcore::Painting p({90, 60, 254.0, 2}, 1);
   p.set_brush(paintcore::BrushSettings{"round", 3.0, 0.5});
-  p.load_brush({{"Burnt Sienna", 1.0}, {"Titanium White", 1.0}}, 40.0);
+  p.load_brush({{"Red Oxide", 1.0}, {"White", 1.0}}, 40.0);
   p.begin_stroke();
   for (int i = 0; i < 20; ++i) {
     paintcore::PenSample s;

@@ -22,7 +22,7 @@ std::filesystem::path temp_file(const std::string& name) {
 
 TEST(RenderPainting, WritesPngOfTheGroundAndExr) {
   paintcore::Painting painting({100, 70, 100.0, 0});
-  painting.slot_for("Titanium White");
+  painting.slot_for("White");
   render::RenderSettings settings;
   settings.dry_material = {0.0f, 10.0f};
 
@@ -63,7 +63,7 @@ namespace {
 paintcore::Painting coarse_weave_painting() {
   paintcore::Painting painting({64, 48, 60.0, 7});
   painting.set_brush(paintcore::BrushSettings{"flat", 8.0, 0.6});
-  painting.load_brush({{"Ultramarine Blue", 1.0}}, 20.0);
+  painting.load_brush({{"Blue Red Shade", 1.0}}, 20.0);
   painting.begin_stroke();
   for (int i = 0; i <= 40; ++i) {
     paintcore::PenSample sample;
@@ -104,7 +104,7 @@ TEST(RenderPainting, SupersamplingConvergesAndLeavesAUniformCanvasAlone) {
   EXPECT_LT(error_two, 0.6 * error_one);
 
   paintcore::Painting flat({32, 24, 150.0, 0});
-  flat.slot_for("Titanium White");
+  flat.slot_for("White");
   const render::Image flat_one = render::render_painting(flat, settings);
   const render::Image flat_four = render::render_painting_supersampled(flat, settings, 4);
   for (std::size_t i = 0; i < flat_one.rgb.size(); ++i)

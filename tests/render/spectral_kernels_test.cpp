@@ -26,8 +26,8 @@ namespace {
 
 std::vector<data::Pigment> test_pigments() {
   const auto& db = data::PigmentDatabase::defaults();
-  return {db.get("Titanium White"), db.get("Carbon Black"), db.get("Phthalo Blue (Green Shade)"),
-          db.get("Hansa Yellow Opaque"), db.get("Quinacridone Magenta")};
+  return {db.get("White"), db.get("Black"), db.get("Blue Green Shade"), db.get("Cold Yellow"),
+          db.get("Magenta")};
 }
 
 SpectralPalette make_palette(const RenderSettings& settings, const char* light = "D65") {

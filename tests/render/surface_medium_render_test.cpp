@@ -20,10 +20,10 @@ using namespace impasto::render;
 
 namespace {
 
-constexpr const char* kWhite = "Titanium White";
-constexpr const char* kBlack = "Carbon Black";
+constexpr const char* kWhite = "White";
+constexpr const char* kBlack = "Black";
 
-// Titanium White (the ground) and Carbon Black, under D65.
+// White (the ground) and Black, under D65.
 SpectralPalette white_and_black_palette(const RenderSettings& settings) {
   const auto& db = data::PigmentDatabase::defaults();
   const std::vector<data::Pigment> pigments{db.get(kWhite), db.get(kBlack)};

@@ -46,7 +46,7 @@ paintcore::Canvas relief_canvas() {
   return canvas;
 }
 
-// A flat canvas under one paint, fully opaque: carbon black or titanium white.
+// A flat canvas under one paint, fully opaque: black or white.
 paintcore::Canvas flat_canvas(int slot) {
   paintcore::Canvas canvas({kTileSize, kTileSize, 254.0, 0});
   paintcore::DryTile dry;
@@ -95,8 +95,9 @@ TEST(SurfaceRender, BlinnIsTheDefaultAndRendersAsBefore) {
   // The renderer before the surface models existed (commit c0923ab, built apart) gave
   // 0xa2709f044fedb178; a change of the Blinn-Phong path that moves the bits must say so
   // here. 2026-12-06: the direct light's highlight scaled by its share (1 - ambient), as its
-  // Lambert term is (shade::blinn_phong).
-  EXPECT_EQ(hash, 0xc3de848209bea8e5ull) << std::hex << hash;
+  // Lambert term is (shade::blinn_phong). 2026-12-07: the bundled pigments are the free
+  // Kimera set (the palette's White, Black and Blue Green Shade; 0xc3de848209bea8e5 before).
+  EXPECT_EQ(hash, 0xfec41b97c7f86adfull) << std::hex << hash;
   // Medium and varnish belong to the ghs model: Blinn-Phong ignores them.
   RenderSettings with_finish = defaults;
   with_finish.surface.medium = surface::Finish::matte;

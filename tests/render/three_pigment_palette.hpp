@@ -1,6 +1,6 @@
 #pragma once
-// The palette the tile renderer's tests paint with: Titanium White (its R∞ the ground, the
-// painting's pigment 0), Carbon Black (1) and Phthalo Blue (Green Shade) (2), under a named
+// The palette the tile renderer's tests paint with: White (its R∞ the ground, the
+// painting's pigment 0), Black (1) and Blue Green Shade (2), under a named
 // light (data::light_from_spec).
 #include <string>
 #include <vector>
@@ -13,7 +13,7 @@ namespace impasto::render {
 
 inline std::vector<data::Pigment> test_pigments() {
   const auto& db = data::PigmentDatabase::defaults();
-  return {db.get("Titanium White"), db.get("Carbon Black"), db.get("Phthalo Blue (Green Shade)")};
+  return {db.get("White"), db.get("Black"), db.get("Blue Green Shade")};
 }
 
 inline SpectralPalette make_palette(const RenderSettings& settings, const char* light = "D65") {

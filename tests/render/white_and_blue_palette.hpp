@@ -1,6 +1,6 @@
 #pragma once
-// A palette of two pigments for the renderer's shading tests: Titanium White (its R∞ the
-// ground, the painting's pigment 0) and Phthalo Blue (Green Shade) (1), under the settings'
+// A palette of two pigments for the renderer's shading tests: White (its R∞ the
+// ground, the painting's pigment 0) and Blue Green Shade (1), under the settings'
 // light.
 #include <vector>
 
@@ -12,7 +12,7 @@ namespace impasto::render {
 
 inline std::vector<data::Pigment> white_and_blue() {
   const auto& db = data::PigmentDatabase::defaults();
-  return {db.get("Titanium White"), db.get("Phthalo Blue (Green Shade)")};
+  return {db.get("White"), db.get("Blue Green Shade")};
 }
 
 inline SpectralPalette white_and_blue_palette(const RenderSettings& settings) {

@@ -46,10 +46,8 @@ bool has_load_record(const input::StrokeFile& file) {
 
 const std::vector<std::string>& demo_palette() {
   static const std::vector<std::string> palette = {
-      "Ultramarine Blue",     "Hansa Yellow Opaque",
-      "Quinacridone Magenta", "Phthalo Green (Blue Shade)",
-      "Titanium White",       "Burnt Sienna",
-      "Cobalt Blue",          "Pyrrole Red"};
+      "Blue Red Shade", "Cold Yellow", "Magenta",          "Green",
+      "White",          "Red Oxide",   "Blue Green Shade", "Red"};
   return palette;
 }
 

@@ -7,16 +7,15 @@
 #include <stdexcept>
 
 #include "impasto/files/atomic_file.hpp"
+#include "impasto/util/text.hpp"
 
 namespace impasto::app::window {
 namespace {
 
 namespace fs = std::filesystem;
 
-std::string lower_case(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return text;
+std::string lower_case(const std::string& text) {
+  return util::ascii_lowercase(text);
 }
 
 // The kinds of file Impasto itself reads and writes: a name ending in one of them was meant

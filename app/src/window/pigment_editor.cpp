@@ -94,8 +94,7 @@ const std::vector<render::SwatchColour>& PigmentEditor::swatches_of(const data::
   std::vector<render::SwatchColour> colours;
   try {
     const data::PigmentDatabase& db = library_->database();
-    colours =
-        render::standard_swatches(pigment, db.get("Titanium White"), data::light_from_spec(light_));
+    colours = render::standard_swatches(pigment, db.get("White"), data::light_from_spec(light_));
   } catch (const std::exception&) {
   }
   return swatches_.emplace(pigment.name, std::move(colours)).first->second;

@@ -59,7 +59,7 @@ constexpr Real saunderson_to_internal(Real measured, Real k1, Real k2) {
 }
 
 // The interface of an oil or acrylic film in air, the one default of the K/S fit and the
-// renderer (RenderSettings): the Golden data in data/pigments are corrected with these.
+// renderer (RenderSettings): the bundled pigments in data/pigments are fitted with these.
 inline constexpr double kSaundersonK1 = 0.03;
 inline constexpr double kSaundersonK2 = 0.65;
 

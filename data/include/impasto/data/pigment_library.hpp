@@ -14,7 +14,7 @@
 namespace impasto::data {
 
 struct PigmentLayer {
-  std::string label;  // "bundled", "user", "--pigments"
+  std::string label;  // "bundled", "add-on", "user", "--pigments"
   std::filesystem::path folder;
   bool writable = false;  // the user layer; the bundled one never
   bool required = false;  // a missing folder is an error (else: an empty layer)
@@ -64,7 +64,16 @@ class PigmentLibrary {
 
 // $XDG_DATA_HOME/impasto/pigments, or ~/.local/share/impasto/pigments; empty with neither.
 std::filesystem::path user_pigment_folder();
-// bundled (data_dir()/pigments), user, then each extra folder.
+// Pigment sets installed apart from the program, each a folder under data_dir()/pigment-addons
+// (a separate package, such as impasto-pigments-okumura, installs one there).
+inline constexpr const char* kPigmentAddonsFolder = "pigment-addons";
+// Those folders, sorted; none when the folder is absent.
+std::vector<std::filesystem::path> pigment_addon_folders();
+// For a pigment the library lacks, how to get it, as the end of a message (": ..."): the
+// optional add-on that holds it (the 27 Golden acrylics of earlier versions' default set),
+// else a user pigment folder or --pigments DIR.
+std::string where_to_get_pigment(std::string_view name);
+// bundled (data_dir()/pigments), each add-on folder, user, then each extra folder.
 std::vector<PigmentLayer> standard_pigment_layers(
     const std::vector<std::filesystem::path>& extra_folders);
 

@@ -57,7 +57,7 @@ struct BrushEvent {
 
 // One pigment of a mix and its share, in parts (only ratios matter).
 struct PigmentPart {
-  std::string pigment;  // as named in the pigment database, e.g. "Titanium White"
+  std::string pigment;  // as named in the pigment database, e.g. "White"
   double parts = 0.0;
   bool operator==(const PigmentPart&) const = default;
 };

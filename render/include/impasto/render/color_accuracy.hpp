@@ -15,12 +15,12 @@ struct ColorSample {
   std::string name;
   std::vector<std::pair<int, float>> mix;  // pigment index, concentration (sums to 1)
   float thickness_mm = 0.0f;
-  bool over_black = false;  // ground: carbon black's R∞ instead of titanium white's
+  bool over_black = false;  // ground: black's R∞ instead of white's
 };
 
-// Every pigment as masstone (opaque) and as a tint (1 part to 9 parts Titanium White);
+// Every pigment as masstone (opaque) and as a tint (1 part to 9 parts White);
 // every pair mixed 50/50 (opaque); a thin glaze (0.01 mm) of each over white and over black.
-// Throws std::runtime_error when the pigments lack "Titanium White" or "Carbon Black".
+// Throws std::runtime_error when the pigments lack "White" or "Black".
 std::vector<ColorSample> standard_color_samples(const std::vector<data::Pigment>& pigments);
 
 struct AccuracyResult {

@@ -34,7 +34,7 @@ struct NodeRuleKey {
 // A palette with fewer training paints (node_optimisation.hpp) than this many per node gets
 // the interpolatory rule in place of a trained one: with a handful of paints (one pigment
 // has four) the fitted readout reproduces them and little else. Measured at N = 8 on
-// palettes of Titanium White, Carbon Black and others: 3 pigments (21 paints) max ΔE00 7.2
+// palettes of White, Black and others: 3 pigments (21 paints) max ΔE00 7.2
 // trained against 3.1 interpolatory; 4 pigments (34 paints) 1.5 against 5.1.
 inline constexpr std::size_t kMinTrainingPaintsPerNode = 4;
 

@@ -33,7 +33,7 @@ struct TrainingPaint {
 };
 
 // Every pigment at 0.03 and 0.4 optical units over the ground and over black; tints of 35 %
-// and 3 % pigment in Titanium White (when the palette has it); every pair at 20/80 and 80/20
+// and 3 % pigment in White (when the palette has it); every pair at 20/80 and 80/20
 // (opaque); every pair at 60/40 as a glaze of 0.5 units over the ground. No opaque layer of
 // a single pigment: that is R∞ at any thickness, the very masstone the bench measures.
 std::vector<TrainingPaint> training_paints(const std::vector<data::Pigment>& pigments);

@@ -53,12 +53,12 @@ struct RenderSettings {
   DisplayEncoding display = DisplayEncoding::srgb;
 
   // --- paint optics ---
-  // Millimetres of paint per unit of K-M optical thickness. The Golden data have S = 1 for
-  // titanium white; 0.005 mm makes a 25 um film of white hide 83% of a black ground and
+  // Millimetres of paint per unit of K-M optical thickness. The bundled data have S = 1 for
+  // White; 0.005 mm makes a 25 um film of white hide 83% of a black ground and
   // 0.1 mm opaque, as real oil and acrylic whites do, while a 1 um glaze stays translucent.
   // See docs/rendering.md.
   double thickness_scale_mm = 0.005;
-  // The canvas ground (gesso) reflectance; unset: R∞ of the palette's "Titanium White".
+  // The canvas ground (gesso) reflectance; unset: R∞ of the palette's "White".
   std::optional<data::Spectrum> ground;
   // The paint's surface over its body (Saunderson; km::saunderson): the K-M reflectance as
   // it leaves through the surface, the surface's own reflection left to the specular term.

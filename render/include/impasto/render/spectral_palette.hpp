@@ -21,7 +21,7 @@ namespace impasto::render {
 class SpectralPalette {
  public:
   // The light from settings.light, the pigments by name from the default database, the
-  // ground from settings.ground (or titanium white's R∞). Throws std::runtime_error naming
+  // ground from settings.ground (or white's R∞). Throws std::runtime_error naming
   // an unknown light or pigment.
   SpectralPalette(const RenderSettings& settings, std::span<const std::string> pigment_names);
   // Pigments a painting carries (render/pigment_records.hpp) by name; the rest, and the
@@ -75,7 +75,7 @@ class SpectralPalette {
 };
 
 // The reflectance of an opaque layer of `pigment` (R∞ at every wavelength of its data): the
-// default canvas ground when the pigment is titanium white.
+// default canvas ground when the pigment is white.
 data::Spectrum hiding_reflectance(const data::Pigment& pigment);
 
 }  // namespace impasto::render

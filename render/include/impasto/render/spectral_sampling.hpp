@@ -15,7 +15,7 @@ namespace impasto::render {
 inline constexpr int kMaxNodes = 16;
 
 // The wavelength interval (nm) and grid step of the measure the rules integrate against:
-// where the Golden pigment data exist, so nothing outside it is extrapolated.
+// where the bundled pigment data exist, so nothing outside it is extrapolated.
 struct WavelengthRange {
   double first_nm = 360.0;
   double last_nm = 750.0;

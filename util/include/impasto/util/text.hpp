@@ -9,6 +9,12 @@ namespace impasto::util {
 // lines read as an LF file's). A view into `text`.
 std::string_view trim(std::string_view text);
 
+// ASCII letters in lower case, every other byte as it is (file extensions, names compared
+// without regard to case).
+std::string ascii_lowercase(std::string_view text);
+// The same text but for the case of its ASCII letters.
+bool equal_ignoring_case(std::string_view a, std::string_view b);
+
 // The value of the first "key = value" line of `text` whose key is `key` (both trimmed;
 // empty lines, lines starting with '#' and lines without '=' skipped), or "" when none is.
 std::string key_value_field(std::string_view text, std::string_view key);
