@@ -1,5 +1,6 @@
 #include "canvas_edit.hpp"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <iterator>
@@ -8,7 +9,9 @@
 #include <utility>
 
 #include "impasto/render/relief_maps.hpp"
+#include "impasto/render/relief_solid.hpp"
 #include "impasto/render/render_painting.hpp"
+#include "impasto/util/text.hpp"
 
 namespace impasto::app {
 
@@ -100,16 +103,41 @@ std::string CanvasEditResult::summary(const paintcore::Painting& painting) const
   return out;
 }
 
-void export_painting(const paintcore::Painting& painting, const ExportRequest& request) {
-  if (request.image.empty() && request.height_map.empty() && request.normal_map.empty())
-    throw std::runtime_error("export: nothing to write (give -o, --height-map or --normal-map)");
+namespace {
+
+// The solid once, coloured by the render only when a file takes colours.
+void write_solids(const paintcore::Painting& painting, const render::HeightGrid& heights,
+                  const ExportRequest& request, ExportReport& report) {
+  render::SolidMesh mesh = render::relief_solid(heights, request.solid);
+  const bool coloured = std::any_of(request.solids.begin(), request.solids.end(), [](auto& path) {
+    return util::ascii_lowercase(path.extension().string()) != ".stl";
+  });
+  if (coloured) {
+    render::check_render_memory(painting.canvas(), request.solids.front().string());
+    render::colour_solid(mesh, render::render_painting(painting, request.settings),
+                         heights.cell_mm);
+  }
+  for (const std::filesystem::path& path : request.solids) render::write_solid(path, mesh);
+  report.solid_triangles = mesh.triangles.size();
+  report.solid_vertices = mesh.vertices.size();
+}
+
+}  // namespace
+
+ExportReport export_painting(const paintcore::Painting& painting, const ExportRequest& request) {
+  ExportReport report;
+  if (request.image.empty() && request.height_map.empty() && request.normal_map.empty() &&
+      request.solids.empty())
+    throw std::runtime_error(
+        "export: nothing to write (give -o, --height-map, --normal-map, --stl, --ply or --obj)");
   // Two outputs into one file would leave only the last: refuse before writing either.
-  const std::pair<const char*, const std::filesystem::path*> outputs[] = {
+  std::vector<std::pair<const char*, const std::filesystem::path*>> outputs = {
       {"-o", &request.image},
       {"--height-map", &request.height_map},
       {"--normal-map", &request.normal_map}};
-  for (std::size_t i = 0; i < std::size(outputs); ++i)
-    for (std::size_t j = i + 1; j < std::size(outputs); ++j) {
+  for (const std::filesystem::path& solid : request.solids) outputs.push_back({"a solid", &solid});
+  for (std::size_t i = 0; i < outputs.size(); ++i)
+    for (std::size_t j = i + 1; j < outputs.size(); ++j) {
       const std::filesystem::path &a = *outputs[i].second, &b = *outputs[j].second;
       std::error_code error;
       if (!a.empty() && !b.empty() &&
@@ -126,11 +154,13 @@ void export_painting(const paintcore::Painting& painting, const ExportRequest& r
     render::render_painting_to_file(source, request.settings, request.image, {},
                                     request.supersample);
   }
-  if (!request.height_map.empty() || !request.normal_map.empty()) {
+  if (!request.height_map.empty() || !request.normal_map.empty() || !request.solids.empty()) {
     const render::HeightGrid heights = render::surface_heights(source.canvas());
     if (!request.height_map.empty()) render::write_height_map(request.height_map, heights);
     if (!request.normal_map.empty()) render::write_normal_map(request.normal_map, heights);
+    if (!request.solids.empty()) write_solids(source, heights, request, report);
   }
+  return report;
 }
 
 }  // namespace impasto::app

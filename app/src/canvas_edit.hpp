@@ -4,7 +4,9 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include <impasto/render/relief_solid.hpp>
 #include "impasto/paintcore/canvas_reframe.hpp"
 #include "impasto/paintcore/painting.hpp"
 #include "impasto/render/crack_close_up.hpp"
@@ -46,10 +48,19 @@ struct ExportRequest {
   std::filesystem::path normal_map;  // .png, or empty
   render::RenderSettings settings;   // the image's light and look
   int supersample = 1;               // the image's samples a pixel each way (1..4), box-filtered
+  // The relief as a closed solid (render/relief_solid.hpp), each by its extension: .stl, .ply
+  // or .obj (the last two with the render's colours); with its options.
+  std::vector<std::filesystem::path> solids;
+  render::SolidOptions solid;
 };
 
-// Writes what the request names; the maps at the same scale as the image (their pixel is a
-// cell of the refined canvas: Painting::refined). Throws std::runtime_error naming the file.
-void export_painting(const paintcore::Painting& painting, const ExportRequest& request);
+struct ExportReport {
+  std::size_t solid_triangles = 0, solid_vertices = 0;  // of the solid, when one was written
+};
+
+// Writes what the request names; the maps and the solid at the same scale as the image (their
+// pixel is a cell of the refined canvas: Painting::refined). Throws std::runtime_error naming
+// the file.
+ExportReport export_painting(const paintcore::Painting& painting, const ExportRequest& request);
 
 }  // namespace impasto::app

@@ -17,12 +17,14 @@ namespace {
 struct ExportArgs {
   std::string painting;
   ExportRequest request;
-  std::string image, height_map, normal_map;
+  std::string image, height_map, normal_map, stl, ply, obj;
 };
 
 const CommandRegistrar registrar("export", [](CLI::App& root) {
   CLI::App* cmd = root.add_subcommand(
-      "export", "Write a painting at a larger scale, its height map and its normal map");
+      "export",
+      "Write a painting at a larger scale, its height map, its normal map and its relief as a "
+      "solid (STL, PLY, OBJ)");
   auto args = std::make_shared<ExportArgs>();
   cmd->add_option("painting", args->painting, "The .impasto painting file")->required();
   cmd->add_option("--scale", args->request.scale,
@@ -44,15 +46,38 @@ const CommandRegistrar registrar("export", [](CLI::App& root) {
                   "its tEXt chunks) or .exr (float mm)");
   cmd->add_option("--normal-map", args->normal_map,
                   "Tangent-space normals, OpenGL convention (+Y up): 8-bit RGB .png");
+  cmd->add_option("--stl", args->stl,
+                  "The relief as a closed solid for 3D printing, in mm at the painting's size: "
+                  "the paint's top, sides and a flat back (binary STL)");
+  cmd->add_option("--ply", args->ply, "The solid with the render's colours (binary PLY)");
+  cmd->add_option("--obj", args->obj, "The solid with the render's colours (Wavefront OBJ)");
+  cmd->add_option("--base-mm", args->request.solid.base_mm,
+                  "The solid's slab under the ground's lowest point, mm")
+      ->check(finite_range(0.01, 1000.0))
+      ->capture_default_str();
+  cmd->add_option("--relief-scale", args->request.solid.relief_scale,
+                  "The solid's heights multiplied: an exaggerated relief")
+      ->check(finite_range(0.01, 1000.0))
+      ->capture_default_str();
+  cmd->add_option("--max-error-mm", args->request.solid.max_error_mm,
+                  "The solid's largest height error at the cell corners, mm: flat areas take few "
+                  "triangles (0: every corner)")
+      ->check(finite_range(0.0, 100.0))
+      ->capture_default_str();
   cmd->callback([args] {
     ExportRequest request = args->request;
     request.image = args->image;
     request.height_map = args->height_map;
     request.normal_map = args->normal_map;
+    for (const std::string* solid : {&args->stl, &args->ply, &args->obj})
+      if (!solid->empty()) request.solids.emplace_back(*solid);
     const paintcore::Painting painting = paintcore::Painting::load(args->painting, 0, false);
-    export_painting(painting, request);
+    const ExportReport report = export_painting(painting, request);
     for (const std::string* file : {&args->image, &args->height_map, &args->normal_map})
       if (!file->empty()) note("wrote " + *file);
+    for (const auto& solid : request.solids)
+      note("wrote " + solid.string() + ": " + std::to_string(report.solid_triangles) +
+           " triangles, " + std::to_string(report.solid_vertices) + " vertices");
   });
 });
 

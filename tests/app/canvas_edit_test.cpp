@@ -5,8 +5,12 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "command_line.hpp"
@@ -134,6 +138,41 @@ TEST_F(CanvasEditCommand, ExportWritesTheScaledImageAndTheMaps) {
   EXPECT_NEAR(heights.cell_mm, 0.05, 1e-12);
   EXPECT_EQ(render::read_png(file("n.png")).width, 160);
   EXPECT_THROW(run("export " + painting().string()), std::runtime_error);
+}
+
+// The relief as a solid: a binary STL of the painting's size in mm (80 x 60 cells at 254 dpi,
+// 0.1 mm) over the back, and a PLY with colours beside it; one file for two solids is refused.
+TEST_F(CanvasEditCommand, ExportWritesTheReliefAsASolid) {
+  run("export " + painting().string() + " --stl " + file("s.stl").string() + " --ply " +
+      file("s.ply").string() + " --base-mm 1 --relief-scale 2");
+  std::ifstream stl(file("s.stl"), std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(stl)), {});
+  ASSERT_GT(bytes.size(), 84u);
+  std::uint32_t triangles = 0;
+  std::memcpy(&triangles, bytes.data() + 80, 4);
+  ASSERT_EQ(bytes.size(), 84u + 50u * triangles);
+  float low[3] = {1e9f, 1e9f, 1e9f}, high[3] = {-1e9f, -1e9f, -1e9f};
+  for (std::uint32_t t = 0; t < triangles; ++t) {
+    for (int v = 0; v < 3; ++v) {
+      float p[3];
+      std::memcpy(p, bytes.data() + 84 + 50 * t + 12 + 12 * v, 12);
+      for (int i = 0; i < 3; ++i) {
+        low[i] = std::min(low[i], p[i]);
+        high[i] = std::max(high[i], p[i]);
+      }
+    }
+  }
+  EXPECT_NEAR(high[0] - low[0], 8.0f, 1e-4f);
+  EXPECT_NEAR(high[1] - low[1], 6.0f, 1e-4f);
+  EXPECT_NEAR(low[2], -1.0f, 1e-4f) << "the back under a ground at 0";
+  EXPECT_GT(high[2], 0.1f) << "the paint stands on it";
+  std::ifstream ply(file("s.ply"), std::ios::binary);
+  std::string first;
+  std::getline(ply, first);
+  EXPECT_EQ(first, "ply");
+  EXPECT_THROW(run("export " + painting().string() + " --stl " + file("same.stl").string() +
+                   " --obj " + file("./same.stl").string()),
+               std::runtime_error);
 }
 
 // The height and normal maps (or the image) in one file would leave only the last written.
