@@ -188,6 +188,25 @@ TEST(SessionRegistry, AnEntryIsOfferedOnlyOnceItsSessionIsGone) {
   EXPECT_TRUE(unfinished_sessions(dir.path()).empty()) << "a cleanly ended session was offered";
 }
 
+// An untitled painting saved as a file (or any Save as): a crash after it recovers that file,
+// so Save goes back to it; the entry stays locked (the session is still running).
+TEST(SessionRegistry, ASaveAsIsWhatARecoveryReopens) {
+  TempDir dir("impasto_registry_save_as");
+  const fs::path strokes = dir.path() / "s.strokes";
+  {
+    LiveSession live(dir.path(), "untitled", std::nullopt, strokes);
+    live.painting_saved_as(dir.path() / "stilllife.impasto");
+    EXPECT_EQ(live.entry().painting, dir.path() / "stilllife.impasto");
+    EXPECT_TRUE(unfinished_sessions(dir.path()).empty()) << "the rewrite dropped the lock";
+    live.painting_saved_as(dir.path() / "a.impasto");  // a shorter name: no tail left behind
+  }
+  const auto found = unfinished_sessions(dir.path());
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_EQ(found[0].painting, dir.path() / "a.impasto");
+  EXPECT_EQ(found[0].strokes, strokes);
+  EXPECT_EQ(found[0].autosave, dir.path() / "untitled.autosave.impasto");
+}
+
 // Another window (another process) holding a painting is found by the file, whatever path
 // names it; this process's own sessions and other paintings are not; once that process is gone
 // its entry is an unfinished session, no longer a running one.

@@ -87,6 +87,17 @@ LiveSession::LiveSession(const std::filesystem::path& folder, const std::string&
   }
 }
 
+void LiveSession::painting_saved_as(const std::filesystem::path& painting) {
+  if (fd_ < 0 || entry_.painting == painting) return;
+  entry_.painting = painting;
+  const std::string text = entry_text(entry_);  // a few hundred bytes: one write
+  if (::pwrite(fd_, text.data(), text.size(), 0) != static_cast<ssize_t>(text.size()) ||
+      ::ftruncate(fd_, static_cast<off_t>(text.size())) != 0 || ::fsync(fd_) != 0) {
+    throw std::runtime_error(entry_.entry.string() +
+                             ": cannot update the session entry: " + std::strerror(errno));
+  }
+}
+
 LiveSession::~LiveSession() {
   if (fd_ >= 0) ::close(fd_);
 }

@@ -35,6 +35,10 @@ class LiveSession {
   // The session ended as the user chose (saved, or discarded on purpose): removes the entry
   // and the autosave. The recording stays.
   void end_cleanly();
+  // The painting was saved as `painting` (an untitled one's first save, or Save as): the entry
+  // names it from now on, so a recovery reopens with that file. Rewritten in place (the lock
+  // stays with the file) and synced; throws std::runtime_error naming the entry.
+  void painting_saved_as(const std::filesystem::path& painting);
   const SessionEntry& entry() const { return entry_; }
 
  private:

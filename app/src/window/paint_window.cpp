@@ -454,9 +454,15 @@ void PaintWindow::handle_recovery(const RecoveryChoice& choice) {
         }
         worker_->replace_painting(std::move(recovered), std::move(recording), true);
         open_board_for(entry.painting);
-        if (entry.painting) state_.file = entry.painting;
-        notice_ = "Recovered (from " + preview_->base + "): save it to keep it." +
-                  (notice_.empty() ? "" : " " + notice_);
+        if (entry.painting) {
+          // Save goes back to the file, as it stands now (the session's last save).
+          state_.file = entry.painting;
+          state_.file_stamp = stamp_of(*entry.painting);
+        }
+        notice_ = "Recovered " +
+                  (entry.painting ? entry.painting->filename().string()
+                                  : std::string("an untitled painting")) +
+                  " from its autosave and recording: save it to keep it.";
         rendered_slots_.clear();
         canvas_w_ = canvas_h_ = 0;
         state_.hidden_dry_layers.clear();
@@ -953,6 +959,8 @@ FileActions PaintWindow::file_actions() {
       worker_->save(file);
       state_.file = file;
       state_.file_stamp = stamp_of(file);
+      notice_.clear();  // what the session's start or a recovery said is done with
+      if (live_session_) live_session_->painting_saved_as(file);  // a recovery reopens it
       remember_recent_file(file);
       state_.recent = load_recent_files();
     } catch (const std::exception& e) {
