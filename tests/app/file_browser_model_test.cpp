@@ -122,13 +122,19 @@ TEST(FileBrowserModel, TheLastFolderOfEachPurposeIsRememberedAcrossSessions) {
   // Export starts in the last export folder, not beside the painting.
   EXPECT_EQ(starting_folder(later, FilePurpose::kExportImage, dir / "paintings" / "x.impasto"),
             dir / "exports");
-  // A folder since removed is forgotten: the painting's folder, else home.
+  // Save as starts beside the painting, whatever folder saving used last.
+  fs::create_directories(dir / "elsewhere");
+  EXPECT_EQ(starting_folder(later, FilePurpose::kSavePainting, dir / "elsewhere" / "y.impasto"),
+            dir / "elsewhere");
+  EXPECT_EQ(starting_folder(later, FilePurpose::kSavePainting, std::nullopt), dir / "paintings");
+  // A folder since removed is forgotten: the painting's folder, else the folder Impasto was
+  // started in.
   fs::remove_all(dir / "exports");
   const FolderMemory after_removal(list);
   EXPECT_FALSE(after_removal.folder_for(FilePurpose::kExportImage));
   EXPECT_EQ(starting_folder(after_removal, FilePurpose::kExportImage, dir / "x.impasto"), dir);
-  setenv("HOME", dir.c_str(), 1);
-  EXPECT_EQ(starting_folder(after_removal, FilePurpose::kExportImage, std::nullopt), dir);
+  EXPECT_EQ(starting_folder(after_removal, FilePurpose::kExportImage, std::nullopt),
+            fs::current_path());
   fs::remove_all(dir);
 }
 

@@ -107,7 +107,10 @@ class Window {
   Window(const fs::path& dir, const WindowSetup& setup) : dir_(dir) {
     pid_ = fork();
     if (pid_ == 0) {
-      if (setup.home) setenv("HOME", dir.c_str(), 1);
+      if (setup.home) {  // started from home, as a desktop launcher starts it
+        setenv("HOME", dir.c_str(), 1);
+        if (chdir(dir.c_str()) != 0) _exit(126);
+      }
       setenv("XDG_CONFIG_HOME", (dir / setup.config).c_str(), 1);
       setenv("XDG_STATE_HOME", (dir / setup.state).c_str(), 1);
       std::vector<std::string> all{IMPASTO_EXECUTABLE, "paint",

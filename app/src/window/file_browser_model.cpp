@@ -195,11 +195,17 @@ std::vector<fs::path> FolderMemory::folders() const {
 
 fs::path starting_folder(const FolderMemory& memory, FilePurpose purpose,
                          const std::optional<fs::path>& painting) {
-  if (const auto remembered = memory.folder_for(purpose)) return *remembered;
   std::error_code error;
-  if (painting && fs::is_directory(fs::absolute(*painting, error).parent_path(), error)) {
-    return fs::absolute(*painting, error).parent_path();
-  }
+  std::optional<fs::path> beside;
+  if (painting && fs::is_directory(fs::absolute(*painting, error).parent_path(), error))
+    beside = fs::absolute(*painting, error).parent_path();
+  // A painting is saved where it lives; other files go where that kind went last.
+  if (purpose == FilePurpose::kSavePainting && beside) return *beside;
+  if (const auto remembered = memory.folder_for(purpose)) return *remembered;
+  if (beside) return *beside;
+  // The folder Impasto was started in (the window never changes it), else home.
+  if (const fs::path started = fs::current_path(error); !error && fs::is_directory(started, error))
+    return started;
   return home_folder();
 }
 

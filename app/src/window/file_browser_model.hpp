@@ -86,8 +86,8 @@ class FolderMemory {
   std::map<std::string, std::filesystem::path> folders_;
 };
 
-// Where a dialog starts: the purpose's remembered folder, else the painting's folder, else
-// home.
+// Where a dialog starts: Save as in the painting's folder; otherwise the purpose's remembered
+// folder, else the painting's folder, else the folder Impasto was started in, else home.
 std::filesystem::path starting_folder(const FolderMemory& memory, FilePurpose purpose,
                                       const std::optional<std::filesystem::path>& painting);
 
