@@ -63,6 +63,14 @@ void draw_paint_strip(WindowState& s, SimWorker& worker, double brush_volume_mm3
     ImGui::PushID(static_cast<int>(i));
     const bool clicked = ImGui::ColorButton("##paint", rgba(s.pigment_masstone_rgb[i]),
                                             ImGuiColorEditFlags_NoTooltip, ImVec2(kChip, kChip));
+    // The lower half: a thin glaze over the ground, where a dark paint shows its hue (the
+    // masstones of the blues, the violet, the green and the black are all near-black).
+    if (i < s.pigment_glaze_rgb.size()) {
+      const ImVec2 top = ImGui::GetItemRectMin(), bottom = ImGui::GetItemRectMax();
+      ImGui::GetWindowDrawList()->AddRectFilled(
+          ImVec2(top.x, 0.5f * (top.y + bottom.y)), bottom,
+          ImGui::ColorConvertFloat4ToU32(rgba(s.pigment_glaze_rgb[i])));
+    }
     if (ImGui::IsItemHovered()) {
       ImGui::SetTooltip(
           "%s\nclick: load the brush with it\nShift- or Ctrl-click: a part more "

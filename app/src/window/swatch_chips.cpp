@@ -14,6 +14,10 @@ std::array<float, 3> clamped(const DisplayRgb& rgb) {
           std::clamp(rgb[2], 0.0f, 1.0f)};
 }
 
+// A glaze thin enough to show a dark paint's hue over the ground (2 optical units at the
+// default thickness scale).
+constexpr double kGlazeChipMm = 0.01;
+
 }  // namespace
 
 SwatchChips::~SwatchChips() {
@@ -32,6 +36,7 @@ SwatchChips::Result SwatchChips::compute(const SwatchStroke& stroke,
     singles.push_back({{pigment.name, 1.0}});
   result.pigment_masstones = render_flat_layers(settings, singles, masstone_thickness_mm(settings));
   result.pigment_layers = render_flat_layers(settings, singles, layer_mm);
+  result.pigment_glazes = render_flat_layers(settings, singles, kGlazeChipMm);
   return result;
 }
 
@@ -51,6 +56,9 @@ void SwatchChips::update(WindowState& s, const paintcore::CanvasSpec& canvas) {
         s.pigment_masstone_rgb.push_back(clamped(rgb));
       for (const DisplayRgb& rgb : result.pigment_layers)
         s.pigment_layer_rgb.push_back(clamped(rgb));
+      s.pigment_glaze_rgb.clear();
+      for (const DisplayRgb& rgb : result.pigment_glazes)
+        s.pigment_glaze_rgb.push_back(clamped(rgb));
       s.swatch_error.clear();
     } catch (const std::exception& e) {
       s.swatch_error = e.what();

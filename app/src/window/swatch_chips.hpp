@@ -27,7 +27,7 @@ class SwatchChips {
  private:
   struct Result {
     std::optional<Swatch> swatch;  // none for an empty mix
-    std::vector<DisplayRgb> pigment_masstones, pigment_layers;
+    std::vector<DisplayRgb> pigment_masstones, pigment_layers, pigment_glazes;
   };
   static Result compute(const SwatchStroke& stroke, const render::RenderSettings& settings,
                         double layer_mm);

@@ -88,6 +88,7 @@ struct WindowState {
   std::string swatch_error;
   // Per pigment of the database: its masstone and a layer as thick as the swatch's deposit.
   std::vector<std::array<float, 3>> pigment_masstone_rgb, pigment_layer_rgb;
+  std::vector<std::array<float, 3>> pigment_glaze_rgb;  // 0.01 mm over the ground: the hue
   bool mix_changed = true;  // the light changed: the swatch is redone even for the same stroke
 
   // --- brush and pen ---
