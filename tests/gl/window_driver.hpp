@@ -190,6 +190,13 @@ class Window {
       moves += " mousemove --window " + id_ + " " + pos(x, y);
     xdotool(moves + " mouseup 1");
   }
+  // `notches` wheel clicks at (x, y): up (zoom in) when positive, down when negative.
+  void wheel(int x, int y, int notches) {
+    move(x, y);
+    std::this_thread::sleep_for(150ms);
+    for (int i = 0; i < std::abs(notches); ++i)
+      xdotool(std::string("click ") + (notches > 0 ? "4" : "5") + " sleep 0.1");
+  }
   // Ctrl + click (it makes an ImGui slider a text field).
   void ctrl_click(int x, int y) {
     move(x, y);

@@ -312,6 +312,40 @@ TEST(WindowTools, AStrokeWithAnEmptyBrushSaysSoOnce) {
   fs::remove_all(dir);
 }
 
+// A wheel notch over the canvas zooms by a quarter about the pointer: the canvas, measured on
+// screen across its middle row, is 1.25 times narrower after a notch down.
+TEST(WindowTools, AWheelNotchZoomsByAQuarter) {
+  ASSERT_NE(std::getenv("DISPLAY"), nullptr) << "run under xvfb-run -a";
+  if (!have_xdotool()) GTEST_SKIP() << "xdotool or ImageMagick's import is not installed";
+  const fs::path dir = test_dir("impasto_window_wheel");
+  Window window(dir, dir / "wheel.strokes", {});
+  ASSERT_TRUE(window.up()) << "the window did not open";
+  // The canvas's light pixels along row 350, left of the panels (x < 660).
+  const auto canvas_width = [&] {
+    const impasto::render::Image s = window.screenshot();
+    if (s.width != 1000) return 0;
+    int first = -1, last = -1;
+    for (int x = 0; x < 660; ++x) {
+      const float* p = s.pixel(x, 350);
+      if (p[0] > 0.6f && p[1] > 0.6f && p[2] > 0.6f) {
+        if (first < 0) first = x;
+        last = x;
+      }
+    }
+    return first < 0 ? 0 : last - first + 1;
+  };
+  int before = 0;
+  ASSERT_TRUE(wait_for([&] { return (before = canvas_width()) > 300; })) << "no canvas";
+  window.wheel(320, 350, -1);  // a notch down
+  int after = 0;
+  ASSERT_TRUE(wait_for([&] { return (after = canvas_width()) > 0 && after < before - 20; }))
+      << "the wheel did not zoom out";
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));  // the view settled
+  after = canvas_width();
+  EXPECT_NEAR(static_cast<double>(before) / after, 1.25, 0.03) << before << " -> " << after;
+  fs::remove_all(dir);
+}
+
 // Fast colour: a click on a paint's chip in the tool bar loads the brush with it (a recorded
 // load of that paint alone), Shift-click adds a part to the Palette's mix without loading,
 // and the loaded mix comes back from the recent chips with one click.

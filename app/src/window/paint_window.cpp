@@ -73,6 +73,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// A wheel notch zooms by a quarter, as image editors do: five notches are about 3x.
+constexpr double kZoomPerWheelNotch = 1.25;
+
 // Set by SIGTERM, SIGINT and SIGHUP (a logout, Ctrl+C): the window closes at the next frame,
 // keeping unsaved work recoverable instead of asking.
 std::atomic<bool> g_terminate{false};
@@ -811,8 +814,8 @@ void PaintWindow::handle_canvas_input() {
   // Zoom about the cursor with the wheel, down to single cells and up to 64 px a cell.
   if (!io.WantCaptureMouse && io.MouseWheel != 0.0f) {
     const auto before = state_.view.window_to_cell(x, y, window_w_, window_h_);
-    state_.view.pixels_per_cell =
-        std::clamp(state_.view.pixels_per_cell * std::pow(1.15, io.MouseWheel), 0.02, 64.0);
+    state_.view.pixels_per_cell = std::clamp(
+        state_.view.pixels_per_cell * std::pow(kZoomPerWheelNotch, io.MouseWheel), 0.02, 64.0);
     const auto after = state_.view.window_to_cell(x, y, window_w_, window_h_);
     state_.view.center_x_cells += before[0] - after[0];
     state_.view.center_y_cells += before[1] - after[1];
