@@ -149,7 +149,8 @@ void run(const RenderArgs& args) {
   }
   const double render_seconds = seconds_since(render_start);
   // Which wavelengths rendered it, and why (a small palette cannot train the optimised rule).
-  const std::string rule = SpectralPalette(settings, painting).sampling().rule;
+  const SpectralSampling sampling = SpectralPalette(settings, painting).sampling();
+  const std::string& rule = sampling.rule;
   if (args.json) {
     // Rendering and writing the file are one call: render_seconds holds both.
     std::cout << nlohmann::json{{"out", args.out},
@@ -159,6 +160,12 @@ void run(const RenderArgs& args) {
                                 {"gpu", args.gpu},
                                 {"wavelengths", settings.wavelengths},
                                 {"rule", rule},
+                                {"nodes", sampling.full_spectrum ? 0 : sampling.size()},
+                                {"estimated_de00",
+                                 sampling.estimated_mean_de00 < 0.0
+                                     ? nlohmann::json(nullptr)
+                                     : nlohmann::json{{"mean", sampling.estimated_mean_de00},
+                                                      {"max", sampling.estimated_max_de00}}},
                                 {"load_seconds", load_seconds},
                                 {"render_seconds", render_seconds}}
               << "\n";
@@ -167,8 +174,8 @@ void run(const RenderArgs& args) {
   char timing[64];
   std::snprintf(timing, sizeof timing, "%.2f s", render_seconds);
   note("wrote " + args.out + " (" + std::to_string(width) + "x" + std::to_string(height) +
-       (args.zoom > 0 ? ", close-up" : "") + ", rendered in " + timing + "; wavelengths: " + rule +
-       ")");
+       (args.zoom > 0 ? ", close-up" : "") + ", rendered in " + timing +
+       "; wavelengths: " + describe_rule(sampling) + ")");
 }
 
 const CommandRegistrar registrar("render", [](CLI::App& root) {

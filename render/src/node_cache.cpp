@@ -129,13 +129,19 @@ SpectralSampling build_palette_rule(const data::Spectrum& light,
                                     const data::Spectrum& ground) {
   const PaletteTrainingSet training(light, cmf, range, pigments, ground);
   SpectralSampling sampling;
+  RuleError estimate;
   if (weights == NodeWeights::fitted) {
     sampling = make_spectral_sampling(light, cmf, nodes, range, NodeWeights::interpolatory);
     training.fit_readout(sampling);
+    estimate = training.error_of(sampling);
   } else {
-    sampling = optimise_nodes(training, light, cmf, nodes, range).sampling;
+    OptimisedRule optimised = optimise_nodes(training, light, cmf, nodes, range);
+    sampling = std::move(optimised.sampling);
+    estimate = optimised.training;
   }
   sampling.rule = util::name_of(kNodeWeightsNames, weights);
+  sampling.estimated_mean_de00 = estimate.mean_de00;
+  sampling.estimated_max_de00 = estimate.max_de00;
   return sampling;
 }
 
@@ -181,6 +187,10 @@ std::string format_node_rule(const NodeRuleKey& key, const SpectralSampling& sam
   text += "white";
   for (double w : sampling.white_xyz) text += " " + exact(w);
   text += "\n";
+  // Optional (a file without it, from before, still reads): the training paints' error.
+  if (sampling.estimated_mean_de00 >= 0.0)
+    text += "estimate " + exact(sampling.estimated_mean_de00) + " " +
+            exact(sampling.estimated_max_de00) + "\n";
   return text + "check " + hex(checksum(text)) + "\n";
 }
 
@@ -209,10 +219,11 @@ SpectralSampling parse_node_rule(std::string_view text, const NodeRuleKey& key,
   expect(2, "weights " + std::string(util::name_of(kNodeWeightsNames, key.weights)),
          "another rule");
   expect(3, "nodes " + std::to_string(key.nodes), "another node count");
-  if (lines.size() != 5 + static_cast<std::size_t>(key.nodes)) {
+  const std::size_t rule_lines = 5 + static_cast<std::size_t>(key.nodes);
+  if (lines.size() != rule_lines && lines.size() != rule_lines + 1) {
     throw std::runtime_error("has " + std::to_string(lines.size()) +
                              " lines before the checksum, " + "not " +
-                             std::to_string(5 + key.nodes));
+                             std::to_string(5 + key.nodes) + " (or one more, the estimate)");
   }
   SpectralSampling sampling;
   std::array<double, 3> sum{0.0, 0.0, 0.0};
@@ -252,6 +263,17 @@ SpectralSampling parse_node_rule(std::string_view text, const NodeRuleKey& key,
     }
   }
   if (!(sampling.white_xyz[1] > 0.0)) throw std::runtime_error("the white has no luminance");
+  if (lines.size() == rule_lines + 1) {
+    const std::vector<std::string_view> estimate = words_of(lines[rule_lines]);
+    const std::string where = "line " + std::to_string(rule_lines + 1);
+    if (estimate.size() != 3 || estimate[0] != "estimate")
+      throw std::runtime_error(where + ": not 'estimate MEAN MAX'");
+    sampling.estimated_mean_de00 = read_exact(estimate[1], where + ": the mean");
+    sampling.estimated_max_de00 = read_exact(estimate[2], where + ": the max");
+    if (!(sampling.estimated_mean_de00 >= 0.0 && sampling.estimated_max_de00 >= 0.0 &&
+          sampling.estimated_max_de00 < 1000.0))
+      throw std::runtime_error(where + ": an estimate out of range");
+  }
   return sampling;
 }
 

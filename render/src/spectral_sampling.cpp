@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -161,6 +162,19 @@ std::array<double, 3> reflectance_to_xyz(const SpectralSampling& sampling,
     for (std::size_t c = 0; c < 3; ++c) xyz[c] += sampling.to_xyz[i][c] * reflectance[i];
   }
   return xyz;
+}
+
+std::string describe_rule(const SpectralSampling& sampling) {
+  std::string text = sampling.rule;
+  if (!sampling.full_spectrum) text += ", " + std::to_string(sampling.size()) + " wavelengths";
+  if (sampling.estimated_mean_de00 >= 0.0) {
+    char estimate[96];
+    std::snprintf(estimate, sizeof estimate,
+                  ": %.2f mean, %.2f max dE00 on the palette's training paints",
+                  sampling.estimated_mean_de00, sampling.estimated_max_de00);
+    text += estimate;
+  }
+  return text;
 }
 
 }  // namespace impasto::render

@@ -99,6 +99,27 @@ TEST(NodeRuleFile, RoundTripsExactly) {
   expect_same(parse_node_rule(format_node_rule(kExampleKey, rule), kExampleKey, {}), rule);
 }
 
+// A trained rule keeps its error on the training paints; a file from before the estimate (no
+// such line) still reads, with the estimate unknown.
+TEST(NodeRuleFile, KeepsTheEstimateAndReadsFilesWithoutIt) {
+  SpectralSampling rule = example_rule();
+  const std::string without = format_node_rule(kExampleKey, rule);
+  EXPECT_EQ(without.find("estimate"), std::string::npos);
+  EXPECT_LT(parse_node_rule(without, kExampleKey, {}).estimated_mean_de00, 0.0);
+  rule.estimated_mean_de00 = 0.36;
+  rule.estimated_max_de00 = 2.03;
+  const SpectralSampling back =
+      parse_node_rule(format_node_rule(kExampleKey, rule), kExampleKey, {});
+  EXPECT_EQ(back.estimated_mean_de00, 0.36);
+  EXPECT_EQ(back.estimated_max_de00, 2.03);
+  rule.estimated_max_de00 = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(parse_node_rule(format_node_rule(kExampleKey, rule), kExampleKey, {}),
+               std::runtime_error);
+  rule.estimated_max_de00 = 2.03;
+  EXPECT_NE(describe_rule(back).find("0.36 mean, 2.03 max"), std::string::npos)
+      << describe_rule(back);
+}
+
 TEST(NodeRuleFile, RefusesDamagedForeignAndHostileFiles) {
   const std::string good = format_node_rule(kExampleKey, example_rule());
   const auto refused = [&](const std::string& text, const NodeRuleKey& key) {
@@ -139,11 +160,15 @@ TEST(NodeRuleFile, RefusesDamagedForeignAndHostileFiles) {
 
 TEST_F(NodeCache, BuildsOnceAndReadsTheFileBack) {
   const SpectralSampling built = rule("D65");
+  EXPECT_GT(built.estimated_mean_de00, 0.0) << "a trained rule knows its error";
+  EXPECT_GE(built.estimated_max_de00, built.estimated_mean_de00);
   const std::filesystem::path file = only_rule_file();
   ASSERT_FALSE(file.empty());
   const auto written = std::filesystem::last_write_time(file);
   forget_palette_rules_in_memory();
-  expect_same(rule("D65"), built);  // from the file
+  const SpectralSampling read = rule("D65");  // from the file
+  expect_same(read, built);
+  EXPECT_EQ(read.estimated_mean_de00, built.estimated_mean_de00);
   EXPECT_EQ(std::filesystem::last_write_time(file), written);
 }
 

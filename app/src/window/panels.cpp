@@ -558,6 +558,15 @@ void light_panel(PanelContext& c) {
   }
   ImGui::SliderInt("wavelengths", &s.settings.wavelengths, 1, render::kMaxNodes);
   changed |= ImGui::IsItemDeactivatedAfterEdit();
+  ImGui::PushTextWrapPos(0.0f);  // the panel's width
+  ImGui::TextDisabled("%s", render::describe_rule(c.palette.sampling()).c_str());
+  ImGui::PopTextWrapPos();
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "How the wavelengths and their weights were chosen, and for a rule trained on this\n"
+        "palette its CIEDE2000 error on the palette's training paints (masstones, tints,\n"
+        "glazes and pairs) against every nanometre: the colour this many wavelengths costs.");
+  }
   // Chromatic adaptation, by its names in `impasto render --adaptation`: bradford maps the
   // light's white to the display's, as an eye adapted to the room sees it; none shows a warm
   // light warm.

@@ -62,9 +62,17 @@ struct SpectralSampling {
   // How the wavelengths and weights were chosen, for the user ("optimised", "interpolatory:
   // the palette has too few paints to train the optimised rule", ...); not part of the rule.
   std::string rule;
+  // A trained rule's error on its palette's training paints (masstones, tints, glazes, pairs;
+  // node_optimisation.hpp): mean and max CIEDE2000 against the 1 nm spectrum. The estimate a
+  // user sees of what the rule costs in colour; negative when unknown (an untrained rule).
+  double estimated_mean_de00 = -1.0, estimated_max_de00 = -1.0;
 
   int size() const { return static_cast<int>(wavelengths_nm.size()); }
 };
+
+// The rule in words for a user: "optimised, 8 wavelengths: 0.36 mean, 2.03 max dE00 on the
+// palette's training paints" (the estimate when known).
+std::string describe_rule(const SpectralSampling& sampling);
 
 // The sampling for `light` (relative spectral power) seen through `cmf`:
 //   nodes > 0:  the nodes-point Gaussian rule for W(λ) = E(λ)(x̄ + ȳ + z̄)(λ) on the grid of
