@@ -8,8 +8,8 @@
 
 #include "impasto/data/pigment_library.hpp"
 #include "impasto/data/pigments.hpp"
-#include "impasto/files/data_dir.hpp"
 #include "impasto/data/spectral_csv.hpp"
+#include "impasto/files/data_dir.hpp"
 
 namespace impasto::data {
 namespace {

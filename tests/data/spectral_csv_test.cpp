@@ -101,8 +101,8 @@ TEST(SpectralCsv, RejectsEachKindOfBadFileWithFileLineColumn) {
       {"wavelength_nm\n400\n", "bad.csv:1:", "names no sample column"},
       {"# quantity: cmf\nwavelength_nm,a\n400,-1\n", "bad.csv:3:2:", "outside >= 0"},
       // A K or S no render can use (K (K + 2S) beyond floats) is refused as it is read.
-      {"# quantity: kubelka_munk\nwavelength_nm,K,S\n400,1e308,1\n", "bad.csv:3:2:",
-       "outside 0..1e+06"},
+      {"# quantity: kubelka_munk\nwavelength_nm,K,S\n400,1e308,1\n",
+       "bad.csv:3:2:", "outside 0..1e+06"},
       {"# only metadata\n", "bad.csv:", "no header"},
       {"wavelength_nm,a\n", "bad.csv:", "no data rows"},
   };
