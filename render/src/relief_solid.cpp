@@ -137,11 +137,18 @@ SolidMesh relief_solid(const HeightGrid& heights, const SolidOptions& options) {
   // The top's vertices: every leaf's corners, and the centre of each leaf wider than a cell.
   std::vector<std::int64_t> id(static_cast<std::size_t>(W + 1) * static_cast<std::size_t>(H + 1),
                                -1);
+  const auto id_at = [&](int x, int y) -> std::int64_t& {
+    return id[static_cast<std::size_t>(y) * static_cast<std::size_t>(W + 1) +
+              static_cast<std::size_t>(x)];
+  };
   const auto top_vertex = [&](int x, int y) {
-    std::int64_t& v = id[static_cast<std::size_t>(y) * static_cast<std::size_t>(W + 1) +
-                         static_cast<std::size_t>(x)];
+    std::int64_t& v = id_at(x, y);
     if (v < 0) v = build.vertex(x * cell, (H - y) * cell, g.at(x, y));
     return static_cast<std::uint32_t>(v);
+  };
+  // Appends the vertex at corner (x, y) to `list` when the top has one there.
+  const auto add_if_vertex = [&](std::vector<std::uint32_t>& list, int x, int y) {
+    if (const std::int64_t v = id_at(x, y); v >= 0) list.push_back(static_cast<std::uint32_t>(v));
   };
   for (const Leaf& n : leaves) {
     for (const auto& [x, y] : {std::pair{n.x, n.y}, std::pair{n.x + n.size, n.y},
@@ -161,11 +168,7 @@ SolidMesh relief_solid(const HeightGrid& heights, const SolidOptions& options) {
     }
     // Around the leaf, every vertex on its edges (its corners and its finer neighbours').
     ring.clear();
-    const auto on_edge = [&](int x, int y) {
-      const std::int64_t v = id[static_cast<std::size_t>(y) * static_cast<std::size_t>(W + 1) +
-                                static_cast<std::size_t>(x)];
-      if (v >= 0) ring.push_back(static_cast<std::uint32_t>(v));
-    };
+    const auto on_edge = [&](int x, int y) { add_if_vertex(ring, x, y); };
     for (int i = 0; i < s; ++i) on_edge(n.x + i, n.y);
     for (int i = 0; i < s; ++i) on_edge(n.x + s, n.y + i);
     for (int i = s; i > 0; --i) on_edge(n.x + i, n.y + s);
@@ -177,11 +180,7 @@ SolidMesh relief_solid(const HeightGrid& heights, const SolidOptions& options) {
 
   // The border of the top, once around, and the sides down to the back.
   std::vector<std::uint32_t> border;
-  const auto on_border = [&](int x, int y) {
-    const std::int64_t v = id[static_cast<std::size_t>(y) * static_cast<std::size_t>(W + 1) +
-                              static_cast<std::size_t>(x)];
-    if (v >= 0) border.push_back(static_cast<std::uint32_t>(v));
-  };
+  const auto on_border = [&](int x, int y) { add_if_vertex(border, x, y); };
   for (int x = 0; x < W; ++x) on_border(x, 0);
   for (int y = 0; y < H; ++y) on_border(W, y);
   for (int x = W; x > 0; --x) on_border(x, H);

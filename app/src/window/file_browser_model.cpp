@@ -14,15 +14,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string lower_case(const std::string& text) {
-  return util::ascii_lowercase(text);
-}
-
 // The kinds of file Impasto itself reads and writes: a name ending in one of them was meant
 // for another dialog, and its extension is replaced rather than kept.
 bool is_impasto_kind(const std::string& extension) {
   static const std::vector<std::string> kinds{".impasto", ".png", ".exr", ".strokes"};
-  return std::find(kinds.begin(), kinds.end(), lower_case(extension)) != kinds.end();
+  return std::find(kinds.begin(), kinds.end(), util::ascii_lowercase(extension)) != kinds.end();
 }
 
 constexpr FilePurpose kAllFilePurposes[] = {FilePurpose::kOpenPainting, FilePurpose::kSavePainting,
@@ -64,11 +60,11 @@ std::string folder_key(FilePurpose purpose) {
 
 bool filter_matches(const FileFilter& filter, const fs::path& file) {
   if (filter.extensions.empty()) return true;
-  const std::string name = lower_case(file.filename().string());
+  const std::string name = util::ascii_lowercase(file.filename().string());
   for (const std::string& ending : filter.excluded_endings) {
     if (name.ends_with(ending)) return false;
   }
-  const std::string extension = lower_case(file.extension().string());
+  const std::string extension = util::ascii_lowercase(file.extension().string());
   return std::find(filter.extensions.begin(), filter.extensions.end(), extension) !=
          filter.extensions.end();
 }
@@ -106,7 +102,7 @@ std::vector<FolderEntry> list_folder(const fs::path& folder, const FileFilter& f
   if (code && error) *error = "cannot read the folder " + folder.string() + ": " + code.message();
   std::sort(entries.begin(), entries.end(), [](const FolderEntry& a, const FolderEntry& b) {
     if (a.is_folder != b.is_folder) return a.is_folder;
-    const std::string la = lower_case(a.name), lb = lower_case(b.name);
+    const std::string la = util::ascii_lowercase(a.name), lb = util::ascii_lowercase(b.name);
     return la != lb ? la < lb : a.name < b.name;
   });
   return entries;

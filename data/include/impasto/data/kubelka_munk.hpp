@@ -35,16 +35,9 @@ Real reflectance_from_ks(Real ks) {
   return reflectance_infinite(ks, Real(1));
 }
 
-// Saunderson's correction for the paint–air interface, k1 the external (front-surface,
-// specular) and k2 the internal reflection coefficient. Body reflectance seen from the air:
-//   R_measured = k1 + (1 − k1)(1 − k2) R / (1 − k2 R),
-template <std::floating_point Real>
-constexpr Real saunderson_to_measured(Real internal, Real k1, Real k2) {
-  return k1 + (Real(1) - k1) * (Real(1) - k2) * internal / (Real(1) - k2 * internal);
-}
-
-// The body's share of it alone, (1 − k1)(1 − k2) R / (1 − k2 R): the light that crossed the
-// surface into the paint and back out, without the surface's own reflection k1. A renderer
+// The body's share of what is seen from the air (Saunderson, below),
+// (1 − k1)(1 − k2) R / (1 − k2 R): the light that crossed the surface into the paint and back
+// out, without the surface's own reflection k1. A renderer
 // whose surface model draws that reflection (a specular term, a Fresnel) adds this, so k1
 // is not counted twice; an instrument that includes the surface reads the two summed.
 template <std::floating_point Real>
@@ -52,10 +45,21 @@ constexpr Real saunderson_body(Real internal, Real k1, Real k2) {
   return (Real(1) - k1) * (Real(1) - k2) * internal / (Real(1) - k2 * internal);
 }
 
+// Saunderson's correction for the paint–air interface, k1 the external (front-surface,
+// specular) and k2 the internal reflection coefficient. Body reflectance seen from the air:
+//   R_measured = k1 + (1 − k1)(1 − k2) R / (1 − k2 R),
+// or with only `seen` of k1 read (an instrument that excludes part of the specular
+// reflection; Saunderson::surface_seen): seen·k1 + the body (saunderson_body, above).
+template <std::floating_point Real>
+constexpr Real saunderson_to_measured(Real internal, Real k1, Real k2, Real seen = Real(1)) {
+  return seen * k1 + saunderson_body(internal, k1, k2);
+}
+
 // The inverse of saunderson_to_measured, measured → body reflectance.
 template <std::floating_point Real>
-constexpr Real saunderson_to_internal(Real measured, Real k1, Real k2) {
-  return (measured - k1) / (Real(1) - k1 - k2 + k2 * measured);
+constexpr Real saunderson_to_internal(Real measured, Real k1, Real k2, Real seen = Real(1)) {
+  const Real body = measured - seen * k1;
+  return body / ((Real(1) - k1) * (Real(1) - k2) + k2 * body);
 }
 
 // The interface of an oil or acrylic film in air, the one default of the K/S fit and the
@@ -79,11 +83,10 @@ struct Saunderson {
   double k1 = kSaundersonK1, k2 = kSaundersonK2;
   double surface_seen = 1.0;
   double to_internal(double measured) const {
-    const double body = measured - surface_seen * k1;
-    return body / ((1.0 - k1) * (1.0 - k2) + k2 * body);
+    return saunderson_to_internal(measured, k1, k2, surface_seen);
   }
   double to_measured(double internal) const {
-    return surface_seen * k1 + saunderson_body(internal, k1, k2);
+    return saunderson_to_measured(internal, k1, k2, surface_seen);
   }
 };
 
