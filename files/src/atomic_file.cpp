@@ -170,6 +170,22 @@ void AtomicFile::flush() {
   buffer_.clear();
 }
 
+void AtomicFile::write_at(std::uint64_t offset, const void* data, std::size_t size) {
+  if (fd_ < 0) throw std::logic_error("AtomicFile::write_at after commit or failure");
+  if (offset > bytes_written() || size > bytes_written() - offset)
+    throw std::logic_error("AtomicFile::write_at past the bytes written");
+  flush();
+  const char* p = static_cast<const char*>(data);
+  while (size > 0) {
+    const ssize_t n = ::pwrite(fd_, p, size, static_cast<off_t>(offset));
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) fail("write " + temp_.string(), n < 0 ? errno : ENOSPC);
+    p += n;
+    offset += static_cast<std::uint64_t>(n);
+    size -= static_cast<std::size_t>(n);
+  }
+}
+
 void AtomicFile::commit() {
   if (fd_ < 0) throw std::logic_error("AtomicFile::commit twice or after a failure");
   flush();

@@ -1,6 +1,8 @@
 // The native painting file (.impasto), described in docs/painting-format.md:
-//   "IMPASTO\0", u32 version, u64 payload size, payload, u64 checksum of the payload, and
-//   (version 5, optional) u64 history size, the undo history, u64 checksum of the history.
+//   "IMPASTO\0", u32 version, then (version 8) the payload as a compressed section
+//   (painting_file_codec.hpp: u64 stored size, u64 size, zstd frame, u64 checksum) and,
+//   optionally, the undo history as a second one. Versions 1 to 7 stored the payload as it is
+//   (u64 size, payload, u64 checksum; from version 5 an optional history section the same way).
 // Little-endian, as the machines Impasto runs on are.
 
 #include <algorithm>
@@ -29,12 +31,13 @@ using namespace file_io;  // NOLINT: the file's own building blocks
 
 namespace {
 
-// The history section after the payload's checksum: its size field, its steps (checked
-// against the painting) and its own checksum, hashed as the steps are read. Returns why it
-// was dropped, or "" (then the painting holds it).
+// The history section after the payload's checksum (versions 5 to 7): its size field, its
+// steps (checked against the painting) and its own checksum, hashed as the steps are read.
+// Returns why it was dropped, or "" (then the painting holds it).
 std::string read_history_section(files::InputFile& in, std::uint64_t section_bytes,
                                  std::uint64_t offset, const std::string& name,
-                                 const Canvas& canvas, UndoHistory& history) {
+                                 const Canvas& canvas, UndoHistory& history,
+                                 std::uint32_t version) {
   if (section_bytes < 16) return "the section is truncated";
   std::uint64_t size = 0;
   in.read_exact(&size, 8);
@@ -46,7 +49,7 @@ std::string read_history_section(files::InputFile& in, std::uint64_t section_byt
   h.hash_into(&checksum);
   std::string problem;
   try {
-    read_history(canvas, history, h, name);
+    read_history(canvas, history, h, name, version);
   } catch (const std::runtime_error& e) {
     problem = e.what();
     h.skip_rest();  // the checksum says whether this is damage
@@ -56,6 +59,36 @@ std::string read_history_section(files::InputFile& in, std::uint64_t section_byt
   std::uint64_t stored;
   in.read_exact(&stored, 8);
   if (stored != checksum.digest()) return "field 'history_checksum' does not match (it is corrupt)";
+  return problem;
+}
+
+// The same from version 8, compressed (painting_file_codec.hpp).
+std::string read_compressed_history_section(files::InputFile& in, std::uint64_t section_bytes,
+                                            const std::string& name, const Canvas& canvas,
+                                            UndoHistory& history) {
+  if (section_bytes < 24) return "the section is truncated";
+  std::uint64_t sizes[2] = {};  // stored, decompressed
+  in.read_exact(sizes, sizeof sizes);
+  if (sizes[0] != section_bytes - 24)
+    return "field 'history_stored_size' says " + std::to_string(sizes[0]) + " bytes but " +
+           std::to_string(section_bytes - 24) + " follow";
+  if (sizes[1] > kMaxSectionBytes)
+    return "field 'history_size' says " + std::to_string(sizes[1]) + " bytes (absurd)";
+  DecompressingSource source(in, sizes[0], name, "undo history");
+  Reader h(source, sizes[1], name);
+  std::string problem;
+  try {
+    read_history(canvas, history, h, name, kCompressedVersion);
+    source.expect_end();
+  } catch (const std::runtime_error& e) {
+    problem = e.what();
+    h.skip_rest();
+  } catch (const std::bad_alloc&) {
+    return "not enough memory for it";
+  }
+  std::uint64_t stored;
+  in.read_exact(&stored, 8);
+  if (stored != source.digest()) return "field 'history_checksum' does not match (it is corrupt)";
   return problem;
 }
 
@@ -138,32 +171,21 @@ void PaintingFile::write_payload(const Painting::Impl& p, const Records& records
 
 namespace {
 
-// Writes a section whose bytes `write(writer)` produces: counted first (the size goes before
-// them), then written to the file while another thread hashes the same bytes from memory,
-// then the hash. Returns nothing; throws what writing throws, after the hash thread ends.
+// Writes a compressed section (painting_file_codec.hpp) whose bytes `write(writer)` produces,
+// in one pass: its sizes are known at its end and written back in place.
 template <typename Write>
-void put_section(files::AtomicFile& out, const Write& write, const char* what) {
-  CountingSink counter;
-  ByteSinkOf<CountingSink> counting(counter);
-  Writer<ByteSink> count(counting);
-  write(count);
-  Writer<files::AtomicFile>(out).put(counter.bytes());
-  auto digest = std::async(std::launch::async, [&write] {
-    HashingSink hasher;
-    ByteSinkOf<HashingSink> hashing(hasher);
-    Writer<ByteSink> w(hashing);
-    write(w);
-    return std::pair{hasher.bytes(), hasher.digest()};
-  });
-  FileSink file(out);
-  ByteSinkOf<FileSink> filing(file);
-  Writer<ByteSink> w(filing);
+void put_section(files::AtomicFile& out, const Write& write) {
+  const std::uint64_t sizes_at = out.bytes_written();
+  const std::uint64_t unknown[2] = {0, 0};
+  out.write(unknown, sizeof unknown);
+  CompressingSink sink(out);
+  ByteSinkOf<CompressingSink> bytes(sink);
+  Writer<ByteSink> w(bytes);
   write(w);
-  const auto [hashed, checksum] = digest.get();
-  if (file.bytes() != counter.bytes() || hashed != counter.bytes())
-    throw std::logic_error(std::string("painting save: the ") + what +
-                           " changed size between passes");
-  Writer<files::AtomicFile>(out).put(checksum);
+  sink.finish();
+  const std::uint64_t sizes[2] = {sink.stored_bytes(), sink.section_bytes()};
+  out.write_at(sizes_at, sizes, sizeof sizes);
+  Writer<files::AtomicFile>(out).put(sink.digest());
 }
 
 }  // namespace
@@ -174,14 +196,12 @@ void PaintingFile::save(const Painting::Impl& p, const std::filesystem::path& fi
   Writer<files::AtomicFile> header(out);
   for (char c : kMagic) header.put(c);
   header.put(kVersion);
-  put_section(
-      out, [&](Writer<ByteSink>& w) { write_payload(p, records, w); }, "payload");
+  put_section(out, [&](Writer<ByteSink>& w) { write_payload(p, records, w); });
   // The undo history, after the painting's checksum with one of its own: a damaged history
   // costs only itself (load drops it and says so).
   const SavedSteps steps = steps_to_save(p.history, p.saved_history_bytes);
   if (!steps.empty())
-    put_section(
-        out, [&](Writer<ByteSink>& w) { write_history(p.history, steps, w); }, "history");
+    put_section(out, [&](Writer<ByteSink>& w) { write_history(p.canvas, p.history, steps, w); });
   out.commit();
 }
 
@@ -197,6 +217,60 @@ std::unique_ptr<Painting::Impl> PaintingFile::load(const std::filesystem::path& 
     header.fail("version", "unknown version " + std::to_string(version) + " (this program reads " +
                                std::to_string(kOldestVersion) + " to " + std::to_string(kVersion) +
                                ")");
+  auto p = version >= kCompressedVersion
+               ? load_compressed(in, header, version, threads, with_history)
+               : load_uncompressed(in, header, version, threads, with_history);
+  for (int index = 0; index < p->canvas.tile_count(); ++index)
+    if (p->canvas.tile(index) || p->canvas.cracks().tile(index)) p->canvas.mark_dirty(index);
+  return p;
+}
+
+std::unique_ptr<Painting::Impl> PaintingFile::load_compressed(files::InputFile& in, Reader& header,
+                                                              std::uint32_t version, int threads,
+                                                              bool with_history) {
+  const std::string name = in.path().string();
+  const auto stored = header.get<std::uint64_t>("payload_stored_size");
+  constexpr std::uint64_t kSizesEnd = kHeaderBytes + 8;
+  if (in.size() < kSizesEnd + 8 || stored > in.size() - kSizesEnd - 8)
+    header.fail("payload_stored_size", "says " + std::to_string(stored) +
+                                           " bytes but the file has " + std::to_string(in.size()) +
+                                           " in all (a truncated file)");
+  std::uint64_t size = 0;
+  in.read_exact(&size, 8);
+  if (size > kMaxSectionBytes)
+    header.fail("payload_size", "says " + std::to_string(size) + " bytes (absurd)");
+  DecompressingSource source(in, stored, name, "payload");
+  Reader r(source, size, name);
+  const auto check_checksum = [&] {
+    std::uint64_t digest;
+    in.read_exact(&digest, 8);
+    if (digest != source.digest())
+      header.fail("checksum", "does not match the contents (the file is corrupt)");
+  };
+  std::unique_ptr<Painting::Impl> p;
+  try {
+    p = read_payload(r, version, name, threads);
+    source.expect_end();
+  } catch (const std::runtime_error&) {
+    r.skip_rest();
+    check_checksum();
+    throw;
+  }
+  check_checksum();
+  const std::uint64_t history_bytes = with_history ? in.size() - kSizesEnd - stored - 8 : 0;
+  if (history_bytes > 0) {
+    std::string problem =
+        read_compressed_history_section(in, history_bytes, name, p->canvas, p->history);
+    drop_history_if(*p, problem, name);
+  }
+  return p;
+}
+
+std::unique_ptr<Painting::Impl> PaintingFile::load_uncompressed(files::InputFile& in,
+                                                                Reader& header,
+                                                                std::uint32_t version, int threads,
+                                                                bool with_history) {
+  const std::string name = in.path().string();
   const auto payload_size = header.get<std::uint64_t>("payload_size");
   // From version 5 an undo history section may follow the payload's checksum.
   if (in.size() < kHeaderBytes + 8 || payload_size > in.size() - kHeaderBytes - 8 ||
@@ -228,16 +302,18 @@ std::unique_ptr<Painting::Impl> PaintingFile::load(const std::filesystem::path& 
   check_checksum();
   if (history_bytes > 0) {
     std::string problem = read_history_section(in, history_bytes, kHeaderBytes + payload_size + 8,
-                                               name, p->canvas, p->history);
-    if (!problem.empty()) {
-      p->history = UndoHistory{};
-      p->load_warning =
-          name + ": the undo history was dropped (" + problem + "); the painting itself loaded";
-    }
+                                               name, p->canvas, p->history, version);
+    drop_history_if(*p, problem, name);
   }
-  for (int index = 0; index < p->canvas.tile_count(); ++index)
-    if (p->canvas.tile(index) || p->canvas.cracks().tile(index)) p->canvas.mark_dirty(index);
   return p;
+}
+
+void PaintingFile::drop_history_if(Painting::Impl& p, const std::string& problem,
+                                   const std::string& name) {
+  if (problem.empty()) return;
+  p.history = UndoHistory{};
+  p.load_warning =
+      name + ": the undo history was dropped (" + problem + "); the painting itself loaded";
 }
 
 std::unique_ptr<Painting::Impl> PaintingFile::read_payload(Reader& r, std::uint32_t version,

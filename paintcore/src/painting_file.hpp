@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "impasto/files/input_file.hpp"
 #include "painting_impl.hpp"
 
 namespace impasto::paintcore {
@@ -23,6 +24,19 @@ struct PaintingFile {
   static void save(const Painting::Impl& p, const std::filesystem::path& file);
   static std::unique_ptr<Painting::Impl> load(const std::filesystem::path& file, int threads,
                                               bool with_history);
+  // After the header's magic and version: version 8's compressed sections, or the raw ones of
+  // versions 1 to 7.
+  static std::unique_ptr<Painting::Impl> load_compressed(files::InputFile& in,
+                                                         file_io::Reader& header,
+                                                         std::uint32_t version, int threads,
+                                                         bool with_history);
+  static std::unique_ptr<Painting::Impl> load_uncompressed(files::InputFile& in,
+                                                           file_io::Reader& header,
+                                                           std::uint32_t version, int threads,
+                                                           bool with_history);
+  // A history that failed to load is dropped, and the painting says so.
+  static void drop_history_if(Painting::Impl& p, const std::string& problem,
+                              const std::string& name);
   // The payload's fields, from the canvas spec to the last (the checksum is the caller's).
   static std::unique_ptr<Painting::Impl> read_payload(file_io::Reader& r, std::uint32_t version,
                                                       const std::string& name, int threads);

@@ -3,9 +3,11 @@
 // undo history section (painting_history_file.cpp): checked little-endian fields, sinks that
 // count or hash what is written, and the records both write (totals, quadrics, cracks).
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <iterator>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -15,6 +17,7 @@
 #include "impasto/files/input_file.hpp"
 #include "impasto/paintcore/painting.hpp"
 #include "impasto/paintcore/painting_file_header.hpp"
+#include "painting_file_codec.hpp"
 
 namespace impasto::paintcore::file_io {
 
@@ -29,7 +32,9 @@ constexpr char kMagic[8] = {'I', 'M', 'P', 'A', 'S', 'T', 'O', '\0'};
 // added the media and varnish of the tiles that have them (painting_surface_file.hpp). Version
 // 7 added the long steps' settings after the other parameters (the version each parameter
 // came in is in simulation_params.cpp's list); older files load with their defaults.
+// Version 8 compresses the payload and the history (painting_file_codec.hpp).
 constexpr std::uint32_t kVersion = kPaintingFileVersion;
+constexpr std::uint32_t kCompressedVersion = 8;
 constexpr std::uint32_t kOldestVersion = 1;
 static_assert(sizeof(kMagic) == kPaintingFileMagicBytes);
 constexpr std::size_t kHeaderBytes = kPaintingFileHeaderBytes;
@@ -49,46 +54,13 @@ constexpr float kMinPaintedVolumeMm = std::numeric_limits<float>::min();
 constexpr std::uint64_t kMinWetTileBytes = 4 + 2 * kTileCells * sizeof(float);
 constexpr std::uint64_t kMinDryTileBytes = 4 + kTileCells * sizeof(float) + 1;
 
-// Where the payload goes: counted first (the header holds its size), then hashed and written
-// to the file as it is produced, tile by tile, so saving never builds a copy of the painting.
-class CountingSink {
- public:
-  void write(const void*, std::size_t size) { bytes_ += size; }
-  std::uint64_t bytes() const { return bytes_; }
-
- private:
-  std::uint64_t bytes_ = 0;
-};
-
-// The two passes that follow the count, run at once (painting_file.cpp): one hashes the
-// bytes, the other writes them to the file.
-class HashingSink {
- public:
-  void write(const void* data, std::size_t size) {
-    hasher_.bytes(data, size);
-    bytes_ += size;
-  }
-  std::uint64_t bytes() const { return bytes_; }
-  std::uint64_t digest() const { return hasher_.digest(); }
-
- private:
-  StreamHasher hasher_;
-  std::uint64_t bytes_ = 0;
-};
-
-class FileSink {
- public:
-  explicit FileSink(files::AtomicFile& file) : file_(file) {}
-  void write(const void* data, std::size_t size) {
-    file_.write(data, size);
-    bytes_ += size;
-  }
-  std::uint64_t bytes() const { return bytes_; }
-
- private:
-  files::AtomicFile& file_;
-  std::uint64_t bytes_ = 0;
-};
+// A plane coded against a newer one (the undo history's tiles, painting_history_file.cpp):
+// the XOR of the values' bits, so that unchanged values code as zero (decoding is the same).
+inline void code_against(const float* values, const float* newer, std::size_t count, float* out) {
+  for (std::size_t i = 0; i < count; ++i)
+    out[i] = std::bit_cast<float>(std::bit_cast<std::uint32_t>(values[i]) ^
+                                  std::bit_cast<std::uint32_t>(newer[i]));
+}
 
 template <typename Sink>
 class Writer {
@@ -100,6 +72,16 @@ class Writer {
   }
   void put_floats(const float* values, std::size_t count) {
     sink_.write(values, count * sizeof(float));
+  }
+  // Values stored coded against `newer` (code_against); null: as they are.
+  void put_floats(const float* values, std::size_t count, const float* newer) {
+    if (newer == nullptr) return put_floats(values, count);
+    float coded[1024];
+    for (std::size_t at = 0; at < count; at += std::size(coded)) {
+      const std::size_t n = std::min(count - at, std::size(coded));
+      code_against(values + at, newer + at, n, coded);
+      sink_.write(coded, n * sizeof(float));
+    }
   }
   void put_zeros(std::size_t count) {
     static constexpr float zeros[kTileCells] = {};
@@ -123,7 +105,10 @@ class Writer {
 class Reader {
  public:
   Reader(files::InputFile& in, std::uint64_t size, std::uint64_t offset, std::string file)
-      : in_(in), size_(size), offset_(offset), file_(std::move(file)) {}
+      : in_(&in), size_(size), offset_(offset), file_(std::move(file)) {}
+  // A compressed section (version 8): offsets in messages count within the section.
+  Reader(DecompressingSource& in, std::uint64_t size, std::string file)
+      : section_(&in), size_(size), offset_(0), file_(std::move(file)) {}
 
   [[noreturn]] void fail(const std::string& field, const std::string& why) const {
     throw std::runtime_error(file_ + ": field '" + field + "': " + why);
@@ -141,9 +126,12 @@ class Reader {
     return value;
   }
   // Reads count amounts (mm of paint) into out: each finite, >= 0 and at most kMaxAmountMm.
-  void get_amounts(float* out, std::size_t count, const std::string& field) {
+  // `newer`: the values were stored coded against it (Writer::put_floats).
+  void get_amounts(float* out, std::size_t count, const std::string& field,
+                   const float* newer = nullptr) {
     need(count * sizeof(float), field);
     read(out, count * sizeof(float));
+    if (newer != nullptr) code_against(out, newer, count, out);
     if (std::string why = amounts_problem(out, count); !why.empty()) fail(field, why);
   }
   // Why amounts read elsewhere (tiles decoded in parallel) are not amounts, or "".
@@ -167,6 +155,11 @@ class Reader {
   // Reads (and hashes) what is left: after a field failed, the checksum says whether the
   // file is corrupt rather than crafted.
   void skip_rest() {
+    if (section_ != nullptr) {  // it hashes what it stores, not what it decodes
+      section_->skip_rest();
+      pos_ = size_;
+      return;
+    }
     unsigned char chunk[64 << 10];
     while (left() > 0)
       read(chunk, static_cast<std::size_t>(std::min<std::uint64_t>(left(), sizeof chunk)));
@@ -200,14 +193,20 @@ class Reader {
   void need(std::uint64_t bytes, const std::string& field) const {
     if (left() < bytes)
       fail(field, "the file is truncated (needs " + std::to_string(bytes) + " bytes at offset " +
-                      std::to_string(offset_ + pos_) + ", " + std::to_string(left()) + " left)");
+                      std::to_string(offset_ + pos_) +
+                      (section_ != nullptr ? " of the decompressed section, " : ", ") +
+                      std::to_string(left()) + " left)");
   }
   void read(void* out, std::size_t bytes) {
-    in_.read_exact(out, bytes);
+    if (section_ != nullptr)
+      section_->read_exact(out, bytes);
+    else
+      in_->read_exact(out, bytes);
     if (hasher_ != nullptr) hasher_->bytes(out, bytes);
     pos_ += bytes;
   }
-  files::InputFile& in_;
+  files::InputFile* in_ = nullptr;
+  DecompressingSource* section_ = nullptr;
   StreamHasher* hasher_ = nullptr;
   std::uint64_t size_;
   std::uint64_t offset_;

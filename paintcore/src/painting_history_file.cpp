@@ -27,29 +27,72 @@ PaintTotals read_totals_of(Reader& r, const std::string& field) {
   return t;
 }
 
+// From version 8 a step's tile is stored against the same tile's next newer state (in a step
+// written before it, or the painting itself): each plane as the XOR of its bits with the newer
+// one's, so that the cells the step did not change are zeros, which compression all but
+// removes. Null where there is no newer state (or it lacks that slot).
+const float* newer_plane(const Tile* newer, const float* (*plane)(const Tile&)) {
+  return newer != nullptr ? plane(*newer) : nullptr;
+}
+const float* dry_plane(const Tile& t) {
+  return t.dry_height_mm.data();
+}
+const float* wet_plane(const Tile& t) {
+  return t.wet_volume_mm.data();
+}
+const float* newer_pigment(const Tile* newer, int slot) {
+  return newer != nullptr ? newer->pigment(slot) : nullptr;
+}
+
 // A tile in any slot count (a step keeps it as it was).
-void write_tile(W& w, const Tile& tile) {
+void write_tile(W& w, const Tile& tile, const Tile* newer) {
   w.put(static_cast<std::uint8_t>(tile.slot_count() |
                                   (surface_planes(tile) << kHistorySurfaceShift)));
-  w.put_floats(tile.dry_height_mm.data(), kTileCells);
-  w.put_floats(tile.wet_volume_mm.data(), kTileCells);
-  w.put_floats(tile.pigment_mm.data(), tile.pigment_mm.size());
+  w.put_floats(tile.dry_height_mm.data(), kTileCells, newer_plane(newer, dry_plane));
+  w.put_floats(tile.wet_volume_mm.data(), kTileCells, newer_plane(newer, wet_plane));
+  for (int s = 0; s < tile.slot_count(); ++s)
+    w.put_floats(tile.pigment(s), kTileCells, newer_pigment(newer, s));
   write_surface_planes(w, tile);  // media and varnish (painting_surface_file.hpp)
 }
 
 std::unique_ptr<Tile> read_tile(Reader& r, const Canvas& frame_canvas, int index,
-                                const std::string& field) {
+                                const std::string& field, const Tile* newer) {
   const auto byte = r.get<std::uint8_t>(field + ".slot_count");
   const int slots = byte & ((1 << kHistorySurfaceShift) - 1);
   if (slots > kMaxPigmentSlots) r.fail(field + ".slot_count", "more than 16 slots");
   auto tile = frame_canvas.make_tile(index, slots);
-  r.get_amounts(tile->dry_height_mm.data(), kTileCells, field + ".dry_height");
-  r.get_amounts(tile->wet_volume_mm.data(), kTileCells, field + ".wet_volume");
-  r.get_amounts(tile->pigment_mm.data(), tile->pigment_mm.size(), field + ".pigment");
+  r.get_amounts(tile->dry_height_mm.data(), kTileCells, field + ".dry_height",
+                newer_plane(newer, dry_plane));
+  r.get_amounts(tile->wet_volume_mm.data(), kTileCells, field + ".wet_volume",
+                newer_plane(newer, wet_plane));
+  for (int s = 0; s < slots; ++s)
+    r.get_amounts(tile->pigment(s), kTileCells, field + ".pigment", newer_pigment(newer, s));
   repair_pigment(tile->wet_volume_mm.data(), tile->pigment_mm.data(), slots, kTileCells);
   read_surface_planes(r, *tile, static_cast<std::uint8_t>(byte >> kHistorySurfaceShift), field);
   return tile;
 }
+
+// The newest state of each tile of a frame seen so far, while steps are written or read
+// outward from the painting (empty: the file's version does not code against it).
+struct NewerTiles {
+  bool coded = false;
+  std::vector<const Tile*> tiles;
+
+  void start_from(const Canvas& canvas) {
+    tiles.assign(static_cast<std::size_t>(canvas.tile_count()), nullptr);
+    for (int index = 0; index < canvas.tile_count(); ++index)
+      tiles[static_cast<std::size_t>(index)] = canvas.tile(index);
+  }
+  const Tile* of(int index) const {
+    return coded ? tiles[static_cast<std::size_t>(index)] : nullptr;
+  }
+  // After a step: its tiles are the newest states of theirs; a reframe's canvas of all.
+  void after(const UndoStep& step) {
+    if (step.canvas) return start_from(*step.canvas);
+    for (const auto& [index, tile] : step.tiles)
+      tiles[static_cast<std::size_t>(index)] = tile.get();
+  }
+};
 
 void write_brush(W& w, const Brush& brush) {
   // 2: the paint on it has a medium, written last (painting_surface_file.hpp).
@@ -108,7 +151,7 @@ void write_canvas(W& w, const Canvas& canvas) {
   for (int index = 0; index < canvas.tile_count(); ++index)
     if (const Tile* tile = canvas.tile(index)) {
       w.put(static_cast<std::uint32_t>(index));
-      write_tile(w, *tile);
+      write_tile(w, *tile, nullptr);
     }
   w.put(static_cast<std::uint32_t>(canvas.dry_layers().size()));
   for (const DryLayer& layer : canvas.dry_layers()) write_dry_layer(w, layer);
@@ -146,7 +189,7 @@ std::unique_ptr<Canvas> read_canvas(Reader& r, const CanvasSpec& painting, const
         r.get_count(tfield + ".index", static_cast<std::uint32_t>(tile_count - 1)));
     if (index <= previous) r.fail(tfield + ".index", "tiles are not in ascending order");
     previous = index;
-    canvas->tile_slot(index) = read_tile(r, *canvas, index, tfield);
+    canvas->tile_slot(index) = read_tile(r, *canvas, index, tfield, nullptr);
   }
   const auto layers = r.get_count(field + ".dry_layers.count", 1u << 24, 4);
   for (std::uint32_t l = 0; l < layers; ++l)
@@ -156,7 +199,7 @@ std::unique_ptr<Canvas> read_canvas(Reader& r, const CanvasSpec& painting, const
   return canvas;
 }
 
-void write_step(W& w, const UndoStep& step) {
+void write_step(W& w, const UndoStep& step, const NewerTiles& newer) {
   w.put(static_cast<std::uint32_t>(step.dry_layer_count));
   w.put(static_cast<std::uint32_t>(step.slots.size()));
   for (const std::string& name : step.slots) w.put_string(name);
@@ -167,7 +210,7 @@ void write_step(W& w, const UndoStep& step) {
   for (const auto& [index, tile] : step.tiles) {
     w.put(static_cast<std::uint32_t>(index));
     w.put(static_cast<std::uint8_t>(tile ? 1 : 0));
-    if (tile) write_tile(w, *tile);
+    if (tile) write_tile(w, *tile, newer.of(index));
   }
   w.put(static_cast<std::uint32_t>(step.dry_layers.size()));
   for (const DryLayer& layer : step.dry_layers) write_dry_layer(w, layer);
@@ -181,6 +224,7 @@ struct Chain {
   std::unique_ptr<Canvas> frame;  // an empty canvas of the step's frame (for its weave)
   std::size_t layers = 0;
   std::uint64_t table_bytes = 0;  // the kept canvases' tile tables, both ways
+  NewerTiles newer;
 };
 
 void set_frame(Chain& chain, const CanvasSpec& spec) {
@@ -216,7 +260,7 @@ UndoStep read_step(Reader& r, const std::string& field, bool is_redo, Chain& cha
     seen[static_cast<std::size_t>(index)] = true;
     std::unique_ptr<Tile> tile;
     if (r.get<std::uint8_t>(tfield + ".present") != 0)
-      tile = read_tile(r, *chain.frame, index, tfield);
+      tile = read_tile(r, *chain.frame, index, tfield, chain.newer.of(index));
     step.bytes += tile ? tile_bytes(*tile) : sizeof(std::pair<int, std::unique_ptr<Tile>>);
     step.tiles.emplace_back(index, std::move(tile));
   }
@@ -249,6 +293,7 @@ UndoStep read_step(Reader& r, const std::string& field, bool is_redo, Chain& cha
   chain.layers = step.dry_layer_count + (is_redo ? added.size() : 0);
   for (const DryLayer& layer : added) step.bytes += dry_layer_bytes(layer);
   step.dry_layers = std::move(added);
+  chain.newer.after(step);
   return step;
 }
 
@@ -270,17 +315,29 @@ SavedSteps steps_to_save(const UndoHistory& history, std::size_t budget) {
   return kept;
 }
 
-void write_history(const UndoHistory& history, SavedSteps steps, W& w) {
+void write_history(const Canvas& canvas, const UndoHistory& history, SavedSteps steps, W& w) {
   w.put(static_cast<std::uint64_t>(steps.undo));
   w.put(static_cast<std::uint64_t>(steps.redo));
   // Nearest first, each way: reading follows the canvas from now into the past and future.
+  NewerTiles newer{true, {}};
+  newer.start_from(canvas);
   const auto& undo = history.undo_steps();
-  for (std::size_t k = 0; k < steps.undo; ++k) write_step(w, undo[undo.size() - 1 - k]);
+  for (std::size_t k = 0; k < steps.undo; ++k) {
+    const UndoStep& step = undo[undo.size() - 1 - k];
+    write_step(w, step, newer);
+    newer.after(step);
+  }
+  newer.start_from(canvas);
   const auto& redo = history.redo_steps();
-  for (std::size_t k = 0; k < steps.redo; ++k) write_step(w, redo[redo.size() - 1 - k]);
+  for (std::size_t k = 0; k < steps.redo; ++k) {
+    const UndoStep& step = redo[redo.size() - 1 - k];
+    write_step(w, step, newer);
+    newer.after(step);
+  }
 }
 
-void read_history(const Canvas& canvas, UndoHistory& history, Reader& r, const std::string& file) {
+void read_history(const Canvas& canvas, UndoHistory& history, Reader& r, const std::string& file,
+                  std::uint32_t version) {
   const CanvasSpec& painting = canvas.spec();
   constexpr std::uint64_t kMinStepBytes = 4 + 4 + 2 * 12 + 1 + 4 + 4 + 1;
   const auto undo_count = r.get<std::uint64_t>("history.undo_count");
@@ -289,11 +346,18 @@ void read_history(const Canvas& canvas, UndoHistory& history, Reader& r, const s
       undo_count + redo_count > r.left() / kMinStepBytes)
     r.fail("history.undo_count", "the steps do not fit in the section (a crafted file)");
   std::deque<UndoStep> undo, redo;
-  Chain chain{std::make_unique<Canvas>(painting), canvas.dry_layers().size()};
+  const bool coded = version >= kCompressedVersion;
+  const auto chain_from_now = [&](std::uint64_t table_bytes) {
+    Chain chain{std::make_unique<Canvas>(painting), canvas.dry_layers().size(), table_bytes,
+                NewerTiles{coded, {}}};
+    chain.newer.start_from(canvas);
+    return chain;
+  };
+  Chain chain = chain_from_now(0);
   for (std::uint64_t k = 0; k < undo_count; ++k)
     undo.push_front(
         read_step(r, "history.undo[" + std::to_string(k) + "]", false, chain, painting, file));
-  chain = Chain{std::make_unique<Canvas>(painting), canvas.dry_layers().size(), chain.table_bytes};
+  chain = chain_from_now(chain.table_bytes);
   for (std::uint64_t k = 0; k < redo_count; ++k)
     redo.push_front(
         read_step(r, "history.redo[" + std::to_string(k) + "]", true, chain, painting, file));

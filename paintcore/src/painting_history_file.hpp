@@ -18,7 +18,9 @@ struct SavedSteps {
 // redo steps nearest first.
 SavedSteps steps_to_save(const UndoHistory& history, std::size_t budget);
 
-void write_history(const UndoHistory& history, SavedSteps steps,
+// The steps of the history of the painting on `canvas` (from version 8 each step's tiles are
+// coded against their newer states, the canvas's first).
+void write_history(const Canvas& canvas, const UndoHistory& history, SavedSteps steps,
                    file_io::Writer<file_io::ByteSink>& w);
 
 // Reads the section and installs it as the history of the painting on `canvas`. Every step is
@@ -26,6 +28,6 @@ void write_history(const UndoHistory& history, SavedSteps steps,
 // index), so a crafted history cannot reach outside them; throws std::runtime_error naming the
 // field.
 void read_history(const Canvas& canvas, UndoHistory& history, file_io::Reader& r,
-                  const std::string& file);
+                  const std::string& file, std::uint32_t version);
 
 }  // namespace impasto::paintcore

@@ -65,6 +65,24 @@ TEST(AtomicFile, ANameOfTheFileSystemsFullLengthSaves) {
   }
 }
 
+// A size field known only at the end is written back in place, whether its bytes were flushed
+// or still buffered; nothing past the bytes written can be overwritten.
+TEST(AtomicFile, WriteAtOverwritesBytesAlreadyWritten) {
+  test::TempFolder folder;
+  AtomicFile out(folder / "a.bin");
+  out.write("size:????");
+  out.write(std::string(3 << 20, 'x'));  // more than the 1 MB buffer: the start is on disk
+  out.write("tail");
+  out.write_at(5, "1234", 4);
+  out.write_at(out.bytes_written() - 4, "TAIL", 4);
+  EXPECT_THROW(out.write_at(out.bytes_written() - 2, "abc", 3), std::logic_error);
+  out.commit();
+  const std::string written = contents(folder / "a.bin");
+  EXPECT_EQ(written.size(), 9u + (3u << 20) + 4u);
+  EXPECT_EQ(written.substr(0, 9), "size:1234");
+  EXPECT_EQ(written.substr(written.size() - 4), "TAIL");
+}
+
 TEST(AtomicFile, ReplacesTheOldFile) {
   test::TempFolder folder;
   put(folder / "a.txt", "old contents");

@@ -11,12 +11,12 @@
 #include "hasher.hpp"
 #include "impasto/paintcore/painting_file_benchmark.hpp"
 #include "impasto/paintcore/painting_file_header.hpp"
+#include "painting_file_sections.hpp"
 #include "test_util.hpp"
 
 namespace impasto::paintcore {
 namespace {
 
-constexpr std::size_t kHeaderBytes = kPaintingFileHeaderBytes;
 const std::vector<std::string> kSlots{"red", "blue", "white", "umber"};
 
 class BigPaintingFile : public ::testing::Test {
@@ -47,12 +47,12 @@ class BigPaintingFile : public ::testing::Test {
     out.write(reinterpret_cast<const char*>(bytes.data()),
               static_cast<std::streamsize>(bytes.size()));
   }
-  // Where wet tile k's record begins: after the tiles.count field, which the synthetic
-  // painting's first record follows (its index, then dry heights of 0.04 mm).
+  // Where wet tile k's record begins in the payload: after the tiles.count field, which the
+  // synthetic painting's first record follows (its index, then dry heights of 0.04 mm).
   static std::size_t tile_offset(const std::vector<unsigned char>& bytes, std::uint32_t count,
                                  int k) {
     const float dry = 0.04f;
-    for (std::size_t at = kHeaderBytes; at + 12 < bytes.size(); ++at) {
+    for (std::size_t at = 0; at + 12 < bytes.size(); ++at) {
       std::uint32_t n = 0, index = 1;
       float first_dry = 0;
       std::memcpy(&n, bytes.data() + at, 4);
@@ -64,14 +64,10 @@ class BigPaintingFile : public ::testing::Test {
     ADD_FAILURE() << "no tiles.count field found";
     return 0;
   }
-  // Puts a valid checksum on an edited payload (a crafted file, not a damaged one).
-  static void rehash(std::vector<unsigned char>& bytes) {
-    std::uint64_t payload = 0;
-    std::memcpy(&payload, bytes.data() + 12, 8);
-    Hasher h;
-    h.bytes(bytes.data() + kHeaderBytes, payload);
-    const std::uint64_t digest = h.digest();
-    std::memcpy(bytes.data() + kHeaderBytes + payload, &digest, 8);
+  // A file around an edited payload, its sizes and checksum valid (a crafted file, not a
+  // damaged one).
+  static std::vector<unsigned char> crafted(const std::vector<unsigned char>& payload) {
+    return test::file_of({kPaintingFileVersion, payload, std::nullopt});
   }
   std::string load_error(const std::filesystem::path& file) {
     try {
@@ -133,7 +129,7 @@ TEST_F(BigPaintingFile, TheFirstBadTileInFileOrderIsNamedWhicheverBatchHoldsIt) 
   p.set_saved_history_bytes(0);
   const auto file = dir_ / "crafted.impasto";
   p.save(file);
-  const std::vector<unsigned char> good = read(file);
+  const std::vector<unsigned char> good = test::sections_of(read(file)).payload;
   const auto put_float = [&](std::vector<unsigned char>& bytes, int tile, std::size_t value_at,
                              float value) {
     std::memcpy(bytes.data() + tile_offset(bytes, 90, tile) + 4 + value_at * 4, &value, 4);
@@ -150,8 +146,7 @@ TEST_F(BigPaintingFile, TheFirstBadTileInFileOrderIsNamedWhicheverBatchHoldsIt) 
     std::vector<unsigned char> bytes = good;
     put_float(bytes, 50, 4096 + 7, -1.0f);  // wet_volume[7]
     put_index(bytes, 88, index_of(bytes, 87));
-    rehash(bytes);
-    write(file, bytes);
+    write(file, crafted(bytes));
     const std::string error = load_error(file);
     EXPECT_NE(error.find("crafted.impasto: field 'tiles[50].wet_volume'"), std::string::npos)
         << error;
@@ -159,8 +154,7 @@ TEST_F(BigPaintingFile, TheFirstBadTileInFileOrderIsNamedWhicheverBatchHoldsIt) 
   {  // The same repeated index alone.
     std::vector<unsigned char> bytes = good;
     put_index(bytes, 88, index_of(bytes, 87));
-    rehash(bytes);
-    write(file, bytes);
+    write(file, crafted(bytes));
     const std::string error = load_error(file);
     EXPECT_NE(error.find("field 'tiles[88].index': tiles are not in ascending order"),
               std::string::npos)
@@ -170,8 +164,7 @@ TEST_F(BigPaintingFile, TheFirstBadTileInFileOrderIsNamedWhicheverBatchHoldsIt) 
     std::vector<unsigned char> bytes = good;
     put_index(bytes, 2, 4000000000u);
     put_float(bytes, 3, 0, std::numeric_limits<float>::quiet_NaN());
-    rehash(bytes);
-    write(file, bytes);
+    write(file, crafted(bytes));
     const std::string error = load_error(file);
     EXPECT_NE(error.find("field 'tiles[2].index': 4000000000 exceeds the limit 97968"),
               std::string::npos)
@@ -180,7 +173,9 @@ TEST_F(BigPaintingFile, TheFirstBadTileInFileOrderIsNamedWhicheverBatchHoldsIt) 
   {  // Damage (no new checksum) is reported as damage, even where a field fails first.
     std::vector<unsigned char> bytes = good;
     put_index(bytes, 70, 4000000000u);
-    write(file, bytes);
+    std::vector<unsigned char> damaged = crafted(bytes);
+    damaged.back() ^= 1;  // the payload's checksum (the file holds no history)
+    write(file, damaged);
     const std::string error = load_error(file);
     EXPECT_NE(error.find("field 'checksum': does not match"), std::string::npos) << error;
   }
@@ -190,7 +185,7 @@ TEST_F(BigPaintingFile, TruncatedAnywhereFailsNamingTheFile) {
   Painting p = big(40);
   const auto file = dir_ / "cut.impasto";
   p.save(file);
-  const std::vector<unsigned char> good = read(file);
+  const std::vector<unsigned char> good = test::sections_of(read(file)).payload;
   for (std::size_t keep : {std::size_t{0}, std::size_t{7}, std::size_t{19}, std::size_t{100},
                            good.size() / 3, good.size() / 2, good.size() - 9, good.size() - 1}) {
     write(file, std::vector<unsigned char>(good.begin(), good.begin() + keep));

@@ -17,10 +17,9 @@
 #include "impasto/paintcore/painting.hpp"
 #include "impasto/paintcore/painting_file_header.hpp"
 #include "impasto/paintcore/simulation_params.hpp"
+#include "painting_file_sections.hpp"
 
 namespace impasto::paintcore::test {
-
-inline constexpr std::size_t kFileHeaderBytes = kPaintingFileHeaderBytes;
 
 // What loading `file` throws, or "no error".
 inline std::string load_error(const std::filesystem::path& file) {
@@ -55,16 +54,14 @@ inline std::vector<unsigned char> saved_bytes(const Painting& painting) {
   return bytes;
 }
 
-// Puts `value` at `offset` of the payload and makes the checksum match again.
+// Puts `value` at `offset` of the (decompressed) payload; sizes and checksums match again.
 template <typename T>
 void patch_payload(std::vector<unsigned char>& file, std::size_t offset, const T& value) {
-  std::memcpy(file.data() + kFileHeaderBytes + offset, &value, sizeof(T));
-  std::uint64_t size = 0;  // the payload's (the undo history may follow its checksum)
-  std::memcpy(&size, file.data() + 12, 8);
-  Hasher checksum;
-  checksum.bytes(file.data() + kFileHeaderBytes, size);
-  const std::uint64_t digest = checksum.digest();
-  std::memcpy(file.data() + kFileHeaderBytes + size, &digest, 8);
+  FileSections sections = sections_of(file);
+  if (offset + sizeof(T) > sections.payload.size())
+    throw std::out_of_range("patch_payload: offset past the payload");
+  std::memcpy(sections.payload.data() + offset, &value, sizeof(T));
+  file = file_of(sections);
 }
 
 // Payload offsets of a painting with slots named `slots`.

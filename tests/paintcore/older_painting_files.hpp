@@ -11,6 +11,7 @@
 #include "hasher.hpp"
 #include "impasto/paintcore/painting_file_header.hpp"
 #include "impasto/paintcore/simulation_params.hpp"
+#include "painting_file_sections.hpp"
 
 namespace impasto::paintcore::test {
 
@@ -18,16 +19,13 @@ namespace impasto::paintcore::test {
 // and weave seed (24 bytes) and the weave's origin (2 × i64).
 inline constexpr std::size_t kParamsOffset = 4 + 4 + 8 + 8 + 2 * 8;
 
-// The payload of a saved file's bytes (the undo history may follow its checksum).
+// The payload of a saved file's bytes, decompressed (the undo history may follow it).
 inline std::vector<unsigned char> payload_of(const std::vector<unsigned char>& file_bytes) {
-  std::uint64_t size = 0;
-  std::memcpy(&size, file_bytes.data() + 12, 8);
-  const auto begin = file_bytes.begin() + kPaintingFileHeaderBytes;
-  return {begin, begin + static_cast<std::ptrdiff_t>(size)};
+  return sections_of(file_bytes).payload;
 }
 
-// A version-6 payload from a version-7 one: without the parameters version 7 added (the long
-// steps' settings, after the others).
+// A version-6 payload from today's (versions 7 and 8 lay the payload out alike): without the
+// parameters version 7 added (the long steps' settings, after the others).
 inline std::vector<unsigned char> as_version_six(std::vector<unsigned char> payload) {
   const auto kept = static_cast<std::ptrdiff_t>(8 * simulation_param_fields(6).size());
   const auto added = static_cast<std::ptrdiff_t>(8 * simulation_param_fields(7).size()) - kept;
@@ -36,20 +34,26 @@ inline std::vector<unsigned char> as_version_six(std::vector<unsigned char> payl
   return payload;
 }
 
-// Writes a painting file of `version` around `payload`, with the payload's checksum.
+// Writes a painting file of `version` around `payload`, with the payload's checksum: as
+// versions 1 to 7 stored it (u64 size, the payload, its checksum), compressed from version 8.
 inline void write_painting_file(const std::filesystem::path& file, std::uint32_t version,
                                 const std::vector<unsigned char>& payload) {
-  std::vector<unsigned char> bytes = {'I', 'M', 'P', 'A', 'S', 'T', 'O', '\0'};
-  bytes.resize(kPaintingFileHeaderBytes);
-  std::memcpy(bytes.data() + 8, &version, 4);
-  const std::uint64_t size = payload.size();
-  std::memcpy(bytes.data() + 12, &size, 8);
-  bytes.insert(bytes.end(), payload.begin(), payload.end());
-  Hasher checksum;
-  checksum.bytes(payload.data(), payload.size());
-  const std::uint64_t digest = checksum.digest();
-  bytes.resize(bytes.size() + 8);
-  std::memcpy(bytes.data() + bytes.size() - 8, &digest, 8);
+  std::vector<unsigned char> bytes;
+  if (version >= 8) {
+    bytes = file_of(FileSections{version, payload, std::nullopt});
+  } else {
+    bytes = {'I', 'M', 'P', 'A', 'S', 'T', 'O', '\0'};
+    bytes.resize(kPaintingFileHeaderBytes);
+    std::memcpy(bytes.data() + 8, &version, 4);
+    const std::uint64_t size = payload.size();
+    std::memcpy(bytes.data() + 12, &size, 8);
+    bytes.insert(bytes.end(), payload.begin(), payload.end());
+    Hasher checksum;
+    checksum.bytes(payload.data(), payload.size());
+    const std::uint64_t digest = checksum.digest();
+    bytes.resize(bytes.size() + 8);
+    std::memcpy(bytes.data() + bytes.size() - 8, &digest, 8);
+  }
   std::ofstream out(file, std::ios::binary);
   out.write(reinterpret_cast<const char*>(bytes.data()),
             static_cast<std::streamsize>(bytes.size()));

@@ -10,6 +10,7 @@
 #include "hasher.hpp"
 #include "impasto/paintcore/canvas_reframe.hpp"
 #include "impasto/paintcore/painting_file_header.hpp"
+#include "painting_file_sections.hpp"
 #include "test_util.hpp"
 
 namespace impasto::paintcore {
@@ -17,8 +18,6 @@ namespace {
 
 using test::round_brush;
 using test::stroke_line;
-
-constexpr std::size_t kHeaderBytes = kPaintingFileHeaderBytes;
 
 class SavedHistory : public ::testing::Test {
  protected:
@@ -52,21 +51,33 @@ class SavedHistory : public ::testing::Test {
     out.write(reinterpret_cast<const char*>(bytes.data()),
               static_cast<std::streamsize>(bytes.size()));
   }
-  // Where the history section begins (its u64 size), after the payload and its checksum.
-  static std::size_t history_offset(const std::vector<unsigned char>& bytes) {
-    std::uint64_t payload = 0;
-    std::memcpy(&payload, bytes.data() + 12, 8);
-    return kHeaderBytes + payload + 8;
+  // The history section of a saved file, decompressed, and the file again around an edited
+  // one (sizes and checksums valid: a crafted file, not a damaged one).
+  static std::vector<unsigned char> history_of(const std::vector<unsigned char>& bytes) {
+    return test::sections_of(bytes).history.value();
   }
-  // Puts a valid checksum on an edited history section.
-  static void rehash_history(std::vector<unsigned char>& bytes) {
+  static std::vector<unsigned char> with_history(const std::vector<unsigned char>& bytes,
+                                                 const std::vector<unsigned char>& history) {
+    test::FileSections sections = test::sections_of(bytes);
+    sections.history = history;
+    return test::file_of(sections);
+  }
+  // Where the history section begins in the file (its stored size), after the payload's
+  // sizes, compressed bytes and checksum.
+  static std::size_t history_offset(const std::vector<unsigned char>& bytes) {
+    std::uint64_t stored = 0;
+    std::memcpy(&stored, bytes.data() + kPaintingFileMagicBytes + 4, 8);
+    return kPaintingFileMagicBytes + 4 + 16 + stored + 8;
+  }
+  // Puts a valid checksum on the history's edited compressed bytes.
+  static void rehash_stored_history(std::vector<unsigned char>& bytes) {
     const std::size_t at = history_offset(bytes);
-    std::uint64_t size = 0;
-    std::memcpy(&size, bytes.data() + at, 8);
+    std::uint64_t stored = 0;
+    std::memcpy(&stored, bytes.data() + at, 8);
     StreamHasher h;
-    h.bytes(bytes.data() + at + 8, size);
+    h.bytes(bytes.data() + at + 16, stored);
     const std::uint64_t digest = h.digest();
-    std::memcpy(bytes.data() + at + 8 + size, &digest, 8);
+    std::memcpy(bytes.data() + at + 16 + stored, &digest, 8);
   }
 
   std::filesystem::path dir_;
@@ -149,13 +160,13 @@ TEST_F(SavedHistory, ACraftedStepIsRefusedByField) {
   Painting p = session();
   const auto file = dir_ / "crafted.impasto";
   p.save(file);
-  std::vector<unsigned char> bytes = read(file);
-  // The newest step's dry_layer_count (after the size and the two step counts): 1000 layers
-  // that undo would erase from a painting of one.
+  const std::vector<unsigned char> saved = read(file);
+  std::vector<unsigned char> history = history_of(saved);
+  // The newest step's dry_layer_count (after the two step counts): 1000 layers that undo would
+  // erase from a painting of one.
   const std::uint32_t layers = 1000;
-  std::memcpy(bytes.data() + history_offset(bytes) + 8 + 16, &layers, 4);
-  rehash_history(bytes);
-  write(file, bytes);
+  std::memcpy(history.data() + 16, &layers, 4);
+  write(file, with_history(saved, history));
   Painting loaded = Painting::load(file, 1);
   EXPECT_EQ(loaded.state_hash(), p.state_hash());
   EXPECT_EQ(loaded.undo_depth(), 0u);
@@ -163,41 +174,49 @@ TEST_F(SavedHistory, ACraftedStepIsRefusedByField) {
       << loaded.load_warning();
   // A step count far beyond the section is refused before anything is allocated for it.
   const std::uint64_t huge = std::uint64_t{1} << 60;
-  std::memcpy(bytes.data() + history_offset(bytes) + 8, &huge, 8);
-  rehash_history(bytes);
-  write(file, bytes);
+  std::memcpy(history.data(), &huge, 8);
+  write(file, with_history(saved, history));
   EXPECT_NE(Painting::load(file, 1).load_warning().find("history.undo_count"), std::string::npos);
 }
 
 TEST_F(SavedHistory, MutatedHistoriesLoadOrAreDroppedNeverCrash) {
   // Bytes of the section changed (with its checksum made to match, so that they reach the
-  // fields) or cut short: every load keeps the painting, with or without a history that then
-  // undoes without fault. Under the sanitizer build this is where a bad read would show.
+  // fields) or cut short, before compression (the fields) or after it (the compressed bytes):
+  // every load keeps the painting, with or without a history that then undoes without fault.
+  // Under the sanitizer build this is where a bad read would show.
   Painting p = session();
   const auto file = dir_ / "mutated.impasto";
   p.save(file);
   const std::vector<unsigned char> good = read(file);
+  const std::vector<unsigned char> history = history_of(good);
   const std::size_t at = history_offset(good);
-  std::uint64_t size = 0;
-  std::memcpy(&size, good.data() + at, 8);
+  std::uint64_t stored = 0;
+  std::memcpy(&stored, good.data() + at, 8);
   std::uint64_t state = 12345;
   const auto next = [&state] {
     state = state * 6364136223846793005ull + 1442695040888963407ull;
     return state >> 33;
   };
-  for (int k = 0; k < 60; ++k) {
-    std::vector<unsigned char> bytes = good;
-    if (k % 6 == 5) {  // cut short, the size field told
-      const std::uint64_t kept = next() % size;
-      bytes.resize(at + 8 + kept + 8);
-      std::memcpy(bytes.data() + at, &kept, 8);
+  for (int k = 0; k < 80; ++k) {
+    std::vector<unsigned char> bytes;
+    if (k % 4 == 3) {  // compressed bytes changed
+      bytes = good;
+      for (int m = 0; m < 1 + k % 3; ++m)
+        bytes[at + 16 + next() % stored] ^= static_cast<unsigned char>(1u << (next() % 8));
+      rehash_stored_history(bytes);
+    } else if (k % 6 == 5) {  // cut short
+      std::vector<unsigned char> cut = history;
+      cut.resize(next() % history.size());
+      bytes = with_history(good, cut);
     } else {  // a few bytes changed, most near the start where the counts are
+      std::vector<unsigned char> changed = history;
       for (int m = 0; m < 1 + k % 3; ++m) {
-        const std::uint64_t span = k % 2 ? size : std::min<std::uint64_t>(size, 600);
-        bytes[at + 8 + next() % span] ^= static_cast<unsigned char>(1u << (next() % 8));
+        const std::uint64_t span =
+            k % 2 ? changed.size() : std::min<std::uint64_t>(changed.size(), 600);
+        changed[next() % span] ^= static_cast<unsigned char>(1u << (next() % 8));
       }
+      bytes = with_history(good, changed);
     }
-    rehash_history(bytes);
     write(file, bytes);
     Painting loaded = Painting::load(file, 1);
     ASSERT_EQ(loaded.state_hash(), p.state_hash()) << "mutation " << k;

@@ -38,6 +38,9 @@ class AtomicFile {
   void write(const void* data, std::size_t size);
   void write(std::string_view bytes) { write(bytes.data(), bytes.size()); }
   std::uint64_t bytes_written() const { return written_ + buffer_.size(); }
+  // Overwrites bytes already written (a size field whose value is known only at the end);
+  // [offset, offset + size) must lie within bytes_written().
+  void write_at(std::uint64_t offset, const void* data, std::size_t size);
   // Flushes, fsyncs, sets mode and owner, renames over the target, fsyncs the folder.
   void commit();
 
