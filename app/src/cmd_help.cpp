@@ -1,5 +1,6 @@
-// impasto help [vocabulary]: the top-level help, or the options every command shares and the
-// names of each choice (the reference docs/cli.md holds; a test compares them).
+// impasto help [vocabulary | params]: the top-level help, the options every command shares and
+// the names of each choice (the reference docs/cli.md holds), or the paint model's constants
+// (docs/simulation.md holds them); tests compare both.
 #include <iostream>
 #include <memory>
 
@@ -16,6 +17,9 @@ const CommandRegistrar registrar("help", [](CLI::App& root) {
   CLI::App* words = cmd->add_subcommand(
       "vocabulary", "The options shared by every command and each choice's names (Markdown)");
   words->callback([] { std::cout << vocabulary_markdown(); });
+  CLI::App* params = cmd->add_subcommand(
+      "params", "The paint model's constants (--param NAME=VALUE): defaults, ranges (Markdown)");
+  params->callback([] { std::cout << params_markdown(); });
   cmd->callback([cmd, &root] {
     // root.help() would show the selected command's (this one's) help.
     if (cmd->get_subcommands().empty())

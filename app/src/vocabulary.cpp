@@ -2,9 +2,11 @@
 
 #include <impasto/cracks/cavity.hpp>
 #include <impasto/paintcore/paint_body.hpp>
+#include <impasto/paintcore/simulation_params.hpp>
 #include <impasto/render/render_settings.hpp>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -69,7 +71,8 @@ const std::vector<VocabularyWord>& vocabulary() {
        "output"},
       {"--threads", "N", "Worker threads (0: all cores)", "results do not depend on it"},
       {"--light", "SPEC", "Light: D65, A, F11, ..., blackbody:KELVIN or a spectral CSV", ""},
-      {"--param", "NAME=VALUE", "Set a paint model constant (docs/simulation.md); repeatable", ""},
+      {"--param", "NAME=VALUE", "Set a paint model constant; repeatable",
+       "the constants, their defaults and ranges: `impasto help params`, docs/simulation.md"},
       {"--pigments", "DIR",
        "Pigment folder layered over the bundled and user pigments (docs/pigments.md)",
        "on every command; repeatable, later folders win"},
@@ -134,6 +137,23 @@ std::string vocabulary_markdown() {
     std::string names;
     for (const std::string& name : c.names) names += (names.empty() ? "`" : ", `") + name + "`";
     text += "| `" + c.option + "` | " + c.what + " | " + names + " | `" + c.default_name + "` |\n";
+  }
+  return text;
+}
+
+std::string params_markdown() {
+  const auto shown = [](double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", v);
+    return std::string(text);
+  };
+  const paintcore::SimulationParams defaults;
+  std::string text = "| field | default | range | meaning |\n|---|---|---|---|\n";
+  for (const paintcore::NamedParam& row : paintcore::all_simulation_params()) {
+    text += "| " + std::string(row.name) + " | " + shown(defaults.*row.field) + " | " +
+            (row.lowest_excluded ? "(" : "[") + shown(row.lowest) + ", " + shown(row.highest) +
+            "]" + (*row.unit != '\0' ? std::string(" ") + row.unit : std::string()) + " | " +
+            row.meaning + " |\n";
   }
   return text;
 }

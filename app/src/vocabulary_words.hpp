@@ -32,6 +32,10 @@ std::string vocabulary_help(std::string_view names, std::string_view detail = {}
 
 // The Markdown reference: both tables (what `impasto help vocabulary` prints).
 std::string vocabulary_markdown();
+// The paint model's constants (`--param NAME=VALUE`) from their one table
+// (paintcore::all_simulation_params): name, default, range and meaning, as Markdown
+// (`impasto help params`; docs/simulation.md holds it and a test compares).
+std::string params_markdown();
 
 // "impasto: warning: TEXT" on stderr (also under --quiet: a warning is never noise).
 void warn(const std::string& text);

@@ -46,7 +46,7 @@ void shuffle_lanes(const unsigned char* in, std::size_t bytes, unsigned char* ou
     lane[2][v] = static_cast<unsigned char>(word >> 16);
     lane[3][v] = static_cast<unsigned char>(word >> 24);
   }
-  std::memcpy(out + 4 * values, in + 4 * values, bytes - 4 * values);
+  if (bytes > 4 * values) std::memcpy(out + 4 * values, in + 4 * values, bytes - 4 * values);
 }
 
 void unshuffle_lanes(const unsigned char* in, std::size_t bytes, unsigned char* out) {
@@ -58,7 +58,7 @@ void unshuffle_lanes(const unsigned char* in, std::size_t bytes, unsigned char* 
         static_cast<std::uint32_t>(lane[2][v]) << 16 | static_cast<std::uint32_t>(lane[3][v]) << 24;
     std::memcpy(out + 4 * v, &word, 4);
   }
-  std::memcpy(out + 4 * values, in + 4 * values, bytes - 4 * values);
+  if (bytes > 4 * values) std::memcpy(out + 4 * values, in + 4 * values, bytes - 4 * values);
 }
 
 // --- writing

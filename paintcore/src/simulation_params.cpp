@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iterator>
 #include <stdexcept>
 #include <string>
@@ -11,25 +12,42 @@
 namespace impasto::paintcore {
 namespace {
 
-// One source for the parameters' names, and for the painting file version that first holds
-// each (painting_file_io.hpp says what each version added).
+// One source for the parameters: names, file versions (painting_file_io.hpp says what each
+// version added), ranges and meanings.
 constexpr NamedParam kNamedParams[] = {
-    {"deposit_share", &SimulationParams::deposit_share, 3},
-    {"transfer_length_mm", &SimulationParams::transfer_length_mm, 3},
-    {"transfer_time_s", &SimulationParams::transfer_time_s, 3},
-    {"lift_share", &SimulationParams::lift_share, 3},
-    {"tip_film_mm", &SimulationParams::tip_film_mm, 3},
-    {"ground_fill", &SimulationParams::ground_fill, 3},
-    {"brush_flow_length_mm", &SimulationParams::brush_flow_length_mm, 3},
-    {"plough", &SimulationParams::plough, 3},
-    {"drag", &SimulationParams::drag, 3},
-    {"squeeze_mm_s", &SimulationParams::squeeze_mm_s, 3},
-    {"min_film_mm", &SimulationParams::min_film_mm, 3},
-    {"settle_time_s", &SimulationParams::settle_time_s, 3},
-    {"wet_support", &SimulationParams::wet_support, 3},
-    {"long_step_share", &SimulationParams::long_step_share, 7},
-    {"long_step_from_cells", &SimulationParams::long_step_from_cells, 7},
-    {"long_step_drag_cells", &SimulationParams::long_step_drag_cells, 7},
+    {"deposit_share", &SimulationParams::deposit_share, 3, 0, 1, false, "",
+     "the canvas's share of the joint film when brush and canvas part"},
+    {"transfer_length_mm", &SimulationParams::transfer_length_mm, 3, 0, 1000, true, "mm",
+     "distance over which the split is reached (1/e)"},
+    {"transfer_time_s", &SimulationParams::transfer_time_s, 3, 0, 3600, true, "s",
+     "time over which a still, pressed brush reaches it (1/e)"},
+    {"lift_share", &SimulationParams::lift_share, 3, 0, 1, false, "",
+     "the canvas's share of the film where the brush lifts"},
+    {"tip_film_mm", &SimulationParams::tip_film_mm, 3, 0, 1000, true, "mm",
+     "the most paint a brush cell's tips present to the split"},
+    {"ground_fill", &SimulationParams::ground_fill, 3, 0, 1, false, "",
+     "share of a valley below the brush's footing that pressed paint fills (a film thinner "
+     "than the valley fills less)"},
+    {"brush_flow_length_mm", &SimulationParams::brush_flow_length_mm, 3, 0, 1000, true, "mm",
+     "paint in the bristles evens out over this distance"},
+    {"plough", &SimulationParams::plough, 3, 0, 100, false, "",
+     "squeeze: mm of paint displacement per mm travelled per unit slope of p"},
+    {"drag", &SimulationParams::drag, 3, 0, 1, false, "",
+     "the touched paint moves with this share of the brush's velocity"},
+    {"squeeze_mm_s", &SimulationParams::squeeze_mm_s, 3, 0, 1000, false, "mm/s",
+     "squeeze of a still brush: mm/s per unit slope of p"},
+    {"min_film_mm", &SimulationParams::min_film_mm, 3, 0, 1000, false, "mm",
+     "film that advection never removes (adhesion)"},
+    {"settle_time_s", &SimulationParams::settle_time_s, 3, 0, 3600, false, "s",
+     "how long a stroke's paint levels after it ends"},
+    {"wet_support", &SimulationParams::wet_support, 3, 0, 1, false, "",
+     "share of the wet paint that holds the brush up"},
+    {"long_step_share", &SimulationParams::long_step_share, 7, 0, 0.5, false, "",
+     "a big brush's longest step, as a share of its width (0: one cell)"},
+    {"long_step_from_cells", &SimulationParams::long_step_from_cells, 7, 0, 1e6, true, "cells",
+     "the narrowest brush (cells across) that takes long steps"},
+    {"long_step_drag_cells", &SimulationParams::long_step_drag_cells, 7, 1, 1e6, false, "cells",
+     "a long step's drag is advected in sub-steps of at most this travel (cells)"},
 };
 // Each file version's fields follow the older ones' (a file's are a prefix of the list), and
 // the newest version writes every one.
@@ -78,50 +96,24 @@ void set_param(SimulationParams& params, const std::string& assignment) {
                            "' (known: " + known + ")");
 }
 
-void validate(const SimulationParams& p) {
-  const auto check = [](double value, const char* field, bool positive) {
-    if (!std::isfinite(value) || value < 0.0 || (positive && value == 0.0))
-      throw std::runtime_error(std::string("simulation params: field '") + field + "' must be " +
-                               (positive ? "positive" : "non-negative") + " and finite, got " +
-                               std::to_string(value));
+std::string NamedParam::out_of_range(double value) const {
+  if (std::isfinite(value) && (lowest_excluded ? value > lowest : value >= lowest) &&
+      value <= highest)
+    return "";
+  const auto shown = [](double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", v);
+    return std::string(text);
   };
-  check(p.deposit_share, "deposit_share", false);
-  if (p.deposit_share > 1.0)
-    throw std::runtime_error("simulation params: field 'deposit_share' must be <= 1");
-  check(p.lift_share, "lift_share", false);
-  if (p.lift_share > 1.0)
-    throw std::runtime_error("simulation params: field 'lift_share' must be <= 1");
-  check(p.tip_film_mm, "tip_film_mm", true);
-  check(p.ground_fill, "ground_fill", false);
-  if (p.ground_fill > 1.0)
-    throw std::runtime_error("simulation params: field 'ground_fill' must be <= 1");
-  check(p.transfer_length_mm, "transfer_length_mm", true);
-  check(p.transfer_time_s, "transfer_time_s", true);
-  check(p.brush_flow_length_mm, "brush_flow_length_mm", true);
-  check(p.plough, "plough", false);
-  check(p.drag, "drag", false);
-  if (p.drag > 1.0) throw std::runtime_error("simulation params: field 'drag' must be <= 1");
-  check(p.squeeze_mm_s, "squeeze_mm_s", false);
-  check(p.min_film_mm, "min_film_mm", false);
-  check(p.settle_time_s, "settle_time_s", false);
-  check(p.wet_support, "wet_support", false);
-  if (p.wet_support > 1.0)
-    throw std::runtime_error("simulation params: field 'wet_support' must be <= 1");
-  check(p.long_step_share, "long_step_share", false);
-  if (p.long_step_share > 0.5)
-    throw std::runtime_error(
-        "simulation params: field 'long_step_share' must be <= 0.5 (of the brush's width)");
-  check(p.long_step_from_cells, "long_step_from_cells", true);
-  if (p.long_step_from_cells > 1e6)
-    throw std::runtime_error("simulation params: field 'long_step_from_cells' must be <= 1e6");
-  check(p.long_step_drag_cells, "long_step_drag_cells", true);
-  if (p.long_step_drag_cells < 1.0 || p.long_step_drag_cells > 1e6)
-    throw std::runtime_error(
-        "simulation params: field 'long_step_drag_cells' must be in [1, 1e6] (cells)");
-  if (p.plough > 100.0 || p.squeeze_mm_s > 1000.0 || p.settle_time_s > 3600.0)
-    throw std::runtime_error(
-        "simulation params: 'plough' must be <= 100, 'squeeze_mm_s' <= 1000 and "
-        "'settle_time_s' <= 3600");
+  return std::string("must be in ") + (lowest_excluded ? "(" : "[") + shown(lowest) + ", " +
+         shown(highest) + "]" + (*unit != '\0' ? std::string(" ") + unit : "") + ", got " +
+         shown(value);
+}
+
+void validate(const SimulationParams& p) {
+  for (const NamedParam& row : kNamedParams)
+    if (std::string why = row.out_of_range(p.*row.field); !why.empty())
+      throw std::runtime_error(std::string("simulation params: field '") + row.name + "' " + why);
 }
 
 }  // namespace impasto::paintcore

@@ -14,19 +14,22 @@
 #include "command_catalogue.hpp"
 #include "impasto/cracks/cavity.hpp"
 #include "impasto/paintcore/paint_body.hpp"
+#include "impasto/paintcore/simulation_params.hpp"
 #include "impasto/render/render_settings.hpp"
 #include "vocabulary_words.hpp"
 
 namespace impasto::app {
 namespace {
 
-std::string docs_section() {
-  std::ifstream in(std::string(IMPASTO_SOURCE_DIR) + "/docs/cli.md");
+// The text between `<!-- impasto help WHAT: begin -->` and its end marker in a doc.
+std::string docs_section(const std::string& doc_name = "cli.md",
+                         const std::string& what = "vocabulary") {
+  std::ifstream in(std::string(IMPASTO_SOURCE_DIR) + "/docs/" + doc_name);
   std::ostringstream text;
   text << in.rdbuf();
   const std::string doc = text.str();
-  const std::string begin = "<!-- impasto help vocabulary: begin -->\n";
-  const std::string end = "<!-- impasto help vocabulary: end -->";
+  const std::string begin = "<!-- impasto help " + what + ": begin -->\n";
+  const std::string end = "<!-- impasto help " + what + ": end -->";
   const auto a = doc.find(begin), b = doc.find(end);
   if (a == std::string::npos || b == std::string::npos || b < a) return "(no markers)";
   return doc.substr(a + begin.size(), b - a - begin.size());
@@ -35,6 +38,13 @@ std::string docs_section() {
 TEST(CommandLineDocs, ListTheProgramsVocabulary) {
   // On a difference: build/release/app/impasto help vocabulary, pasted between the markers.
   EXPECT_EQ(docs_section(), vocabulary_markdown());
+}
+
+TEST(CommandLineDocs, ListThePaintModelsConstantsFromTheirOneTable) {
+  // On a difference: build/release/app/impasto help params, pasted between the markers.
+  EXPECT_EQ(docs_section("simulation.md", "params"), params_markdown());
+  // Each row's default is inside its range (the table and SimulationParams agree).
+  EXPECT_NO_THROW(paintcore::validate(paintcore::SimulationParams{}));
 }
 
 // What a shared option's help must say, in any words, wherever it appears: the mark of its

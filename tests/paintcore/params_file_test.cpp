@@ -159,13 +159,13 @@ TEST_F(ParamsFileTest, ALongStepValueNoPaintingHoldsIsRefusedNamingTheField) {
     double value;
     const char* why;
   };
-  for (const Bad& bad :
-       {Bad{"long_step_share", nan, "is not a finite number"},
-        Bad{"long_step_share", 0.75, "must be <= 0.5"},
-        Bad{"long_step_share", -0.1, "non-negative"}, Bad{"long_step_from_cells", 0.0, "positive"},
-        Bad{"long_step_from_cells", inf, "is not a finite number"},
-        Bad{"long_step_drag_cells", 0.5, "must be in [1, 1e6]"},
-        Bad{"long_step_drag_cells", 1e7, "must be in [1, 1e6]"}}) {
+  for (const Bad& bad : {Bad{"long_step_share", nan, "is not a finite number"},
+                         Bad{"long_step_share", 0.75, "must be in [0, 0.5], got 0.75"},
+                         Bad{"long_step_share", -0.1, "must be in [0, 0.5]"},
+                         Bad{"long_step_from_cells", 0.0, "must be in (0, 1e+06] cells, got 0"},
+                         Bad{"long_step_from_cells", inf, "is not a finite number"},
+                         Bad{"long_step_drag_cells", 0.5, "must be in [1, 1e+06] cells"},
+                         Bad{"long_step_drag_cells", 1e7, "must be in [1, 1e+06] cells"}}) {
     const std::string error = error_with(bad.name, bad.value);
     SCOPED_TRACE(std::string(bad.name) + " = " + std::to_string(bad.value) + ": " + error);
     EXPECT_EQ(error.rfind(file.string() + ": ", 0), 0u);

@@ -59,17 +59,26 @@ struct SimulationParams {
   double long_step_drag_cells = 1.0;
 };
 
-// Throws std::runtime_error naming the field when a parameter is out of range or not finite.
+// Throws std::runtime_error naming the field when a parameter is out of its row's range (below)
+// or not finite.
 void validate(const SimulationParams& params);
 
-// Every parameter with its name and the painting file version that first holds it, in the
-// painting file's order (docs/painting-format.md): the one list of them. A parameter added
-// later goes at the end with the file version that adds it; files older than that version
-// load with its default.
+// Every parameter, one row each: its name, its field, the painting file version that first
+// holds it, its range and unit, and what it means; in the painting file's order
+// (docs/painting-format.md): the one list of them, which validation, `impasto help params` and
+// docs/simulation.md's table read (the default is SimulationParams'). A parameter added later
+// goes at the end with the file version that adds it; files older than that version load with
+// its default.
 struct NamedParam {
   const char* name;
   double SimulationParams::*field;
   std::uint32_t file_version;
+  double lowest, highest;        // the range, both ends included...
+  bool lowest_excluded = false;  // ...unless this says the value must be above `lowest`
+  const char* unit = "";         // "mm", "s", "mm/s", "cells", "" (a share or a factor)
+  const char* meaning = "";
+  // Why `value` is outside the range ("must be in [0, 1], got 2"), or "" when inside.
+  std::string out_of_range(double value) const;
 };
 std::span<const NamedParam> all_simulation_params();
 // The parameters a painting file of `file_version` holds, in its order: a prefix of the list
