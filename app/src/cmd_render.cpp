@@ -67,28 +67,11 @@ double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// "AZ,EL" in degrees.
-void parse_light_dir(const std::string& text, RenderSettings& settings) {
-  const auto comma = text.find(',');
-  try {
-    if (comma == std::string::npos) throw std::invalid_argument("no comma");
-    std::size_t used_az = 0, used_el = 0;
-    const std::string az = text.substr(0, comma);
-    const std::string el = text.substr(comma + 1);
-    settings.light_azimuth_deg = std::stod(az, &used_az);
-    settings.light_elevation_deg = std::stod(el, &used_el);
-    if (used_az != az.size() || used_el != el.size()) throw std::invalid_argument("junk");
-  } catch (const std::exception&) {
-    throw std::runtime_error("--light-dir " + text +
-                             ": expected AZIMUTH,ELEVATION in degrees, e.g. 225,60");
-  }
-}
-
 void run(const RenderArgs& args) {
   RenderSettings settings;
   settings.light = args.light;
   settings.wavelengths = args.wavelengths;
-  parse_light_dir(args.light_dir, settings);
+  parse_light_direction(args.light_dir, settings);
   settings.display = parse_display_encoding(args.display);
   settings.adaptation = parse_chromatic_adaptation(args.adaptation);
   settings.node_weights = parse_node_weights(args.weights);

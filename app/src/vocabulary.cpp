@@ -141,6 +141,26 @@ std::string vocabulary_markdown() {
   return text;
 }
 
+void parse_light_direction(const std::string& text, render::RenderSettings& settings) {
+  const auto comma = text.find(',');
+  try {
+    if (comma == std::string::npos) throw std::invalid_argument("no comma");
+    std::size_t used_az = 0, used_el = 0;
+    const std::string az = text.substr(0, comma);
+    const std::string el = text.substr(comma + 1);
+    const double azimuth = std::stod(az, &used_az);
+    const double elevation = std::stod(el, &used_el);
+    if (used_az != az.size() || used_el != el.size() || !std::isfinite(azimuth) ||
+        !std::isfinite(elevation))
+      throw std::invalid_argument("junk");
+    settings.light_azimuth_deg = azimuth;
+    settings.light_elevation_deg = elevation;
+  } catch (const std::exception&) {
+    throw std::runtime_error("--light-dir " + text.substr(0, 32) +
+                             ": expected AZIMUTH,ELEVATION in degrees, e.g. 225,60");
+  }
+}
+
 std::string params_markdown() {
   const auto shown = [](double v) {
     char text[32];

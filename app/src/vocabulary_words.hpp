@@ -7,6 +7,10 @@
 #include <string_view>
 #include <vector>
 
+namespace impasto::render {
+struct RenderSettings;
+}
+
 namespace impasto::app {
 
 // One shared option: its names, its argument and what it means wherever it appears.
@@ -48,6 +52,8 @@ struct CanvasSize {
 };
 // "WIDTHxHEIGHT" (1..131072 each); throws std::runtime_error naming `option` and the text.
 CanvasSize parse_canvas_size(const std::string& text, std::string_view option = "--size");
+// --light-dir's "AZIMUTH,ELEVATION" in degrees into the settings; throws naming the option.
+void parse_light_direction(const std::string& text, render::RenderSettings& settings);
 // "1".."16" or "full" (0: every nm); throws std::runtime_error naming the text.
 int parse_wavelengths(const std::string& text, bool full_allowed = true);
 
