@@ -120,6 +120,7 @@ void write_solids(const paintcore::Painting& painting, const render::HeightGrid&
   for (const std::filesystem::path& path : request.solids) render::write_solid(path, mesh);
   report.solid_triangles = mesh.triangles.size();
   report.solid_vertices = mesh.vertices.size();
+  report.solid_error_mm = mesh.max_error_mm;
 }
 
 }  // namespace

@@ -56,6 +56,7 @@ struct ExportRequest {
 
 struct ExportReport {
   std::size_t solid_triangles = 0, solid_vertices = 0;  // of the solid, when one was written
+  double solid_error_mm = 0.0;  // its top's error (raised by solid.max_triangles)
 };
 
 // Writes what the request names; the maps and the solid at the same scale as the image (their

@@ -8,6 +8,7 @@
 
 #include "canvas_edit.hpp"
 #include "command.hpp"
+#include "impasto/util/text.hpp"
 #include "vocabulary.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).
@@ -64,6 +65,11 @@ const CommandRegistrar registrar("export", [](CLI::App& root) {
                   "triangles (0: every corner)")
       ->check(finite_range(0.0, 100.0))
       ->capture_default_str();
+  cmd->add_option("--max-triangles", args->request.solid.max_triangles,
+                  "At most this many triangles in the solid: its error is raised until it fits "
+                  "(0: no limit)")
+      ->check(finite_range(std::size_t{0}, std::size_t{1} << 31))
+      ->capture_default_str();
   cmd->callback([args] {
     ExportRequest request = args->request;
     request.image = args->image;
@@ -77,7 +83,8 @@ const CommandRegistrar registrar("export", [](CLI::App& root) {
       if (!file->empty()) note("wrote " + *file);
     for (const auto& solid : request.solids)
       note("wrote " + solid.string() + ": " + std::to_string(report.solid_triangles) +
-           " triangles, " + std::to_string(report.solid_vertices) + " vertices");
+           " triangles, " + std::to_string(report.solid_vertices) + " vertices, within " +
+           util::number_text(report.solid_error_mm, 3) + " mm of the relief");
   });
 });
 

@@ -13,6 +13,7 @@
 #include <stdexcept>
 
 #include "impasto/files/message_text.hpp"
+#include "impasto/util/text.hpp"
 #include "progress.hpp"
 
 namespace impasto::app {
@@ -162,11 +163,7 @@ void parse_light_direction(const std::string& text, render::RenderSettings& sett
 }
 
 std::string params_markdown() {
-  const auto shown = [](double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", v);
-    return std::string(text);
-  };
+  const auto shown = [](double v) { return util::number_text(v); };
   const paintcore::SimulationParams defaults;
   std::string text = "| field | default | range | meaning |\n|---|---|---|---|\n";
   for (const paintcore::NamedParam& row : paintcore::all_simulation_params()) {

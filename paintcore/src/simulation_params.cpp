@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <iterator>
 #include <stdexcept>
 #include <string>
 
 #include "impasto/paintcore/painting_file_header.hpp"
+#include "impasto/util/text.hpp"
 
 namespace impasto::paintcore {
 namespace {
@@ -100,11 +100,7 @@ std::string NamedParam::out_of_range(double value) const {
   if (std::isfinite(value) && (lowest_excluded ? value > lowest : value >= lowest) &&
       value <= highest)
     return "";
-  const auto shown = [](double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", v);
-    return std::string(text);
-  };
+  const auto shown = [](double v) { return util::number_text(v); };
   return std::string("must be in ") + (lowest_excluded ? "(" : "[") + shown(lowest) + ", " +
          shown(highest) + "]" + (*unit != '\0' ? std::string(" ") + unit : "") + ", got " +
          shown(value);

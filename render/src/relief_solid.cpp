@@ -113,24 +113,14 @@ class SolidBuilder {
   SolidMesh& mesh_;
 };
 
-}  // namespace
-
-SolidMesh relief_solid(const HeightGrid& heights, const SolidOptions& options) {
-  if (heights.width < 1 || heights.height < 1 ||
-      heights.mm.size() !=
-          static_cast<std::size_t>(heights.width) * static_cast<std::size_t>(heights.height))
-    throw std::invalid_argument("relief_solid: an empty or inconsistent height grid");
-  if (!(options.base_mm > 0.0) || !(options.relief_scale > 0.0) || !(options.max_error_mm >= 0.0) ||
-      !std::isfinite(options.base_mm + options.relief_scale + options.max_error_mm))
-    throw std::invalid_argument(
-        "relief_solid: base_mm and relief_scale must be > 0 and max_error_mm >= 0");
-  const CornerGrid g = corner_heights(heights, options.relief_scale);
+// The solid whose top follows the corners within `max_error_mm`.
+SolidMesh build_solid(const CornerGrid& g, double cell_mm, double base_mm, double max_error_mm) {
   const int W = g.width, H = g.height;
-  const auto cell = static_cast<float>(heights.cell_mm);
+  const auto cell = static_cast<float>(cell_mm);
 
   std::vector<Leaf> leaves;
   const int root = static_cast<int>(std::bit_ceil(static_cast<unsigned>(std::max(W, H))));
-  split(g, {0, 0, root}, 0.5 * options.max_error_mm, leaves);
+  split(g, {0, 0, root}, 0.5 * max_error_mm, leaves);
 
   SolidMesh mesh;
   SolidBuilder build(mesh);
@@ -186,7 +176,7 @@ SolidMesh relief_solid(const HeightGrid& heights, const SolidOptions& options) {
   for (int x = W; x > 0; --x) on_border(x, H);
   for (int y = H; y > 0; --y) on_border(0, y);
   const float lowest = *std::min_element(g.z.begin(), g.z.end());
-  const float back = std::min(lowest, 0.0f) - static_cast<float>(options.base_mm);
+  const float back = std::min(lowest, 0.0f) - static_cast<float>(base_mm);
   std::vector<std::uint32_t> under(border.size());
   for (std::size_t k = 0; k < border.size(); ++k) {
     const Vec3 p = mesh.vertices[border[k]];
@@ -204,6 +194,43 @@ SolidMesh relief_solid(const HeightGrid& heights, const SolidOptions& options) {
   for (std::size_t k = 0; k < under.size(); ++k)
     build.triangle(middle, under[k], under[(k + 1) % under.size()], {0.0f, 0.0f, -1.0f});
   return mesh;
+}
+
+}  // namespace
+
+SolidMesh relief_solid(const HeightGrid& heights, const SolidOptions& options) {
+  if (heights.width < 1 || heights.height < 1 ||
+      heights.mm.size() !=
+          static_cast<std::size_t>(heights.width) * static_cast<std::size_t>(heights.height))
+    throw std::invalid_argument("relief_solid: an empty or inconsistent height grid");
+  if (!(options.base_mm > 0.0) || !(options.relief_scale > 0.0) || !(options.max_error_mm >= 0.0) ||
+      !std::isfinite(options.base_mm + options.relief_scale + options.max_error_mm))
+    throw std::invalid_argument(
+        "relief_solid: base_mm and relief_scale must be > 0 and max_error_mm >= 0");
+  const CornerGrid g = corner_heights(heights, options.relief_scale);
+  SolidMesh mesh = build_solid(g, heights.cell_mm, options.base_mm, options.max_error_mm);
+  mesh.max_error_mm = options.max_error_mm;
+  if (options.max_triangles == 0 || mesh.triangles.size() <= options.max_triangles) return mesh;
+  // Too many: the smallest error whose mesh fits, found by halving the interval between the
+  // asked error and the relief's whole range (where one fan spans the top), in log steps.
+  const auto [low_z, high_z] = std::minmax_element(g.z.begin(), g.z.end());
+  double fits = std::max(2.0 * (*high_z - *low_z), 1e-6);  // the fewest triangles
+  SolidMesh best = build_solid(g, heights.cell_mm, options.base_mm, fits);
+  best.max_error_mm = fits;
+  if (best.triangles.size() > options.max_triangles) return best;  // nothing fewer exists
+  double too_fine = std::max(options.max_error_mm, 1e-6);
+  for (int k = 0; k < 14 && fits / too_fine > 1.02; ++k) {
+    const double error = std::sqrt(fits * too_fine);
+    SolidMesh trial = build_solid(g, heights.cell_mm, options.base_mm, error);
+    if (trial.triangles.size() <= options.max_triangles) {
+      fits = error;
+      best = std::move(trial);
+      best.max_error_mm = error;
+    } else {
+      too_fine = error;
+    }
+  }
+  return best;
 }
 
 void colour_solid(SolidMesh& mesh, const Image& display, double cell_mm) {

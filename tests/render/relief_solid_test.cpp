@@ -157,6 +157,37 @@ TEST(ReliefSolid, SimplifiesFlatAreasWithinTheErrorAsked) {
             << volume_of(simple) << " mm^3\n";
 }
 
+TEST(ReliefSolid, ATriangleBudgetRaisesTheErrorUntilTheMeshFits) {
+  const HeightGrid heights = study_heights(0.1);
+  SolidOptions exact;
+  exact.max_error_mm = 0.0;
+  const SolidMesh full = relief_solid(heights, exact);
+  EXPECT_EQ(full.max_error_mm, 0.0);
+  for (const std::size_t budget : {std::size_t{2000}, std::size_t{500}}) {
+    SolidOptions limited = exact;
+    limited.max_triangles = budget;
+    const SolidMesh mesh = relief_solid(heights, limited);
+    EXPECT_LE(mesh.triangles.size(), budget);
+    EXPECT_GT(mesh.triangles.size(), budget / 2) << "the budget is used, not squandered";
+    EXPECT_GT(mesh.max_error_mm, 0.0);
+    EXPECT_TRUE(closedness(mesh).manifold) << closedness(mesh).first_problem;
+    // The same mesh as asking for that error outright.
+    SolidOptions by_error = exact;
+    by_error.max_error_mm = mesh.max_error_mm;
+    EXPECT_EQ(relief_solid(heights, by_error).triangles.size(), mesh.triangles.size());
+  }
+  // A budget below the fewest a closed solid can have gives the fewest.
+  SolidOptions tiny = exact;
+  tiny.max_triangles = 4;
+  const SolidMesh fewest = relief_solid(heights, tiny);
+  EXPECT_GT(fewest.triangles.size(), 4u);
+  EXPECT_TRUE(closedness(fewest).manifold);
+  // A budget the asked error already meets changes nothing.
+  SolidOptions roomy = exact;
+  roomy.max_triangles = full.triangles.size();
+  EXPECT_EQ(relief_solid(heights, roomy).triangles.size(), full.triangles.size());
+}
+
 TEST(ReliefSolid, RefusesAnEmptyGridAndBadOptions) {
   EXPECT_THROW(relief_solid(HeightGrid{}, SolidOptions{}), std::invalid_argument);
   SolidOptions no_base;

@@ -1,6 +1,7 @@
 #include "impasto/util/text.hpp"
 
 #include <algorithm>
+#include <cstdio>
 
 namespace impasto::util {
 
@@ -72,6 +73,12 @@ std::string line_decoded(std::string_view line) {
     }
   }
   return out;
+}
+
+std::string number_text(double value, int digits) {
+  char text[40];
+  std::snprintf(text, sizeof text, "%.*g", digits, value);
+  return text;
 }
 
 }  // namespace impasto::util

@@ -24,12 +24,16 @@ struct SolidOptions {
   double relief_scale = 1.0;   // heights multiplied (> 0): an exaggerated relief
   double max_error_mm = 0.05;  // the top's largest height error at the corners (>= 0): a fine
                                // printer's layer
+  // At most this many triangles (0: no limit): the error is raised until the mesh fits (the
+  // fewest a closed solid of the relief can have, when even that is more).
+  std::size_t max_triangles = 0;
 };
 
 struct SolidMesh {
   std::vector<std::array<float, 3>> vertices;        // mm
   std::vector<std::array<std::uint8_t, 3>> colours;  // sRGB per vertex, or empty
   std::vector<std::array<std::uint32_t, 3>> triangles;
+  double max_error_mm = 0.0;  // the error the top was made with (raised by max_triangles)
 };
 
 // The solid of a height grid (surface_heights). The top's vertex heights are those of the

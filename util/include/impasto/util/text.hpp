@@ -15,6 +15,9 @@ std::string ascii_lowercase(std::string_view text);
 // The same text but for the case of its ASCII letters.
 bool equal_ignoring_case(std::string_view a, std::string_view b);
 
+// A number as printf's %g writes it with `digits` significant digits ("0.5", "1e+06").
+std::string number_text(double value, int digits = 6);
+
 // The value of the first "key = value" line of `text` whose key is `key` (both trimmed;
 // empty lines, lines starting with '#' and lines without '=' skipped), or "" when none is.
 std::string key_value_field(std::string_view text, std::string_view key);
