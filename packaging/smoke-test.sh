@@ -37,6 +37,17 @@ for png in demo.png relit.png thumb.png; do
   [ -s "$png" ] || { echo "smoke test: $png was not written" >&2; exit 1; }
 done
 
+# The Python module, from the unpacked root: it finds the data beside it
+# (lib/python3/dist-packages/../../../share/impasto) and reads the painting just saved.
+module_dir="$root/unpacked/usr/lib/python3/dist-packages"
+compgen -G "$module_dir/impasto*.so" >/dev/null ||
+  { echo "smoke test: the package lacks the Python module" >&2; exit 1; }
+PYTHONPATH="$module_dir" /usr/bin/python3 -c "
+import impasto
+p = impasto.Painting.load('demo.impasto')
+assert p.render().shape == (768, 1024, 3) and 'White' in impasto.pigments()" ||
+  { echo "smoke test: the Python module cannot read the demo" >&2; exit 1; }
+
 # Only freely licensed data in the main package: no pigment or data file under a
 # non-commercial licence, and no pattern of a non-commercial stanza of its copyright file
 # names an installed file (the source's data/ is installed as share/impasto/).
@@ -70,4 +81,4 @@ if [ -n "$addon" ]; then
     { echo "smoke test: the add-on does not hold 27 pigments" >&2; exit 1; }
   echo "smoke test: $(basename "$addon") adds its 27 pigments to the library"
 fi
-echo "smoke test: $(basename "$deb") runs from an unpacked root (replay, render, thumbnail)"
+echo "smoke test: $(basename "$deb") runs from an unpacked root (replay, render, thumbnail, Python)"
