@@ -103,6 +103,16 @@ class Module(unittest.TestCase):
             impasto.Painting.load(self.path("missing.impasto"))
         self.assertIn("White", impasto.pigments())
 
+    def test_the_type_stubs_name_what_the_module_has(self):
+        import ast
+        with open(os.path.join(SOURCE, "app", "python", "impasto.pyi")) as f:
+            stubs = ast.parse(f.read())
+        functions = {n.name for n in stubs.body if isinstance(n, ast.FunctionDef)}
+        painting = next(n for n in stubs.body if isinstance(n, ast.ClassDef) and n.name == "Painting")
+        methods = {n.name for n in painting.body if isinstance(n, ast.FunctionDef)} - {"__init__"}
+        self.assertEqual(functions, {n for n in dir(impasto) if not n.startswith("_")} - {"Painting"})
+        self.assertEqual(methods, {n for n in dir(impasto.Painting) if not n.startswith("_")})
+
     def test_the_documented_examples_run(self):
         examples = os.path.join(SOURCE, "docs", "examples")
         for name in sorted(os.listdir(examples)):
