@@ -21,6 +21,7 @@
 #include "impasto/input/stroke_import.hpp"
 #include "impasto/paintcore/paint_body.hpp"
 #include "impasto/paintcore/painting.hpp"
+#include "impasto/paintcore/simulation_params.hpp"
 #include "impasto/render/pigment_records.hpp"
 #include "impasto/render/relief_maps.hpp"
 #include "impasto/render/render_painting.hpp"
@@ -144,6 +145,29 @@ PYBIND11_MODULE(impasto, m) {
                              "A hash of the whole state (equal states, equal hashes)")
       .def_property_readonly("undo_depth", &pc::Painting::undo_depth)
       .def_property_readonly("redo_depth", &pc::Painting::redo_depth)
+      .def_property(
+          "params",
+          [](const pc::Painting& p) {
+            py::dict out;
+            for (const pc::NamedParam& row : pc::all_simulation_params())
+              out[row.name] = p.params().*row.field;
+            return out;
+          },
+          [](pc::Painting& p, const std::map<std::string, double>& values) {
+            pc::SimulationParams params = p.params();
+            for (const auto& [name, value] : values) {
+              const auto rows = pc::all_simulation_params();
+              const auto row = std::find_if(rows.begin(), rows.end(),
+                                            [&](const auto& r) { return name == r.name; });
+              if (row == rows.end())
+                throw py::key_error("no paint model constant '" + name +
+                                    "' (impasto help params lists them)");
+              params.*(row->field) = value;
+            }
+            p.set_params(params);  // validated: a value out of its row's range raises
+          },
+          "The paint model's constants {name: value} (impasto help params); assign a dict "
+          "of those to change")
       .def(
           "set_brush",
           [](pc::Painting& p, const std::string& head, double size_mm, double stiffness) {

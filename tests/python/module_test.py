@@ -65,6 +65,18 @@ class Module(unittest.TestCase):
         self.assertTrue(p.undo())
         self.assertEqual(p.wet().sum(), 0.0)
 
+    def test_the_paint_models_constants_are_read_and_set_by_name(self):
+        p = impasto.Painting(64, 64)
+        self.assertEqual(p.params["deposit_share"], 0.25)
+        p.params = {"long_step_share": 0.0, "drag": 0.3}
+        self.assertEqual(p.params["long_step_share"], 0.0)
+        self.assertEqual(p.params["drag"], 0.3)
+        with self.assertRaises(KeyError):
+            p.params = {"viscosity": 1.0}
+        with self.assertRaises(RuntimeError):
+            p.params = {"drag": 2.0}
+        self.assertEqual(p.params["drag"], 0.3, "a refused value changes nothing")
+
     def test_a_painting_survives_a_save(self):
         p = impasto.Painting(96, 64)
         p.load_brush({"Blue Red Shade": 1.0}, 20.0)
