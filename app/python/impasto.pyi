@@ -77,4 +77,22 @@ class Comparison(TypedDict):
 
 def replay(path: _Path, threads: int = 0) -> Painting: ...
 def compare(a: Painting, b: Painting, threshold: float = 1.0) -> Comparison: ...
+class PigmentData(TypedDict):
+    name: str
+    wavelength_nm: npt.NDArray[np.float64]
+    K: npt.NDArray[np.float64]
+    S: npt.NDArray[np.float64]
+    metadata: dict[str, str]
+
+class FitResidual(TypedDict):
+    name: str
+    rms_reflectance: float
+    max_reflectance: float
+
+class Fit(TypedDict):
+    pigments: list[PigmentData]
+    residuals: list[FitResidual]
+
 def pigments() -> list[str]: ...
+def pigment(name: str) -> PigmentData: ...
+def fit_pigments(measurements: _Path, reference: str = "") -> Fit: ...

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "comparison.hpp"
+#include "impasto/data/ks_fit.hpp"
 #include "impasto/data/pigments.hpp"
 #include "impasto/input/stroke_import.hpp"
 #include "impasto/paintcore/paint_body.hpp"
@@ -102,6 +103,23 @@ pc::PenSample pen_sample(double x_mm, double y_mm, double pressure, double time_
   sample.rotation_deg = static_cast<float>(rotation);
   sample.buttons = pc::kPenInRange | (pressure > 0.0 ? pc::kPenTip : 0u);
   return sample;
+}
+
+py::array_t<double> to_array(const std::vector<double>& values) {
+  py::array_t<double> out(static_cast<py::ssize_t>(values.size()));
+  std::copy(values.begin(), values.end(), out.mutable_data());
+  return out;
+}
+
+// A pigment's name, K and S on their wavelengths (nm), and its file's metadata.
+py::dict pigment_dict(const impasto::data::Pigment& pigment) {
+  py::dict out;
+  out["name"] = pigment.name;
+  out["wavelength_nm"] = to_array(pigment.K.wavelengths_nm);
+  out["K"] = to_array(pigment.K.values);
+  out["S"] = to_array(pigment.S.resampled(pigment.K.wavelengths_nm).values);
+  out["metadata"] = pigment.metadata;
+  return out;
 }
 
 }  // namespace
@@ -325,6 +343,38 @@ PYBIND11_MODULE(impasto, m) {
       "How far two paintings are apart, as impasto compare says: dE00 per pixel under D65 "
       "(mean, p95, max, pixels over threshold, and the (rows, columns) array) and the surface "
       "height difference in mm");
+  m.def(
+      "pigment",
+      [](const std::string& name) {
+        return pigment_dict(impasto::data::PigmentDatabase::defaults().get(name));
+      },
+      py::arg("name"),
+      "A paint of the library: name, wavelength_nm, K and S (numpy arrays) and metadata");
+  m.def(
+      "fit_pigments",
+      [](const std::filesystem::path& measurements, const std::string& reference) {
+        impasto::data::KsFitProblem problem = impasto::data::read_ks_measurements(measurements);
+        if (!reference.empty()) problem.reference_pigment = reference;
+        const impasto::data::KsFitResult fit = impasto::data::fit_kubelka_munk(problem);
+        py::list pigments, residuals;
+        for (const auto& pigment : fit.pigments) pigments.append(pigment_dict(pigment));
+        for (const auto& r : fit.residuals) {
+          py::dict row;
+          row["name"] = r.name;
+          row["rms_reflectance"] = r.rms_reflectance;
+          row["max_reflectance"] = r.max_reflectance;
+          residuals.append(row);
+        }
+        py::dict out;
+        out["pigments"] = pigments;
+        out["residuals"] = residuals;
+        return out;
+      },
+      py::arg("measurements"), py::arg("reference") = "",
+      "Fits K and S from a measurements CSV of masstones and mixtures (docs/pigments.md), as "
+      "impasto pigments fit does: the pigments (as pigment() gives them) and each sample's "
+      "reflectance residuals. reference: the pigment whose S is fixed to 1 (default: the "
+      "file's '# reference:')");
   m.def(
       "pigments",
       [] {

@@ -115,6 +115,22 @@ class Module(unittest.TestCase):
             impasto.Painting.load(self.path("missing.impasto"))
         self.assertIn("White", impasto.pigments())
 
+    def test_the_fit_gives_back_the_pigments_its_mixtures_were_made_of(self):
+        # data/measurements/synthetic_mixtures.csv: mixtures computed from the bundled paints.
+        fit = impasto.fit_pigments(os.path.join(SOURCE, "data", "measurements",
+                                                "synthetic_mixtures.csv"))
+        names = [p["name"] for p in fit["pigments"]]
+        self.assertIn("Red", names)
+        self.assertLess(max(r["max_reflectance"] for r in fit["residuals"]), 1e-3)
+        white = impasto.pigment("White")
+        self.assertEqual(white["K"].shape, white["wavelength_nm"].shape)
+        red_fit = next(p for p in fit["pigments"] if p["name"] == "Red")
+        red = impasto.pigment("Red")
+        grid = red_fit["wavelength_nm"]
+        ratio_fit = red_fit["K"] / red_fit["S"]
+        ratio = np.interp(grid, red["wavelength_nm"], red["K"] / red["S"])
+        self.assertLess(np.max(np.abs(ratio_fit - ratio) / ratio), 0.02, "K/S of the source")
+
     def test_the_type_stubs_name_what_the_module_has(self):
         import ast
         with open(os.path.join(SOURCE, "app", "python", "impasto.pyi")) as f:
