@@ -2,8 +2,8 @@
 """Converts the Golden Matte Fluid Acrylics K/S table (wide CSV: one row per pigment and
 quantity, columns 360nm..750nm) into one Impasto pigment file per pigment.
 
-    python3 data/tools/golden_to_pigments.py \
-        ../shared/data/pigments/golden_matte_fluid_acrylics_KS.csv data/pigments
+    python3 packaging/pigments-okumura/golden_to_pigments.py \
+        ../shared/data/pigments/golden_matte_fluid_acrylics_KS.csv packaging/pigments-okumura
 """
 import csv
 import pathlib
