@@ -173,9 +173,7 @@ const CommandRegistrar registrar("render", [](CLI::App& root) {
                 "the image's size and the seconds taken to load and to render and write");
   cmd->add_option("--light", args->light, vocabulary_help("--light"))->capture_default_str();
   add_wavelengths_option(*cmd, args->wavelengths, true, "--gpu: 1..16");
-  cmd->add_option("--light-dir", args->light_dir,
-                  "Light azimuth,elevation in degrees (azimuth from +x toward +y, down)")
-      ->capture_default_str();
+  add_light_dir_option(*cmd, args->light_dir);
   add_choice_option(*cmd, "--light-type", args->light_type, kLightTypeNames,
                     "The light's kind (diffuse: overcast, no sparkles)");
   cmd->add_option("--light-size", args->light_size_deg,

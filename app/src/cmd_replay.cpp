@@ -14,6 +14,7 @@
 
 #include "command.hpp"
 #include "progress.hpp"
+#include "replay_overrides.hpp"
 #include "session/preview.hpp"
 #include "session/rebuild.hpp"
 #include "session/replay.hpp"
@@ -78,15 +79,7 @@ void run_replay(ReplayArgs args) {
   apply_old_spellings(args);
   // Bad outputs fail now, not after the replay.
   if (!args.out.empty()) render::image_file_type(args.out);
-  ReplayOptions options;
-  options.dpi = args.dpi;
-  if (args.size) {
-    options.width_cells = args.size->width;
-    options.height_cells = args.size->height;
-  }
-  options.threads = args.threads;
-  for (const std::string& assignment : args.params)
-    paintcore::set_param(options.params, assignment);
+  ReplayOptions options = replay_options(args.size, args.dpi, args.threads, args.params);
   options.auto_load = !args.no_auto_load;
   input::ImportOptions import;
   import.source_dpi = args.source_dpi;

@@ -10,6 +10,7 @@
 
 #include "command.hpp"
 #include "progress.hpp"
+#include "replay_overrides.hpp"
 #include "session/timelapse.hpp"
 #include "video_writer.hpp"
 #include "vocabulary.hpp"
@@ -38,14 +39,7 @@ struct TimelapseArgs {
 
 void run(const TimelapseArgs& args) {
   (void)video_kind(args.out);  // a bad extension fails now, not after the replay
-  ReplayOptions replay;
-  replay.dpi = args.dpi;
-  if (args.size) {
-    replay.width_cells = args.size->width;
-    replay.height_cells = args.size->height;
-  }
-  replay.threads = args.threads;
-  for (const std::string& assignment : args.params) paintcore::set_param(replay.params, assignment);
+  const ReplayOptions replay = replay_options(args.size, args.dpi, args.threads, args.params);
   const input::StrokeFile file = input::load_strokes_any(args.strokes, input::ImportOptions{});
   for (const auto& warning : file.warnings) warn(warning);
 
@@ -113,9 +107,7 @@ const CommandRegistrar registrar("timelapse", [](CLI::App& root) {
       ->capture_default_str();
   cmd->add_option("--light", args->light, vocabulary_help("--light"))->capture_default_str();
   add_wavelengths_option(*cmd, args->wavelengths, false, "");
-  cmd->add_option("--light-dir", args->light_dir,
-                  "Light azimuth,elevation in degrees (azimuth from +x toward +y, down)")
-      ->capture_default_str();
+  add_light_dir_option(*cmd, args->light_dir);
   cmd->add_option("--light-turn-to", args->light_turn_to,
                   "The light's azimuth at the last frame, degrees: it turns from --light-dir's "
                   "over the video (every frame then re-shades the whole canvas)")

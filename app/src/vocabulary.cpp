@@ -162,6 +162,13 @@ void parse_light_direction(const std::string& text, render::RenderSettings& sett
   }
 }
 
+CLI::Option* add_light_dir_option(CLI::App& cmd, std::string& light_dir) {
+  return cmd
+      .add_option("--light-dir", light_dir,
+                  "Light azimuth,elevation in degrees (azimuth from +x toward +y, down)")
+      ->capture_default_str();
+}
+
 std::string params_markdown() {
   const auto shown = [](double v) { return util::number_text(v); };
   const paintcore::SimulationParams defaults;

@@ -42,6 +42,8 @@ CLI::Option* add_dpi_option(CLI::App& cmd, double& dpi, std::string_view detail 
 CLI::Option* add_wavelengths_option(CLI::App& cmd, int& nodes, bool full_allowed,
                                     std::string_view detail = {});
 CLI::Option* add_out_option(CLI::App& cmd, std::string& out, std::string_view detail);
+// --light-dir AZIMUTH,ELEVATION in degrees (parse_light_direction reads it).
+CLI::Option* add_light_dir_option(CLI::App& cmd, std::string& light_dir);
 CLI::Option* add_save_option(CLI::App& cmd, std::string& save, std::string_view detail = {});
 CLI::Option* add_json_flag(CLI::App& cmd, bool& json, std::string_view detail);
 CLI::Option* add_threads_option(CLI::App& cmd, int& threads);
