@@ -105,8 +105,11 @@ pc::PenSample pen_sample(double x_mm, double y_mm, double pressure, double time_
   return sample;
 }
 
-py::array_t<double> to_array(const std::vector<double>& values) {
-  py::array_t<double> out(static_cast<py::ssize_t>(values.size()));
+// A numpy array of `shape` holding a copy of `values` (row-major; by default one row).
+template <typename T>
+py::array_t<T> to_array(const std::vector<T>& values, std::vector<py::ssize_t> shape = {}) {
+  if (shape.empty()) shape = {static_cast<py::ssize_t>(values.size())};
+  py::array_t<T> out(shape);
   std::copy(values.begin(), values.end(), out.mutable_data());
   return out;
 }
@@ -250,9 +253,7 @@ PYBIND11_MODULE(impasto, m) {
           "heights",
           [](const pc::Painting& p) {
             const impasto::render::HeightGrid grid = impasto::render::surface_heights(p.canvas());
-            py::array_t<float> out({grid.height, grid.width});
-            std::copy(grid.mm.begin(), grid.mm.end(), out.mutable_data());
-            return out;
+            return to_array(grid.mm, {grid.height, grid.width});
           },
           "The surface's height in mm over the ground's base, (rows, columns), float32 (a copy)")
       .def(
@@ -293,9 +294,7 @@ PYBIND11_MODULE(impasto, m) {
              std::pair<double, double> light_dir) {
             const impasto::render::Image image =
                 impasto::render::render_painting(p, render_settings(light, wavelengths, light_dir));
-            py::array_t<float> out({image.height, image.width, 3});
-            std::copy(image.rgb.begin(), image.rgb.end(), out.mutable_data());
-            return out;
+            return to_array(image.rgb, {image.height, image.width, 3});
           },
           py::arg("light") = "D65", py::arg("wavelengths") = 8,
           py::arg("light_dir") = std::pair{225.0, 60.0},
@@ -334,9 +333,7 @@ PYBIND11_MODULE(impasto, m) {
         out["threshold"] = threshold;
         out["height_mm_mean"] = *c.height_mm_mean;
         out["height_mm_max"] = *c.height_mm_max;
-        py::array_t<double> de00({c.height, c.width});
-        std::copy(c.de00.begin(), c.de00.end(), de00.mutable_data());
-        out["de00"] = de00;
+        out["de00"] = to_array(c.de00, {c.height, c.width});
         return out;
       },
       py::arg("a"), py::arg("b"), py::arg("threshold") = 1.0,

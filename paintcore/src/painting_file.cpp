@@ -31,9 +31,29 @@ using namespace file_io;  // NOLINT: the file's own building blocks
 
 namespace {
 
+// Reads a history section's steps with `read_steps()`, then the checksum stored after them
+// against `digest()` of what was read. Returns why the history was dropped, or "" (then the
+// painting holds it). A step that fails in a damaged section is reported as the damage.
+template <typename ReadSteps, typename Digest>
+std::string read_checked_history(files::InputFile& in, Reader& h, const ReadSteps& read_steps,
+                                 const Digest& digest) {
+  std::string problem;
+  try {
+    read_steps();
+  } catch (const std::runtime_error& e) {
+    problem = e.what();
+    h.skip_rest();  // the checksum says whether this is damage
+  } catch (const std::bad_alloc&) {
+    return "not enough memory for it";
+  }
+  std::uint64_t stored;
+  in.read_exact(&stored, 8);
+  if (stored != digest()) return "field 'history_checksum' does not match (it is corrupt)";
+  return problem;
+}
+
 // The history section after the payload's checksum (versions 5 to 7): its size field, its
 // steps (checked against the painting) and its own checksum, hashed as the steps are read.
-// Returns why it was dropped, or "" (then the painting holds it).
 std::string read_history_section(files::InputFile& in, std::uint64_t section_bytes,
                                  std::uint64_t offset, const std::string& name,
                                  const Canvas& canvas, UndoHistory& history,
@@ -47,19 +67,9 @@ std::string read_history_section(files::InputFile& in, std::uint64_t section_byt
   StreamHasher checksum;
   Reader h(in, size, offset + 8, name);
   h.hash_into(&checksum);
-  std::string problem;
-  try {
-    read_history(canvas, history, h, name, version);
-  } catch (const std::runtime_error& e) {
-    problem = e.what();
-    h.skip_rest();  // the checksum says whether this is damage
-  } catch (const std::bad_alloc&) {
-    return "not enough memory for it";
-  }
-  std::uint64_t stored;
-  in.read_exact(&stored, 8);
-  if (stored != checksum.digest()) return "field 'history_checksum' does not match (it is corrupt)";
-  return problem;
+  return read_checked_history(
+      in, h, [&] { read_history(canvas, history, h, name, version); },
+      [&] { return checksum.digest(); });
 }
 
 // The same from version 8, compressed (painting_file_codec.hpp).
@@ -76,20 +86,38 @@ std::string read_compressed_history_section(files::InputFile& in, std::uint64_t 
     return "field 'history_size' says " + std::to_string(sizes[1]) + " bytes (absurd)";
   DecompressingSource source(in, sizes[0], name, "undo history");
   Reader h(source, sizes[1], name);
-  std::string problem;
+  return read_checked_history(
+      in, h,
+      [&] {
+        read_history(canvas, history, h, name, kCompressedVersion);
+        source.expect_end();
+      },
+      [&] { return source.digest(); });
+}
+
+// Reads the payload's fields with `read_fields()`, then the checksum stored after them against
+// `digest()` of what was read, before anything is returned. A field that fails in a damaged
+// file is reported as the damage: the rest is read and a checksum that does not match is what
+// is thrown.
+template <typename ReadFields, typename Digest>
+auto read_checked_payload(files::InputFile& in, const Reader& header, Reader& r,
+                          const ReadFields& read_fields, const Digest& digest) {
+  const auto check_checksum = [&] {
+    std::uint64_t stored;
+    in.read_exact(&stored, 8);
+    if (stored != digest())
+      header.fail("checksum", "does not match the contents (the file is corrupt)");
+  };
+  decltype(read_fields()) p;
   try {
-    read_history(canvas, history, h, name, kCompressedVersion);
-    source.expect_end();
-  } catch (const std::runtime_error& e) {
-    problem = e.what();
-    h.skip_rest();
-  } catch (const std::bad_alloc&) {
-    return "not enough memory for it";
+    p = read_fields();
+  } catch (const std::runtime_error&) {
+    r.skip_rest();
+    check_checksum();
+    throw;
   }
-  std::uint64_t stored;
-  in.read_exact(&stored, 8);
-  if (stored != source.digest()) return "field 'history_checksum' does not match (it is corrupt)";
-  return problem;
+  check_checksum();
+  return p;
 }
 
 }  // namespace
@@ -241,22 +269,14 @@ std::unique_ptr<Painting::Impl> PaintingFile::load_compressed(files::InputFile& 
     header.fail("payload_size", "says " + std::to_string(size) + " bytes (absurd)");
   DecompressingSource source(in, stored, name, "payload");
   Reader r(source, size, name);
-  const auto check_checksum = [&] {
-    std::uint64_t digest;
-    in.read_exact(&digest, 8);
-    if (digest != source.digest())
-      header.fail("checksum", "does not match the contents (the file is corrupt)");
-  };
-  std::unique_ptr<Painting::Impl> p;
-  try {
-    p = read_payload(r, version, name, threads);
-    source.expect_end();
-  } catch (const std::runtime_error&) {
-    r.skip_rest();
-    check_checksum();
-    throw;
-  }
-  check_checksum();
+  auto p = read_checked_payload(
+      in, header, r,
+      [&] {
+        auto read = read_payload(r, version, name, threads);
+        source.expect_end();
+        return read;
+      },
+      [&] { return source.digest(); });
   const std::uint64_t history_bytes = with_history ? in.size() - kSizesEnd - stored - 8 : 0;
   if (history_bytes > 0) {
     std::string problem =
@@ -285,21 +305,9 @@ std::unique_ptr<Painting::Impl> PaintingFile::load_uncompressed(files::InputFile
   StreamHasher checksum;
   Reader r(in, payload_size, kHeaderBytes, name);
   r.hash_into(&checksum);
-  const auto check_checksum = [&] {
-    std::uint64_t stored;
-    in.read_exact(&stored, 8);
-    if (stored != checksum.digest())
-      header.fail("checksum", "does not match the contents (the file is corrupt)");
-  };
-  std::unique_ptr<Painting::Impl> p;
-  try {
-    p = read_payload(r, version, name, threads);
-  } catch (const std::runtime_error&) {
-    r.skip_rest();
-    check_checksum();
-    throw;
-  }
-  check_checksum();
+  auto p = read_checked_payload(
+      in, header, r, [&] { return read_payload(r, version, name, threads); },
+      [&] { return checksum.digest(); });
   if (history_bytes > 0) {
     std::string problem = read_history_section(in, history_bytes, kHeaderBytes + payload_size + 8,
                                                name, p->canvas, p->history, version);
