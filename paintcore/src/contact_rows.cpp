@@ -21,9 +21,10 @@ constexpr float kBelowBound = 1.0f - 1e-5f;
 [[gnu::always_inline]] inline int write_contact(int x, float coverage, float underside,
                                                 bool covered, std::int32_t b, float paint,
                                                 float ground, float wet, float tip_mm,
-                                                float footing_mm, float ground_fill, float* pen,
-                                                std::int32_t* cell, float* weight,
-                                                float* on_brush) {
+                                                float footing_mm, float ground_fill,
+                                                float inv_touch_mm, float surface_mm, float* pen,
+                                                std::int32_t* cell, float* weight, float* on_brush,
+                                                float* touch) {
   // The head presses where its underside is below the paint surface; the paint hanging
   // under the bristles touches before that (a loaded brush lays a broad mark, a dry one
   // skips).
@@ -35,12 +36,22 @@ constexpr float kBelowBound = 1.0f - 1e-5f;
   pen[x] = mask * greater(penetration, 0.0f);
   cell[x] = (b + 1) * hit - 1;
   on_brush[x] = mask * paint;
+  // Contact fades in from its edge over touch_mm: the films join (the split relaxes) by the
+  // depth of the contact, the paint under the bristles included; the bristles drag the paint
+  // fully where the underside reaches the paint surface around the brush's centre, less and
+  // less to touch_mm above it (the head's shape and depth alone: measured against each cell's
+  // own surface, or fading in below the surface, the drag followed the weave and printed it
+  // through thick paint). A contact all or nothing left the edge of every step where a
+  // lifting or easing brush's contact shrank: rings in each dab.
+  touch[x] = mask * lesser((penetration + paint) * inv_touch_mm, 1.0f);
+  const float reaches =
+      lesser(greater((surface_mm - (tip_mm + underside)) * inv_touch_mm + 1.0f, 0.0f), 1.0f);
   // The head moves the paint in full from half a cell inside its edge, all but what lies in
   // a valley of the ground below its footing: the threads around hold that (the drag used
   // to carry it onto the crowns ahead, printing the weave back through thick paint).
   const float trapped = lesser(ground_fill * greater(footing_mm - ground, 0.0f), wet);
   const float mobile = wet > 0.0f ? (wet - trapped) / wet : 1.0f;
-  weight[x] = mask * mobile * lesser(greater(2.0f * coverage - 1.0f, 0.0f), 1.0f);
+  weight[x] = mask * reaches * mobile * lesser(greater(2.0f * coverage - 1.0f, 0.0f), 1.0f);
   return hit;
 }
 
@@ -49,7 +60,8 @@ constexpr float kBelowBound = 1.0f - 1e-5f;
 IMPASTO_SIMD_CLONES int penetrate_row(int begin, int end, const HeadRow& head,
                                       const float* __restrict ground, const float* __restrict wet,
                                       float* __restrict pen, std::int32_t* __restrict cell,
-                                      float* __restrict weight, float* __restrict on_brush) {
+                                      float* __restrict weight, float* __restrict on_brush,
+                                      float* __restrict touch) {
   const float* coverage_grid = head.coverage;
   const float* footprint_grid = head.footprint;
   const float* brush_paint = head.paint;
@@ -58,6 +70,7 @@ IMPASTO_SIMD_CLONES int penetrate_row(int begin, int end, const HeadRow& head,
   const float u0 = head.u0, v0 = head.v0, step_u = head.step_u, step_v = head.step_v;
   const float tip_mm = head.tip_mm;
   const float footing_mm = head.footing_mm, ground_fill = head.ground_fill;
+  const float inv_touch_mm = head.inv_touch_mm, surface_mm = head.surface_mm;
   int contacts = 0;
   for (int x = begin; x < end; ++x) {
     // The head between brush cell centres: coverage and underside interpolated bilinearly,
@@ -83,14 +96,16 @@ IMPASTO_SIMD_CLONES int penetrate_row(int begin, int end, const HeadRow& head,
     const bool covered = inside & (coverage_grid[j_near * padded + i_near] > 0.0f);
     const std::int32_t b = covered ? (j_near - 1) * n + (i_near - 1) : 0;
     contacts += write_contact(x, coverage, underside, covered, b, brush_paint[b], ground[x], wet[x],
-                              tip_mm, footing_mm, ground_fill, pen, cell, weight, on_brush);
+                              tip_mm, footing_mm, ground_fill, inv_touch_mm, surface_mm, pen, cell,
+                              weight, on_brush, touch);
   }
   return contacts;
 }
 
 void clear_contact(int begin, int end, float* pen, std::int32_t* cell, float* weight,
-                   float* on_brush) {
+                   float* on_brush, float* touch) {
   if (end <= begin) return;
+  std::fill(touch + begin, touch + end, 0.0f);
   std::fill(pen + begin, pen + end, 0.0f);
   std::fill(cell + begin, cell + end, -1);
   std::fill(weight + begin, weight + end, 0.0f);
@@ -121,8 +136,8 @@ IMPASTO_SIMD_CLONES int penetrate_aligned_row(int width, const HeadRow& head, bo
                                               const float* __restrict ground,
                                               const float* __restrict wet, float* __restrict pen,
                                               std::int32_t* __restrict cell,
-                                              float* __restrict weight,
-                                              float* __restrict on_brush) {
+                                              float* __restrict weight, float* __restrict on_brush,
+                                              float* __restrict touch) {
   const int n = head.cells, padded = n + 2;
   const auto limit = static_cast<float>(n) + 1.0f;
   // The row walks the head along t (u, or v for a head turned a quarter) at a fixed s.
@@ -130,11 +145,13 @@ IMPASTO_SIMD_CLONES int penetrate_aligned_row(int width, const HeadRow& head, bo
   const float s = along_v ? head.u0 : head.v0;
   const float tip_mm = head.tip_mm;
   const float footing_mm = head.footing_mm, ground_fill = head.ground_fill;
+  const float inv_touch_mm = head.inv_touch_mm, surface_mm = head.surface_mm;
   if (!(s >= 0.0f && s < limit)) {  // the row passes beside the head
     std::fill_n(pen, width, 0.0f);
     std::fill_n(cell, width, -1);
     std::fill_n(weight, width, 0.0f);
     std::fill_n(on_brush, width, 0.0f);
+    std::fill_n(touch, width, 0.0f);
     return 0;
   }
   // The two brush lines s lies between, blended once for the whole canvas row, and the
@@ -177,7 +194,8 @@ IMPASTO_SIMD_CLONES int penetrate_aligned_row(int width, const HeadRow& head, bo
     const bool covered = inside & (paint >= 0.0f);
     const std::int32_t b = covered ? first_cell + k_near * cell_step : 0;
     contacts += write_contact(x, coverage, underside, covered, b, covered ? paint : 0.0f, ground[x],
-                              wet[x], tip_mm, footing_mm, ground_fill, pen, cell, weight, on_brush);
+                              wet[x], tip_mm, footing_mm, ground_fill, inv_touch_mm, surface_mm,
+                              pen, cell, weight, on_brush, touch);
   }
   return contacts;
 }
@@ -186,9 +204,10 @@ IMPASTO_SIMD_CLONES void transfer_row(int width, const FilmSplit& split,
                                       const std::int32_t* __restrict cell,
                                       const float* __restrict on_brush,
                                       const float* __restrict share_cap,
-                                      const float* __restrict pen, const float* __restrict ground,
-                                      const float* __restrict wet, float* __restrict new_wet,
-                                      float* __restrict xfer, float* __restrict ratio) {
+                                      const float* __restrict touch, const float* __restrict pen,
+                                      const float* __restrict ground, const float* __restrict wet,
+                                      float* __restrict new_wet, float* __restrict xfer,
+                                      float* __restrict ratio) {
   const float tip_film_mm = split.tip_film_mm, relax = split.relax;
   const float deposit_share = split.deposit_share, ground_fill = split.ground_fill;
   const float footing_mm = split.footing_mm;
@@ -213,7 +232,7 @@ IMPASTO_SIMD_CLONES void transfer_row(int width, const FilmSplit& split,
     // allows; exactly 0 where nothing touches.
     const float fill =
         valley_fill(footing_mm - ground[x], deposit_share * (a_b + a_c), ground_fill);
-    const float amount = brush_transfer_amount(a_c, a_b, relax, deposit_share, fill);
+    const float amount = brush_transfer_amount(a_c, a_b, relax * touch[x], deposit_share, fill);
     const float moved = touches ? amount : 0.0f;
     // Pigments go in the source's proportions (volume-weighted mixing).
     const float source = moved > 0.0f ? on_brush[x] : new_wet[x];

@@ -234,7 +234,7 @@ void Painting::begin_stroke() {
   p.stroke_tiles.clear();
   p.last_contact.reset();
   p.step_from.reset();
-  p.pending_cells = p.pending_seconds = 0.0;
+  p.clear_pending();
   p.last_move = {0.0, 0.0};
   p.last_move_seconds = 0.0;
   p.stepper.begin_stroke();
@@ -244,7 +244,8 @@ void Painting::end_stroke() {
   Impl& p = *impl_;
   if (!p.in_stroke) return;
   // The path walked since the last step is stepped too: the stroke ends where the pen did.
-  if (p.last_pose && p.step_from && (p.pending_cells > 0.0 || p.pending_seconds > 0.0)) {
+  if (p.last_pose && p.step_from &&
+      (p.pending_cells > 0.0 || p.pending_seconds > 0.0 || p.pending_depth_mm > 0.0)) {
     BrushPose end = *p.last_pose;
     const auto at = p.step_end({end.x_cells, end.y_cells});
     end.x_cells = at[0];
@@ -256,7 +257,7 @@ void Painting::end_stroke() {
   }
   if (p.stroke_touched) p.arena.execute([&] { p.lift_brush(); });
   p.step_from.reset();
-  p.pending_cells = p.pending_seconds = 0.0;
+  p.clear_pending();
   p.in_stroke = false;
   p.last_pose.reset();
   p.pose_before_last.reset();
@@ -360,7 +361,7 @@ void Painting::stroke_to(const PenSample& sample) {
   if (!clip_segment(from.x_cells, from.y_cells, target.x_cells, target.y_cells, -margin, -margin,
                     p.canvas.width_cells() + margin, p.canvas.height_cells() + margin, t0, t1)) {
     p.step_from.reset();
-    p.pending_cells = p.pending_seconds = 0.0;
+    p.clear_pending();
     p.pose_before_last = from;
     p.last_pose = target;
     return;
@@ -385,14 +386,16 @@ void Painting::stroke_to(const PenSample& sample) {
   // come from mm and carry rounding.)
   const double max_seconds = Stepper::max_step_seconds(p.params, p.canvas.cell_mm());
   const double max_cells = Stepper::max_step_cells(p.params, p.brush);
+  const double max_depth = Stepper::max_step_depth_mm(p.params, p.brush);
   const double length =
       whole ? curve.length()
             : std::hypot(target.x_cells - from.x_cells, target.y_cells - from.y_cells) * (t1 - t0);
   const double span_seconds = seconds * (t1 - t0);
+  const double span_depth = std::abs(target.depth_mm - from.depth_mm) * (t1 - t0);
   if (first || !p.step_from || t0 > 0.0) {
     // A stroke's first sample, or a path coming back within reach: the steps start here.
     p.step_from = p.step_origin = position(0.0);
-    p.pending_cells = p.pending_seconds = 0.0;
+    p.clear_pending();
   }
 
   p.arena.execute([&] {
@@ -404,7 +407,9 @@ void Painting::stroke_to(const PenSample& sample) {
                                               : std::numeric_limits<double>::max();
       const double to_time = span_seconds > 0.0 ? (max_seconds - p.pending_seconds) / span_seconds
                                                 : std::numeric_limits<double>::max();
-      const double next = w + std::max(0.0, std::min(to_distance, to_time));
+      const double to_depth = span_depth > 0.0 ? (max_depth - p.pending_depth_mm) / span_depth
+                                               : std::numeric_limits<double>::max();
+      const double next = w + std::max(0.0, std::min({to_distance, to_time, to_depth}));
       if (next > 1.0 + kHair) break;
       const double share = std::min(next, 1.0);
       const double u = whole ? share : t0 + (t1 - t0) * share;
@@ -417,16 +422,17 @@ void Painting::stroke_to(const PenSample& sample) {
       p.take_step(pose, here[0] - (*p.step_from)[0], here[1] - (*p.step_from)[1], step_seconds,
                   follows);
       p.step_from = here;
-      p.pending_cells = p.pending_seconds = 0.0;
+      p.clear_pending();
       w = share;
       if (share >= 1.0) break;
     }
     p.pending_cells += length * (1.0 - w);
     p.pending_seconds += span_seconds * (1.0 - w);
+    p.pending_depth_mm += span_depth * (1.0 - w);
   });
   if (t1 < 1.0) {  // the path leaves the brush's reach: nothing further can touch
     p.step_from.reset();
-    p.pending_cells = p.pending_seconds = 0.0;
+    p.clear_pending();
   }
   p.pose_before_last = from;
   p.last_pose = target;
@@ -495,16 +501,6 @@ void Painting::Impl::lift_brush() {
   const double speed = last_move_seconds > 0.0 ? travel / last_move_seconds : 0.0;  // cells/s
   const double lift_seconds =
       length > 0.0 && speed > 0.0 ? std::min(length / speed, kMaxLiftSeconds) : kLiftSeconds;
-  // A quarter of a long step (a cell for heads under about 100 cells): the contact shrinks
-  // as the tip rises, and a long step holds its contact's outline for its whole length (each
-  // step's outline was left as a ring in a dab); a big brush's one-cell steps made its lift
-  // cost a frame.
-  const double step_cells =
-      std::max(1.0, std::floor(0.25 * Stepper::max_step_cells(params, brush)));
-  const auto steps = static_cast<int>(std::max(
-      {std::ceil(length / step_cells),
-       std::ceil(lift_seconds / Stepper::max_step_seconds(params, canvas.cell_mm())), 1.0}));
-  const double seconds = lift_seconds / static_cast<double>(steps);
   // (take_step keeps the last move: the lift's own would turn it.)
   const std::array<double, 2> along =
       travel > 0.0 ? std::array<double, 2>{last_move[0] / travel, last_move[1] / travel}
@@ -514,6 +510,17 @@ void Painting::Impl::lift_brush() {
   for (const float height : brush.volume_mm()) on_brush += height;
   const double carried =
       std::min(on_brush / std::max<std::size_t>(brush.covered_cells(), 1), params.tip_film_mm);
+  // A quarter of a long step (a cell for heads under about 100 cells): the contact shrinks
+  // as the tip rises, and a long step holds its contact's outline for its whole length (each
+  // step's outline was left as a ring in a dab); a big brush's one-cell steps made its lift
+  // cost a frame.
+  const double step_cells =
+      std::max(1.0, std::floor(0.25 * Stepper::max_step_cells(params, brush)));
+  const auto steps = static_cast<int>(std::max(
+      {std::ceil(length / step_cells),
+       std::ceil(lift_seconds / Stepper::max_step_seconds(params, canvas.cell_mm())),
+       std::ceil((start.depth_mm + carried) / Stepper::max_step_depth_mm(params, brush)), 1.0}));
+  const double seconds = lift_seconds / static_cast<double>(steps);
   std::array<double, 2> from{start.x_cells, start.y_cells};
   step_origin = from;  // the lift's steps fall on whole cells from its start, as the stroke's
   const bool follows = !stroke_has_twist;

@@ -32,7 +32,8 @@ constexpr char kMagic[8] = {'I', 'M', 'P', 'A', 'S', 'T', 'O', '\0'};
 // added the media and varnish of the tiles that have them (painting_surface_file.hpp). Version
 // 7 added the long steps' settings after the other parameters (the version each parameter
 // came in is in simulation_params.cpp's list); older files load with their defaults.
-// Version 8 compresses the payload and the history (painting_file_codec.hpp).
+// Version 8 compresses the payload and the history (painting_file_codec.hpp). Version 9 added
+// touch_mm (the film split's fade at the contact's edge); older files load with its default.
 constexpr std::uint32_t kVersion = kPaintingFileVersion;
 constexpr std::uint32_t kCompressedVersion = 8;
 constexpr std::uint32_t kOldestVersion = 1;

@@ -65,7 +65,9 @@ struct Painting::Impl {
   // carry on from. So how often the pen was sampled leaves no trace in the paint.
   std::optional<std::array<double, 2>> step_from;    // cells
   std::optional<std::array<double, 2>> step_origin;  // where the steps started (cells)
-  double pending_cells = 0.0, pending_seconds = 0.0;
+  // (And the change of depth: a pen easing off steps as often as the contact's edge needs.)
+  double pending_cells = 0.0, pending_seconds = 0.0, pending_depth_mm = 0.0;
+  void clear_pending() { pending_cells = pending_seconds = pending_depth_mm = 0.0; }
   std::optional<BrushPose> last_contact;  // where the brush last touched paint: it lifts there
   std::array<double, 2> last_move{};      // the last step's move (cells)
   double last_move_seconds = 0.0;         // and how long it took

@@ -48,6 +48,8 @@ constexpr NamedParam kNamedParams[] = {
      "the narrowest brush (cells across) that takes long steps"},
     {"long_step_drag_cells", &SimulationParams::long_step_drag_cells, 7, 1, 1e6, false, "cells",
      "a long step's drag is advected in sub-steps of at most this travel (cells)"},
+    {"touch_mm", &SimulationParams::touch_mm, 9, 0, 1000, false, "mm",
+     "the depth over which the film split and the drag fade in from the contact's edge"},
 };
 // Each file version's fields follow the older ones' (a file's are a prefix of the list), and
 // the newest version writes every one.

@@ -82,6 +82,7 @@ void Stepper::resize(int slot_count, std::size_t brush_cells, int substeps, int 
   if (brush_share_cap_.size() < cells) brush_share_cap_.resize(cells);
   if (xfer_.size() < cells) xfer_.resize(cells);
   if (contact_weight_.size() < cells) contact_weight_.resize(cells);
+  if (touch_.size() < cells) touch_.resize(cells);
   if (drag_weight_.size() < cells) drag_weight_.resize(cells);
   for (auto* faces : {&face_east_, &face_south_}) {
     if (faces->size() < n) faces->resize(n);
@@ -181,6 +182,8 @@ void Stepper::penetrate_rows(const StepInputs& in, int r0, int r1) {
   head.tip_mm = in.tip_mm;
   head.footing_mm = in.footing_mm;
   head.ground_fill = in.ground_fill;
+  head.inv_touch_mm = in.inv_touch_mm;
+  head.surface_mm = in.surface_mm;
   head.coverage_transposed = in.brush->padded_coverage_transposed().data();
   head.footprint_transposed = in.brush->padded_footprint_mm_transposed().data();
   // A head square to the canvas rows, to a thousandth of a cell across the window (a head
@@ -203,18 +206,19 @@ void Stepper::penetrate_rows(const StepInputs& in, int r0, int r1) {
     std::int32_t* cell = brush_cell_.data() + first;
     float* weight = contact_weight_.data() + first;
     float* on_brush = brush_paint_at_.data() + first;
+    float* touch = touch_.data() + first;
     if (along_u || along_v) {
-      row_contacts_[static_cast<std::size_t>(y)] =
-          penetrate_aligned_row(w.width, head, along_v, ground, wet, pen, cell, weight, on_brush);
+      row_contacts_[static_cast<std::size_t>(y)] = penetrate_aligned_row(
+          w.width, head, along_v, ground, wet, pen, cell, weight, on_brush, touch);
     } else {
       // A turned head's grid crosses only part of the row (its window is the grid's bounding
       // box): the kernel visits that part, the rest has no contact.
       int begin, end;
       head_span(w.width, head, begin, end);
-      clear_contact(0, begin, pen, cell, weight, on_brush);
-      clear_contact(end, w.width, pen, cell, weight, on_brush);
+      clear_contact(0, begin, pen, cell, weight, on_brush, touch);
+      clear_contact(end, w.width, pen, cell, weight, on_brush, touch);
       row_contacts_[static_cast<std::size_t>(y)] =
-          penetrate_row(begin, end, head, ground, wet, pen, cell, weight, on_brush);
+          penetrate_row(begin, end, head, ground, wet, pen, cell, weight, on_brush, touch);
     }
     // The row's touching cells lie in [first, last + 1).
     int first_touch = w.width, last_touch = -1;
@@ -362,8 +366,8 @@ void Stepper::transfer_rows(const StepInputs& in, int r0, int r1) {
     transfer_row(hi - lo, split, brush_cell_.data() + first, brush_paint_at_.data() + first,
                  // (Where the cap cannot bind the brush paint stands in: no extra stream.)
                  (in.sharing_binds ? brush_share_cap_.data() : brush_paint_at_.data()) + first,
-                 pen_.data() + row, ground_.data() + row, wet_.data() + row, new_wet_.data() + row,
-                 xfer_.data() + first, xfer_ratio_.data() + first);
+                 touch_.data() + first, pen_.data() + row, ground_.data() + row, wet_.data() + row,
+                 new_wet_.data() + row, xfer_.data() + first, xfer_ratio_.data() + first);
     for (int s = 0; s < in.slot_count; ++s) {
       const std::size_t k = static_cast<std::size_t>(s);
       // (The brush changes only in the next pass: its pigments are read here directly.)
@@ -430,9 +434,9 @@ void Stepper::shifted_transfer_rows(const StepInputs& in, Shift shift, float rel
     const std::size_t row = static_cast<std::size_t>(y + 1) * w.stride() + 1 + lo;
     const std::size_t from_row = static_cast<std::size_t>(from_y + 1) * w.stride() + 1 +
                                  static_cast<std::size_t>(lo + shift.x);
-    transfer_row(count, split, cell, on_brush.data(), cap.data(), pen_.data() + from_row,
-                 ground_.data() + row, wet + row, new_wet + row, xfer_.data() + first + lo,
-                 xfer_ratio_.data() + first + lo);
+    transfer_row(count, split, cell, on_brush.data(), cap.data(), touch_.data() + from_first,
+                 pen_.data() + from_row, ground_.data() + row, wet + row, new_wet + row,
+                 xfer_.data() + first + lo, xfer_ratio_.data() + first + lo);
     for (int s = 0; s < in.slot_count; ++s) {
       const std::size_t k = static_cast<std::size_t>(s);
       transfer_pigment_row(count, cell, xfer_.data() + first + lo, xfer_ratio_.data() + first + lo,
@@ -754,6 +758,15 @@ double Stepper::max_step_cells(const SimulationParams& params, int brush_cells) 
   return std::max(1.0, params.long_step_share * brush_cells);
 }
 
+double Stepper::max_step_depth_mm(const SimulationParams& params, const Brush& brush) {
+  double most = params.touch_mm > 0.0 ? 0.5 * params.touch_mm : 1e300;
+  // The splay widens the footprint's radius by splay cells_across / 2 at full depth.
+  const double splay_cells = 0.5 * brush.head().splay * brush.cells_across();
+  if (splay_cells > 0.5 && brush.max_depth_mm() > 0.0)
+    most = std::min(most, 0.5 / splay_cells * brush.max_depth_mm());
+  return most;
+}
+
 void Stepper::copy_rows_to_tiles(Canvas& canvas, int slot_count, const float* wet,
                                  const float* pigment, int r0, int r1, int only_tile) const {
   const Window& w = win_;
@@ -942,24 +955,27 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   const int reach = std::clamp(brush.cells_across() / 8, 1, 4);
   const int cx = static_cast<int>(std::floor(placement.centre_x));
   const int cy = static_cast<int>(std::floor(placement.centre_y));
-  double rest = 0.0;
+  // (And the paint surface there, which the drag's fade measures the head against.)
+  double rest = 0.0, surface = 0.0;
   int rest_cells = 0;
+  const auto rest_on = [&](int x, int y) {
+    const double solid =
+        static_cast<double>(canvas.base_height_mm(x, y)) + canvas.dry_height_mm(x, y);
+    rest += solid + wet_support * canvas.wet_volume_mm(x, y);
+    surface += solid + canvas.wet_volume_mm(x, y);
+    ++rest_cells;
+  };
   for (int y = std::max(cy - reach, 0); y <= std::min(cy + reach, canvas.height_cells() - 1); ++y)
-    for (int x = std::max(cx - reach, 0); x <= std::min(cx + reach, canvas.width_cells() - 1);
-         ++x) {
-      rest += static_cast<double>(canvas.base_height_mm(x, y)) + canvas.dry_height_mm(x, y) +
-              wet_support * canvas.wet_volume_mm(x, y);
-      ++rest_cells;
-    }
-  if (rest_cells == 0) {  // the centre is off the canvas: rest on the nearest cell
-    const int x = std::clamp(cx, 0, canvas.width_cells() - 1);
-    const int y = std::clamp(cy, 0, canvas.height_cells() - 1);
-    rest = static_cast<double>(canvas.base_height_mm(x, y)) + canvas.dry_height_mm(x, y) +
-           wet_support * canvas.wet_volume_mm(x, y);
-    rest_cells = 1;
-  }
+    for (int x = std::max(cx - reach, 0); x <= std::min(cx + reach, canvas.width_cells() - 1); ++x)
+      rest_on(x, y);
+  if (rest_cells == 0)  // the centre is off the canvas: rest on the nearest cell
+    rest_on(std::clamp(cx, 0, canvas.width_cells() - 1),
+            std::clamp(cy, 0, canvas.height_cells() - 1));
   in.footing_mm = static_cast<float>(footing_mm(canvas, cx, cy));
   in.ground_fill = static_cast<float>(params.ground_fill);
+  in.inv_touch_mm = params.touch_mm > 0.0 ? static_cast<float>(1.0 / params.touch_mm) : 1e30f;
+  // (A blade, rigid, drags all it touches: its drag does not fade.)
+  in.surface_mm = in.blade ? 1e30f : static_cast<float>(surface / rest_cells);
   in.tip_mm = static_cast<float>(rest / rest_cells - pose.depth_mm);
   in.brush_vx = static_cast<float>(drag * sub_moves_.back().x);
   in.brush_vy = static_cast<float>(drag * sub_moves_.back().y);

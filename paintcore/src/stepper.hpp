@@ -53,6 +53,11 @@ class Stepper {
   // leading edge pushes the paint ahead of it cell by cell (a long step's sub-steps left a
   // blade's scrape half done).
   static double max_step_cells(const SimulationParams& params, const Brush& brush);
+  // The most the tip's depth may change in one step (mm): a pen easing off, or a lift, moves
+  // the contact's edge (the bristles splaying less, the underside rising) by at most half a
+  // cell, or half the depth over which the film split fades in (touch_mm): an edge that
+  // jumped further left the paint it stopped touching with a step, a ring in each dab.
+  static double max_step_depth_mm(const SimulationParams& params, const Brush& brush);
 
   std::size_t last_window_cells() const { return last_window_cells_; }
 
@@ -109,9 +114,11 @@ class Stepper {
     float relax;          // how far this step goes toward the film split (transfer.hpp)
     float deposit_share;  // the canvas's share of the joint film
     float inv_deposit_share;
-    float tip_film_mm;  // most paint a brush cell's tips present to the canvas
-    float footing_mm;   // the ground and dry paint around the brush's centre (mean)
-    float ground_fill;  // how much of a valley below the footing the paint fills
+    float tip_film_mm;   // most paint a brush cell's tips present to the canvas
+    float footing_mm;    // the ground and dry paint around the brush's centre (mean)
+    float ground_fill;   // how much of a valley below the footing the paint fills
+    float inv_touch_mm;  // 1 / the contact depth at which the films join fully
+    float surface_mm;    // the paint surface around the brush's centre (mean)
     // Canvas cells sharing a brush cell may together take more than it holds: each deposit
     // is capped by brush_share_cap_ (see step).
     bool sharing_binds;
@@ -165,6 +172,7 @@ class Stepper {
   std::vector<float> brush_share_cap_;    // on_brush / (deposit_share * sharers), if binding
   std::vector<float> xfer_;               // paint height moved brush -> canvas (signed)
   std::vector<float> contact_weight_;     // how fully the head moves each cell's paint, 0..1
+  std::vector<float> touch_;              // how fully its film joins the brush's, 0..1
   std::vector<float> drag_weight_;  // a blade's share of each cell's paint it carries (see step)
   std::vector<float> face_east_, face_south_;  // squeeze: signed share crossing each face
   std::vector<int> face_lo_, face_hi_;         // a long step's face range per row (squeeze_rows)

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <utility>
 #include <vector>
 
 #include "hasher.hpp"
@@ -24,14 +25,21 @@ inline std::vector<unsigned char> payload_of(const std::vector<unsigned char>& f
   return sections_of(file_bytes).payload;
 }
 
-// A version-6 payload from today's (versions 7 and 8 lay the payload out alike): without the
-// parameters version 7 added (the long steps' settings, after the others).
-inline std::vector<unsigned char> as_version_six(std::vector<unsigned char> payload) {
-  const auto kept = static_cast<std::ptrdiff_t>(8 * simulation_param_fields(6).size());
-  const auto added = static_cast<std::ptrdiff_t>(8 * simulation_param_fields(7).size()) - kept;
+// A payload of `version` (5 or later) from today's (versions 5 to 9 lay the payload out alike
+// but for the parameters each added, after the others): without the parameters added since.
+inline std::vector<unsigned char> without_params_after(std::vector<unsigned char> payload,
+                                                       std::uint32_t version) {
+  const auto kept = static_cast<std::ptrdiff_t>(8 * simulation_param_fields(version).size());
+  const auto added =
+      static_cast<std::ptrdiff_t>(8 * simulation_param_fields(kPaintingFileVersion).size()) - kept;
   const auto at = payload.begin() + static_cast<std::ptrdiff_t>(kParamsOffset) + kept;
   payload.erase(at, at + added);
   return payload;
+}
+
+// A version-6 payload from today's: without the long steps' settings (version 7) and later.
+inline std::vector<unsigned char> as_version_six(std::vector<unsigned char> payload) {
+  return without_params_after(std::move(payload), 6);
 }
 
 // Writes a painting file of `version` around `payload`, with the payload's checksum: as

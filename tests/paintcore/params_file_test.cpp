@@ -123,6 +123,22 @@ TEST_F(ParamsFileTest, VersionSixFilesLoadWithTheLongStepsDefaults) {
   EXPECT_NE(test::load_error(v6), "no error");
 }
 
+TEST_F(ParamsFileTest, VersionEightFilesLoadWithTheContactFadesDefault) {
+  SimulationParams params = long_steps(0.25);
+  params.touch_mm = 0.1;
+  const Painting p = painted(params);
+  const auto file = dir_ / "v9.impasto";
+  p.save(file);
+  const auto v8 = dir_ / "v8.impasto";
+  test::write_painting_file(
+      v8, 8, test::without_params_after(test::payload_of(test::file_bytes(file)), 8));
+  const Painting loaded = Painting::load(v8, 1);
+  SimulationParams expected = params;
+  expected.touch_mm = SimulationParams{}.touch_mm;
+  expect_params_eq(loaded.params(), expected);
+  EXPECT_EQ(Painting::load(file, 1).params().touch_mm, 0.1);
+}
+
 TEST_F(ParamsFileTest, TheCorpusVersionSixPaintingLoadsWithTheLongStepsDefaults) {
   const auto file = std::filesystem::path(IMPASTO_SOURCE_DIR) /
                     "tests/fuzz/corpus/paintings/small_v6_medium_varnish.impasto";

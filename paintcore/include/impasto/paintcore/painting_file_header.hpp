@@ -9,7 +9,7 @@
 namespace impasto::paintcore {
 
 // The version this program writes (painting_file_io.hpp says what each version added).
-inline constexpr std::uint32_t kPaintingFileVersion = 8;
+inline constexpr std::uint32_t kPaintingFileVersion = 9;
 inline constexpr std::size_t kPaintingFileMagicBytes = 8;  // "IMPASTO\0"
 inline constexpr std::size_t kPaintingFileHeaderBytes = kPaintingFileMagicBytes + 4 + 8;
 

@@ -57,6 +57,10 @@ struct SimulationParams {
   double long_step_share = 0.0625;
   double long_step_from_cells = 64.0;
   double long_step_drag_cells = 1.0;
+  // Contact fades in from its edge over this depth (mm): the films of brush and canvas join
+  // fully where the contact (the head's penetration plus the paint under its bristles) is this
+  // deep, and the bristles drag the paint fully where they are this deep in it (0: at once).
+  double touch_mm = 0.3;
 };
 
 // Throws std::runtime_error naming the field when a parameter is out of its row's range (below)
