@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -85,6 +86,9 @@ inline double mean_luma(const impasto::render::Image& image, int x0, int y0, int
 }
 
 // How a window is started.
+// The luma of the view's background (render_gl::GpuViewOptions::background_rgb).
+inline constexpr double kBackgroundLuma = 0.2126 * 0.16 + 0.7152 * 0.16 + 0.0722 * 0.18;
+
 struct WindowSetup {
   std::vector<std::string> args;      // after `impasto paint`
   std::optional<fs::path> recording;  // --record: the window is up once it has begun
@@ -124,17 +128,26 @@ class Window {
       execv(IMPASTO_EXECUTABLE, argv.data());
       _exit(127);
     }
-    // Up once its window is mapped and, with a recording, its session has begun recording;
-    // without one, once its panels are laid out (the status bar has its text).
+    // Up once its window is mapped, with a recording its session has begun recording, without
+    // one its panels are laid out (the status bar has its text), and the painting shows.
     const std::string search = "xdotool search --onlyvisible --pid " + std::to_string(pid_);
     up_ = wait_for(
         [&] {
           id_ = run_output(search + " 2>/dev/null | head -1");
           while (!id_.empty() && (id_.back() == '\n' || id_.back() == ' ')) id_.pop_back();
           if (id_.empty()) return false;
-          if (setup.recording)
-            return fs::exists(*setup.recording) && fs::file_size(*setup.recording) > 0;
-          return mean_luma(screenshot(), 0, setup.height - 20, 400, setup.height) > 0.02;
+          if (setup.recording &&
+              !(fs::exists(*setup.recording) && fs::file_size(*setup.recording) > 0))
+            return false;
+          const impasto::render::Image shown = screenshot();
+          if (!setup.recording &&
+              !(mean_luma(shown, 0, setup.height - 20, 400, setup.height) > 0.02))
+            return false;
+          // ...and the painting is shown: the first frames show the view's background and a
+          // note where the canvas will be (app/src/window/opening_note.hpp), whose dark menus
+          // and dialogs a test cannot tell apart from it.
+          const int x = (setup.width - 360) / 2, y = setup.height / 2 + 60;
+          return std::abs(mean_luma(shown, x - 8, y - 8, x + 8, y + 8) - kBackgroundLuma) > 0.02;
         },
         120s);
   }

@@ -46,6 +46,7 @@
 #include "window/canvas_menu.hpp"
 #include "window/edit_help_menus.hpp"
 #include "window/eyedropper.hpp"
+#include "window/opening_note.hpp"
 #include "window/paint_options.hpp"
 #include "window/palette_board_panel.hpp"
 #include "window/panels.hpp"
@@ -97,6 +98,11 @@ constexpr auto kIdleFrame = std::chrono::milliseconds(8);
 
 // How long the view and the light stay still before a coarse view is refined.
 constexpr double kRefineAfter_s = 0.3;
+// The width the panels take at the window's right (pixels): the canvas is fitted left of it.
+constexpr int kPanelsWidth = 360;
+// How long an opening window waits for its palette's rule (built on first use of a set of
+// pigments, then cached) before it shades the painting with the stand-in.
+constexpr double kRuleWait_s = 3.0;
 
 // "Could not save /a/b.impasto: why", naming the file once (most errors name it already).
 std::string failure_text(const std::string& failed, const std::filesystem::path& file,
@@ -223,6 +229,14 @@ class PaintWindow {
   std::vector<std::string> rendered_slots_;
   int canvas_w_ = 0, canvas_h_ = 0;
   bool full_upload_ = true;
+  // The view must be shaded whole, not coarsely, at the next frame that no stroke is drawing:
+  // it changed by no hand (the window opened on a painting and fitted it, the palette's own
+  // rule arrived), so no motion waits on it, and a coarse frame refined block by block over
+  // seconds read as a blotchy, broken first look.
+  bool shade_whole_ = true;
+  // The first frames: the panels and a note (opening_note.hpp) until the palette's own rule is
+  // built, for at most kRuleWait_s (the view is then shaded whole once, not twice).
+  bool opening_ = true;
 
   // Every pen sample, mouse or tablet, goes to the simulation through this feed.
   PenFeed canvas_feed_{[this](input::StrokeEvent event) { submit_pen_event(std::move(event)); }};
@@ -659,8 +673,9 @@ void PaintWindow::sync_gpu() {
     const bool resized = canvas.width_cells() != canvas_w_ || canvas.height_cells() != canvas_h_;
     const bool slots_changed = painting.pigment_slots() != rendered_slots_;
     // The palette's trained rule, built in the background, is ready: it takes over.
-    const bool rule_ready =
-        palette_stands_in_ && render::palette_rules_finished() != rules_finished_;
+    // (Not while a stroke draws: it waits for the pen to lift rather than re-shade under it.)
+    const bool rule_ready = palette_stands_in_ && !canvas_feed_.in_stroke() &&
+                            render::palette_rules_finished() != rules_finished_;
     if (resized || slots_changed || state_.settings_changed || !palette_ || rule_ready) {
       rules_finished_ = render::palette_rules_finished();
       const render::BackgroundPaletteRules background;  // no frame waits for a rule's build
@@ -678,6 +693,8 @@ void PaintWindow::sync_gpu() {
       } else {
         renderer_->set_settings(state_.settings, *palette_);
       }
+      // (A new canvas, a new set of pigments or the rule: no hand moves while it is shaded.)
+      shade_whole_ = shade_whole_ || resized || slots_changed || rule_ready;
       state_.settings_changed = false;
       state_.mix_changed = true;  // the swatch depends on the light
       full_upload_ = true;
@@ -1114,9 +1131,10 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   glfwGetWindowSize(window_, &win_w, &win_h);
   if (state_.fit_requested && fb_w > 0) {
     // Fit into the part of the window left of the panels.
-    state_.view =
-        render_gl::fit_canvas(canvas_w_, canvas_h_, std::max(win_w - 360, 100), win_h - 60);
-    state_.view.center_x_cells += 0.5 * 360 / state_.view.pixels_per_cell;  // shift right of centre
+    state_.view = render_gl::fit_canvas(canvas_w_, canvas_h_, std::max(win_w - kPanelsWidth, 100),
+                                        win_h - 60);
+    // (shifted right of centre)
+    state_.view.center_x_cells += 0.5 * kPanelsWidth / state_.view.pixels_per_cell;
     state_.fit_requested = false;
   }
 
@@ -1151,7 +1169,19 @@ void PaintWindow::draw_frame(bool take_screenshot) {
         RecoveryPreview{*previewing_, preview_texture_, preview_w_, preview_h_, preview_->base};
   }
   const RecoveryChoice recovery = draw_recovery_offer(recoverable_, preview);
+  if (opening_ && !take_screenshot) draw_opening_note(win_w, win_h, kPanelsWidth);
   ImGui::Render();
+  if (opening_ && !take_screenshot) {
+    clear_to_background(state_.view_options.background_rgb, fb_w, fb_h);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    presenter_->present_all();
+    present_whole_ = true;
+    opening_ = palette_stands_in_ && glfwGetTime() - session_start_s_ < kRuleWait_s;
+    state_.frame_ms = ms_since(start);
+    handle_recovery(recovery);
+    apply_canvas_request(canvas_request);
+    return;
+  }
 
   renderer_->set_view_options(state_.view_options);
   // The view is in window coordinates; scale it to framebuffer pixels (HiDPI).
@@ -1174,9 +1204,11 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   using Detail = render_gl::ShadedViewCache::Detail;
   // A stroke that changes nothing in view (an empty brush) is not kept waiting either.
   const double still_s = now_s - std::max({last_motion_s_, canvas_changed_s_, tip_down_s_});
-  const Detail detail = take_screenshot            ? Detail::kFull
+  const bool whole = take_screenshot || (shade_whole_ && !canvas_feed_.in_stroke());
+  const Detail detail = whole                      ? Detail::kFull
                         : still_s < kRefineAfter_s ? Detail::kCoarse
                                                    : Detail::kRefining;
+  if (whole) shade_whole_ = false;
   const render_gl::CachedDrawStats canvas =
       view_cache_.update(*renderer_, fb_view, fb_w, fb_h, detail);
   state_.pixels_shaded += canvas.pixels_shaded;
