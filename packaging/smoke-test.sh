@@ -2,13 +2,23 @@
 # Unpacks the Debian package into a temporary root (no apt, no root) and runs the installed
 # impasto from there, in an empty folder, with $IMPASTO_DATA_DIR unset: it must find its data
 # beside itself (usr/bin/../share/impasto), as after a moved install prefix. An installed copy
-# never reads the source tree (files::data_dir), so a missing file fails here.
+# never reads the source tree (files::data_dir), so a missing file fails here. The Python
+# module's package, python3-impasto_*.deb beside it, is unpacked over the same root.
 set -euo pipefail
 deb="$(realpath "${1:?usage: smoke-test.sh IMPASTO.deb [IMPASTO-PIGMENTS-OKUMURA.deb]}")"
 addon="${2:+$(realpath "$2")}"
 root="$(mktemp -d)"
 trap 'rm -rf "$root"' EXIT
 dpkg-deb -x "$deb" "$root/unpacked"
+python_deb="$(ls "$(dirname "$deb")"/python3-impasto_*.deb 2>/dev/null | head -1)"
+[ -n "$python_deb" ] || { echo "smoke test: no python3-impasto package beside $deb" >&2; exit 1; }
+if dpkg-deb -c "$deb" | grep -q "dist-packages"; then
+  echo "smoke test: the impasto package holds the Python module (python3-impasto's)" >&2
+  exit 1
+fi
+dpkg-deb -f "$python_deb" Depends | grep -q "impasto (= $(dpkg-deb -f "$deb" Version))" ||
+  { echo "smoke test: python3-impasto does not depend on this impasto" >&2; exit 1; }
+dpkg-deb -x "$python_deb" "$root/unpacked"
 mkdir "$root/work"
 cd "$root/work"
 impasto="$root/unpacked/usr/bin/impasto"
@@ -41,7 +51,7 @@ done
 # (lib/python3/dist-packages/../../../share/impasto) and reads the painting just saved.
 module_dir="$root/unpacked/usr/lib/python3/dist-packages"
 compgen -G "$module_dir/impasto*.so" >/dev/null ||
-  { echo "smoke test: the package lacks the Python module" >&2; exit 1; }
+  { echo "smoke test: python3-impasto lacks the Python module" >&2; exit 1; }
 PYTHONPATH="$module_dir" /usr/bin/python3 -c "
 import impasto
 p = impasto.Painting.load('demo.impasto')
@@ -81,4 +91,4 @@ if [ -n "$addon" ]; then
     { echo "smoke test: the add-on does not hold 27 pigments" >&2; exit 1; }
   echo "smoke test: $(basename "$addon") adds its 27 pigments to the library"
 fi
-echo "smoke test: $(basename "$deb") runs from an unpacked root (replay, render, thumbnail, Python)"
+echo "smoke test: $(basename "$deb") and $(basename "$python_deb") run from an unpacked root (replay, render, thumbnail, Python)"
