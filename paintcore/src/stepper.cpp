@@ -758,13 +758,22 @@ double Stepper::max_step_cells(const SimulationParams& params, int brush_cells) 
   return std::max(1.0, params.long_step_share * brush_cells);
 }
 
+namespace {
+// The most steps a pen going from full pressure to none takes for its depth's sake.
+constexpr double kMostDepthSteps = 64.0;
+}  // namespace
+
 double Stepper::max_step_depth_mm(const SimulationParams& params, const Brush& brush) {
+  const double full = brush.max_depth_mm();
+  if (!(full > 0.0)) return 1e300;
   double most = params.touch_mm > 0.0 ? 0.5 * params.touch_mm : 1e300;
   // The splay widens the footprint's radius by splay cells_across / 2 at full depth.
   const double splay_cells = 0.5 * brush.head().splay * brush.cells_across();
-  if (splay_cells > 0.5 && brush.max_depth_mm() > 0.0)
-    most = std::min(most, 0.5 / splay_cells * brush.max_depth_mm());
-  return most;
+  if (splay_cells > 0.5) most = std::min(most, 0.5 / splay_cells * full);
+  // At most kMostDepthSteps steps from full pressure to none, whatever the fade's depth or
+  // the brush's size: a hair-thin fade asked for millions, a 1024-cell brush's splay for
+  // hundreds of its costly steps.
+  return std::max(most, full / kMostDepthSteps);
 }
 
 void Stepper::copy_rows_to_tiles(Canvas& canvas, int slot_count, const float* wet,

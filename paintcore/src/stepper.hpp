@@ -56,7 +56,8 @@ class Stepper {
   // The most the tip's depth may change in one step (mm): a pen easing off, or a lift, moves
   // the contact's edge (the bristles splaying less, the underside rising) by at most half a
   // cell, or half the depth over which the film split fades in (touch_mm): an edge that
-  // jumped further left the paint it stopped touching with a step, a ring in each dab.
+  // jumped further left the paint it stopped touching with a step, a ring in each dab. Never
+  // less than a 64th of the brush's full depth.
   static double max_step_depth_mm(const SimulationParams& params, const Brush& brush);
 
   std::size_t last_window_cells() const { return last_window_cells_; }

@@ -340,16 +340,25 @@ TEST(WindowTools, AWheelNotchZoomsByAQuarter) {
   int after = 0;
   ASSERT_TRUE(wait_for([&] { return (after = canvas_width()) > 0 && after < before - 20; }))
       << "the wheel did not zoom out";
-  // The view settled: refined from the motion's coarse frame (on a loaded machine its edges,
-  // a block of up to 16 pixels, can still show half a second later), two readings alike.
-  int settled = 0;
+  // The view settled: refined from the motion's coarse frame (blocks of up to 16 pixels on a
+  // loaded machine), which goes on a few blocks a frame for a second or more. Settled when
+  // two captures 700 ms apart show the same canvas area, pixel for pixel.
+  const auto canvas_area = [&] {  // left of the panels, between the tool bar and status bar
+    const impasto::render::Image s = window.screenshot();
+    std::vector<float> area;
+    if (s.width != 1000) return area;
+    for (int y = 120; y < 650; ++y) area.insert(area.end(), s.pixel(0, y), s.pixel(660, y));
+    return area;
+  };
+  std::vector<float> last;
   EXPECT_TRUE(wait_for([&] {
-    std::this_thread::sleep_for(std::chrono::milliseconds(300));
-    const int now = canvas_width();
-    settled = now == after ? settled + 1 : 0;
-    after = now;
-    return settled >= 2;
+    std::this_thread::sleep_for(std::chrono::milliseconds(700));
+    std::vector<float> now = canvas_area();
+    const bool same = !now.empty() && now == last;
+    last = std::move(now);
+    return same;
   }));
+  after = canvas_width();
   EXPECT_NEAR(static_cast<double>(before) / after, 1.25, 0.03) << before << " -> " << after;
   fs::remove_all(dir);
 }

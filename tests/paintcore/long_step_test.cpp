@@ -80,6 +80,25 @@ TEST(LongSteps, StepLengthFollowsTheBrush) {
   EXPECT_EQ(Stepper::max_step_cells(params, 512), 1.0);
 }
 
+TEST(LongSteps, APenEasingOffStepsByDepthWithinBounds) {
+  // A step changes the tip's depth by at most half touch_mm, and by at most what moves the
+  // splayed footprint's edge half a cell, but never by less than a 64th of the full depth: a
+  // hair-thin fade or a huge brush cannot ask for millions of steps.
+  const BrushHead head =
+      load_named_brush_head("round", std::string(IMPASTO_SOURCE_DIR) + "/data/brushes");
+  const Brush brush(head, round_brush(10.0, 0.5), 0.1, 1);  // 100 cells, splay 0.25
+  const double full = brush.max_depth_mm();                 // 2.19 mm
+  SimulationParams params;
+  params.touch_mm = 0.3;  // half of it is more than the splay allows (0.088 mm)
+  EXPECT_NEAR(Stepper::max_step_depth_mm(params, brush), 0.5 / (0.5 * 0.25 * 100) * full, 1e-12);
+  params.touch_mm = 0.1;  // half of it is less
+  EXPECT_NEAR(Stepper::max_step_depth_mm(params, brush), 0.05, 1e-12);
+  params.touch_mm = 1e-9;
+  EXPECT_EQ(Stepper::max_step_depth_mm(params, brush), full / 64);
+  const Brush huge(head, round_brush(100.0, 0.5), 0.1, 1);  // 1000 cells
+  EXPECT_EQ(Stepper::max_step_depth_mm(SimulationParams{}, huge), huge.max_depth_mm() / 64);
+}
+
 TEST(LongSteps, SmallBrushesAreUnchangedBitForBit) {
   // Below long_step_from_cells the default settings step exactly as one-cell steps do.
   const Painting reference = paint_through_band(40, with_share(0.0));
