@@ -510,8 +510,9 @@ void Painting::Impl::lift_brush() {
   for (const float height : brush.volume_mm()) on_brush += height;
   const double carried =
       std::min(on_brush / std::max<std::size_t>(brush.covered_cells(), 1), params.tip_film_mm);
-  // A quarter of a long step (a cell for heads under about 100 cells): the contact shrinks
-  // as the tip rises, and a long step holds its contact's outline for its whole length (each
+  // A quarter of a long step (a cell for heads under about 100 cells), and no more depth a
+  // step than the contact's fade allows (Stepper::max_step_depth_mm): the contact shrinks as
+  // the tip rises, and a long step holds its contact's outline for its whole length (each
   // step's outline was left as a ring in a dab); a big brush's one-cell steps made its lift
   // cost a frame.
   const double step_cells =
