@@ -1177,6 +1177,7 @@ void PaintWindow::draw_frame(bool take_screenshot) {
     presenter_->present_all();
     present_whole_ = true;
     opening_ = palette_stands_in_ && glfwGetTime() - session_start_s_ < kRuleWait_s;
+    frame_changed_ = false;  // the loop idles between these frames: the rule has the cores
     state_.frame_ms = ms_since(start);
     handle_recovery(recovery);
     apply_canvas_request(canvas_request);
