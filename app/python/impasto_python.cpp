@@ -177,10 +177,8 @@ PYBIND11_MODULE(impasto, m) {
           [](pc::Painting& p, const std::map<std::string, double>& values) {
             pc::SimulationParams params = p.params();
             for (const auto& [name, value] : values) {
-              const auto rows = pc::all_simulation_params();
-              const auto row = std::find_if(rows.begin(), rows.end(),
-                                            [&](const auto& r) { return name == r.name; });
-              if (row == rows.end())
+              const pc::NamedParam* row = pc::find_simulation_param(name);
+              if (!row)
                 throw py::key_error("no paint model constant '" + name +
                                     "' (impasto help params lists them)");
               params.*(row->field) = value;

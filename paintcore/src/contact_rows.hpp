@@ -68,9 +68,8 @@ struct FilmSplit {
 
 // The paint each touching cell exchanges with its brush cell (xfer, > 0 onto the canvas) and
 // that as a share of its source's paint (ratio); new_wet gains it. touch (penetrate_row) scales
-// each cell's relaxation. share_cap bounds the
-// brush paint a cell may count on where several share its brush cell (on_brush itself where
-// sharing cannot bind: see Stepper::step).
+// each cell's relaxation. share_cap bounds the brush paint a cell may count on where several
+// share its brush cell (on_brush itself where sharing cannot bind: see Stepper::step).
 void transfer_row(int width, const FilmSplit& split, const std::int32_t* __restrict cell,
                   const float* __restrict on_brush, const float* __restrict share_cap,
                   const float* __restrict touch, const float* __restrict pen,

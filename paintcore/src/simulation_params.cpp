@@ -71,11 +71,17 @@ std::span<const NamedParam> simulation_param_fields(std::uint32_t file_version) 
   return std::span<const NamedParam>(std::begin(kNamedParams), end);
 }
 
+const NamedParam* find_simulation_param(std::string_view name) {
+  for (const NamedParam& p : kNamedParams)
+    if (name == p.name) return &p;
+  return nullptr;
+}
+
 void set_param(SimulationParams& params, const std::string& assignment) {
   const auto equals = assignment.find('=');
   const std::string name = assignment.substr(0, equals);
-  for (const NamedParam& p : kNamedParams) {
-    if (name != p.name) continue;
+  if (const NamedParam* found = find_simulation_param(name)) {
+    const NamedParam& p = *found;
     if (equals == std::string::npos)
       throw std::runtime_error("simulation params: '" + name + "' needs a value (NAME=VALUE)");
     const std::string text = assignment.substr(equals + 1);

@@ -182,6 +182,10 @@ class PaintWindow {
   void update_title();
   void update_swatch();
   void draw_frame(bool take_screenshot);
+  // A frame's canvas, shaded as the view's motion and the canvas's changes allow, and shown.
+  void draw_canvas(int fb_w, int fb_h, int win_w, bool take_screenshot);
+  // An opening frame (opening_): the panels over the view's background, the note among them.
+  void present_opening(int fb_w, int fb_h);
   void present_frame(const std::vector<render_gl::PixelRect>& canvas_changed, int fb_w, int fb_h,
                      double fb_scale, bool take_screenshot);
   void pen_sample(const PointerEvent& at, bool tip_down);
@@ -1169,21 +1173,28 @@ void PaintWindow::draw_frame(bool take_screenshot) {
         RecoveryPreview{*previewing_, preview_texture_, preview_w_, preview_h_, preview_->base};
   }
   const RecoveryChoice recovery = draw_recovery_offer(recoverable_, preview);
-  if (opening_ && !take_screenshot) draw_opening_note(win_w, win_h, kPanelsWidth);
+  const bool opening = opening_ && !take_screenshot;
+  if (opening) draw_opening_note(win_w, win_h, kPanelsWidth);
   ImGui::Render();
-  if (opening_ && !take_screenshot) {
-    clear_to_background(state_.view_options.background_rgb, fb_w, fb_h);
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-    presenter_->present_all();
-    present_whole_ = true;
-    opening_ = palette_stands_in_ && glfwGetTime() - session_start_s_ < kRuleWait_s;
-    frame_changed_ = false;  // the loop idles between these frames: the rule has the cores
-    state_.frame_ms = ms_since(start);
-    handle_recovery(recovery);
-    apply_canvas_request(canvas_request);
-    return;
-  }
+  if (opening)
+    present_opening(fb_w, fb_h);
+  else
+    draw_canvas(fb_w, fb_h, win_w, take_screenshot);
+  state_.frame_ms = ms_since(start);
+  handle_recovery(recovery);
+  apply_canvas_request(canvas_request);
+}
 
+void PaintWindow::present_opening(int fb_w, int fb_h) {
+  clear_to_background(state_.view_options.background_rgb, fb_w, fb_h);
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  presenter_->present_all();
+  present_whole_ = true;
+  opening_ = palette_stands_in_ && glfwGetTime() - session_start_s_ < kRuleWait_s;
+  frame_changed_ = false;  // the loop idles between these frames: the rule has the cores
+}
+
+void PaintWindow::draw_canvas(int fb_w, int fb_h, int win_w, bool take_screenshot) {
   renderer_->set_view_options(state_.view_options);
   // The view is in window coordinates; scale it to framebuffer pixels (HiDPI).
   render_gl::CanvasView fb_view = state_.view;
@@ -1219,9 +1230,6 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   time_view_motion(glfwGetTime());
   if (canvas.coarse) coarse_factors_.push_back(canvas.coarse_factor);
   state_.input_latency_ms = latency_.recent_median_ms().value_or(-1.0);
-  state_.frame_ms = ms_since(start);
-  handle_recovery(recovery);
-  apply_canvas_request(canvas_request);
 }
 
 // Image > Resize canvas / Crop: the reframed painting starts a new session, as a recovered one

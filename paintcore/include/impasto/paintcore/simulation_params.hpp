@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <span>
 #include <string>
+#include <string_view>
 
 namespace impasto::paintcore {
 
@@ -88,6 +89,8 @@ std::span<const NamedParam> all_simulation_params();
 // The parameters a painting file of `file_version` holds, in its order: a prefix of the list
 // (versions 1 and 2 held IMPaSTo's per-step constants instead, and hold none of these).
 std::span<const NamedParam> simulation_param_fields(std::uint32_t file_version);
+// The parameter of that name, or nullptr.
+const NamedParam* find_simulation_param(std::string_view name);
 
 // The parameters by name, for command lines and settings files: sets `name` from "NAME=VALUE"
 // text; throws naming the field (and listing the known names) when it can't. Does not validate.
