@@ -202,7 +202,8 @@ void run(const BenchGpuArgs& args) {
     render::SpectralPalette palette(settings, painting.pigment_slots());
     render_gl::CanvasRenderer renderer(size, size, settings, palette);
     renderer.upload_all(painting.canvas());
-    (void)painting.canvas().take_dirty_tiles();
+    const paintcore::Painting::ChangeSubscriber changes = painting.subscribe_changes();
+    (void)painting.take_changes(changes);  // the canvas as uploaded
     render_gl::Framebuffer target(args.viewport_w, args.viewport_h, render_gl::TexelFormat::kRGBA8);
     const render_gl::CanvasView view{size / 2.0, size / 2.0, pixels_per_cell, 0.0};
     render_gl::ShadedViewCache cache;
@@ -220,7 +221,7 @@ void run(const BenchGpuArgs& args) {
       const auto start = Clock::now();
       painting.stroke_to(sample);
       const auto simulated = Clock::now();
-      const std::vector<int> dirty = painting.canvas().take_dirty_tiles();
+      const std::vector<int> dirty = paintcore::tile_indices(painting.take_changes(changes));
       renderer.upload_tiles(painting.canvas(), dirty);
       const auto uploaded = Clock::now();
       if (cached) {

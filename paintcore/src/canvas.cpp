@@ -50,8 +50,6 @@ Canvas::Canvas(CanvasSpec spec) : spec_(spec) {
   tiles_x_ = (spec_.width_cells + kTileSize - 1) / kTileSize;
   tiles_y_ = (spec_.height_cells + kTileSize - 1) / kTileSize;
   tiles_.resize(static_cast<std::size_t>(tile_count()));
-  dirty_.assign(static_cast<std::size_t>(tile_count()), 0);
-  dirty_cells_.assign(static_cast<std::size_t>(tile_count()), CellRect{});
 }
 
 std::size_t Canvas::allocated_tiles() const {
@@ -121,44 +119,20 @@ float Canvas::pigment_mm(int x, int y, int slot) const {
   return p ? p[local_index(x, y)] : 0.0f;
 }
 
-std::vector<int> Canvas::take_dirty_tiles() const {
-  std::vector<int> out;
-  for (const DirtyTile& d : take_dirty_rects()) out.push_back(d.index);
-  return out;
-}
-
-std::vector<DirtyTile> Canvas::take_dirty_rects() const {
-  std::vector<DirtyTile> out;
-  for (std::size_t i = 0; i < dirty_.size(); ++i)
-    if (dirty_[i]) {
-      out.push_back({static_cast<int>(i), dirty_cells_[i]});
-      dirty_[i] = 0;
-      dirty_cells_[i] = {};
-    }
-  return out;
-}
-
 CellRect Canvas::tile_cells(int index) const {
   const int x0 = index % tiles_x_ * kTileSize, y0 = index / tiles_x_ * kTileSize;
   return {x0, y0, std::min(x0 + kTileSize, width_cells()),
           std::min(y0 + kTileSize, height_cells())};
 }
 
-void Canvas::mark_dirty(int index) const {
+void Canvas::mark_dirty(int index) {
   mark_dirty(index, tile_cells(index));
 }
 
-void Canvas::mark_dirty(int index, const CellRect& cells) const {
-  const auto i = static_cast<std::size_t>(index);
-  dirty_[i] = 1;
+void Canvas::mark_dirty(int index, const CellRect& cells) {
   const CellRect tile = tile_cells(index);
-  const CellRect clipped{std::max(cells.x0, tile.x0), std::max(cells.y0, tile.y0),
-                         std::min(cells.x1, tile.x1), std::min(cells.y1, tile.y1)};
-  if (clipped.empty()) return;
-  CellRect& box = dirty_cells_[i];
-  box = box.empty() ? clipped
-                    : CellRect{std::min(box.x0, clipped.x0), std::min(box.y0, clipped.y0),
-                               std::max(box.x1, clipped.x1), std::max(box.y1, clipped.y1)};
+  changes_.add(index, {std::max(cells.x0, tile.x0), std::max(cells.y0, tile.y0),
+                       std::min(cells.x1, tile.x1), std::min(cells.y1, tile.y1)});
 }
 
 }  // namespace impasto::paintcore

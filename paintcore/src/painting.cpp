@@ -24,7 +24,16 @@ Painting::Painting(CanvasSpec spec, int threads) : impl_(std::make_unique<Impl>(
 Painting::Painting(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 Painting::~Painting() = default;
 Painting::Painting(Painting&&) noexcept = default;
-Painting& Painting::operator=(Painting&&) noexcept = default;
+// The subscribers belong to this painting, not to the canvas it holds: they stay, and see the
+// new canvas whole.
+Painting& Painting::operator=(Painting&& other) noexcept {
+  if (this == &other) return *this;
+  std::vector<ChangedCells> subscribers;
+  if (impl_) subscribers = std::move(impl_->subscribers);
+  impl_ = std::move(other.impl_);
+  if (impl_) impl_->take_subscribers(std::move(subscribers));
+  return *this;
+}
 
 int Painting::threads() const {
   return impl_->threads;

@@ -35,7 +35,11 @@ struct Painting::Impl {
     return copy;
   }
 
+  // Replaces this painting's subscribers by `others`, each seeing every tile changed.
+  void take_subscribers(std::vector<ChangedCells> others);
+
   Canvas canvas;
+  std::vector<ChangedCells> subscribers;  // by ChangeSubscriber::id: what each has not taken
   int threads;
   tbb::task_arena arena;
   std::vector<std::string> slots;

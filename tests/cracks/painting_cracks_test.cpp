@@ -86,7 +86,8 @@ TEST(PaintingCracks, APaintingWithoutDryPaintCannotCrack) {
 
 TEST(PaintingCracks, TheCrackBrushDrawsIntoAPaintingAndTheFileKeepsIt) {
   paintcore::Painting painting = half_painted();
-  (void)painting.canvas().take_dirty_tiles();
+  const paintcore::Painting::ChangeSubscriber changes = painting.subscribe_changes();
+  (void)painting.take_changes(changes);
   CrackStroke stroke;
   stroke.points_mm = {{1.0, 1.0}, {15.0, 12.0}};
   stroke.shape = CavityShape::ArcGroove;
@@ -95,7 +96,7 @@ TEST(PaintingCracks, TheCrackBrushDrawsIntoAPaintingAndTheFileKeepsIt) {
   stroke.exposed_layer = 0;
   stamp_crack(painting, stroke);
   EXPECT_GT(painting.cracks().crack_cells(), 100u);
-  EXPECT_FALSE(painting.canvas().take_dirty_tiles().empty());
+  EXPECT_FALSE(painting.take_changes(changes).empty());
   const auto file = std::filesystem::temp_directory_path() /
                     ("impasto_crack_brush_" + std::to_string(::getpid()) + ".impasto");
   painting.save(file);

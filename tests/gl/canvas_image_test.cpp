@@ -164,12 +164,13 @@ TEST(CanvasTiles, DirtyTileUploadsFollowStrokesUndoAndDry) {
   render::RenderSettings settings;
   auto context = create_headless_context();
   const paintcore::Canvas& canvas = painting.canvas();
-  (void)canvas.take_dirty_tiles();
+  const paintcore::Painting::ChangeSubscriber changes = painting.subscribe_changes();
+  (void)painting.take_changes(changes);
 
   std::unique_ptr<CanvasRenderer> gpu;
   Framebuffer target(canvas.width_cells(), canvas.height_cells(), TexelFormat::kRGBA32F);
   auto check = [&](const char* step, bool full) {
-    const std::vector<int> dirty = canvas.take_dirty_tiles();
+    const std::vector<int> dirty = paintcore::tile_indices(painting.take_changes(changes));
     render::SpectralPalette palette(settings, painting.pigment_slots());
     if (full || !gpu) {
       gpu = std::make_unique<CanvasRenderer>(canvas.width_cells(), canvas.height_cells(), settings,

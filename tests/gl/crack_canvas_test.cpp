@@ -96,10 +96,11 @@ TEST(CrackCanvas, CracksSetOnAPaintingReachTheGpuTileByTile) {
   const paintcore::Canvas& canvas = painting.canvas();
   CanvasRenderer gpu(canvas.width_cells(), canvas.height_cells(), settings, palette);
   gpu.upload_all(canvas);
-  (void)canvas.take_dirty_tiles();
+  const paintcore::Painting::ChangeSubscriber changes = painting.subscribe_changes();
+  (void)painting.take_changes(changes);  // the canvas as uploaded
   Framebuffer target(canvas.width_cells(), canvas.height_cells(), TexelFormat::kRGBA32F);
   const auto check = [&](const char* step) {
-    const std::vector<int> dirty = canvas.take_dirty_tiles();
+    const std::vector<int> dirty = paintcore::tile_indices(painting.take_changes(changes));
     EXPECT_LT(dirty.size(), static_cast<std::size_t>(canvas.tile_count())) << step;
     gpu.upload_tiles(canvas, dirty);
     target.bind();

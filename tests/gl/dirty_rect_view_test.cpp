@@ -1,4 +1,4 @@
-// The window's cached view fed the cells a brush changed (Canvas::take_dirty_rects) instead
+// The window's cached view fed the cells a brush changed (Painting::take_changes) instead
 // of whole tiles: frame by frame along a stroke it shows exactly what a whole redraw shows,
 // while shading a fraction of the pixels the whole tiles and their shadow rims would.
 #include <gtest/gtest.h>
@@ -36,7 +36,8 @@ TEST(DirtyRectView, FramesAlongAStrokeMatchAWholeRedrawAndShadeLess) {
   CanvasRenderer renderer(256, 192, settings,
                           render::SpectralPalette(settings, painting.pigment_slots()));
   renderer.upload_all(painting.canvas());
-  (void)painting.canvas().take_dirty_rects();
+  const paintcore::Painting::ChangeSubscriber changes = painting.subscribe_changes();
+  (void)painting.take_changes(changes);          // the canvas as uploaded
   const CanvasView view{128.0, 96.0, 0.9, 0.2};  // zoomed out a little and turned
   Framebuffer by_cells(w, h, TexelFormat::kRGBA8), by_tiles(w, h, TexelFormat::kRGBA8);
   Framebuffer whole(w, h, TexelFormat::kRGBA8);
@@ -53,9 +54,8 @@ TEST(DirtyRectView, FramesAlongAStrokeMatchAWholeRedrawAndShadeLess) {
       const double t = (frame * 3 + i) / 24.0;
       painting.stroke_to(pen(16.0 + 12.0 * t, 14.0 + 8.0 * t));
     }
-    const std::vector<paintcore::DirtyTile> changed = painting.canvas().take_dirty_rects();
-    std::vector<int> tiles;
-    for (const paintcore::DirtyTile& d : changed) tiles.push_back(d.index);
+    const std::vector<paintcore::DirtyTile> changed = painting.take_changes(changes);
+    const std::vector<int> tiles = paintcore::tile_indices(changed);
     renderer.upload_tiles(painting.canvas(), tiles);
     cells_cache.invalidate_cells(changed);
     tiles_cache.invalidate_tiles(tiles);

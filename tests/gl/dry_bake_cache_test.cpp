@@ -59,9 +59,10 @@ TEST(DryBakeCache, StrokesKeepTheBakeAndDryingsRenewIt) {
   CanvasRenderer renderer(kWidth, kHeight, settings,
                           render::SpectralPalette(settings, painting.pigment_slots()));
   renderer.upload_all(painting.canvas());
-  (void)painting.canvas().take_dirty_tiles();
+  const paintcore::Painting::ChangeSubscriber changes = painting.subscribe_changes();
+  (void)painting.take_changes(changes);  // the canvas as uploaded
   const auto upload_changes = [&] {
-    const std::vector<int> tiles = painting.canvas().take_dirty_tiles();
+    const std::vector<int> tiles = paintcore::tile_indices(painting.take_changes(changes));
     EXPECT_FALSE(tiles.empty());
     renderer.upload_tiles(painting.canvas(), tiles);
   };

@@ -89,12 +89,10 @@ std::unique_ptr<CanvasRenderer> uploaded_renderer(const paintcore::Painting& pai
 }
 
 // The cells the painting changed since the last call, uploaded and invalidated in the cache.
-void upload_changes(paintcore::Painting& painting, CanvasRenderer& renderer,
-                    ShadedViewCache& cache) {
-  const std::vector<paintcore::DirtyTile> changed = painting.canvas().take_dirty_rects();
-  std::vector<int> tiles;
-  for (const paintcore::DirtyTile& d : changed) tiles.push_back(d.index);
-  renderer.upload_tiles(painting.canvas(), tiles);
+void upload_changes(paintcore::Painting& painting, paintcore::Painting::ChangeSubscriber changes,
+                    CanvasRenderer& renderer, ShadedViewCache& cache) {
+  const std::vector<paintcore::DirtyTile> changed = painting.take_changes(changes);
+  renderer.upload_tiles(painting.canvas(), paintcore::tile_indices(changed));
   cache.invalidate_cells(changed);
 }
 
@@ -105,7 +103,8 @@ TEST_P(CachedView, PartialReshadesMatchAWholeRedraw) {
   const CanvasView view = GetParam();
   const int w = 240, h = 180;
   paintcore::Painting painting = loaded_painting({{"Blue Red Shade", 2.0}, {"White", 1.0}});
-  (void)painting.canvas().take_dirty_tiles();
+  const paintcore::Painting::ChangeSubscriber changes = painting.subscribe_changes();
+  (void)painting.take_changes(changes);  // the canvas as it will be uploaded
   const render::RenderSettings settings = four_nodes();
   const auto uploaded = uploaded_renderer(painting, settings);
   CanvasRenderer& renderer = *uploaded;
@@ -118,7 +117,7 @@ TEST_P(CachedView, PartialReshadesMatchAWholeRedraw) {
   // Two strokes in different tiles, each followed by a cached frame.
   for (const double y_mm : {8.0, 24.0}) {
     stroke(painting, y_mm, 6.0, 14.0 + y_mm / 4);
-    const std::vector<int> dirty = painting.canvas().take_dirty_tiles();
+    const std::vector<int> dirty = paintcore::tile_indices(painting.take_changes(changes));
     ASSERT_FALSE(dirty.empty());
     renderer.upload_tiles(painting.canvas(), dirty);
     cache.invalidate_tiles(dirty);
@@ -346,14 +345,15 @@ TEST(CachedViewDraft, DraftedStrokesAreRefinedToAWholeRedraw) {
     paintcore::Painting painting = loaded_painting({{"Blue Red Shade", 2.0}, {"White", 1.0}});
     const auto uploaded = uploaded_renderer(painting, four_nodes());
     CanvasRenderer& renderer = *uploaded;
-    (void)painting.canvas().take_dirty_rects();
+    const paintcore::Painting::ChangeSubscriber changes = painting.subscribe_changes();
+    (void)painting.take_changes(changes);  // the canvas as uploaded
     Framebuffer window(w, h, TexelFormat::kRGBA8);
     ShadedViewCache cache;
     cache.set_draft_budget_ms(0.0);  // every change drafted, at the coarsest factor
     cache.draw(renderer, view, w, h, window.id());
     for (const double y_mm : {8.0, 20.0}) {
       stroke(painting, y_mm, 6.0, 30.0);
-      upload_changes(painting, renderer, cache);
+      upload_changes(painting, changes, renderer, cache);
       const CachedDrawStats draft = cache.update(renderer, view, w, h, Detail::kCoarse);
       cache.copy_to(window.id(), {0, 0, w, h});
       EXPECT_EQ(draft.draft_factor, ShadedViewCache::kMaxDraftFactor);
@@ -377,7 +377,7 @@ TEST(CachedViewDraft, DraftedStrokesAreRefinedToAWholeRedraw) {
     // Within the budget the changes are shaded finely: nothing to refine.
     cache.set_draft_budget_ms(1e9);
     stroke(painting, 14.0, 10.0, 20.0);
-    upload_changes(painting, renderer, cache);
+    upload_changes(painting, changes, renderer, cache);
     const CachedDrawStats fine = cache.update(renderer, view, w, h, Detail::kCoarse);
     cache.copy_to(window.id(), {0, 0, w, h});
     EXPECT_EQ(fine.draft_factor, 0);

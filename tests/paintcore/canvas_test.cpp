@@ -10,14 +10,14 @@ namespace impasto::paintcore {
 namespace {
 
 TEST(Canvas, TileGridCoversTheCanvasAndStartsEmpty) {
-  const Canvas canvas(CanvasSpec{100, 70, 300.0, 1});
+  Canvas canvas(CanvasSpec{100, 70, 300.0, 1});
   EXPECT_EQ(canvas.tiles_x(), 2);
   EXPECT_EQ(canvas.tiles_y(), 2);
   EXPECT_EQ(canvas.allocated_tiles(), 0u);
   EXPECT_EQ(canvas.tile(1, 1), nullptr);
   EXPECT_DOUBLE_EQ(canvas.cell_mm(), 25.4 / 300.0);
   EXPECT_EQ(canvas.wet_volume_mm(99, 69), 0.0f);
-  EXPECT_TRUE(canvas.take_dirty_tiles().empty());
+  EXPECT_TRUE(canvas.take_changes().empty());
 }
 
 TEST(Canvas, RejectsBadSpecsNamingTheField) {

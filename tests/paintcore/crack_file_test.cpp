@@ -129,21 +129,22 @@ TEST_F(CrackFileTest, AnUncrackedPaintingHoldsNoCrackMemory) {
 
 TEST_F(CrackFileTest, SetCracksMarksOnlyTheChangedTilesDirtyAndDropsEmptyTiles) {
   Painting p = sample();
-  (void)p.canvas().take_dirty_tiles();
+  const Painting::ChangeSubscriber changes = p.subscribe_changes();
+  (void)p.take_changes(changes);
   const std::uint64_t before = p.state_hash();
   CrackLayer cracks = some_cracks();
   cracks.ensure_tile(3);  // allocated but without a crack: dropped
   p.set_cracks(std::move(cracks));
-  EXPECT_EQ(p.canvas().take_dirty_tiles(), (std::vector<int>{0, 5}));
+  EXPECT_EQ(tile_indices(p.take_changes(changes)), (std::vector<int>{0, 5}));
   EXPECT_EQ(p.cracks().allocated_tiles(), 2u);
   EXPECT_EQ(p.cracks().crack_cells(), 3u);
   EXPECT_NE(p.state_hash(), before);
   // Setting the same cracks again changes nothing.
   p.set_cracks(some_cracks());
-  EXPECT_TRUE(p.canvas().take_dirty_tiles().empty());
+  EXPECT_TRUE(p.take_changes(changes).empty());
   // Removing them restores the uncracked state and hash.
   p.set_cracks(CrackLayer{});
-  EXPECT_EQ(p.canvas().take_dirty_tiles(), (std::vector<int>{0, 5}));
+  EXPECT_EQ(tile_indices(p.take_changes(changes)), (std::vector<int>{0, 5}));
   EXPECT_EQ(p.state_hash(), before);
   EXPECT_EQ(p.cracks().memory_bytes(), 0u);
 }
@@ -178,12 +179,12 @@ TEST_F(CrackFileTest, SaveThenLoadKeepsTheCracks) {
   p.set_cracks(some_cracks());
   const auto file = dir_ / "cracked.impasto";
   p.save(file);
-  const Painting loaded = Painting::load(file, 1);
+  Painting loaded = Painting::load(file, 1);
   EXPECT_TRUE(loaded.cracks() == p.cracks());
   EXPECT_EQ(loaded.cracks().crack_cells(), 3u);
   EXPECT_EQ(loaded.state_hash(), p.state_hash());
-  // Loading marks the cracked tiles dirty, so a renderer picks them up.
-  const std::vector<int> dirty = loaded.canvas().take_dirty_tiles();
+  // A renderer of the loaded painting shades the cracked tiles.
+  const std::vector<int> dirty = tile_indices(loaded.take_changes(loaded.subscribe_changes()));
   EXPECT_NE(std::find(dirty.begin(), dirty.end(), 5), dirty.end());
 }
 
@@ -214,7 +215,7 @@ TEST_F(CrackFileTest, PigmentRecordsRoundTripAndVersionThreeFilesLoadWithoutThem
   p.set_pigment_record("blue", std::string(100000, 'b'));  // longer than a name may be
   const auto file = dir_ / "records.impasto";
   p.save(file);
-  const Painting loaded = Painting::load(file, 1);
+  Painting loaded = Painting::load(file, 1);
   EXPECT_EQ(loaded.pigment_records(), p.pigment_records());
   EXPECT_EQ(loaded.state_hash(), p.state_hash());
   // Version 3: the same payload without the records section.

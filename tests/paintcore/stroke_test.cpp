@@ -24,6 +24,8 @@ TEST(Stroke, HoveringTouchesNothing) {
 
 TEST(Stroke, LoadedBrushDepositsPaintAlongThePath) {
   Painting p(flat_spec());
+  const Painting::ChangeSubscriber changes = p.subscribe_changes();
+  (void)p.take_changes(changes);
   p.set_brush(round_brush());
   p.load_brush({{"red", 1.0}}, 5.0);
   const double loaded = p.brush_totals().volume;
@@ -37,8 +39,8 @@ TEST(Stroke, LoadedBrushDepositsPaintAlongThePath) {
   EXPECT_EQ(p.canvas().wet_volume_mm(60, 100), 0.0f);
   // All of it is red.
   EXPECT_NEAR(p.canvas().pigment_mm(60, 60, 0), p.canvas().wet_volume_mm(60, 60), 1e-7);
-  EXPECT_FALSE(p.canvas().take_dirty_tiles().empty());
-  EXPECT_TRUE(p.canvas().take_dirty_tiles().empty());
+  EXPECT_FALSE(p.take_changes(changes).empty());
+  EXPECT_TRUE(p.take_changes(changes).empty());
 }
 
 TEST(Stroke, CleanBrushPicksUpAndPushesPaintForward) {

@@ -19,11 +19,12 @@ TEST(Undo, StrokeRoundTripIsBitExact) {
   stroke_line(p, 2.0, 9.0, 10.0, 3.0, 0.9f);  // reaches tiles not painted before
   const std::uint64_t after = p.state_hash();
   ASSERT_NE(before, after);
-  (void)p.canvas().take_dirty_tiles();
+  const Painting::ChangeSubscriber changes = p.subscribe_changes();
+  (void)p.take_changes(changes);
   ASSERT_TRUE(p.undo());
   EXPECT_EQ(p.state_hash(), before);
   EXPECT_EQ(p.canvas().allocated_tiles(), tiles_before);
-  EXPECT_FALSE(p.canvas().take_dirty_tiles().empty());
+  EXPECT_FALSE(p.take_changes(changes).empty());
   ASSERT_TRUE(p.redo());
   EXPECT_EQ(p.state_hash(), after);
   EXPECT_FALSE(p.redo());

@@ -208,11 +208,12 @@ TEST(CrackRender, SetCracksOnAPaintingUpdatesOnlyTheCrackedTiles) {
   const RenderSettings settings = linear_matte();
   paintcore::Painting painting({3 * kTileSize, 2 * kTileSize, 254.0, 3}, 1);
   TileRenderer renderer(settings, grey_palette(settings, 0.8));
-  renderer.update(painting.canvas(), painting.canvas().take_dirty_tiles());
+  const paintcore::Painting::ChangeSubscriber changes = painting.subscribe_changes();
+  renderer.update(painting.canvas(), paintcore::tile_indices(painting.take_changes(changes)));
   paintcore::CrackLayer cracks;
   cracks.ensure_tile(4).cells[300] = {0.1f, 0.02f, kVGroove, 0xFF};
   painting.set_cracks(std::move(cracks));
-  const std::vector<int> dirty = painting.canvas().take_dirty_tiles();
+  const std::vector<int> dirty = paintcore::tile_indices(painting.take_changes(changes));
   EXPECT_EQ(dirty, std::vector<int>{4});
   const RenderStats stats = renderer.update(painting.canvas(), dirty);
   EXPECT_EQ(stats.tiles_shaded, 1);

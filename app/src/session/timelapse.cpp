@@ -52,22 +52,22 @@ class FrameRenderer {
  public:
   explicit FrameRenderer(render::RenderSettings settings) : settings_(std::move(settings)) {}
 
-  const render::Image& render(const paintcore::Painting& painting, double azimuth_deg) {
+  const render::Image& render(paintcore::Painting& painting, double azimuth_deg) {
     const paintcore::Canvas& canvas = painting.canvas();
+    if (changes_.id < 0) changes_ = painting.subscribe_changes();
+    const std::vector<int> changed = paintcore::tile_indices(painting.take_changes(changes_));
     const bool turned = azimuth_deg != settings_.light_azimuth_deg;
     settings_.light_azimuth_deg = azimuth_deg;
     if (!renderer_ || painting.slot_count() != slots_) {
       palette_.emplace(settings_, painting);
       renderer_.emplace(settings_, *palette_);
       slots_ = painting.slot_count();
-      (void)canvas.take_dirty_tiles();
       renderer_->render_all(canvas);
     } else if (turned) {
       renderer_->set_settings(settings_, *palette_);
-      (void)canvas.take_dirty_tiles();
       renderer_->render_all(canvas);
     } else {
-      renderer_->update(canvas, canvas.take_dirty_tiles());
+      renderer_->update(canvas, changed);
     }
     image_ = renderer_->image();
     return image_;
@@ -78,6 +78,7 @@ class FrameRenderer {
   std::optional<render::SpectralPalette> palette_;
   std::optional<render::TileRenderer> renderer_;
   int slots_ = -1;
+  paintcore::Painting::ChangeSubscriber changes_;  // subscribed on the first frame
   render::Image image_;
 };
 

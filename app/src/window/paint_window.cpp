@@ -216,6 +216,7 @@ class PaintWindow {
   GLFWwindow* window_ = nullptr;
   WindowState state_;
   std::unique_ptr<SimWorker> worker_;
+  paintcore::Painting::ChangeSubscriber view_changes_;  // what the GPU copy has not taken
   std::unique_ptr<render_gl::CanvasRenderer> renderer_;
   render_gl::ShadedViewCache view_cache_;       // frames re-shade only what changed in view
   std::unique_ptr<WindowPresenter> presenter_;  // frames present only what changed
@@ -515,6 +516,7 @@ void PaintWindow::start_session() {
   open_board_for(options_.painting);
   worker_ = std::make_unique<SimWorker>(std::move(painting),
                                         begin_session(options_.painting, options_.painting));
+  view_changes_ = worker_->subscribe_changes();
   if (options_.painting) opened_file(*options_.painting);
   // Sessions that did not end cleanly are offered for recovery (not in scripted replays).
   if (!options_.replay) {
@@ -672,7 +674,8 @@ void PaintWindow::sync_gpu() {
   const auto start = Clock::now();
   // Every job applied by now has dirtied its tiles before the upload below takes them.
   applied_at_upload_ = worker_->stats().applied;
-  worker_->with_painting([&](const paintcore::Painting& painting) {
+  worker_->with_changes(view_changes_, [&](const paintcore::Painting& painting,
+                                           std::span<const paintcore::DirtyTile> changed) {
     const paintcore::Canvas& canvas = painting.canvas();
     const bool resized = canvas.width_cells() != canvas_w_ || canvas.height_cells() != canvas_h_;
     const bool slots_changed = painting.pigment_slots() != rendered_slots_;
@@ -708,9 +711,7 @@ void PaintWindow::sync_gpu() {
       state_.visibility_changed = false;
       full_upload_ = true;
     }
-    const std::vector<paintcore::DirtyTile> changed = canvas.take_dirty_rects();
-    std::vector<int> dirty;
-    for (const paintcore::DirtyTile& d : changed) dirty.push_back(d.index);
+    const std::vector<int> dirty = paintcore::tile_indices(changed);
     if (full_upload_) {
       renderer_->upload_all(canvas);
       view_cache_.invalidate_all();

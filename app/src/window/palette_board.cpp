@@ -23,6 +23,7 @@ PaletteBoard::PaletteBoard(double width_mm, double height_mm, double dpi)
 
 PaletteBoard::PaletteBoard(paintcore::Painting painting)
     : painting_(std::make_unique<paintcore::Painting>(std::move(painting))),
+      changes_(painting_->subscribe_changes()),
       options_(std::make_unique<ReplayOptions>()) {
   player_ = std::make_unique<SessionPlayer>(*painting_, *options_, false);
 }
@@ -36,6 +37,7 @@ PaletteBoard& PaletteBoard::operator=(PaletteBoard&& other) noexcept {
   // The player refers to the painting and options: it goes first, and comes last.
   player_.reset();
   painting_ = std::move(other.painting_);
+  changes_ = other.changes_;
   options_ = std::move(other.options_);
   player_ = std::move(other.player_);
   return *this;

@@ -45,6 +45,8 @@ class PaletteBoard {
   void wipe_brush() { apply(input::WipeEvent{}); }
 
   const paintcore::Painting& painting() const { return *painting_; }
+  // The board's tiles changed since the previous take (its panel's image is their one reader).
+  std::vector<paintcore::DirtyTile> take_changes() { return painting_->take_changes(changes_); }
   double width_mm() const;
   double height_mm() const;
 
@@ -53,6 +55,7 @@ class PaletteBoard {
 
   // On the heap so the player's reference survives a move of the board.
   std::unique_ptr<paintcore::Painting> painting_;
+  paintcore::Painting::ChangeSubscriber changes_;
   std::unique_ptr<ReplayOptions> options_;
   std::unique_ptr<SessionPlayer> player_;
 };

@@ -30,7 +30,7 @@ void PaletteBoardPanel::replace(PaletteBoard board) {
 bool PaletteBoardPanel::refresh_image(const render::RenderSettings& settings) {
   const paintcore::Painting& painting = board_.painting();
   const paintcore::Canvas& canvas = painting.canvas();
-  const std::vector<int> dirty = canvas.take_dirty_tiles();
+  const std::vector<int> dirty = paintcore::tile_indices(board_.take_changes());
   const bool new_look = !renderer_ || painting.pigment_slots() != rendered_slots_ ||
                         settings.light != rendered_light_ ||
                         settings.wavelengths != rendered_wavelengths_;

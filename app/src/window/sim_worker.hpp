@@ -76,6 +76,20 @@ class SimWorker {
     std::lock_guard lock(painting_mutex_);
     return f(static_cast<const paintcore::Painting&>(painting_));
   }
+  // A consumer of what the painting's strokes change (the window's view): subscribe once; the
+  // subscription outlives replace_painting, its next take seeing the new canvas whole.
+  paintcore::Painting::ChangeSubscriber subscribe_changes() {
+    std::lock_guard lock(painting_mutex_);
+    return painting_.subscribe_changes();
+  }
+  // Runs f(painting, changed) locked, with the tiles changed since the subscriber's previous
+  // take (Painting::take_changes).
+  template <typename F>
+  decltype(auto) with_changes(paintcore::Painting::ChangeSubscriber subscriber, F&& f) {
+    std::lock_guard lock(painting_mutex_);
+    const std::vector<paintcore::DirtyTile> changed = painting_.take_changes(subscriber);
+    return f(static_cast<const paintcore::Painting&>(painting_), changed);
+  }
   // The same for a change outside the session's events: the pigments a painting carries
   // (window/pigment_drift_note.cpp), which the simulation never reads.
   template <typename F>

@@ -11,6 +11,7 @@
 #include <memory>
 #include <vector>
 
+#include "impasto/paintcore/changed_cells.hpp"
 #include "impasto/paintcore/crack_layer.hpp"
 
 namespace impasto::paintcore {
@@ -38,20 +39,6 @@ struct CanvasSpec {
 
   double cell_mm() const { return kMmPerInch / dpi; }
   double cell_area_mm2() const { return cell_mm() * cell_mm(); }
-};
-
-// Canvas cells [x0, x1) x [y0, y1).
-struct CellRect {
-  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-  bool empty() const { return x1 <= x0 || y1 <= y0; }
-  bool operator==(const CellRect&) const = default;
-};
-
-// A tile changed since the last take, and the box of its cells that may have changed
-// (inside the tile; empty when the tile was touched but no cell's value changed).
-struct DirtyTile {
-  int index = 0;
-  CellRect cells;
 };
 
 // Throws std::runtime_error naming the field when the spec is not usable.
@@ -130,12 +117,6 @@ class Canvas {
   // Cracks in the dry paint and the ground, by canvas tile (empty: an uncracked canvas).
   const CrackLayer& cracks() const { return cracks_; }
 
-  // Indices of the tiles changed (by a stroke, dry, undo, redo or load) since the previous
-  // call, ascending; the set is cleared. Not thread-safe.
-  std::vector<int> take_dirty_tiles() const;
-  // The same tiles with the box of cells changed in each, so a view re-shades only those
-  // (the window's cached view); clears the set like take_dirty_tiles().
-  std::vector<DirtyTile> take_dirty_rects() const;
   // The tile's cells that lie inside the canvas.
   CellRect tile_cells(int index) const;
 
@@ -147,9 +128,13 @@ class Canvas {
   void compute_base_heights(int index, float* out) const;
   std::vector<DryLayer>& dry_layers() { return dry_layers_; }
   CrackLayer& cracks() { return cracks_; }
-  void mark_dirty(int index) const;  // every cell of the tile
-  // Only `cells` (clipped to the tile) changed; the stepper knows each step's window.
-  void mark_dirty(int index, const CellRect& cells) const;
+  // Tile `index` changed: every cell of it, or only `cells` (clipped to the tile; the stepper
+  // knows each step's window).
+  void mark_dirty(int index);
+  void mark_dirty(int index, const CellRect& cells);
+  // What was marked since the previous take, for the painting that owns this canvas to hand
+  // on to its subscribers (Painting::take_changes); leaves the set empty.
+  std::vector<DirtyTile> take_changes() { return changes_.take(); }
 
  private:
   CanvasSpec spec_;
@@ -158,8 +143,7 @@ class Canvas {
   std::vector<std::unique_ptr<Tile>> tiles_;
   std::vector<DryLayer> dry_layers_;
   CrackLayer cracks_;
-  mutable std::vector<std::uint8_t> dirty_;
-  mutable std::vector<CellRect> dirty_cells_;  // per tile: the union of what was marked
+  ChangedCells changes_;
 };
 
 }  // namespace impasto::paintcore

@@ -149,6 +149,17 @@ class Painting {
   std::size_t memory_bytes() const;     // canvas, dry layers, brush and undo history
   const Canvas& canvas() const;
 
+  // What changed, for each consumer of the canvas (a view's copy on the GPU, a renderer's
+  // image): a consumer subscribes once, then takes the tiles changed since its previous take
+  // (by strokes, drying, undo, redo, edits), each with the box of its cells that changed, in
+  // ascending order. Consumers never take from one another. A new subscriber, and each
+  // subscriber when another painting is moved into this one, starts with every tile changed.
+  struct ChangeSubscriber {
+    int id = -1;
+  };
+  ChangeSubscriber subscribe_changes();
+  std::vector<DirtyTile> take_changes(ChangeSubscriber subscriber);
+
   // The native .impasto file (docs/painting-format.md). save() writes atomically.
   // The file keeps the newest undo and redo steps up to saved_history_bytes (default 64 MB,
   // oldest dropped first; 0: none), so undo goes on after reopening. A damaged history

@@ -53,7 +53,7 @@ class TileRenderer {
 
   // Brings the image up to date with `canvas`. The first call after construction, a settings
   // change or a canvas of another size renders every tile; later calls re-shade only
-  // `changed_tiles` (from Canvas::take_dirty_tiles) and the rims of their neighbours whose
+  // `changed_tiles` (from Painting::take_changes) and the rims of their neighbours whose
   // normals, occlusion or shadows read the changed heights (relief::reach). A changed tile's dry
   // stack is re-baked only when its dry layers differ from those it was baked from.
   RenderStats update(const paintcore::Canvas& canvas, std::span<const int> changed_tiles);

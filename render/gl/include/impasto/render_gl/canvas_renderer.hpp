@@ -60,7 +60,7 @@ class CanvasRenderer {
 
   // Copies every tile of the canvas to the GPU (after load, resize or new inputs).
   void upload_all(const paintcore::Canvas& canvas);
-  // Copies only these tiles (Canvas::take_dirty_tiles()).
+  // Copies only these tiles (Painting::take_changes).
   void upload_tiles(const paintcore::Canvas& canvas, std::span<const int> tile_indices);
   // Makes room on the GPU for tiles strokes will paint: half as many again as hold paint, at
   // least kRoomTiles. Growing costs a frame (tens of ms a row on llvmpipe), so a window calls

@@ -105,7 +105,7 @@ class ShadedViewCache {
 
   // The tiles changed on the GPU (after CanvasRenderer::upload_tiles with the same list).
   void invalidate_tiles(std::span<const int> tiles);
-  // Only these cells changed (Canvas::take_dirty_rects(), after uploading their tiles): a
+  // Only these cells changed (Painting::take_changes, after uploading their tiles): a
   // brush moving a few cells a frame re-shades those cells and the rim their relief reaches,
   // not whole tiles.
   void invalidate_cells(std::span<const paintcore::DirtyTile> changed);
