@@ -26,7 +26,7 @@
 #include "impasto/render/pigment_records.hpp"
 #include "impasto/render/relief_maps.hpp"
 #include "impasto/render/render_painting.hpp"
-#include "session/replay.hpp"
+#include "impasto/session/replay.hpp"
 
 namespace py = pybind11;
 namespace pc = impasto::paintcore;
@@ -311,10 +311,10 @@ PYBIND11_MODULE(impasto, m) {
   m.def(
       "replay",
       [](const std::filesystem::path& path, int threads) {
-        impasto::app::ReplayOptions options;
+        impasto::session::ReplayOptions options;
         options.threads = threads;
         py::gil_scoped_release unlocked;
-        return impasto::app::replay(impasto::input::load_strokes_any(path), options);
+        return impasto::session::replay(impasto::input::load_strokes_any(path), options);
       },
       py::arg("path"), py::arg("threads") = 0,
       "Replays a stroke file (.strokes, libmypaint .dat, BDALab .svc) as impasto replay does");

@@ -23,8 +23,8 @@
 #include <vector>
 
 #include "command.hpp"
+#include "impasto/session/replay.hpp"
 #include "impasto/util/statistics.hpp"
-#include "session/replay.hpp"
 #include "vocabulary.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).
@@ -120,7 +120,7 @@ void run(const BenchIoArgs& args) {
       spec.height_cells = args.size->height;
     }
     spec.painted_share = args.painted_percent / 100.0;
-    const auto& palette = demo_palette();
+    const auto& palette = session::demo_palette();
     spec.slots.assign(palette.begin(), palette.begin() + 4);
     painting.emplace(paintcore::synthetic_painting(spec, args.threads));
   }

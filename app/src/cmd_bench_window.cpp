@@ -32,10 +32,10 @@
 #include <vector>
 
 #include "command.hpp"
+#include "impasto/session/recovery_folder.hpp"
+#include "impasto/session/session_registry.hpp"
 #include "latency_lines.hpp"
 #include "screen_spot.hpp"
-#include "session/recovery_folder.hpp"
-#include "session/session_registry.hpp"
 #include "vocabulary.hpp"
 #include "window/light_disc_look.hpp"
 
@@ -140,7 +140,8 @@ ScreenSpot find_light_dot(const std::string& window, int window_w, int window_h,
 // recovery as it would a painter's; a measurement is nothing to recover, and the next
 // `impasto paint` would offer it.
 void forget_sessions_of(pid_t pid) {
-  for (const SessionEntry& session : unfinished_sessions(recovery_folder())) {
+  for (const session::SessionEntry& session :
+       session::unfinished_sessions(session::recovery_folder())) {
     if (session.pid == pid) discard_session(session);
   }
 }

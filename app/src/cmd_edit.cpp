@@ -10,8 +10,8 @@
 #include <optional>
 #include <string>
 
-#include "canvas_edit.hpp"
 #include "command.hpp"
+#include "impasto/session/canvas_edit.hpp"
 #include "vocabulary.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).
@@ -32,7 +32,7 @@ struct EditArgs {
 };
 
 void run(const EditArgs& args) {
-  CanvasEdit edit;
+  session::CanvasEdit edit;
   if (!args.crop.empty()) edit.crop = render::parse_cell_region(args.crop, "--crop");
   if (args.size) edit.size = std::pair{args.size->width, args.size->height};
   edit.anchor = paintcore::parse_canvas_anchor(args.anchor);
@@ -46,7 +46,7 @@ void run(const EditArgs& args) {
         "--dry FRACTION)");
   paintcore::Painting painting = paintcore::Painting::load(args.painting);
   if (!painting.load_warning().empty()) warn(painting.load_warning());
-  const CanvasEditResult result = edit_canvas(painting, edit);
+  const session::CanvasEditResult result = edit_canvas(painting, edit);
   painting.set_saved_history_bytes(static_cast<std::size_t>(args.history_mb * (1 << 20)));
   painting.save(args.save);
   std::cout << result.summary(painting) << "\n";

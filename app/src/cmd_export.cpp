@@ -6,8 +6,8 @@
 #include <memory>
 #include <string>
 
-#include "canvas_edit.hpp"
 #include "command.hpp"
+#include "impasto/session/canvas_edit.hpp"
 #include "impasto/util/text.hpp"
 #include "vocabulary.hpp"
 
@@ -17,7 +17,7 @@ namespace {
 
 struct ExportArgs {
   std::string painting;
-  ExportRequest request;
+  session::ExportRequest request;
   std::string image, height_map, normal_map, stl, ply, obj;
 };
 
@@ -71,14 +71,14 @@ const CommandRegistrar registrar("export", [](CLI::App& root) {
       ->check(finite_range(std::size_t{0}, std::size_t{1} << 31))
       ->capture_default_str();
   cmd->callback([args] {
-    ExportRequest request = args->request;
+    session::ExportRequest request = args->request;
     request.image = args->image;
     request.height_map = args->height_map;
     request.normal_map = args->normal_map;
     for (const std::string* solid : {&args->stl, &args->ply, &args->obj})
       if (!solid->empty()) request.solids.emplace_back(*solid);
     const paintcore::Painting painting = paintcore::Painting::load(args->painting, 0, false);
-    const ExportReport report = export_painting(painting, request);
+    const session::ExportReport report = export_painting(painting, request);
     for (const std::string* file : {&args->image, &args->height_map, &args->normal_map})
       if (!file->empty()) note("wrote " + *file);
     for (const auto& solid : request.solids)

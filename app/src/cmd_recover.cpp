@@ -10,10 +10,10 @@
 #include <string>
 
 #include "command.hpp"
+#include "impasto/session/rebuild.hpp"
+#include "impasto/session/recovery_folder.hpp"
+#include "impasto/session/session_registry.hpp"
 #include "progress.hpp"
-#include "session/rebuild.hpp"
-#include "session/recovery_folder.hpp"
-#include "session/session_registry.hpp"
 #include "vocabulary.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).
@@ -34,7 +34,8 @@ std::string hex64(std::uint64_t value) {
 }
 
 // The session by id; "latest" (or empty) is the newest.
-SessionEntry find_session(const std::vector<SessionEntry>& sessions, const std::string& id) {
+session::SessionEntry find_session(const std::vector<session::SessionEntry>& sessions,
+                                   const std::string& id) {
   if (sessions.empty()) throw std::runtime_error("no session to recover");
   if (id.empty() || id == "latest") return sessions.front();
   for (const auto& s : sessions) {
@@ -44,18 +45,19 @@ SessionEntry find_session(const std::vector<SessionEntry>& sessions, const std::
 }
 
 void run_recover(const RecoverArgs& args) {
-  const std::filesystem::path folder = recovery_folder();
+  const std::filesystem::path folder = session::recovery_folder();
   std::vector<std::string> problems;
-  const std::vector<SessionEntry> sessions = unfinished_sessions(folder, &problems);
+  const std::vector<session::SessionEntry> sessions =
+      session::unfinished_sessions(folder, &problems);
   for (const auto& p : problems) std::cerr << "impasto: warning: " << p << "\n";
   if (!args.discard.empty()) {
-    const SessionEntry s = find_session(sessions, args.discard);
+    const session::SessionEntry s = find_session(sessions, args.discard);
     discard_session(s);
     std::cout << "discarded " << s.id << " (its recording stays: " << s.strokes.string() << ")\n";
     return;
   }
   if (!args.apply.empty()) {
-    const SessionEntry s = find_session(sessions, args.apply);
+    const session::SessionEntry s = find_session(sessions, args.apply);
     std::filesystem::path out = args.save;
     if (out.empty()) {
       out = (s.painting ? s.painting->stem().string() : std::string("untitled")) +
@@ -64,10 +66,10 @@ void run_recover(const RecoverArgs& args) {
     if (std::filesystem::exists(out) && !args.force) {
       throw std::runtime_error(out.string() + ": exists; give another --save or --force");
     }
-    ReplayOptions options;
+    session::ReplayOptions options;
     ProgressReporter progress("rebuild", "records");
     options.progress = progress.callback();
-    RebuiltSession rebuilt = rebuild_session(input::read_stroke_file(s.strokes), options);
+    session::RebuiltSession rebuilt = rebuild_session(input::read_stroke_file(s.strokes), options);
     progress.finish();
     for (const auto& w : rebuilt.warnings) std::cerr << "impasto: warning: " << w << "\n";
     rebuilt.painting.save(out);

@@ -13,11 +13,11 @@
 #include <vector>
 
 #include "command.hpp"
+#include "impasto/session/preview.hpp"
+#include "impasto/session/rebuild.hpp"
+#include "impasto/session/replay.hpp"
 #include "progress.hpp"
 #include "replay_overrides.hpp"
-#include "session/preview.hpp"
-#include "session/rebuild.hpp"
-#include "session/replay.hpp"
 #include "vocabulary.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).
@@ -79,7 +79,7 @@ void run_replay(ReplayArgs args) {
   apply_old_spellings(args);
   // Bad outputs fail now, not after the replay.
   if (!args.out.empty()) render::image_file_type(args.out);
-  ReplayOptions options = replay_options(args.size, args.dpi, args.threads, args.params);
+  session::ReplayOptions options = replay_options(args.size, args.dpi, args.threads, args.params);
   options.auto_load = !args.no_auto_load;
   input::ImportOptions import;
   import.source_dpi = args.source_dpi;
@@ -94,7 +94,7 @@ void run_replay(ReplayArgs args) {
     return std::holds_alternative<input::OriginEvent>(e) ||
            std::holds_alternative<input::SavedEvent>(e);
   });
-  std::optional<RebuiltSession> rebuilt;
+  std::optional<session::RebuiltSession> rebuilt;
   if (marked && !options.width_cells && !options.height_cells && !options.dpi) {
     rebuilt.emplace(rebuild_session(file, options));
     for (const auto& warning : rebuilt->warnings) {
@@ -102,7 +102,7 @@ void run_replay(ReplayArgs args) {
         warn(warning);
     }
   }
-  ReplayReport report;
+  session::ReplayReport report;
   paintcore::Painting painting =
       rebuilt ? std::move(rebuilt->painting) : replay(file, options, &report);
   if (rebuilt) report = rebuilt->report;
@@ -123,7 +123,7 @@ void run_replay(ReplayArgs args) {
     say("wrote " + args.save);
   }
   if (!args.preview.empty()) {
-    render::write_png(args.preview, render_preview(painting));
+    render::write_png(args.preview, session::render_preview(painting));
     say("wrote " + args.preview + " (relief preview)");
   }
   if (!args.out.empty()) {

@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "command.hpp"
+#include "impasto/session/timelapse.hpp"
 #include "progress.hpp"
 #include "replay_overrides.hpp"
-#include "session/timelapse.hpp"
 #include "video_writer.hpp"
 #include "vocabulary.hpp"
 
@@ -39,11 +39,12 @@ struct TimelapseArgs {
 
 void run(const TimelapseArgs& args) {
   (void)video_kind(args.out);  // a bad extension fails now, not after the replay
-  const ReplayOptions replay = replay_options(args.size, args.dpi, args.threads, args.params);
+  const session::ReplayOptions replay =
+      replay_options(args.size, args.dpi, args.threads, args.params);
   const input::StrokeFile file = input::load_strokes_any(args.strokes, input::ImportOptions{});
   for (const auto& warning : file.warnings) warn(warning);
 
-  TimelapseOptions options;
+  session::TimelapseOptions options;
   options.fps = args.fps;
   options.growth_seconds = args.seconds;
   options.real_time = args.real_time;
@@ -61,7 +62,7 @@ void run(const TimelapseArgs& args) {
   const int width = args.frame_size ? args.frame_size->width : canvas.width_cells;
   const int height = args.frame_size ? args.frame_size->height : canvas.height_cells;
   VideoWriter video(args.out, width, height, args.fps);
-  const TimelapseReport report = play_timelapse(
+  const session::TimelapseReport report = play_timelapse(
       file, replay, options, [&video](const render::Image& frame) { video.add_frame(frame); });
   video.finish();
   progress.finish();

@@ -2,10 +2,10 @@
 
 namespace impasto::app {
 
-ReplayOptions replay_options(const std::optional<CanvasSize>& size,
-                             const std::optional<double>& dpi, int threads,
-                             const std::vector<std::string>& params) {
-  ReplayOptions options;
+session::ReplayOptions replay_options(const std::optional<CanvasSize>& size,
+                                      const std::optional<double>& dpi, int threads,
+                                      const std::vector<std::string>& params) {
+  session::ReplayOptions options;
   options.dpi = dpi;
   if (size) {
     options.width_cells = size->width;

@@ -6,13 +6,13 @@
 #include <string>
 #include <vector>
 
-#include "session/replay.hpp"
+#include "impasto/session/replay.hpp"
 #include "vocabulary_words.hpp"
 
 namespace impasto::app {
 
-ReplayOptions replay_options(const std::optional<CanvasSize>& size,
-                             const std::optional<double>& dpi, int threads,
-                             const std::vector<std::string>& params);
+session::ReplayOptions replay_options(const std::optional<CanvasSize>& size,
+                                      const std::optional<double>& dpi, int threads,
+                                      const std::vector<std::string>& params);
 
 }  // namespace impasto::app

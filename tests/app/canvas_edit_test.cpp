@@ -1,6 +1,6 @@
 // `impasto edit` (crop, resize) and `impasto export` (scale, height and normal maps), through
 // the registered commands as main() runs them.
-#include "canvas_edit.hpp"
+#include "impasto/session/canvas_edit.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

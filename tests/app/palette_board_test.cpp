@@ -9,8 +9,8 @@
 #include <filesystem>
 #include <string>
 
+#include "impasto/session/sim_worker.hpp"
 #include "window/palette_board.hpp"
-#include "window/sim_worker.hpp"
 #include "window_test_pigments.hpp"
 
 namespace impasto::app::window {
@@ -117,9 +117,9 @@ TEST(PaletteBoard, PickUpLoadsTheCanvasBrushThroughTheRecordedSession) {
   {
     paintcore::Painting canvas({200, 150, 100.0, 1});
     canvas.set_brush({"round", 6.0, 0.5});
-    SessionRecording recording;
+    session::SessionRecording recording;
     recording.recorder = std::make_unique<input::StrokeRecorder>(record);
-    SimWorker worker(std::move(canvas), std::move(recording));
+    session::SimWorker worker(std::move(canvas), std::move(recording));
     // What the window's "Pick up onto brush" submits.
     worker.submit(input::WipeEvent{});
     worker.submit(*load);

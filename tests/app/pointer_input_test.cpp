@@ -1,6 +1,6 @@
 // The painting window's mouse path without a window: events queued as GLFW's callbacks
 // deliver them (pointer_events), applied in order by PointerGestures, fed as pen samples
-// through PenFeed (whose sink is the simulation's queue in the window), and the latency
+// through session::PenFeed (whose sink is the simulation's queue in the window), and the latency
 // measure of the status bar.
 #include <gtest/gtest.h>
 
@@ -9,8 +9,8 @@
 #include <variant>
 #include <vector>
 
+#include "impasto/session/pen_feed.hpp"
 #include "latency_lines.hpp"
-#include "window/pen_feed.hpp"
 #include "window/pointer_events.hpp"
 #include "window/pointer_gestures.hpp"
 #include "window/pointer_latency.hpp"
@@ -25,7 +25,7 @@ constexpr double kMmPerPixel = 0.1;
 // (x, y) * kMmPerPixel. Records what the simulation would be sent.
 struct MousePath {
   std::vector<paintcore::PenSample> sent;
-  PenFeed feed{[this](input::StrokeEvent event) {
+  session::PenFeed feed{[this](input::StrokeEvent event) {
     sent.push_back(std::get<input::SampleEvent>(event).sample);
   }};
   double pan_dx = 0, pan_dy = 0;

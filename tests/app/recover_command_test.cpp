@@ -9,9 +9,9 @@
 #include <string>
 
 #include "command_line.hpp"
-#include "session/recovery_folder.hpp"
-#include "session/replay.hpp"
-#include "session/session_registry.hpp"
+#include "impasto/session/recovery_folder.hpp"
+#include "impasto/session/replay.hpp"
+#include "impasto/session/session_registry.hpp"
 
 namespace impasto::app {
 namespace {
@@ -26,7 +26,7 @@ class RecoverCommand : public ::testing::Test {
     fs::create_directories(dir_);
     if (const char* old = std::getenv("XDG_STATE_HOME")) old_state_ = old;
     ::setenv("XDG_STATE_HOME", (dir_ / "state").c_str(), 1);
-    folder_ = recovery_folder();
+    folder_ = session::recovery_folder();
   }
   void TearDown() override {
     if (old_state_.empty()) {
@@ -54,7 +54,7 @@ class RecoverCommand : public ::testing::Test {
     }
     input::StrokeRecorder recorder(strokes);
     for (const auto& e : file.events) recorder.record(e);
-    LiveSession live(folder_, id, std::nullopt, strokes);  // gone without end_cleanly()
+    session::LiveSession live(folder_, id, std::nullopt, strokes);  // gone without end_cleanly()
     return file;
   }
 
@@ -66,13 +66,13 @@ class RecoverCommand : public ::testing::Test {
 
 TEST_F(RecoverCommand, ApplyRebuildsThePaintingAndForgetsTheSession) {
   const input::StrokeFile file = crashed_session("one");
-  ASSERT_EQ(unfinished_sessions(folder_).size(), 1u);
+  ASSERT_EQ(session::unfinished_sessions(folder_).size(), 1u);
   const fs::path out = dir_ / "recovered.impasto";
   run("recover --apply latest --save " + out.string());
-  ReplayOptions options;
+  session::ReplayOptions options;
   options.threads = 1;
   EXPECT_EQ(paintcore::Painting::load(out, 1).state_hash(), replay(file, options).state_hash());
-  EXPECT_TRUE(unfinished_sessions(folder_).empty());
+  EXPECT_TRUE(session::unfinished_sessions(folder_).empty());
   EXPECT_THROW(run("recover --apply latest --save " + (dir_ / "again.impasto").string()),
                std::runtime_error);
 }
@@ -84,7 +84,7 @@ TEST_F(RecoverCommand, ApplyNeverReplacesAFileUnlessForced) {
   const auto before = fs::file_size(out);
   EXPECT_THROW(run("recover --apply two --save " + out.string()), std::runtime_error);
   EXPECT_EQ(fs::file_size(out), before);
-  EXPECT_EQ(unfinished_sessions(folder_).size(), 1u);
+  EXPECT_EQ(session::unfinished_sessions(folder_).size(), 1u);
   run("recover --apply two --force --save " + out.string());
   EXPECT_NE(fs::file_size(out), before);
 }
@@ -92,7 +92,7 @@ TEST_F(RecoverCommand, ApplyNeverReplacesAFileUnlessForced) {
 TEST_F(RecoverCommand, DiscardForgetsTheSessionButKeepsItsRecording) {
   crashed_session("three");
   run("recover --discard three");
-  EXPECT_TRUE(unfinished_sessions(folder_).empty());
+  EXPECT_TRUE(session::unfinished_sessions(folder_).empty());
   EXPECT_TRUE(fs::exists(folder_ / "three.strokes"));
   EXPECT_THROW(run("recover --discard three"), std::runtime_error);
 }

@@ -1,7 +1,7 @@
 // Tablet input as the window takes it: tablet mm mapped through the active area onto the
 // screen, the window or the canvas, the pressure curve, and a recorded HID report stream fed
-// through the same calls the window's frame loop makes (feed_tablet_samples -> PenFeed ->
-// SimWorker, which records the session).
+// through the same calls the window's frame loop makes (feed_tablet_samples -> session::PenFeed ->
+// session::SimWorker, which records the session).
 #include <gtest/gtest.h>
 
 #include <impasto/input/hid_recording.hpp>
@@ -13,9 +13,9 @@
 #include <filesystem>
 #include <string>
 
-#include "session/replay.hpp"
-#include "window/pen_feed.hpp"
-#include "window/sim_worker.hpp"
+#include "impasto/session/pen_feed.hpp"
+#include "impasto/session/replay.hpp"
+#include "impasto/session/sim_worker.hpp"
 #include "window/tablet_input.hpp"
 
 namespace impasto::app::window {
@@ -119,7 +119,7 @@ TEST(TabletMapping, ATabletWithoutAnAreaIsAClearError) {
 
 TEST(PenFeed, PassesStrokesAndTheirEndButNotHovering) {
   std::vector<input::StrokeEvent> events;
-  PenFeed feed([&](input::StrokeEvent e) { events.push_back(std::move(e)); });
+  session::PenFeed feed([&](input::StrokeEvent e) { events.push_back(std::move(e)); });
   auto hover = at(1, 1, 0.0f);
   hover.buttons = paintcore::kPenInRange;
   hover.time_s = 5.0;
@@ -159,13 +159,13 @@ TEST(TabletFeed, RecordedReportStreamPaintsAndRecordsExactlyWhatTheWindowWould) 
   std::uint64_t live_hash = 0;
   std::size_t fed = 0;
   {
-    SessionRecording recording;
+    session::SessionRecording recording;
     recording.recorder = std::make_unique<input::StrokeRecorder>(record);
-    SimWorker worker(paintcore::Painting({g.canvas_w_cells, g.canvas_h_cells, 101.6, 1}),
-                     std::move(recording));
+    session::SimWorker worker(paintcore::Painting({g.canvas_w_cells, g.canvas_h_cells, 101.6, 1}),
+                              std::move(recording));
     worker.submit(input::BrushEvent{"round", 3.0, 0.5, {}});
     worker.submit(input::LoadEvent{200.0, {{"Red", 1.0}}, {}});
-    PenFeed feed([&](input::StrokeEvent e) { worker.submit(std::move(e)); });
+    session::PenFeed feed([&](input::StrokeEvent e) { worker.submit(std::move(e)); });
     // The window polls a few samples a frame: feed them in frame-sized batches.
     for (std::size_t i = 0; i < polled.samples.size(); i += 7) {
       input::hid::TabletSamples frame{polled.tablet, {}};
@@ -209,7 +209,7 @@ TEST(TabletFeed, RecordedReportStreamPaintsAndRecordsExactlyWhatTheWindowWould) 
     ++r;
   }
   // Replaying the session's recording paints the very same painting.
-  EXPECT_EQ(replay(file, ReplayOptions{}).state_hash(), live_hash);
+  EXPECT_EQ(replay(file, session::ReplayOptions{}).state_hash(), live_hash);
   std::filesystem::remove_all(dir);
 }
 

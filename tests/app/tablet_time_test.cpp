@@ -1,12 +1,12 @@
 // Tablet samples keep their own times on the way to the simulation: each report's time
 // (stamped by its reader thread) moves onto the session clock unchanged, and two tablets'
-// samples polled in one frame are fed oldest first, so PenFeed never holds a time back.
+// samples polled in one frame are fed oldest first, so session::PenFeed never holds a time back.
 #include <gtest/gtest.h>
 
 #include <variant>
 #include <vector>
 
-#include "window/pen_feed.hpp"
+#include "impasto/session/pen_feed.hpp"
 #include "window/tablet_input.hpp"
 
 namespace impasto::app::window {
@@ -38,7 +38,7 @@ TEST(TabletTime, SamplesOfTwoTabletsAreFedOldestFirstWithTheirOwnTimes) {
   geometry.canvas_w_cells = geometry.canvas_h_cells = 1000;
   geometry.cell_mm = 0.1;  // a 100 mm canvas: tablet mm are canvas mm
   std::vector<paintcore::PenSample> fed;
-  PenFeed feed(
+  session::PenFeed feed(
       [&](input::StrokeEvent e) { fed.push_back(std::get<input::SampleEvent>(e).sample); });
   const double offset_s = 5.0;
   ASSERT_EQ(feed_tablet_samples(polled, offset_s, settings, geometry, feed), 5u);

@@ -23,8 +23,8 @@ extern "C" {
 #include "command_line.hpp"
 #include "impasto/input/stroke_import.hpp"
 #include "impasto/render/render_painting.hpp"
-#include "session/replay.hpp"
-#include "session/timelapse.hpp"
+#include "impasto/session/replay.hpp"
+#include "impasto/session/timelapse.hpp"
 
 namespace impasto::app {
 namespace {
@@ -116,7 +116,7 @@ TEST_F(Timelapse, AnMp4HasTheFramesAskedAndEndsOnTheReplayedPaintingsRender) {
   // within a level or so of the render's (BT.709 limited range) at the default quality. (Its
   // colour is stored at half the resolution, 4:2:0, as players expect: in RGB the textured,
   // saturated strokes are a few levels off on average and up to some 20 at their edges.)
-  const paintcore::Painting painting = replay(input::load_strokes_any(session_), {});
+  const paintcore::Painting painting = session::replay(input::load_strokes_any(session_), {});
   const render::Image reference = render::render_painting(painting, render::RenderSettings{});
   ASSERT_EQ(video.last_luma.size(), reference.rgb.size() / 3);
   double sum = 0.0, worst = 0.0;
@@ -159,7 +159,7 @@ TEST_F(Timelapse, WebmAndGifAtAnotherSizeAndATurningLight) {
 
 TEST_F(Timelapse, TheFramesFollowTheSessionAndTheLightTurnsEvenly) {
   const input::StrokeFile file = input::load_strokes_any(session_);
-  TimelapseOptions options;
+  session::TimelapseOptions options;
   options.fps = 4;
   options.growth_seconds = 1.5;  // 6 frames
   options.hold_seconds = 0.5;    // 2 frames
@@ -167,14 +167,14 @@ TEST_F(Timelapse, TheFramesFollowTheSessionAndTheLightTurnsEvenly) {
   options.light_azimuth_end_deg = 70;
   EXPECT_EQ(timelapse_growth_frames(file, options), 6);
   std::vector<render::Image> frames;
-  const TimelapseReport report =
+  const session::TimelapseReport report =
       play_timelapse(file, {}, options, [&](const render::Image& f) { frames.push_back(f); });
   EXPECT_EQ(report.growth_frames, 6);
   EXPECT_EQ(report.hold_frames, 2);
   EXPECT_EQ(report.replay.strokes, 3u);
   ASSERT_EQ(frames.size(), 8u);
   // The last growth frame is the finished painting under the light of that moment.
-  const paintcore::Painting painting = replay(file, {});
+  const paintcore::Painting painting = session::replay(file, {});
   render::RenderSettings at_frame_six;
   at_frame_six.light_azimuth_deg = 50;  // 0 + 70 · 5 / 7
   EXPECT_EQ(frames[5].rgb, render::render_painting(painting, at_frame_six).rgb);

@@ -13,8 +13,8 @@
 #include <string>
 #include <variant>
 
+#include "impasto/session/sim_worker.hpp"
 #include "window/canvas_menu.hpp"
-#include "window/sim_worker.hpp"
 #include "window/window_state.hpp"
 
 namespace impasto::app::window {
@@ -64,9 +64,9 @@ TEST(WindowSurfaceOps, PaintLoadedWithAMediumIsRecordedAndLaidWithIt) {
   {
     paintcore::Painting canvas({64, 48, 100.0, 1}, 1);
     canvas.set_brush({"round", 4.0, 0.5});
-    SessionRecording recording;
+    session::SessionRecording recording;
     recording.recorder = std::make_unique<input::StrokeRecorder>(record);
-    SimWorker worker(std::move(canvas), std::move(recording));
+    session::SimWorker worker(std::move(canvas), std::move(recording));
     worker.submit(load_event(s));  // what the Palette panel's Load brush submits
     for (int i = 0; i <= 20; ++i) {
       paintcore::PenSample sample;

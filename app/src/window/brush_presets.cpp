@@ -15,7 +15,7 @@
 #include <optional>
 #include <stdexcept>
 
-#include "window/recent_files.hpp"
+#include "impasto/session/recent_files.hpp"
 
 namespace impasto::app::window {
 namespace {
@@ -159,7 +159,7 @@ std::filesystem::path shipped_presets_dir() {
 }
 
 std::filesystem::path user_presets_dir() {
-  const std::filesystem::path folder = window_config_folder();
+  const std::filesystem::path folder = session::window_config_folder();
   return folder.empty() ? folder : folder / "presets";
 }
 

@@ -188,7 +188,7 @@ CanvasMenuRequest CanvasMenu::draw_export() {
     return any && !stem.empty();
   });
   if (export_now) {
-    ExportRequest e;
+    session::ExportRequest e;
     e.scale = scale;
     if (image_) e.image = stem + suffix + ".png";
     if (height_format_ != 0)

@@ -9,11 +9,11 @@
 #include <optional>
 #include <string>
 
-#include "canvas_edit.hpp"
 #include "impasto/input/stroke_events.hpp"
 #include "impasto/paintcore/canvas.hpp"
 #include "impasto/paintcore/canvas_reframe.hpp"
 #include "impasto/paintcore/paint_surface.hpp"
+#include "impasto/session/canvas_edit.hpp"
 
 namespace impasto::app::window {
 
@@ -27,9 +27,9 @@ VarnishRequest varnish_request(paintcore::Finish finish, float thickness_mm, boo
                                const std::array<int, 4>& region);
 
 struct CanvasMenuRequest {
-  std::optional<paintcore::CanvasFrame> frame;  // resize or crop: apply this frame
-  std::optional<VarnishRequest> varnish;        // coat the painting
-  std::optional<ExportRequest> exports;         // write these files
+  std::optional<paintcore::CanvasFrame> frame;    // resize or crop: apply this frame
+  std::optional<VarnishRequest> varnish;          // coat the painting
+  std::optional<session::ExportRequest> exports;  // write these files
 };
 
 class CanvasMenu {

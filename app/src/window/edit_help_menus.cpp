@@ -28,7 +28,8 @@ ImU32 to_u32(const std::array<float, 3>& rgb) {
 
 }  // namespace
 
-void edit_menu(WindowState& s, SimWorker& worker, std::size_t undo_depth, std::size_t redo_depth) {
+void edit_menu(WindowState& s, session::SimWorker& worker, std::size_t undo_depth,
+               std::size_t redo_depth) {
   if (!ImGui::BeginMenu("Edit")) return;
   command_item(s, Command::kUndo, false, undo_depth > 0);
   command_item(s, Command::kRedo, false, redo_depth > 0);
@@ -134,7 +135,7 @@ void draw_help_windows(WindowState& s) {
   }
 }
 
-void eyedropper_panel(WindowState& s, SimWorker& worker) {
+void eyedropper_panel(WindowState& s, session::SimWorker& worker) {
   EyedropperState& e = s.eyedropper;
   if (e.reveal) ImGui::SetNextItemOpen(true);  // a pick opens the panel that shows it
   e.reveal = false;

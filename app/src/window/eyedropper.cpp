@@ -7,12 +7,12 @@
 #include <cmath>
 #include <cstdio>
 
-#include "session/swatch.hpp"
+#include "impasto/session/swatch.hpp"
 
 namespace impasto::app::window {
 namespace {
 
-std::array<float, 3> clamped_rgb(const DisplayRgb& rgb) {
+std::array<float, 3> clamped_rgb(const session::DisplayRgb& rgb) {
   return {std::clamp(rgb[0], 0.0f, 1.0f), std::clamp(rgb[1], 0.0f, 1.0f),
           std::clamp(rgb[2], 0.0f, 1.0f)};
 }
@@ -49,10 +49,12 @@ void render_picked_colours(PickedPaint& picked, const render::RenderSettings& se
   const std::vector<input::PigmentPart>& mix = picked.mix;
   // The layer: the visible paint's thickness, wet where it is wet, else the dry paint's.
   const double layer_mm = std::max(picked.dry ? picked.dry_mm : picked.wet_mm, 1e-3);
-  picked.masstone_rgb = clamped_rgb(
-      render_flat_layers(settings, std::span(&mix, 1), masstone_thickness_mm(settings)).front());
+  picked.masstone_rgb =
+      clamped_rgb(session::render_flat_layers(settings, std::span(&mix, 1),
+                                              session::masstone_thickness_mm(settings))
+                      .front());
   picked.layer_rgb =
-      clamped_rgb(render_flat_layers(settings, std::span(&mix, 1), layer_mm).front());
+      clamped_rgb(session::render_flat_layers(settings, std::span(&mix, 1), layer_mm).front());
   picked.rendered = true;
 }
 
@@ -81,7 +83,7 @@ std::string picked_medium_text(const PickedPaint& picked) {
   return std::string(paintcore::finish_name(picked.medium->finish)) + amount;
 }
 
-void load_onto_brush(SimWorker& worker, input::LoadEvent load) {
+void load_onto_brush(session::SimWorker& worker, input::LoadEvent load) {
   worker.submit(input::WipeEvent{});
   worker.submit(std::move(load));
 }

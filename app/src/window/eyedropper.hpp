@@ -16,8 +16,8 @@
 #include <string>
 #include <vector>
 
+#include "impasto/session/sim_worker.hpp"
 #include "window/pointer_events.hpp"
-#include "window/sim_worker.hpp"
 
 namespace impasto::app::window {
 
@@ -53,7 +53,7 @@ void set_palette_medium(const PickedPaint& picked, std::optional<paintcore::Fini
 std::string picked_medium_text(const PickedPaint& picked);
 // The canvas brush takes exactly `load`: wiped first, then loaded, both through the session
 // (so a replay does the same). The palette board's pick-up and the eyedropper both use it.
-void load_onto_brush(SimWorker& worker, input::LoadEvent load);
+void load_onto_brush(session::SimWorker& worker, input::LoadEvent load);
 // The Palette panel's parts for `mix` (by the database's pigments, the largest 10); names the
 // database lacks are returned.
 std::vector<std::string> set_palette_mix(std::span<const input::PigmentPart> mix,

@@ -37,7 +37,7 @@ void remember_mix(std::vector<RecentMix>& recent, const RecentMix& mix) {
   if (recent.size() > kRecentMixes) recent.resize(kRecentMixes);
 }
 
-void load_palette_mix(WindowState& s, SimWorker& worker, double brush_volume_mm3) {
+void load_palette_mix(WindowState& s, session::SimWorker& worker, double brush_volume_mm3) {
   const input::LoadEvent load = load_event(s);
   if (load.mix.empty()) return;
   // Both go to the session, so a replay loads the same way.
@@ -47,7 +47,8 @@ void load_palette_mix(WindowState& s, SimWorker& worker, double brush_volume_mm3
   remember_mix(s.recent_mixes, {s.mix_parts, mix_rgb(s)});
 }
 
-void draw_paint_strip(WindowState& s, SimWorker& worker, double brush_volume_mm3, float bar_right) {
+void draw_paint_strip(WindowState& s, session::SimWorker& worker, double brush_volume_mm3,
+                      float bar_right) {
   const auto& pigments = data::PigmentDatabase::defaults().all();
   if (s.pigment_masstone_rgb.size() != pigments.size()) return;  // the chips are not made yet
   if (s.mix_parts.size() != pigments.size()) s.mix_parts.assign(pigments.size(), 0.0f);

@@ -6,7 +6,7 @@
 // load_palette_mix, so every load joins the recent mixes.
 #include <vector>
 
-#include "window/sim_worker.hpp"
+#include "impasto/session/sim_worker.hpp"
 #include "window/window_state.hpp"
 
 namespace impasto::app::window {
@@ -17,12 +17,13 @@ inline constexpr std::size_t kRecentMixes = 8;
 // Loads the brush with the Palette's mix (wiping first when asked and there is paint on the
 // brush or queued) and remembers the mix among the recent ones. `brush_volume_mm3`: the paint
 // on the brush now.
-void load_palette_mix(WindowState& s, SimWorker& worker, double brush_volume_mm3);
+void load_palette_mix(WindowState& s, session::SimWorker& worker, double brush_volume_mm3);
 
 // The mix remembered: moved to the front of `recent` (kept to kRecentMixes).
 void remember_mix(std::vector<RecentMix>& recent, const RecentMix& mix);
 
 // The strip, drawn in the current ImGui window, flowing within `bar_right`.
-void draw_paint_strip(WindowState& s, SimWorker& worker, double brush_volume_mm3, float bar_right);
+void draw_paint_strip(WindowState& s, session::SimWorker& worker, double brush_volume_mm3,
+                      float bar_right);
 
 }  // namespace impasto::app::window

@@ -1,6 +1,6 @@
 // The painting window: GLFW + OpenGL 3.3 core (glad) + Dear ImGui. The canvas is shaded on
 // the GPU by render_gl::CanvasRenderer, fed with the tiles the simulation dirtied; the
-// simulation runs on SimWorker's thread.
+// simulation runs on session::SimWorker's thread.
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
@@ -34,13 +34,16 @@
 #include <utility>
 
 #include "impasto/files/message_text.hpp"
+#include "impasto/session/disk_stamp.hpp"
+#include "impasto/session/pen_feed.hpp"
+#include "impasto/session/preview.hpp"
+#include "impasto/session/rebuild.hpp"
+#include "impasto/session/recent_files.hpp"
+#include "impasto/session/recovery_folder.hpp"
+#include "impasto/session/session_registry.hpp"
+#include "impasto/session/session_start.hpp"
+#include "impasto/session/sim_worker.hpp"
 #include "latency_lines.hpp"
-#include "session/disk_stamp.hpp"
-#include "session/preview.hpp"
-#include "session/rebuild.hpp"
-#include "session/recovery_folder.hpp"
-#include "session/session_registry.hpp"
-#include "session/session_start.hpp"
 #include "window/brush_outline.hpp"
 #include "window/brush_outline_overlay.hpp"
 #include "window/canvas_menu.hpp"
@@ -50,18 +53,15 @@
 #include "window/paint_options.hpp"
 #include "window/palette_board_panel.hpp"
 #include "window/panels.hpp"
-#include "window/pen_feed.hpp"
 #include "window/pigment_drift_note.hpp"
 #include "window/pigment_editor.hpp"
 #include "window/pointer_events.hpp"
 #include "window/pointer_gestures.hpp"
 #include "window/pointer_latency.hpp"
 #include "window/pointer_server_times.hpp"
-#include "window/recent_files.hpp"
 #include "window/screenshot.hpp"
 #include "window/session_banner.hpp"
 #include "window/shortcuts.hpp"
-#include "window/sim_worker.hpp"
 #include "window/swatch_chips.hpp"
 #include "window/tablet_input.hpp"
 #include "window/tool_bar.hpp"
@@ -112,8 +112,8 @@ std::string failure_text(const std::string& failed, const std::filesystem::path&
 }
 
 // The painting a recovered session ends with, from its recording (rebuild.hpp).
-RebuiltSession rebuild_entry(const SessionEntry& entry) {
-  return rebuild_session(input::read_stroke_file(entry.strokes), ReplayOptions{});
+session::RebuiltSession rebuild_entry(const session::SessionEntry& entry) {
+  return rebuild_session(input::read_stroke_file(entry.strokes), session::ReplayOptions{});
 }
 
 std::vector<std::string> brush_heads() {
@@ -202,8 +202,8 @@ class PaintWindow {
   // Starts a session's recording and its recovery entry: beside `painting` when its folder
   // can be written, else in the recovery folder (and says so). `origin` is the file the
   // painting starts as (none: a new canvas).
-  SessionRecording begin_session(const std::optional<std::filesystem::path>& painting,
-                                 const std::optional<std::filesystem::path>& origin);
+  session::SessionRecording begin_session(const std::optional<std::filesystem::path>& painting,
+                                          const std::optional<std::filesystem::path>& origin);
   void end_session();  // the user closed the painting on purpose: nothing to recover
   void maybe_autosave();
   void handle_recovery(const RecoveryChoice& choice);
@@ -215,7 +215,7 @@ class PaintWindow {
   GlfwLibrary glfw_;
   GLFWwindow* window_ = nullptr;
   WindowState state_;
-  std::unique_ptr<SimWorker> worker_;
+  std::unique_ptr<session::SimWorker> worker_;
   paintcore::Painting::ChangeSubscriber view_changes_;  // what the GPU copy has not taken
   std::unique_ptr<render_gl::CanvasRenderer> renderer_;
   render_gl::ShadedViewCache view_cache_;       // frames re-shade only what changed in view
@@ -244,7 +244,8 @@ class PaintWindow {
   bool opening_ = true;
 
   // Every pen sample, mouse or tablet, goes to the simulation through this feed.
-  PenFeed canvas_feed_{[this](input::StrokeEvent event) { submit_pen_event(std::move(event)); }};
+  session::PenFeed canvas_feed_{
+      [this](input::StrokeEvent event) { submit_pen_event(std::move(event)); }};
   InputLatency latency_;      // pen sample's own time -> the swap that shows it
   ViewLatency view_latency_;  // a zoom step's, rotation's, pan's or light's event -> the swap
   std::vector<double> frame_pointer_times_;  // this frame's presses and moves (a light drag's)
@@ -289,11 +290,11 @@ class PaintWindow {
 
   // Crash recovery: this session's entry, what the window has to say about it, the sessions
   // that did not end cleanly (offered at start), and the preview of one of them.
-  std::unique_ptr<LiveSession> live_session_;
+  std::unique_ptr<session::LiveSession> live_session_;
   std::string notice_;
-  std::vector<SessionEntry> recoverable_;
+  std::vector<session::SessionEntry> recoverable_;
   std::optional<std::size_t> previewing_;
-  std::unique_ptr<RebuiltSession> preview_;
+  std::unique_ptr<session::RebuiltSession> preview_;
   unsigned preview_texture_ = 0;
   int preview_w_ = 0, preview_h_ = 0;
   double last_input_s_ = 0.0, last_autosave_s_ = 0.0;
@@ -309,7 +310,7 @@ PaintWindow::PaintWindow(const PaintOptions& options) : options_(options) {
       d65 == state_.illuminants.end() ? 0 : static_cast<int>(d65 - state_.illuminants.begin());
   state_.brush_heads = brush_heads();
   reload_presets(state_);
-  state_.recent = load_recent_files();
+  state_.recent = session::load_recent_files();
   create_window();
   start_session();
   start_tablets();
@@ -381,14 +382,15 @@ void PaintWindow::create_window() {
   session_start_s_ = glfwGetTime();
 }
 
-SessionRecording PaintWindow::begin_session(const std::optional<std::filesystem::path>& painting,
-                                            const std::optional<std::filesystem::path>& origin) {
-  SessionRecording recording;
+session::SessionRecording PaintWindow::begin_session(
+    const std::optional<std::filesystem::path>& painting,
+    const std::optional<std::filesystem::path>& origin) {
+  session::SessionRecording recording;
   recording.opened_from = origin;
   live_session_.reset();
   notice_.clear();
   if (options_.no_record) return recording;
-  SessionStart start = start_session_recording(painting, options_.record);
+  session::SessionStart start = session::start_session_recording(painting, options_.record);
   recording.recorder = std::move(start.recorder);
   recording.not_recording = start.not_recording;
   live_session_ = std::move(start.live);
@@ -417,7 +419,7 @@ void PaintWindow::maybe_autosave() {
 
 // The recovered painting's false-colour view, at most 480 px across, as a texture.
 void PaintWindow::show_preview(const paintcore::Painting& painting) {
-  const render::Image full = render_preview(painting);
+  const render::Image full = session::render_preview(painting);
   const int step = std::max(1, (std::max(full.width, full.height) + 479) / 480);
   preview_w_ = std::max(1, full.width / step);
   preview_h_ = std::max(1, full.height / step);
@@ -447,11 +449,11 @@ void PaintWindow::handle_recovery(const RecoveryChoice& choice) {
     preview_.reset();
     return;
   }
-  const SessionEntry entry = recoverable_.at(choice.index);
+  const session::SessionEntry entry = recoverable_.at(choice.index);
   try {
     switch (choice.kind) {
       case RecoveryChoice::kPreview:
-        preview_ = std::make_unique<RebuiltSession>(rebuild_entry(entry));
+        preview_ = std::make_unique<session::RebuiltSession>(rebuild_entry(entry));
         show_preview(preview_->painting);
         previewing_ = choice.index;
         return;
@@ -462,10 +464,10 @@ void PaintWindow::handle_recovery(const RecoveryChoice& choice) {
           return;
         }
         if (previewing_ != choice.index || !preview_) {
-          preview_ = std::make_unique<RebuiltSession>(rebuild_entry(entry));
+          preview_ = std::make_unique<session::RebuiltSession>(rebuild_entry(entry));
         }
         end_session();
-        SessionRecording recording = begin_session(entry.painting, std::nullopt);
+        session::SessionRecording recording = begin_session(entry.painting, std::nullopt);
         // The new session starts from the recovered painting, kept as its first autosave and
         // read back from it, so that its `from` record names exactly what the file holds.
         paintcore::Painting recovered = std::move(preview_->painting);
@@ -479,7 +481,7 @@ void PaintWindow::handle_recovery(const RecoveryChoice& choice) {
         if (entry.painting) {
           // Save goes back to the file, as it stands now (the session's last save).
           state_.file = entry.painting;
-          state_.file_stamp = stamp_of(*entry.painting);
+          state_.file_stamp = session::stamp_of(*entry.painting);
         }
         notice_ = "Recovered " +
                   (entry.painting ? entry.painting->filename().string()
@@ -510,23 +512,23 @@ void PaintWindow::start_session() {
   if (options_.replay) strokes = input::load_strokes_any(*options_.replay);
   paintcore::Painting painting = [&] {
     if (options_.painting) return paintcore::Painting::load(*options_.painting);
-    if (strokes) return paintcore::Painting(replay_canvas(*strokes, ReplayOptions{}));
+    if (strokes) return paintcore::Painting(replay_canvas(*strokes, session::ReplayOptions{}));
     return paintcore::Painting(options_.new_canvas);
   }();
   open_board_for(options_.painting);
-  worker_ = std::make_unique<SimWorker>(std::move(painting),
-                                        begin_session(options_.painting, options_.painting));
+  worker_ = std::make_unique<session::SimWorker>(
+      std::move(painting), begin_session(options_.painting, options_.painting));
   view_changes_ = worker_->subscribe_changes();
   if (options_.painting) opened_file(*options_.painting);
   // Sessions that did not end cleanly are offered for recovery (not in scripted replays).
   if (!options_.replay) {
     try {
-      for (auto& entry : unfinished_sessions(recovery_folder())) {
+      for (auto& entry : session::unfinished_sessions(session::recovery_folder())) {
         // A session killed before anything was painted has nothing to offer.
-        if (has_work_to_recover(entry)) {
+        if (session::has_work_to_recover(entry)) {
           recoverable_.push_back(std::move(entry));
         } else {
-          discard_session(entry);
+          session::discard_session(entry);
         }
       }
     } catch (const std::exception&) {
@@ -561,11 +563,12 @@ void PaintWindow::start_session() {
 // another window has it open too.
 void PaintWindow::opened_file(const std::filesystem::path& file) {
   state_.file = file;
-  state_.file_stamp = stamp_of(file);
-  remember_recent_file(file);
-  state_.recent = load_recent_files();
+  state_.file_stamp = session::stamp_of(file);
+  session::remember_recent_file(file);
+  state_.recent = session::load_recent_files();
   try {
-    for (const SessionEntry& other : other_sessions_with(recovery_folder(), file)) {
+    for (const session::SessionEntry& other :
+         session::other_sessions_with(session::recovery_folder(), file)) {
       state_.notifications.warning(files::terminal_text(file.filename().string()) +
                                    " is open in another Impasto window too (process " +
                                    std::to_string(other.pid) +
@@ -983,11 +986,11 @@ FileActions PaintWindow::file_actions() {
     try {
       worker_->save(file);
       state_.file = file;
-      state_.file_stamp = stamp_of(file);
+      state_.file_stamp = session::stamp_of(file);
       notice_.clear();  // what the session's start or a recovery said is done with
       if (live_session_) live_session_->painting_saved_as(file);  // a recovery reopens it
-      remember_recent_file(file);
-      state_.recent = load_recent_files();
+      session::remember_recent_file(file);
+      state_.recent = session::load_recent_files();
     } catch (const std::exception& e) {
       state_.notifications.error(failure_text("Could not save", file, e.what()));
       return false;
@@ -1240,7 +1243,7 @@ void PaintWindow::apply_canvas_request(const CanvasMenuRequest& request) {
   try {
     if (request.exports) {
       worker_->wait_idle();
-      ExportRequest exports = *request.exports;
+      session::ExportRequest exports = *request.exports;
       exports.settings = state_.settings;  // the window's light and look
       worker_->with_painting([&](const paintcore::Painting& p) { export_painting(p, exports); });
       state_.notifications.info("Exported at " + std::to_string(request.exports->scale) + "x");
@@ -1263,7 +1266,7 @@ void PaintWindow::apply_canvas_request(const CanvasMenuRequest& request) {
       p.set_saved_history_bytes(std::numeric_limits<std::size_t>::max());
     });
     end_session();
-    SessionRecording recording = begin_session(state_.file, std::nullopt);
+    session::SessionRecording recording = begin_session(state_.file, std::nullopt);
     const std::filesystem::path through =
         live_session_ ? live_session_->entry().autosave
                       : std::filesystem::temp_directory_path() /

@@ -24,8 +24,8 @@ PaletteBoard::PaletteBoard(double width_mm, double height_mm, double dpi)
 PaletteBoard::PaletteBoard(paintcore::Painting painting)
     : painting_(std::make_unique<paintcore::Painting>(std::move(painting))),
       changes_(painting_->subscribe_changes()),
-      options_(std::make_unique<ReplayOptions>()) {
-  player_ = std::make_unique<SessionPlayer>(*painting_, *options_, false);
+      options_(std::make_unique<session::ReplayOptions>()) {
+  player_ = std::make_unique<session::SessionPlayer>(*painting_, *options_, false);
 }
 
 PaletteBoard PaletteBoard::load(const std::filesystem::path& file) {

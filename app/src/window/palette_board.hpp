@@ -1,7 +1,7 @@
 #pragma once
 // The palette board: a small second painting beside the canvas where the artist lays out
 // pigments and mixes them with the brush, as on a real palette. It runs the same simulation
-// as the canvas (through SessionPlayer, the replay path), so the paint the brush holds
+// as the canvas (through session::SessionPlayer, the replay path), so the paint the brush holds
 // after mixing is what the brush really picked up; `pick_up` turns that into the load
 // that goes onto the canvas brush. The board is saved beside the painting.
 #include <impasto/input/stroke_events.hpp>
@@ -11,7 +11,7 @@
 #include <memory>
 #include <vector>
 
-#include "session/replay.hpp"
+#include "impasto/session/replay.hpp"
 
 namespace impasto::app::window {
 
@@ -56,8 +56,8 @@ class PaletteBoard {
   // On the heap so the player's reference survives a move of the board.
   std::unique_ptr<paintcore::Painting> painting_;
   paintcore::Painting::ChangeSubscriber changes_;
-  std::unique_ptr<ReplayOptions> options_;
-  std::unique_ptr<SessionPlayer> player_;
+  std::unique_ptr<session::ReplayOptions> options_;
+  std::unique_ptr<session::SessionPlayer> player_;
 };
 
 }  // namespace impasto::app::window

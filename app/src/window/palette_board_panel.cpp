@@ -66,7 +66,7 @@ bool PaletteBoardPanel::refresh_image(const render::RenderSettings& settings) {
   return true;
 }
 
-void PaletteBoardPanel::draw(WindowState& s, SimWorker& worker) {
+void PaletteBoardPanel::draw(WindowState& s, session::SimWorker& worker) {
   if (!ImGui::CollapsingHeader("Palette board", ImGuiTreeNodeFlags_DefaultOpen)) return;
   board_.set_brush(s.brush);
   // (ImGui draws the board the same whatever its texels: the window is told they changed.)

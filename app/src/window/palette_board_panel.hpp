@@ -1,7 +1,7 @@
 #pragma once
 // The palette board in the window: its panel (the board drawn from the CPU renderer, tools
 // to lay out paint and to mix, and the pick-up onto the canvas brush), fed by the mouse
-// through a PenFeed as the canvas is.
+// through a session::PenFeed as the canvas is.
 #include <impasto/render/render_settings.hpp>
 #include <impasto/render/tile_renderer.hpp>
 #include <impasto/render_gl/texture.hpp>
@@ -10,9 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "impasto/session/pen_feed.hpp"
+#include "impasto/session/sim_worker.hpp"
 #include "window/palette_board.hpp"
-#include "window/pen_feed.hpp"
-#include "window/sim_worker.hpp"
 #include "window/window_state.hpp"
 
 namespace impasto::app::window {
@@ -26,14 +26,14 @@ class PaletteBoardPanel {
   void replace(PaletteBoard board);
   // Draws the panel inside the current ImGui window; a pick-up goes to `worker` as a wipe and
   // a load of the canvas brush (so the session records it).
-  void draw(WindowState& state, SimWorker& worker);
+  void draw(WindowState& state, session::SimWorker& worker);
 
  private:
   bool refresh_image(const render::RenderSettings& settings);
 
   enum class Tool { kLayOut, kMix };
   PaletteBoard board_;
-  PenFeed feed_;
+  session::PenFeed feed_;
   Tool tool_ = Tool::kMix;
   std::unique_ptr<render::TileRenderer> renderer_;
   std::vector<std::string> rendered_slots_;

@@ -740,7 +740,7 @@ void status_bar(PanelContext& c) {
   ImGui::Begin("##status", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus);
-  const SimStats sim = c.worker.stats();
+  const session::SimStats sim = c.worker.stats();
   char latency[48] = "pen to screen: paint to measure";
   if (s.input_latency_ms >= 0.0) {
     std::snprintf(latency, sizeof latency, "pen to screen %.0f ms", s.input_latency_ms);

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "impasto/session/sim_worker.hpp"
 #include "window/palette_board_panel.hpp"
-#include "window/sim_worker.hpp"
 #include "window/window_state.hpp"
 
 namespace impasto::app::window {
@@ -41,7 +41,7 @@ struct FileActions {
 
 struct PanelContext {
   WindowState& state;
-  SimWorker& worker;
+  session::SimWorker& worker;
   const PaintingSnapshot& painting;
   const render::SpectralPalette& palette;  // for the light's nodes
   const FileActions& files;

@@ -8,7 +8,7 @@
 
 namespace impasto::app::window {
 
-void PigmentDriftNote::draw(WindowState& state, SimWorker& worker) {
+void PigmentDriftNote::draw(WindowState& state, session::SimWorker& worker) {
   const data::PigmentLibrary& library = data::active_pigment_library();
   worker.with_painting([&](const paintcore::Painting& painting) {
     const Checked now{&painting.pigment_records(), painting.pigment_records().size(), &library};

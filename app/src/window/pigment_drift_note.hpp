@@ -8,14 +8,14 @@
 #include <string>
 #include <vector>
 
-#include "window/sim_worker.hpp"
+#include "impasto/session/sim_worker.hpp"
 #include "window/window_state.hpp"
 
 namespace impasto::app::window {
 
 class PigmentDriftNote {
  public:
-  void draw(WindowState& state, SimWorker& worker);
+  void draw(WindowState& state, session::SimWorker& worker);
   const std::vector<render::PigmentDrift>& drift() const { return drift_; }
 
  private:

@@ -1,7 +1,7 @@
 #pragma once
 // Input latency as the user sees it: from a pen sample's own time (its event's, from the
 // window system) to the buffer swap of the first frame drawn after the simulation applied it.
-// Samples are known by their job number in the simulation's queue (SimStats::submitted
+// Samples are known by their job number in the simulation's queue (session::SimStats::submitted
 // right after submitting); a frame knows how many jobs were applied before it uploaded.
 // ViewLatency times the view's motions the same way.
 #include <array>

@@ -26,7 +26,7 @@ void banner(const char* id, float y, const ImVec4& colour, const std::string& te
 
 }  // namespace
 
-void draw_session_banners(const SimStats& stats, const std::string& notice) {
+void draw_session_banners(const session::SimStats& stats, const std::string& notice) {
   float y = ImGui::GetFrameHeight() + 4.0f;  // below the menu bar
   const ImVec4 red(0.6f, 0.05f, 0.05f, 0.95f);
   if (!stats.recording_error.empty()) {
@@ -40,7 +40,7 @@ void draw_session_banners(const SimStats& stats, const std::string& notice) {
   if (!notice.empty()) banner("##notice", y, ImVec4(0.45f, 0.35f, 0.05f, 0.95f), notice);
 }
 
-RecoveryChoice draw_recovery_offer(const std::vector<SessionEntry>& sessions,
+RecoveryChoice draw_recovery_offer(const std::vector<session::SessionEntry>& sessions,
                                    const std::optional<RecoveryPreview>& preview) {
   RecoveryChoice choice;
   constexpr const char* kTitle = "Recover unsaved work";
@@ -53,7 +53,7 @@ RecoveryChoice draw_recovery_offer(const std::vector<SessionEntry>& sessions,
   ImGui::TextUnformatted("Impasto did not end cleanly last time. These sessions can be rebuilt");
   ImGui::TextUnformatted("from their autosave and recording:");
   for (std::size_t i = 0; i < sessions.size(); ++i) {
-    const SessionEntry& s = sessions[i];
+    const session::SessionEntry& s = sessions[i];
     ImGui::PushID(static_cast<int>(i));
     ImGui::Separator();
     ImGui::TextUnformatted(s.painting ? s.painting->string().c_str() : "an untitled painting");

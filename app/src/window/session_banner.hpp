@@ -8,12 +8,12 @@
 #include <string>
 #include <vector>
 
-#include "session/session_registry.hpp"
-#include "window/sim_worker.hpp"
+#include "impasto/session/session_registry.hpp"
+#include "impasto/session/sim_worker.hpp"
 
 namespace impasto::app::window {
 
-void draw_session_banners(const SimStats& stats, const std::string& notice);
+void draw_session_banners(const session::SimStats& stats, const std::string& notice);
 
 struct RecoveryChoice {
   enum Kind { kNone, kPreview, kRecover, kDiscard, kLater } kind = kNone;
@@ -29,7 +29,7 @@ struct RecoveryPreview {
 };
 
 // The offer to recover `sessions`, modal (the canvas takes no input while it is open).
-RecoveryChoice draw_recovery_offer(const std::vector<SessionEntry>& sessions,
+RecoveryChoice draw_recovery_offer(const std::vector<session::SessionEntry>& sessions,
                                    const std::optional<RecoveryPreview>& preview);
 
 }  // namespace impasto::app::window

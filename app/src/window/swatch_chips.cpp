@@ -9,7 +9,7 @@
 namespace impasto::app::window {
 namespace {
 
-std::array<float, 3> clamped(const DisplayRgb& rgb) {
+std::array<float, 3> clamped(const session::DisplayRgb& rgb) {
   return {std::clamp(rgb[0], 0.0f, 1.0f), std::clamp(rgb[1], 0.0f, 1.0f),
           std::clamp(rgb[2], 0.0f, 1.0f)};
 }
@@ -24,7 +24,7 @@ SwatchChips::~SwatchChips() {
   if (job_.valid()) job_.wait();
 }
 
-SwatchChips::Result SwatchChips::compute(const SwatchStroke& stroke,
+SwatchChips::Result SwatchChips::compute(const session::SwatchStroke& stroke,
                                          const render::RenderSettings& settings, double layer_mm) {
   Result result;
   if (!stroke.load.mix.empty()) {
@@ -34,9 +34,10 @@ SwatchChips::Result SwatchChips::compute(const SwatchStroke& stroke,
   std::vector<std::vector<input::PigmentPart>> singles;
   for (const auto& pigment : data::PigmentDatabase::defaults().all())
     singles.push_back({{pigment.name, 1.0}});
-  result.pigment_masstones = render_flat_layers(settings, singles, masstone_thickness_mm(settings));
-  result.pigment_layers = render_flat_layers(settings, singles, layer_mm);
-  result.pigment_glazes = render_flat_layers(settings, singles, kGlazeChipMm);
+  result.pigment_masstones =
+      session::render_flat_layers(settings, singles, session::masstone_thickness_mm(settings));
+  result.pigment_layers = session::render_flat_layers(settings, singles, layer_mm);
+  result.pigment_glazes = session::render_flat_layers(settings, singles, kGlazeChipMm);
   return result;
 }
 
@@ -52,12 +53,12 @@ void SwatchChips::update(WindowState& s, const paintcore::CanvasSpec& canvas) {
       }
       s.pigment_masstone_rgb.clear();
       s.pigment_layer_rgb.clear();
-      for (const DisplayRgb& rgb : result.pigment_masstones)
+      for (const session::DisplayRgb& rgb : result.pigment_masstones)
         s.pigment_masstone_rgb.push_back(clamped(rgb));
-      for (const DisplayRgb& rgb : result.pigment_layers)
+      for (const session::DisplayRgb& rgb : result.pigment_layers)
         s.pigment_layer_rgb.push_back(clamped(rgb));
       s.pigment_glaze_rgb.clear();
-      for (const DisplayRgb& rgb : result.pigment_glazes)
+      for (const session::DisplayRgb& rgb : result.pigment_glazes)
         s.pigment_glaze_rgb.push_back(clamped(rgb));
       s.swatch_error.clear();
     } catch (const std::exception& e) {
@@ -65,7 +66,7 @@ void SwatchChips::update(WindowState& s, const paintcore::CanvasSpec& canvas) {
     }
   }
   if (job_.valid()) return;  // one at a time; the latest settings go next
-  SwatchStroke stroke;
+  session::SwatchStroke stroke;
   stroke.brush = brush_event(s);
   stroke.load = load_event(s);
   stroke.pressure = s.mouse_pressure;

@@ -7,7 +7,7 @@
 #include <future>
 #include <optional>
 
-#include "session/swatch.hpp"
+#include "impasto/session/swatch.hpp"
 #include "window/window_state.hpp"
 
 namespace impasto::app::window {
@@ -26,14 +26,14 @@ class SwatchChips {
 
  private:
   struct Result {
-    std::optional<Swatch> swatch;  // none for an empty mix
-    std::vector<DisplayRgb> pigment_masstones, pigment_layers, pigment_glazes;
+    std::optional<session::Swatch> swatch;  // none for an empty mix
+    std::vector<session::DisplayRgb> pigment_masstones, pigment_layers, pigment_glazes;
   };
-  static Result compute(const SwatchStroke& stroke, const render::RenderSettings& settings,
+  static Result compute(const session::SwatchStroke& stroke, const render::RenderSettings& settings,
                         double layer_mm);
 
   std::future<Result> job_;
-  std::optional<SwatchStroke> started_;  // the stroke of the job in flight or last done
+  std::optional<session::SwatchStroke> started_;  // the stroke of the job in flight or last done
 };
 
 }  // namespace impasto::app::window

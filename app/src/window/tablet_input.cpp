@@ -49,7 +49,7 @@ paintcore::PenSample map_tablet_sample(const paintcore::PenSample& tablet_sample
 
 std::size_t feed_tablet_samples(std::span<const input::hid::TabletSamples> polled,
                                 double time_offset_s, const TabletSettings& settings,
-                                const TabletTargetGeometry& geometry, PenFeed& feed,
+                                const TabletTargetGeometry& geometry, session::PenFeed& feed,
                                 std::string* error) {
   // Several tablets' samples interleaved by their own times (each tablet's order kept), so
   // the feed never has to hold a time back.

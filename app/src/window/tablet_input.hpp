@@ -14,7 +14,7 @@
 #include <span>
 #include <string>
 
-#include "window/pen_feed.hpp"
+#include "impasto/session/pen_feed.hpp"
 
 namespace impasto::app::window {
 
@@ -59,7 +59,7 @@ paintcore::PenSample map_tablet_sample(const paintcore::PenSample& tablet_sample
 // skipped and its reason left in *error. Returns the samples fed.
 std::size_t feed_tablet_samples(std::span<const input::hid::TabletSamples> polled,
                                 double time_offset_s, const TabletSettings& settings,
-                                const TabletTargetGeometry& geometry, PenFeed& feed,
+                                const TabletTargetGeometry& geometry, session::PenFeed& feed,
                                 std::string* error = nullptr);
 
 }  // namespace impasto::app::window

@@ -47,7 +47,7 @@ BrushPreset preset_from_state(const WindowState& s, const std::string& name) {
   return preset;
 }
 
-void apply_preset(const BrushPreset& preset, WindowState& s, SimWorker& worker) {
+void apply_preset(const BrushPreset& preset, WindowState& s, session::SimWorker& worker) {
   s.brush.head = preset.head;
   s.brush.size_mm = preset.size_mm;
   s.brush.stiffness = preset.stiffness;
@@ -99,7 +99,7 @@ void delete_user_preset(WindowState& s, const BrushPreset& preset) {
   reload_presets(s);
 }
 
-void draw_tool_bar(WindowState& s, SimWorker& worker, double brush_volume_mm3) {
+void draw_tool_bar(WindowState& s, session::SimWorker& worker, double brush_volume_mm3) {
   const ImGuiIO& io = ImGui::GetIO();
   constexpr float kPanelsWidth = 330.0f;  // the side panel (panels.cpp) on the right
   const float width = std::max(200.0f, io.DisplaySize.x - kPanelsWidth - 16.0f);

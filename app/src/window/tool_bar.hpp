@@ -4,8 +4,8 @@
 // your own to delete it). Its buttons ask for the same commands as the keys (shortcuts.hpp).
 #include <string>
 
+#include "impasto/session/sim_worker.hpp"
 #include "window/brush_presets.hpp"
-#include "window/sim_worker.hpp"
 #include "window/window_state.hpp"
 
 namespace impasto::app::window {
@@ -13,7 +13,7 @@ namespace impasto::app::window {
 // The window's brush as a preset named `name`, and back: apply_preset sets the brush, the
 // body, the load and the pressure, and sends the brush to the painting.
 BrushPreset preset_from_state(const WindowState& state, const std::string& name);
-void apply_preset(const BrushPreset& preset, WindowState& state, SimWorker& worker);
+void apply_preset(const BrushPreset& preset, WindowState& state, session::SimWorker& worker);
 // Saves the brush as the user's preset `name` (replacing one of that name) and reloads the
 // library; says what happened in state.message.
 void save_user_preset(WindowState& state, const std::string& name);
@@ -21,6 +21,6 @@ void delete_user_preset(WindowState& state, const BrushPreset& preset);
 // Reads the shipped and the user's presets into state.presets.
 void reload_presets(WindowState& state);
 
-void draw_tool_bar(WindowState& state, SimWorker& worker, double brush_volume_mm3);
+void draw_tool_bar(WindowState& state, session::SimWorker& worker, double brush_volume_mm3);
 
 }  // namespace impasto::app::window

@@ -20,15 +20,15 @@
 #include <string>
 #include <vector>
 
-#include "session/disk_stamp.hpp"
+#include "impasto/session/disk_stamp.hpp"
+#include "impasto/session/recent_files.hpp"
+#include "impasto/session/sim_worker.hpp"
 #include "window/brush_presets.hpp"
 #include "window/canvas_size_choice.hpp"
 #include "window/eyedropper.hpp"
 #include "window/file_browser.hpp"
 #include "window/notifications.hpp"
-#include "window/recent_files.hpp"
 #include "window/shortcuts.hpp"
-#include "window/sim_worker.hpp"
 #include "window/tablet_input.hpp"
 
 namespace impasto::app::window {
@@ -121,9 +121,9 @@ struct WindowState {
   bool fit_requested = true;
 
   // --- files ---
-  std::optional<std::filesystem::path> file;  // the painting's file, once saved or opened
-  std::optional<DiskStamp> file_stamp;        // that file as this window last read or wrote it
-  bool ask_changed_on_disk = false;           // Save found `file` changed since: ask what to do
+  std::optional<std::filesystem::path> file;     // the painting's file, once saved or opened
+  std::optional<session::DiskStamp> file_stamp;  // that file as this window last read or wrote it
+  bool ask_changed_on_disk = false;              // Save found `file` changed since: ask what to do
   std::vector<std::filesystem::path> recent;
   PendingAction pending = PendingAction::kNone;
   bool pending_confirmed = false;    // no unsaved changes, or the user said to go ahead
@@ -131,8 +131,9 @@ struct WindowState {
   bool continue_after_save = false;  // that prompt's Save went to Save as: go on once saved
   std::filesystem::path pending_path;
   FileCommand file_command = FileCommand::kNone;
-  FileBrowser file_browser{window_config_folder().empty() ? std::filesystem::path()
-                                                          : window_config_folder() / "folders.txt"};
+  FileBrowser file_browser{session::window_config_folder().empty()
+                               ? std::filesystem::path()
+                               : session::window_config_folder() / "folders.txt"};
   // The New painting dialog: the size in mm (shown in new_unit), a standard size or custom
   // (-1), its orientation; new_width/new_height are the cells it makes at new_dpi.
   int new_width = 1024, new_height = 768;

@@ -1,0 +1,50 @@
+#pragma once
+// A painting session's growth as frames: the stroke file replayed as `impasto replay` does
+// (bit-exactly), the canvas rendered at evenly spaced moments of it, each frame re-shading
+// only the tiles the strokes since the last one changed, then the finished painting held.
+// The light may turn over the video (every frame then re-shades the whole canvas).
+#include <impasto/input/stroke_events.hpp>
+#include <impasto/render/image.hpp>
+#include <impasto/render/render_settings.hpp>
+#include <impasto/util/progress.hpp>
+
+#include <functional>
+#include <optional>
+
+#include "impasto/session/replay.hpp"
+
+namespace impasto::session {
+
+struct TimelapseOptions {
+  double fps = 30.0;
+  // The session's pen samples spread evenly over this many seconds...
+  double growth_seconds = 10.0;
+  // ...or, when set, at the session's own pace (its samples' times; pauses kept).
+  bool real_time = false;
+  double hold_seconds = 2.0;  // the finished painting, held at the end
+  render::RenderSettings settings;
+  // The light's azimuth at the last frame: it turns from settings.light_azimuth_deg to this
+  // over the video, evenly. Unset: a still light.
+  std::optional<double> light_azimuth_end_deg;
+  // Hears of each frame made, of all.
+  util::ProgressCallback progress;
+};
+
+struct TimelapseReport {
+  int growth_frames = 0;
+  int hold_frames = 0;
+  ReplayReport replay;
+};
+
+// How many frames show the growth: fps × growth_seconds, or fps × the session's length in
+// real time; at least one.
+int timelapse_growth_frames(const input::StrokeFile& file, const TimelapseOptions& options);
+
+// Replays `file` with `replay` (its canvas, brush and constants) and hands each frame, in
+// order, to `frame` (display-encoded RGB at the canvas's cells). Throws std::runtime_error
+// naming the record ("FILE:LINE: ...") that cannot be applied; no frame follows it.
+TimelapseReport play_timelapse(const input::StrokeFile& file, const ReplayOptions& replay,
+                               const TimelapseOptions& options,
+                               const std::function<void(const render::Image&)>& frame);
+
+}  // namespace impasto::session
