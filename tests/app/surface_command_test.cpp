@@ -1,4 +1,4 @@
-// `impasto render --surface ...` (app/src/surface_options.cpp): blinn ignores the finishes and
+// `impasto render --surface ...` (app/cli/surface_options.cpp): blinn ignores the finishes and
 // renders as the default; ghs changes the image and its finishes differ; the subsurface map
 // is written at the canvas's size; bad combinations are refused by name; --gpu renders ghs.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The Surface panel's varnish choice (app/src/window/surface_panel.hpp), without a window: the
+// The Surface panel's varnish choice (app/window/surface_panel.hpp), without a window: the
 // names are the command line's (--varnish none|gloss|satin|matte), each maps to its setting
 // and back, and what the panel sets is what render::parse_varnish reads from that name.
 #include <gtest/gtest.h>

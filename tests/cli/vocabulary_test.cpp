@@ -1,4 +1,4 @@
-// The command line's vocabulary (app/src/vocabulary.hpp): docs/cli.md lists it as the
+// The command line's vocabulary (app/cli/vocabulary.hpp): docs/cli.md lists it as the
 // program does, a shared option means the same in every command, and each choice's names
 // are the ones its parser takes.
 #include <gtest/gtest.h>

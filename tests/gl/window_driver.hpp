@@ -144,7 +144,7 @@ class Window {
               !(mean_luma(shown, 0, setup.height - 20, 400, setup.height) > 0.02))
             return false;
           // ...and the painting is shown: the first frames show the view's background and a
-          // note where the canvas will be (app/src/window/opening_note.hpp), whose dark menus
+          // note where the canvas will be (app/window/opening_note.hpp), whose dark menus
           // and dialogs a test cannot tell apart from it.
           const int x = (setup.width - 360) / 2, y = setup.height / 2 + 60;
           return std::abs(mean_luma(shown, x - 8, y - 8, x + 8, y + 8) - kBackgroundLuma) > 0.02;

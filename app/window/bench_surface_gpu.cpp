@@ -4,16 +4,12 @@
 #include <chrono>
 #include <limits>
 
-#if __has_include(<impasto/render_gl/canvas_renderer.hpp>)
 #include <impasto/render_gl/canvas_renderer.hpp>
 #include <impasto/render_gl/framebuffer.hpp>
 #include <impasto/render_gl/gl_context.hpp>
-#define IMPASTO_BENCH_SURFACE_GPU 1
-#endif
 
 namespace impasto::app {
 
-#ifdef IMPASTO_BENCH_SURFACE_GPU
 namespace {
 
 // Best of three of an upload of every tile (with the spread on, each tile's map) and a draw of
@@ -44,13 +40,10 @@ double upload_and_draw_ns_per_cell(const paintcore::Canvas& canvas,
 }
 
 }  // namespace
-#endif
 
-std::optional<GpuSpreadCost> gpu_spread_cost(const paintcore::Canvas& spreading,
-                                             const paintcore::Canvas& plain,
-                                             const render::RenderSettings& settings,
-                                             const render::SpectralPalette& palette) {
-#ifdef IMPASTO_BENCH_SURFACE_GPU
+GpuSpreadCost gpu_spread_cost(const paintcore::Canvas& spreading, const paintcore::Canvas& plain,
+                              const render::RenderSettings& settings,
+                              const render::SpectralPalette& palette) {
   auto context = render_gl::create_headless_context();
   render::RenderSettings off = settings;
   off.surface.subsurface = false;
@@ -62,10 +55,6 @@ std::optional<GpuSpreadCost> gpu_spread_cost(const paintcore::Canvas& spreading,
   cost.plain_off = upload_and_draw_ns_per_cell(plain, off, palette, nullptr);
   cost.plain_on = upload_and_draw_ns_per_cell(plain, on, palette, nullptr);
   return cost;
-#else
-  (void)spreading, (void)plain, (void)settings, (void)palette;
-  return std::nullopt;
-#endif
 }
 
 }  // namespace impasto::app

@@ -17,18 +17,23 @@
 #include "progress.hpp"
 #include "surface_options.hpp"
 #include "vocabulary.hpp"
+#include "window_services.hpp"
 
 // The GL path, when this build has it (render_gl's headers come with its target).
-#if __has_include(<impasto/render_gl/render_painting_gpu.hpp>)
-#include <impasto/render_gl/render_painting_gpu.hpp>
-#define IMPASTO_RENDER_GPU 1
-#endif
 
 // A namespace of its own: the command files are compiled together (unity build).
 namespace impasto::app::render_cmd {
 namespace {
 
 using namespace impasto::render;
+
+// The OpenGL path's renderers, which the window target provides.
+const WindowServices& gpu() {
+  const WindowServices* services = window_services();
+  if (services == nullptr || !services->render_painting)
+    throw std::runtime_error(std::string("--gpu: ") + kNoGpuPath);
+  return *services;
+}
 
 struct RenderArgs {
   std::string painting;
@@ -107,24 +112,15 @@ void run(const RenderArgs& args) {
     const CellRegion region =
         args.region.empty() ? CellRegion{0, 0, width, height} : parse_cell_region(args.region);
     if (args.gpu) {
-#ifdef IMPASTO_RENDER_GPU
-      render_gl::render_painting_close_up_gpu_to_file(painting, settings, region, args.zoom,
-                                                      args.out);
-#else
-      throw std::runtime_error("--gpu: this impasto was built without the OpenGL path");
-#endif
+      gpu().render_close_up(painting, settings, region, args.zoom, args.out);
     } else {
       render_painting_close_up_to_file(painting, settings, region, args.zoom, args.out);
     }
     width = region.w * args.zoom;
     height = region.h * args.zoom;
   } else if (args.gpu) {
-#ifdef IMPASTO_RENDER_GPU
-    render_gl::render_painting_gpu_to_file(painting, settings, args.out);
+    gpu().render_painting(painting, settings, args.out);
     write_subsurface_map_if_asked(args.surface, painting, settings);
-#else
-    throw std::runtime_error("--gpu: this impasto was built without the OpenGL path");
-#endif
   } else {
     ProgressReporter progress("render", "tiles");
     render_painting_to_file(painting, settings, args.out, progress.callback(), args.supersample);

@@ -20,9 +20,9 @@
 #include <string>
 #include <vector>
 
-#include "bench_surface_gpu.hpp"
 #include "command.hpp"
 #include "vocabulary.hpp"
+#include "window_services.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).
 namespace impasto::app::bench_surface_cmd {
@@ -140,8 +140,9 @@ void run(const BenchSurfaceArgs& args) {
   }
   // The same on the GPU (upload and one draw; llvmpipe where there is no GPU), and on black
   // impasto all over, where nothing spreads.
-  if (const auto gpu =
-          gpu_spread_cost(canvas, test_canvas(size.width, size.height, false), ghs, palette)) {
+  if (const WindowServices* services = window_services(); services && services->spread_cost) {
+    const std::optional<GpuSpreadCost> gpu =
+        services->spread_cost(canvas, test_canvas(size.width, size.height, false), ghs, palette);
     out["gpu_cost"] = {{"spreading_cells", gpu->spreading_cells},
                        {"ghs_ns_per_cell", gpu->spreading_off},
                        {"ghs_subsurface_ns_per_cell", gpu->spreading_on},

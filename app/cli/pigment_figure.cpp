@@ -3,6 +3,7 @@
 #include <impasto/files/atomic_file.hpp>
 #include <impasto/render/image.hpp>
 #include <impasto/render/pigment_swatches.hpp>
+#include <impasto/util/text.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -11,12 +12,7 @@
 
 #include "pigment_curves.hpp"
 #include "plot_ticks.hpp"
-
-#if __has_include(<imgui.h>)  // the window build links ImGui
-#include <imgui.h>
-#include "impasto/util/text.hpp"
-#define IMPASTO_FIGURE_HAS_FONT 1
-#endif
+#include "window_services.hpp"
 
 namespace impasto::app {
 namespace {
@@ -188,48 +184,6 @@ void draw_segment(render::Image& image, std::array<double, 2> a, std::array<doub
   }
 }
 
-#ifdef IMPASTO_FIGURE_HAS_FONT
-// ImGui's built-in font (ProggyClean, 13 px), rasterised once without a UI context.
-struct FigureFont {
-  ImFontAtlas atlas;
-  ImFont* font = nullptr;
-  unsigned char* pixels = nullptr;
-  int width = 0, height = 0;
-  FigureFont() {
-    font = atlas.AddFontDefault();
-    atlas.GetTexDataAsAlpha8(&pixels, &width, &height);
-  }
-};
-
-void draw_text(render::Image& image, const Figure::Text& t) {
-  static FigureFont font;
-  double width = 0;
-  for (char ch : t.text) {
-    if (const ImFontGlyph* g =
-            font.font->FindGlyph(static_cast<ImWchar>(static_cast<unsigned char>(ch))))
-      width += g->AdvanceX;
-  }
-  double x = t.centred ? t.x - width / 2 : t.x;
-  const double top = t.y - 10;  // the baseline sits ~10 px below the glyph box's top
-  for (char ch : t.text) {
-    const ImFontGlyph* g =
-        font.font->FindGlyph(static_cast<ImWchar>(static_cast<unsigned char>(ch)));
-    if (g == nullptr) continue;
-    const int u0 = int(std::lround(g->U0 * font.width)), v0 = int(std::lround(g->V0 * font.height));
-    const int gw = int(std::lround((g->U1 - g->U0) * font.width)),
-              gh = int(std::lround((g->V1 - g->V0) * font.height));
-    for (int j = 0; j < gh; ++j) {
-      for (int i = 0; i < gw; ++i) {
-        const double a = font.pixels[(v0 + j) * font.width + (u0 + i)] / 255.0;
-        blend(image, int(std::lround(x + g->X0)) + i, int(std::lround(top + g->Y0)) + j, t.colour,
-              a);
-      }
-    }
-    x += g->AdvanceX;
-  }
-}
-#endif
-
 }  // namespace
 
 void write_figure(const std::filesystem::path& path, const Figure& f) {
@@ -256,9 +210,11 @@ void write_figure(const std::filesystem::path& path, const Figure& f) {
     for (std::size_t i = 1; i < l.points.size(); ++i)
       draw_segment(image, l.points[i - 1], l.points[i], l.colour, l.width);
   }
-#ifdef IMPASTO_FIGURE_HAS_FONT
-  for (const auto& t : f.texts) draw_text(image, t);
-#endif
+  // Labels where the window's font is at hand (the SVG carries them always).
+  if (const WindowServices* services = window_services(); services && services->text_pixels)
+    for (const auto& t : f.texts)
+      services->text_pixels(t.text, t.x, t.y, t.centred,
+                            [&](int x, int y, double a) { blend(image, x, y, t.colour, a); });
   render::write_png(path, image);
 }
 
