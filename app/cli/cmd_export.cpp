@@ -1,6 +1,7 @@
 // impasto export: an image at a larger scale with a smooth relief, and the relief as data for
 // 3D and print — the height map and the normal map (canvas_edit.hpp does the work).
 #include <impasto/paintcore/painting.hpp>
+#include <impasto/render/render_painting.hpp>
 
 #include <iostream>
 #include <memory>

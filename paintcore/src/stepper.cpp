@@ -750,10 +750,10 @@ double Stepper::max_step_seconds(const SimulationParams& params, double cell_mm)
 }
 
 double Stepper::max_step_cells(const SimulationParams& params, const Brush& brush) {
-  return brush.blade() ? 1.0 : max_step_cells(params, brush.cells_across());
+  return brush.blade() ? 1.0 : paintcore::max_step_cells(params, brush.cells_across());
 }
 
-double Stepper::max_step_cells(const SimulationParams& params, int brush_cells) {
+double max_step_cells(const SimulationParams& params, int brush_cells) {
   if (brush_cells < params.long_step_from_cells) return 1.0;
   return std::max(1.0, params.long_step_share * brush_cells);
 }

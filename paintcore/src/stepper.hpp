@@ -46,12 +46,9 @@ class Stepper {
     float reach;
   };
   static SqueezePasses squeeze_passes(double cell_mm);
-  // The longest move of one step, in cells: 1, or for a brush at least long_step_from_cells
-  // across, long_step_share of its width (if that is more).
-  static double max_step_cells(const SimulationParams& params, int brush_cells);
-  // The same for this brush: a blade (a head without bristles) steps a cell at a time, as its
-  // leading edge pushes the paint ahead of it cell by cell (a long step's sub-steps left a
-  // blade's scrape half done).
+  // The longest move of one step for this brush (paintcore::max_step_cells): a blade (a head
+  // without bristles) steps a cell at a time, as its leading edge pushes the paint ahead of it cell
+  // by cell (a long step's sub-steps left a blade's scrape half done).
   static double max_step_cells(const SimulationParams& params, const Brush& brush);
   // The most the tip's depth may change in one step (mm): a pen easing off, or a lift, moves
   // the contact's edge (the bristles splaying less, the underside rising) by at most half a

@@ -1,4 +1,4 @@
-// Input: stroke files and HID pen reports. Run: impasto_bench --benchmark_filter='Strokes|Hid'
+// Input: stroke files and HID pen reports. Run: impasto_microbench --benchmark_filter='Strokes|Hid'
 #include <impasto/input/hid_pen.hpp>
 #include <impasto/input/stroke_file.hpp>
 

@@ -2,7 +2,7 @@
 // IMPaSTo reported (26 and 88 cells) and the 128-cell target.
 #include <benchmark/benchmark.h>
 
-#include "impasto/paintcore/sim_benchmark.hpp"
+#include "impasto/bench/simulation.hpp"
 
 namespace {
 
@@ -10,7 +10,7 @@ void BM_PaintStep(benchmark::State& state) {
   const int brush = static_cast<int>(state.range(0));
   double seconds = 0, steps = 0;
   for (auto _ : state) {
-    const auto r = impasto::paintcore::run_sim_benchmark(brush, 200);
+    const auto r = impasto::bench::run_sim_benchmark(brush, 200);
     seconds += r.seconds;
     steps += static_cast<double>(r.steps);
     state.SetIterationTime(r.seconds);

@@ -9,7 +9,7 @@
 
 #include "../common/scratch_folder.hpp"
 #include "hasher.hpp"
-#include "impasto/paintcore/painting_file_benchmark.hpp"
+#include "impasto/paintcore/synthetic_painting.hpp"
 #include "impasto/paintcore/painting_file_header.hpp"
 #include "painting_file_sections.hpp"
 #include "test_util.hpp"

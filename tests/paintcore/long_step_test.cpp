@@ -8,13 +8,15 @@
 #include <string>
 #include <vector>
 
+#include "impasto/bench/simulation.hpp"
 #include "impasto/paintcore/brush_head.hpp"
-#include "impasto/paintcore/sim_benchmark.hpp"
 #include "stepper.hpp"
 #include "test_util.hpp"
 
 namespace impasto::paintcore {
 namespace {
+
+using namespace impasto::bench;  // the measures (bench/)
 
 using test::expect_conserved;
 using test::flat_spec;
@@ -73,11 +75,11 @@ TEST(LongSteps, StepLengthFollowsTheBrush) {
   SimulationParams params;
   params.long_step_share = 0.0625;
   params.long_step_from_cells = 64;
-  EXPECT_EQ(Stepper::max_step_cells(params, 63), 1.0);
-  EXPECT_EQ(Stepper::max_step_cells(params, 64), 4.0);
-  EXPECT_EQ(Stepper::max_step_cells(params, 128), 8.0);
+  EXPECT_EQ(max_step_cells(params, 63), 1.0);
+  EXPECT_EQ(max_step_cells(params, 64), 4.0);
+  EXPECT_EQ(max_step_cells(params, 128), 8.0);
   params.long_step_share = 0.0;
-  EXPECT_EQ(Stepper::max_step_cells(params, 512), 1.0);
+  EXPECT_EQ(max_step_cells(params, 512), 1.0);
 }
 
 TEST(LongSteps, APenEasingOffStepsByDepthWithinBounds) {

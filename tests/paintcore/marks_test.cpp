@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "impasto/paintcore/marks_benchmark.hpp"
+#include "impasto/bench/marks.hpp"
 #include "impasto/paintcore/painting.hpp"
 #include "levelling.hpp"
 #include "stroke_path.hpp"
@@ -18,6 +18,8 @@
 
 namespace impasto::paintcore {
 namespace {
+
+using namespace impasto::bench;  // the measures (bench/)
 
 // A canvas w_mm x h_mm at `dpi`, flat (no weave).
 CanvasSpec canvas_mm(double w_mm, double h_mm, double dpi) {
@@ -185,7 +187,7 @@ TEST(Marks, HeavyPaintKeepsBristleFurrowsFluidPaintLevelsThem) {
   EXPECT_LT(fluid.furrow_rms_mm, 0.6 * heavy.furrow_rms_mm);
 }
 
-// A 16 mm standard stroke (marks_benchmark.hpp) of `head` in `body` on a grid of `dpi`.
+// A 16 mm standard stroke (bench/marks.hpp) of `head` in `body` on a grid of `dpi`.
 MarkFigures short_mark(const std::string& head, PaintBody body, double dpi) {
   MarkStroke stroke;
   stroke.length_mm = 16.0;
@@ -223,7 +225,7 @@ TEST(Marks, ASplayedHeadLeavesNoStripesOfTheGrid) {
 }
 
 TEST(Marks, HeavyPaintHoldsItsRidgesFluidPaintLevels) {
-  // The standard flat's mark (marks_benchmark.hpp): ridges along its edges in stiff paint,
+  // The standard flat's mark (bench/marks.hpp): ridges along its edges in stiff paint,
   // levelled away in fluid paint.
   const MarkStroke stroke;
   const MarkFigures fluid = measure_mark("flat", PaintBody::fluid, stroke);
@@ -323,7 +325,7 @@ TEST(Marks, LevellingTreatsAPartialEdgeTileLikeAFullOne) {
 TEST(Marks, ABrushLiftsWithoutLeavingAStamp) {
   // The standard round's stroke ends with the pen's tip up (pressure 0.7 to 0, as a mouse
   // releases): the bristles leave over a distance and the end tapers, with no ridge across
-  // it where a footprint was pressed (the lift's rim, marks_benchmark.hpp) above a tenth of
+  // it where a footprint was pressed (the lift's rim, bench/marks.hpp) above a tenth of
   // the film. Lifted on the spot, the whole footprint split its film at once: a disc with a
   // rim 40-50 % of the film.
   MarkStroke stroke;
@@ -400,7 +402,7 @@ TEST(Marks, AnEasedOffOrReleasedDabLeavesNoRings) {
 }
 
 TEST(Marks, NoTraceOfThePensSampling) {
-  // The standard flat and knife strokes (marks_benchmark.hpp) sampled every 0.05 mm and every
+  // The standard flat and knife strokes (bench/marks.hpp) sampled every 0.05 mm and every
   // 2 mm: the paint's variation along the stroke (what varies faster than 3 mm) is the same
   // within 30 %, with no peak at the samples' spacing. Stepping once a sample, the 2 mm
   // samples' ridges measured 2-4 times the 0.05 mm stroke's variation.

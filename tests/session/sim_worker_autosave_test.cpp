@@ -4,7 +4,7 @@
 #include <unistd.h>
 
 #include <filesystem>
-#include <impasto/paintcore/painting_file_benchmark.hpp>
+#include <impasto/paintcore/synthetic_painting.hpp>
 #include <string>
 
 #include "impasto/session/sim_worker.hpp"

@@ -92,6 +92,11 @@ std::span<const NamedParam> simulation_param_fields(std::uint32_t file_version);
 // The parameter of that name, or nullptr.
 const NamedParam* find_simulation_param(std::string_view name);
 
+// The longest move of one simulation step for a bristled head `brush_cells` across, in cells:
+// 1, or for a head at least long_step_from_cells across, long_step_share of its width (if that
+// is more). (A blade steps a cell at a time.)
+double max_step_cells(const SimulationParams& params, int brush_cells);
+
 // The parameters by name, for command lines and settings files: sets `name` from "NAME=VALUE"
 // text; throws naming the field (and listing the known names) when it can't. Does not validate.
 void set_param(SimulationParams& params, const std::string& assignment);

@@ -1,4 +1,4 @@
-#include "impasto/paintcore/painting_file_benchmark.hpp"
+#include "impasto/paintcore/synthetic_painting.hpp"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>

@@ -6,7 +6,7 @@
 #include <malloc.h>
 
 #include <impasto/paintcore/painting.hpp>
-#include <impasto/paintcore/painting_file_benchmark.hpp>
+#include <impasto/paintcore/synthetic_painting.hpp>
 
 #include <unistd.h>
 #include <chrono>

@@ -1,7 +1,7 @@
 // impasto bench marks: what the standard stroke leaves for each head and paint body
 // (paintcore/marks_benchmark.hpp; docs/marks.md has the table).
+#include <impasto/bench/marks.hpp>
 #include <impasto/paintcore/brush_head.hpp>
-#include <impasto/paintcore/marks_benchmark.hpp>
 
 #include <algorithm>
 #include <cstdio>
@@ -21,13 +21,15 @@
 namespace impasto::app::bench_marks_cmd {
 namespace {
 
+using namespace impasto::bench;  // the measures (bench/)
+
 struct BenchMarksArgs {
   bool json = false;
   std::vector<std::string> heads;   // empty: every head in the brushes folder
   std::vector<std::string> bodies;  // empty: every body
   std::vector<std::string> params;  // NAME=VALUE
   bool sweeps = true;               // the sampling and resolution table after the first
-  paintcore::MarkStroke stroke;
+  bench::MarkStroke stroke;
 };
 
 // The sample spacings (mm) and resolutions (dpi) of the second table: a mark must not
@@ -38,20 +40,20 @@ constexpr double kSweepDpis[] = {150.0, 300.0, 600.0, 1200.0};
 // One head and body's marks over the sweeps.
 struct Sweep {
   std::string head, body;
-  std::vector<paintcore::MarkFigures> by_spacing, by_dpi;
+  std::vector<bench::MarkFigures> by_spacing, by_dpi;
 };
 
-Sweep sweep(const std::string& head, paintcore::PaintBody body, const paintcore::MarkStroke& base) {
+Sweep sweep(const std::string& head, paintcore::PaintBody body, const bench::MarkStroke& base) {
   Sweep s{head, std::string(paintcore::body_info(body).name), {}, {}};
   for (const double spacing : kSweepSpacingsMm) {
-    paintcore::MarkStroke stroke = base;
+    bench::MarkStroke stroke = base;
     stroke.spacing_mm = spacing;
-    s.by_spacing.push_back(paintcore::measure_mark(head, body, stroke));
+    s.by_spacing.push_back(bench::measure_mark(head, body, stroke));
   }
   for (const double dpi : kSweepDpis) {
-    paintcore::MarkStroke stroke = base;
+    bench::MarkStroke stroke = base;
     stroke.dpi = dpi;
-    s.by_dpi.push_back(paintcore::measure_mark(head, body, stroke));
+    s.by_dpi.push_back(bench::measure_mark(head, body, stroke));
   }
   return s;
 }
@@ -130,7 +132,7 @@ void run(BenchMarksArgs args) {
   std::vector<Sweep> sweeps;
   for (const std::string& head : heads)
     for (const paintcore::PaintBody body : bodies) {
-      const paintcore::MarkFigures f = paintcore::measure_mark(head, body, args.stroke);
+      const bench::MarkFigures f = bench::measure_mark(head, body, args.stroke);
       progress.clear();  // the row goes where the bar was; the bar again below it
       const std::string body_name(paintcore::body_info(body).name);
       if (args.json) {

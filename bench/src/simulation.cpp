@@ -1,4 +1,4 @@
-#include "impasto/paintcore/sim_benchmark.hpp"
+#include "impasto/bench/simulation.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -11,9 +11,10 @@
 #include "impasto/util/statistics.hpp"
 
 #include "impasto/paintcore/painting.hpp"
-#include "stepper.hpp"
 
-namespace impasto::paintcore {
+namespace impasto::bench {
+
+using namespace impasto::paintcore;  // (this measures its parts)
 namespace {
 
 constexpr double kDpi = 254.0;  // 0.1 mm cells
@@ -112,7 +113,7 @@ std::vector<LongStepResult> run_long_step_benchmark(int brush_cells,
     LongStepResult result;
     result.brush_cells = brush_cells;
     result.share = share;
-    result.step_cells = Stepper::max_step_cells(params, painting.brush().cells_across());
+    result.step_cells = paintcore::max_step_cells(params, painting.brush().cells_across());
     result.steps = last->steps;
     result.seconds = util::median(seconds);
     const PaintTotals canvas = painting.canvas_totals(), brush = painting.brush_totals();
@@ -222,4 +223,4 @@ SimBenchmarkResult run_sim_benchmark(int brush_cells, int steps, int threads) {
   return r;
 }
 
-}  // namespace impasto::paintcore
+}  // namespace impasto::bench

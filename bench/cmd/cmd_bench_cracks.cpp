@@ -1,6 +1,6 @@
 // impasto bench cracks: accuracy and cost of Gouffé's cavity formula against the Monte
 // Carlo radiosity reference, for every crack shape.
-#include <impasto/cracks/accuracy.hpp>
+#include <impasto/bench/crack_accuracy.hpp>
 #include <impasto/cracks/cavity_correction.hpp>
 #include <impasto/cracks/cavity_table.hpp>
 #include <impasto/cracks/gouffe.hpp>
@@ -25,6 +25,8 @@
 // A namespace of its own: the command files are compiled together (unity build).
 namespace impasto::app::bench_cracks_cmd {
 namespace {
+
+using namespace impasto::bench;  // the measures (bench/)
 
 using namespace impasto::cracks;
 
@@ -71,7 +73,7 @@ void run(const BenchCracksArgs& args) {
   grid.monte_carlo.paths = args.paths;
   grid.monte_carlo.seed = args.seed;
   const auto mc_start = std::chrono::steady_clock::now();
-  const std::vector<AccuracyRow> rows = measure_accuracy(grid);
+  const std::vector<AccuracyRow> rows = measure_crack_accuracy(grid);
   const double mc_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - mc_start).count();
   const double runs =

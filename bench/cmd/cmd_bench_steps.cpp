@@ -1,6 +1,6 @@
 // impasto bench steps: the cost and error of long steps (SimulationParams::long_step_share)
-// against one-cell steps, for a big brush's mouse stroke (paintcore::run_long_step_benchmark).
-#include <impasto/paintcore/sim_benchmark.hpp>
+// against one-cell steps, for a big brush's mouse stroke (bench::run_long_step_benchmark).
+#include <impasto/bench/simulation.hpp>
 
 #include <cstdio>
 #include <iostream>
@@ -17,6 +17,8 @@
 // A namespace of its own: the command files are compiled together (unity build).
 namespace impasto::app::bench_steps_cmd {
 namespace {
+
+using namespace impasto::bench;  // the measures (bench/)
 
 struct BenchStepsArgs {
   bool json = false;
@@ -40,7 +42,7 @@ void run(const BenchStepsArgs& args) {
   std::uint64_t done = 0;
   for (const int brush : args.brushes) {
     const auto results =
-        paintcore::run_long_step_benchmark(brush, args.shares, args.runs, args.threads, params);
+        bench::run_long_step_benchmark(brush, args.shares, args.runs, args.threads, params);
     progress.update(++done, args.brushes.size());
     progress.clear();
     const double reference_seconds = results.front().seconds;

@@ -1,6 +1,6 @@
 // impasto bench sim: speed of the paint simulation for the brush sizes IMPaSTo reported
 // (26 and 88 cells across; 77 k and 520 k cells/s on a 2004 GPU) and a 128-cell brush.
-#include <impasto/paintcore/sim_benchmark.hpp>
+#include <impasto/bench/simulation.hpp>
 
 #include <algorithm>
 #include <cstdio>
@@ -18,6 +18,8 @@
 // A namespace of its own: the command files are compiled together (unity build).
 namespace impasto::app::bench_sim_cmd {
 namespace {
+
+using namespace impasto::bench;  // the measures (bench/)
 
 struct BenchSimArgs {
   bool json = false;
@@ -40,7 +42,7 @@ void run(const BenchSimArgs& args) {
   for (const int brush : args.brushes) {
     std::vector<double> cells, steps, window;
     for (int r = 0; r < args.runs; ++r) {
-      const auto result = paintcore::run_sim_benchmark(brush, args.steps, args.threads);
+      const auto result = bench::run_sim_benchmark(brush, args.steps, args.threads);
       progress.update(++done, total);
       cells.push_back(result.cells_per_second);
       steps.push_back(result.steps_per_second);

@@ -9,17 +9,17 @@
 #include "impasto/paintcore/paint_body.hpp"
 #include "impasto/paintcore/painting.hpp"
 
-namespace impasto::paintcore {
+namespace impasto::bench {
 
 struct MarkFigures {
   std::string head;
-  PaintBody body = kDefaultPaintBody;
+  paintcore::PaintBody body = paintcore::kDefaultPaintBody;
   double size_mm = 0;
   double dpi = 0;
   double spacing_mm = 0;  // between pen samples
   double load_mm3 = 0;
   double deposited_share = 0;  // canvas volume / load
-  PaintThickness thickness;
+  paintcore::PaintThickness thickness;
   double edge_ridge_mm = 0;       // edge crest above the middle third's median, across
   double furrow_period_mm = 0;    // dominant period of the thickness across the stroke
   double bristle_spacing_mm = 0;  // the head's spacing, splayed at the stroke's pressure
@@ -47,17 +47,17 @@ struct MarkStroke {
   float pressure = 0.7f;
   double load_mm3_at_8mm = 200.0;  // the load of an 8 mm head, scaled by the size squared
   int threads = 0;
-  SimulationParams params;
+  paintcore::SimulationParams params;
 };
 
 // The dominant period (mm) of the paint's thickness across a stroke drawn along x, from a
 // discrete Fourier transform of its profile averaged over canvas columns [x0, x1), over the
 // middle three fifths of the painted band (the edge ridges left out); 0 where none is painted.
-double furrow_period_mm(const Canvas& canvas, int x0, int x1);
+double furrow_period_mm(const paintcore::Canvas& canvas, int x0, int x1);
 
 // The furrows' depth (RMS, mm) of the same profile and band: the profile less its running
 // mean over one `period_mm` (the bristles' spacing), which removes the mark's broad shape.
-double furrow_rms_mm(const Canvas& canvas, int x0, int x1, double period_mm);
+double furrow_rms_mm(const paintcore::Canvas& canvas, int x0, int x1, double period_mm);
 
 // The trace of a sampling period on a profile along a stroke (mm, one value a cell): the
 // profile less its running mean over `smooth_mm`, its RMS over `film_mm`, and its power at
@@ -81,6 +81,7 @@ double ridge_prominence(const std::vector<double>& along, std::size_t begin, std
                         std::size_t reach);
 
 // Paints the standard stroke with head `head` (from the brushes folder) and `body`.
-MarkFigures measure_mark(const std::string& head, PaintBody body, const MarkStroke& stroke = {});
+MarkFigures measure_mark(const std::string& head, paintcore::PaintBody body,
+                         const MarkStroke& stroke = {});
 
-}  // namespace impasto::paintcore
+}  // namespace impasto::bench

@@ -7,7 +7,7 @@
 
 #include "impasto/paintcore/simulation_params.hpp"
 
-namespace impasto::paintcore {
+namespace impasto::bench {
 
 struct SimBenchmarkResult {
   int brush_cells = 0;                 // N: the brush grid is N x N cells
@@ -21,8 +21,8 @@ struct SimBenchmarkResult {
 // Runs `steps` timed steps (after a short warm-up) with `threads` threads (0: all cores).
 SimBenchmarkResult run_sim_benchmark(int brush_cells, int steps, int threads = 0);
 
-// The cost and error of long steps (SimulationParams::long_step_share): on a 300-dpi canvas
-// with a band of blue across it, a round brush N cells across loaded with white (half its
+// The cost and error of long steps (paintcore::SimulationParams::long_step_share): on a 300-dpi
+// canvas with a band of blue across it, a round brush N cells across loaded with white (half its
 // area times 0.5 mm) draws an arc through the band, sampled like a mouse (8 ms, a quarter
 // of the brush apart); the same stroke with one-cell steps is the reference.
 struct LongStepResult {
@@ -48,6 +48,6 @@ struct LongStepResult {
 std::vector<LongStepResult> run_long_step_benchmark(int brush_cells,
                                                     const std::vector<double>& shares, int runs,
                                                     int threads = 0,
-                                                    const SimulationParams& params = {});
+                                                    const paintcore::SimulationParams& params = {});
 
-}  // namespace impasto::paintcore
+}  // namespace impasto::bench

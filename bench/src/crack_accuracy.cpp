@@ -1,4 +1,4 @@
-#include "impasto/cracks/accuracy.hpp"
+#include "impasto/bench/crack_accuracy.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -7,9 +7,11 @@
 #include "impasto/cracks/close_up.hpp"
 #include "impasto/cracks/gouffe.hpp"
 
-namespace impasto::cracks {
+namespace impasto::bench {
 
-std::vector<AccuracyRow> measure_accuracy(const AccuracyGrid& grid) {
+using namespace impasto::cracks;  // (this measures its parts)
+
+std::vector<AccuracyRow> measure_crack_accuracy(const AccuracyGrid& grid) {
   std::vector<AccuracyRow> rows;
   for (CavityShape shape : grid.shapes) {
     for (double ratio : grid.depth_over_half_width) {
@@ -64,4 +66,4 @@ std::vector<AccuracyRow> measure_accuracy(const AccuracyGrid& grid) {
   return rows;
 }
 
-}  // namespace impasto::cracks
+}  // namespace impasto::bench
