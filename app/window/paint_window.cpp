@@ -47,6 +47,7 @@
 #include "window/brush_outline.hpp"
 #include "window/brush_outline_overlay.hpp"
 #include "window/canvas_menu.hpp"
+#include "window/document.hpp"
 #include "window/edit_help_menus.hpp"
 #include "window/eyedropper.hpp"
 #include "window/opening_note.hpp"
@@ -89,10 +90,6 @@ double ms_since(Clock::time_point start) {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-// An autosave waits for this long without pen input (or for options.autosave_seconds of
-// painting), and never comes sooner than this after the last one.
-constexpr double kAutosaveQuiet_s = 3.0;
-
 // The shortest time between frames while nothing changes (see run()).
 constexpr auto kIdleFrame = std::chrono::milliseconds(8);
 
@@ -103,18 +100,6 @@ constexpr int kPanelsWidth = 360;
 // How long an opening window waits for its palette's rule (built on first use of a set of
 // pigments, then cached) before it shades the painting with the stand-in.
 constexpr double kRuleWait_s = 3.0;
-
-// "Could not save /a/b.impasto: why", naming the file once (most errors name it already).
-std::string failure_text(const std::string& failed, const std::filesystem::path& file,
-                         const std::string& why) {
-  if (why.find(file.string()) != std::string::npos) return failed + ": " + why;
-  return failed + " " + file.string() + ": " + why;
-}
-
-// The painting a recovered session ends with, from its recording (rebuild.hpp).
-session::RebuiltSession rebuild_entry(const session::SessionEntry& entry) {
-  return rebuild_session(input::read_stroke_file(entry.strokes), session::ReplayOptions{});
-}
 
 std::vector<std::string> brush_heads() {
   std::vector<std::string> heads;
@@ -169,8 +154,6 @@ class PaintWindow {
 
  private:
   void create_window();
-  void start_session();
-  void opened_file(const std::filesystem::path& file);
   void note_an_empty_brush();
   void sync_gpu();
   void handle_canvas_input();
@@ -178,7 +161,6 @@ class PaintWindow {
   void run_commands();
   void pick_at(const PointerEvent& at, bool released);
   void update_pick_cursor();
-  void run_pending_action();
   void update_title();
   void update_swatch();
   void draw_frame(bool take_screenshot);
@@ -197,25 +179,16 @@ class PaintWindow {
   void start_tablets();
   void poll_tablets();
   TabletTargetGeometry tablet_geometry() const;
-  void open_board_for(const std::optional<std::filesystem::path>& painting);
   PaintingSnapshot snapshot();
-  // Starts a session's recording and its recovery entry: beside `painting` when its folder
-  // can be written, else in the recovery folder (and says so). `origin` is the file the
-  // painting starts as (none: a new canvas).
-  session::SessionRecording begin_session(const std::optional<std::filesystem::path>& painting,
-                                          const std::optional<std::filesystem::path>& origin);
-  void end_session();  // the user closed the painting on purpose: nothing to recover
-  void maybe_autosave();
-  void handle_recovery(const RecoveryChoice& choice);
-  void apply_canvas_request(const CanvasMenuRequest& request);  // Image menu
   void show_preview(const paintcore::Painting& painting);
-  FileActions file_actions();
+  // The document replaced its painting (new, open, recovered, reframed): the view starts again.
+  void painting_replaced();
+  session::SimWorker& worker() { return document_->worker(); }
 
   PaintOptions options_;
   GlfwLibrary glfw_;
   GLFWwindow* window_ = nullptr;
   WindowState state_;
-  std::unique_ptr<session::SimWorker> worker_;
   paintcore::Painting::ChangeSubscriber view_changes_;  // what the GPU copy has not taken
   std::unique_ptr<render_gl::CanvasRenderer> renderer_;
   render_gl::ShadedViewCache view_cache_;       // frames re-shade only what changed in view
@@ -288,17 +261,11 @@ class PaintWindow {
   int window_w_ = 0, window_h_ = 0;          // this frame's window size
   double session_start_s_ = 0;
 
-  // Crash recovery: this session's entry, what the window has to say about it, the sessions
-  // that did not end cleanly (offered at start), and the preview of one of them.
-  std::unique_ptr<session::LiveSession> live_session_;
-  std::string notice_;
-  std::vector<session::SessionEntry> recoverable_;
-  std::optional<std::size_t> previewing_;
-  std::unique_ptr<session::RebuiltSession> preview_;
+  // The painting and its session (after the panels: it opens the board beside the painting).
+  std::unique_ptr<Document> document_;
+  // The preview of a session offered for recovery, as a texture.
   unsigned preview_texture_ = 0;
   int preview_w_ = 0, preview_h_ = 0;
-  double last_input_s_ = 0.0, last_autosave_s_ = 0.0;
-  std::string recording_failure_;  // the first failure of any recording in this window's life
   std::string shown_title_;
 };
 
@@ -312,13 +279,14 @@ PaintWindow::PaintWindow(const PaintOptions& options) : options_(options) {
   reload_presets(state_);
   state_.recent = session::load_recent_files();
   create_window();
-  start_session();
+  document_ = std::make_unique<Document>(options_, state_, board_panel_);
+  view_changes_ = worker().subscribe_changes();
   start_tablets();
 }
 
 PaintWindow::~PaintWindow() {
   tablets_.reset();
-  worker_.reset();
+  document_.reset();
   renderer_.reset();
   if (preview_texture_) glDeleteTextures(1, &preview_texture_);
   ImGui_ImplOpenGL3_Shutdown();
@@ -382,41 +350,6 @@ void PaintWindow::create_window() {
   session_start_s_ = glfwGetTime();
 }
 
-session::SessionRecording PaintWindow::begin_session(
-    const std::optional<std::filesystem::path>& painting,
-    const std::optional<std::filesystem::path>& origin) {
-  session::SessionRecording recording;
-  recording.opened_from = origin;
-  live_session_.reset();
-  notice_.clear();
-  if (options_.no_record) return recording;
-  session::SessionStart start = session::start_session_recording(painting, options_.record);
-  recording.recorder = std::move(start.recorder);
-  recording.not_recording = start.not_recording;
-  live_session_ = std::move(start.live);
-  notice_ = start.notice;
-  return recording;
-}
-
-void PaintWindow::end_session() {
-  if (live_session_) live_session_->end_cleanly();
-  live_session_.reset();
-}
-
-// Between strokes, once the pen has rested kAutosaveQuiet_s or the painting has gone on for
-// options.autosave_seconds since the last autosave.
-void PaintWindow::maybe_autosave() {
-  if (!live_session_ || canvas_feed_.in_stroke() || !worker_->idle()) return;
-  if (worker_->stats().events_since_autosave == 0) return;
-  const double now = glfwGetTime();
-  if (now - last_autosave_s_ < kAutosaveQuiet_s) return;
-  const bool quiet = now - last_input_s_ >= kAutosaveQuiet_s;
-  const bool due = now - last_autosave_s_ >= options_.autosave_seconds;
-  if (!quiet && !due) return;
-  worker_->autosave(live_session_->entry().autosave);
-  last_autosave_s_ = now;
-}
-
 // The recovered painting's false-colour view, at most 480 px across, as a texture.
 void PaintWindow::show_preview(const paintcore::Painting& painting) {
   const render::Image full = session::render_preview(painting);
@@ -441,166 +374,18 @@ void PaintWindow::show_preview(const paintcore::Painting& painting) {
   glBindTexture(GL_TEXTURE_2D, 0);
 }
 
-void PaintWindow::handle_recovery(const RecoveryChoice& choice) {
-  if (choice.kind == RecoveryChoice::kNone) return;
-  if (choice.kind == RecoveryChoice::kLater) {
-    recoverable_.clear();
-    previewing_.reset();
-    preview_.reset();
-    return;
-  }
-  const session::SessionEntry entry = recoverable_.at(choice.index);
-  try {
-    switch (choice.kind) {
-      case RecoveryChoice::kPreview:
-        preview_ = std::make_unique<session::RebuiltSession>(rebuild_entry(entry));
-        show_preview(preview_->painting);
-        previewing_ = choice.index;
-        return;
-      case RecoveryChoice::kRecover: {
-        if (worker_->stats().events_since_save > 0) {
-          state_.notifications.warning(
-              "save or close this painting first (File menu), then recover");
-          return;
-        }
-        if (previewing_ != choice.index || !preview_) {
-          preview_ = std::make_unique<session::RebuiltSession>(rebuild_entry(entry));
-        }
-        end_session();
-        session::SessionRecording recording = begin_session(entry.painting, std::nullopt);
-        // The new session starts from the recovered painting, kept as its first autosave and
-        // read back from it, so that its `from` record names exactly what the file holds.
-        paintcore::Painting recovered = std::move(preview_->painting);
-        if (live_session_) {
-          recovered.save(live_session_->entry().autosave);
-          recovered = paintcore::Painting::load(live_session_->entry().autosave);
-          recording.opened_from = live_session_->entry().autosave;
-        }
-        worker_->replace_painting(std::move(recovered), std::move(recording), true);
-        open_board_for(entry.painting);
-        if (entry.painting) {
-          // Save goes back to the file, as it stands now (the session's last save).
-          state_.file = entry.painting;
-          state_.file_stamp = session::stamp_of(*entry.painting);
-        }
-        notice_ = "Recovered " +
-                  (entry.painting ? entry.painting->filename().string()
-                                  : std::string("an untitled painting")) +
-                  " from its autosave and recording: save it to keep it.";
-        rendered_slots_.clear();
-        canvas_w_ = canvas_h_ = 0;
-        state_.hidden_dry_layers.clear();
-        break;
-      }
-      case RecoveryChoice::kDiscard:
-        break;
-      default:
-        return;
-    }
-  } catch (const std::exception& e) {
-    state_.notifications.error(std::string("cannot recover: ") + e.what());
-    return;
-  }
-  discard_session(entry);
-  recoverable_.erase(recoverable_.begin() + static_cast<std::ptrdiff_t>(choice.index));
-  previewing_.reset();
-  preview_.reset();
-}
-
-void PaintWindow::start_session() {
-  std::optional<input::StrokeFile> strokes;
-  if (options_.replay) strokes = input::load_strokes_any(*options_.replay);
-  paintcore::Painting painting = [&] {
-    if (options_.painting) return paintcore::Painting::load(*options_.painting);
-    if (strokes) return paintcore::Painting(replay_canvas(*strokes, session::ReplayOptions{}));
-    return paintcore::Painting(options_.new_canvas);
-  }();
-  open_board_for(options_.painting);
-  worker_ = std::make_unique<session::SimWorker>(
-      std::move(painting), begin_session(options_.painting, options_.painting));
-  view_changes_ = worker_->subscribe_changes();
-  if (options_.painting) opened_file(*options_.painting);
-  // Sessions that did not end cleanly are offered for recovery (not in scripted replays).
-  if (!options_.replay) {
-    try {
-      for (auto& entry : session::unfinished_sessions(session::recovery_folder())) {
-        // A session killed before anything was painted has nothing to offer.
-        if (session::has_work_to_recover(entry)) {
-          recoverable_.push_back(std::move(entry));
-        } else {
-          session::discard_session(entry);
-        }
-      }
-    } catch (const std::exception&) {
-      // no recovery folder: begin_session has said so
-    }
-  }
-  if (strokes) {
-    // The recorded events take the same path as live input: the worker's queue.
-    const bool has_load = std::any_of(
-        strokes->events.begin(), strokes->events.end(),
-        [](const input::StrokeEvent& e) { return std::holds_alternative<input::LoadEvent>(e); });
-    worker_->set_auto_load(!has_load);
-    for (const auto& warning : strokes->warnings) {
-      std::cerr << "impasto: warning: " << warning << "\n";
-      notice_ += (notice_.empty() ? "" : " ") + warning;
-    }
-    for (auto& event : strokes->events) {
-      // The canvas is made above; where the replayed session began and was saved belongs to
-      // that session, not to this one's recording.
-      const bool header = std::holds_alternative<input::CanvasEvent>(event) ||
-                          std::holds_alternative<input::OriginEvent>(event) ||
-                          std::holds_alternative<input::SavedEvent>(event);
-      if (!header) worker_->submit(std::move(event));
-    }
-    worker_->finish_stroke();
-    worker_->set_auto_load(false);
-  }
-}
-
-// The window now shows `file` as it is on disk: its name, its stamp (Save asks before
-// replacing what another window saves over it later), the recent list; and a word when
-// another window has it open too.
-void PaintWindow::opened_file(const std::filesystem::path& file) {
-  state_.file = file;
-  state_.file_stamp = session::stamp_of(file);
-  session::remember_recent_file(file);
-  state_.recent = session::load_recent_files();
-  try {
-    for (const session::SessionEntry& other :
-         session::other_sessions_with(session::recovery_folder(), file)) {
-      state_.notifications.warning(files::terminal_text(file.filename().string()) +
-                                   " is open in another Impasto window too (process " +
-                                   std::to_string(other.pid) +
-                                   "): Save asks before replacing what either saves.");
-      break;
-    }
-  } catch (const std::exception&) {
-    // no recovery folder: no other window can be known
-  }
+void PaintWindow::painting_replaced() {
+  rendered_slots_.clear();
+  canvas_w_ = canvas_h_ = 0;  // a new canvas: new textures, fit it to the window
 }
 
 // A stroke begun with nothing on the brush paints nothing: say so where the pointer is, once a
 // session (only when every event is applied, so a Load brush still queued is not missed).
 void PaintWindow::note_an_empty_brush() {
-  if (!worker_->idle()) return;
+  if (!worker().idle()) return;
   pointer_overlay_.stroke_began(
-      worker_->with_painting([](const paintcore::Painting& p) { return p.brush_totals().volume; }),
+      worker().with_painting([](const paintcore::Painting& p) { return p.brush_totals().volume; }),
       glfwGetTime());
-}
-
-// The palette board kept beside the painting, or a clean one.
-void PaintWindow::open_board_for(const std::optional<std::filesystem::path>& painting) {
-  try {
-    if (painting && std::filesystem::exists(PaletteBoard::file_beside(*painting))) {
-      board_panel_.replace(PaletteBoard::load(PaletteBoard::file_beside(*painting)));
-      return;
-    }
-  } catch (const std::exception& e) {
-    state_.notifications.warning("the palette board beside the painting was not read: " +
-                                 std::string(e.what()));
-  }
-  board_panel_.replace(PaletteBoard());
 }
 
 // Tablets are optional: without hidapi or without any tablet the mouse paints alone.
@@ -655,7 +440,7 @@ void PaintWindow::poll_tablets() {
 }
 
 PaintingSnapshot PaintWindow::snapshot() {
-  return worker_->with_painting([](const paintcore::Painting& p) {
+  return worker().with_painting([](const paintcore::Painting& p) {
     PaintingSnapshot s;
     s.width_cells = p.canvas().width_cells();
     s.height_cells = p.canvas().height_cells();
@@ -676,8 +461,8 @@ PaintingSnapshot PaintWindow::snapshot() {
 void PaintWindow::sync_gpu() {
   const auto start = Clock::now();
   // Every job applied by now has dirtied its tiles before the upload below takes them.
-  applied_at_upload_ = worker_->stats().applied;
-  worker_->with_changes(view_changes_, [&](const paintcore::Painting& painting,
+  applied_at_upload_ = worker().stats().applied;
+  worker().with_changes(view_changes_, [&](const paintcore::Painting& painting,
                                            std::span<const paintcore::DirtyTile> changed) {
     const paintcore::Canvas& canvas = painting.canvas();
     const bool resized = canvas.width_cells() != canvas_w_ || canvas.height_cells() != canvas_h_;
@@ -733,7 +518,7 @@ void PaintWindow::sync_gpu() {
 // The Palette panel's chips, painted and rendered off the UI thread (swatch_chips.hpp).
 void PaintWindow::update_swatch() {
   const paintcore::CanvasSpec canvas =
-      worker_->with_painting([](const paintcore::Painting& p) { return p.canvas().spec(); });
+      worker().with_painting([](const paintcore::Painting& p) { return p.canvas().spec(); });
   swatch_chips_.update(state_, canvas);
 }
 
@@ -759,11 +544,12 @@ void PaintWindow::pen_sample(const PointerEvent& at, bool tip_down) {
 void PaintWindow::submit_pen_event(input::StrokeEvent event) {
   const auto* sample = std::get_if<input::SampleEvent>(&event);
   const double time_s = sample ? sample->sample.time_s : 0.0;
-  worker_->submit(std::move(event));
-  last_input_s_ = glfwGetTime();
+  worker().submit(std::move(event));
+  const double now = glfwGetTime();
+  document_->note_input(now);
   // Only this thread submits, so the count just read is this event's job number.
-  if (sample) latency_.submitted(worker_->stats().submitted, time_s);
-  if (sample && (sample->sample.buttons & paintcore::kPenTip) != 0) tip_down_s_ = last_input_s_;
+  if (sample) latency_.submitted(worker().stats().submitted, time_s);
+  if (sample && (sample->sample.buttons & paintcore::kPenTip) != 0) tip_down_s_ = now;
 }
 
 void PaintWindow::pan_view(double from_x, double from_y, double to_x, double to_y, double time_s) {
@@ -874,7 +660,7 @@ void PaintWindow::run_commands() {
       return;
     }
     change();
-    worker_->submit(brush_event(state_));
+    worker().submit(brush_event(state_));
   };
   for (const Command command : std::exchange(state_.commands, {})) {
     paintcore::BrushSettings& brush = state_.brush;
@@ -892,10 +678,10 @@ void PaintWindow::run_commands() {
         state_.file_command = FileCommand::kSaveAs;
         break;
       case Command::kUndo:
-        worker_->submit(input::UndoEvent{});
+        worker().submit(input::UndoEvent{});
         break;
       case Command::kRedo:
-        worker_->submit(input::RedoEvent{});
+        worker().submit(input::RedoEvent{});
         break;
       case Command::kBrush:
         state_.eyedropper.tool = false;
@@ -941,8 +727,8 @@ void PaintWindow::run_commands() {
 void PaintWindow::pick_at(const PointerEvent& at, bool released) {
   EyedropperState& e = state_.eyedropper;
   const auto cell = state_.view.window_to_cell(at.x, at.y, window_w_, window_h_);
-  if (released) worker_->wait_idle();  // the paint the user sees, every stroke applied
-  std::optional<PickedPaint> picked = worker_->with_painting(
+  if (released) worker().wait_idle();  // the paint the user sees, every stroke applied
+  std::optional<PickedPaint> picked = worker().with_painting(
       [&](const paintcore::Painting& painting) { return pick_paint(painting, cell[0], cell[1]); });
   if (!picked) {
     if (released) e.message = "nothing to pick here: bare canvas";
@@ -963,7 +749,7 @@ void PaintWindow::pick_at(const PointerEvent& at, bool released) {
   if (!unknown.empty())
     e.message = "not in the pigment library, left out of the palette: " + unknown.front();
   if (e.load_on_pick)
-    load_onto_brush(*worker_, picked_load(*e.picked, state_.load_volume_mm3, state_.paint_body));
+    load_onto_brush(worker(), picked_load(*e.picked, state_.load_volume_mm3, state_.paint_body));
 }
 
 // The crosshair while the eyedropper would pick (ImGui leaves the cursor alone meanwhile).
@@ -980,109 +766,9 @@ void PaintWindow::update_pick_cursor() {
   }
 }
 
-FileActions PaintWindow::file_actions() {
-  FileActions actions;
-  actions.save_over = [this](const std::filesystem::path& file) {
-    try {
-      worker_->save(file);
-      state_.file = file;
-      state_.file_stamp = session::stamp_of(file);
-      notice_.clear();  // what the session's start or a recovery said is done with
-      if (live_session_) live_session_->painting_saved_as(file);  // a recovery reopens it
-      session::remember_recent_file(file);
-      state_.recent = session::load_recent_files();
-    } catch (const std::exception& e) {
-      state_.notifications.error(failure_text("Could not save", file, e.what()));
-      return false;
-    }
-    // The painting is saved; the board beside it is a convenience.
-    try {
-      board_panel_.board().save(PaletteBoard::file_beside(file));
-    } catch (const std::exception& e) {
-      state_.notifications.warning("Saved the painting, but not its palette board: " +
-                                   std::string(e.what()));
-    }
-    state_.notifications.info("Saved " + file.string());
-    return true;
-  };
-  actions.save = [this, save_over = actions.save_over](const std::filesystem::path& file) {
-    // Over the file this window read or wrote, changed since: ask before replacing that work.
-    if (state_.file && file == *state_.file && changed_on_disk(file, state_.file_stamp)) {
-      state_.ask_changed_on_disk = true;
-      return false;
-    }
-    return save_over(file);
-  };
-  actions.export_image = [this](const std::filesystem::path& file) {
-    try {
-      worker_->wait_idle();
-      worker_->with_painting([&](const paintcore::Painting& painting) {
-        render::render_painting_to_file(painting, state_.settings, file);
-      });
-      state_.notifications.info("Exported " + file.string());
-    } catch (const std::exception& e) {
-      state_.notifications.error(failure_text("Could not export", file, e.what()));
-    }
-  };
-  return actions;
-}
-
-void PaintWindow::run_pending_action() {
-  if (state_.pending == PendingAction::kNone || !state_.pending_confirmed) return;
-  const PendingAction action = state_.pending;
-  state_.pending = PendingAction::kNone;
-  state_.pending_confirmed = false;
-  try {
-    switch (action) {
-      case PendingAction::kQuit:
-        state_.quit = true;
-        break;
-      case PendingAction::kNew: {
-        paintcore::CanvasSpec spec = options_.new_canvas;
-        spec.width_cells = state_.new_width;
-        spec.height_cells = state_.new_height;
-        spec.dpi = state_.new_dpi;
-        paintcore::validate(spec);
-        end_session();
-        worker_->replace_painting(paintcore::Painting(spec),
-                                  begin_session(std::nullopt, std::nullopt));
-        open_board_for(std::nullopt);
-        state_.file.reset();
-        state_.notifications.info("New painting");
-        break;
-      }
-      case PendingAction::kOpen:
-      case PendingAction::kOpenRecent: {
-        const auto file = state_.pending_path;
-        paintcore::Painting opened = paintcore::Painting::load(file);
-        end_session();
-        worker_->replace_painting(std::move(opened), begin_session(file, file));
-        open_board_for(file);
-        opened_file(file);
-        state_.notifications.info("Opened " + file.string());
-        worker_->with_painting([&](const paintcore::Painting& p) {
-          if (!p.load_warning().empty()) state_.notifications.warning(p.load_warning());
-        });
-        break;
-      }
-      case PendingAction::kNone:
-        break;
-    }
-  } catch (const std::exception& e) {
-    // The painting shown is unchanged: nothing was replaced.
-    state_.notifications.error(action == PendingAction::kNew
-                                   ? std::string("Could not make the new painting: ") + e.what()
-                                   : failure_text("Could not open", state_.pending_path, e.what()));
-    return;
-  }
-  rendered_slots_.clear();
-  canvas_w_ = canvas_h_ = 0;  // a new canvas: new textures, fit it to the window
-  state_.hidden_dry_layers.clear();
-}
-
 // The window's title: the painting's file name (or Untitled), marked while unsaved.
 void PaintWindow::update_title() {
-  const std::string title = window_title(state_.file, worker_->stats().events_since_save > 0);
+  const std::string title = window_title(state_.file, worker().stats().events_since_save > 0);
   if (title == shown_title_) return;
   glfwSetWindowTitle(window_, title.c_str());
   shown_title_ = title;
@@ -1130,7 +816,7 @@ constexpr auto kSimWait = std::chrono::milliseconds(15);
 
 void PaintWindow::draw_frame(bool take_screenshot) {
   const auto start = Clock::now();
-  if (worker_->stats().submitted != applied_at_upload_) worker_->wait_idle_for(kSimWait);
+  if (worker().stats().submitted != applied_at_upload_) worker().wait_idle_for(kSimWait);
   update_swatch();
   sync_gpu();
   int fb_w = 0, fb_h = 0;
@@ -1150,11 +836,11 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();
   const PaintingSnapshot painting = snapshot();
-  const FileActions files = file_actions();
-  PanelContext context{state_, *worker_, painting, *palette_, files, board_panel_};
+  const FileActions files = document_->file_actions();
+  PanelContext context{state_, worker(), painting, *palette_, files, board_panel_};
   draw_panels(context);
-  draw_tool_bar(state_, *worker_, painting.brush_volume_mm3);
-  draw_session_banners(worker_->stats(), notice_);
+  draw_tool_bar(state_, worker(), painting.brush_volume_mm3);
+  draw_session_banners(worker().stats(), document_->notice());
   pigment_editor_.draw(state_, *palette_);
   const CanvasMenuRequest canvas_request = canvas_menu_.draw(canvas_w_, canvas_h_, state_.file);
   if (ImGui::BeginMainMenuBar()) {  // Help, last on the menu bar
@@ -1170,13 +856,13 @@ void PaintWindow::draw_frame(bool take_screenshot) {
     pointer_overlay_.draw(painting, state_.mouse_pressure, state_.view, window_w_, window_h_,
                           cursor_x, cursor_y, glfwGetTime());
   }
-  pigment_drift_.draw(state_, *worker_);
+  pigment_drift_.draw(state_, worker());
   std::optional<RecoveryPreview> preview;
-  if (previewing_ && preview_) {
-    preview =
-        RecoveryPreview{*previewing_, preview_texture_, preview_w_, preview_h_, preview_->base};
+  if (document_->previewing() && document_->preview()) {
+    preview = RecoveryPreview{*document_->previewing(), preview_texture_, preview_w_, preview_h_,
+                              document_->preview()->base};
   }
-  const RecoveryChoice recovery = draw_recovery_offer(recoverable_, preview);
+  const RecoveryChoice recovery = draw_recovery_offer(document_->recoverable(), preview);
   const bool opening = opening_ && !take_screenshot;
   if (opening) draw_opening_note(win_w, win_h, kPanelsWidth);
   ImGui::Render();
@@ -1185,8 +871,17 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   else
     draw_canvas(fb_w, fb_h, win_w, take_screenshot);
   state_.frame_ms = ms_since(start);
-  handle_recovery(recovery);
-  apply_canvas_request(canvas_request);
+  switch (document_->recover(recovery)) {
+    case Document::Recovered::kPreviewReady:
+      show_preview(document_->preview()->painting);
+      break;
+    case Document::Recovered::kReplaced:
+      painting_replaced();
+      break;
+    case Document::Recovered::kNothing:
+      break;
+  }
+  if (document_->apply_canvas_request(canvas_request)) painting_replaced();
 }
 
 void PaintWindow::present_opening(int fb_w, int fb_h) {
@@ -1236,59 +931,6 @@ void PaintWindow::draw_canvas(int fb_w, int fb_h, int win_w, bool take_screensho
   state_.input_latency_ms = latency_.recent_median_ms().value_or(-1.0);
 }
 
-// Image > Resize canvas / Crop: the reframed painting starts a new session, as a recovered one
-// does (kept as its first autosave and read back, so the recording's `from` names exactly what
-// that file holds); the file carries the whole undo history, so Edit > Undo undoes the reframe.
-void PaintWindow::apply_canvas_request(const CanvasMenuRequest& request) {
-  try {
-    if (request.exports) {
-      worker_->wait_idle();
-      session::ExportRequest exports = *request.exports;
-      exports.settings = state_.settings;  // the window's light and look
-      worker_->with_painting([&](const paintcore::Painting& p) { export_painting(p, exports); });
-      state_.notifications.info("Exported at " + std::to_string(request.exports->scale) + "x");
-    }
-    if (const auto& v = request.varnish) {
-      // A session event like a stroke: recorded (a `varnish` record), replayed, undone.
-      worker_->submit(input::StrokeEvent{*v});
-      char text[96];
-      std::snprintf(text, sizeof text, "Varnished %s, %.3g mm (wet until dried)",
-                    std::string(paintcore::finish_name(v->finish)).c_str(), v->thickness_mm);
-      state_.notifications.info(text);
-    }
-    if (!request.frame) return;
-    worker_->wait_idle();
-    paintcore::PaintTotals cut;
-    // (The stroke format has no record of a reframe: the session starts again from the
-    // changed painting, its undo history whole.)
-    worker_->edit_painting([&](paintcore::Painting& p) {
-      cut = p.reframe_canvas(*request.frame);
-      p.set_saved_history_bytes(std::numeric_limits<std::size_t>::max());
-    });
-    end_session();
-    session::SessionRecording recording = begin_session(state_.file, std::nullopt);
-    const std::filesystem::path through =
-        live_session_ ? live_session_->entry().autosave
-                      : std::filesystem::temp_directory_path() /
-                            ("impasto-reframe-" + std::to_string(std::time(nullptr)) + ".impasto");
-    worker_->with_painting([&](const paintcore::Painting& p) { p.save(through); });
-    paintcore::Painting reframed = paintcore::Painting::load(through);
-    if (live_session_)
-      recording.opened_from = through;
-    else
-      std::filesystem::remove(through);
-    worker_->replace_painting(std::move(reframed), std::move(recording), true);
-    char text[96];
-    std::snprintf(text, sizeof text, "Canvas %d x %d cells; %.3g mm^3 of paint cut away",
-                  request.frame->width_cells, request.frame->height_cells, cut.volume);
-    state_.notifications.info(text);
-  } catch (const std::exception& e) {
-    state_.notifications.error(std::string("Image: ") + e.what());
-  }
-  rendered_slots_.clear();
-  canvas_w_ = canvas_h_ = 0;  // a new size: new textures, fit it to the window
-}
-
 void PaintWindow::run() {
   int frames_since_idle = 0;
   bool screenshot_done = !options_.screenshot;
@@ -1307,7 +949,7 @@ void PaintWindow::run() {
       // As File > Quit: with unsaved changes, Save / Discard / Cancel.
       state_.file_command = FileCommand::kQuit;
     }
-    run_pending_action();
+    if (document_->run_pending_action()) painting_replaced();
     if (state_.quit) break;
     update_title();
     // Reports written to the older status line are shown as notifications.
@@ -1316,39 +958,26 @@ void PaintWindow::run() {
     handle_canvas_input();
     // A scripted run waits until the replay is applied, the palette's own rule is built and a
     // few frames have laid out the panels, then captures the whole window.
-    frames_since_idle = worker_->idle() && !palette_stands_in_ ? frames_since_idle + 1 : 0;
+    frames_since_idle = worker().idle() && !palette_stands_in_ ? frames_since_idle + 1 : 0;
     const bool capture = !screenshot_done && frames_since_idle >= 3;
     const auto frame_start = Clock::now();
     draw_frame(capture);
     // Nothing new on the canvas and nothing to simulate: frames at most every kIdleFrame, so
     // the simulation and the rest of the machine get the cores (an event still waits less).
-    if (!frame_changed_ && worker_->idle()) std::this_thread::sleep_until(frame_start + kIdleFrame);
+    if (!frame_changed_ && worker().idle()) std::this_thread::sleep_until(frame_start + kIdleFrame);
     // Pen up and nothing to simulate: the GPU makes room for the next strokes' tiles now, when
     // a growth of its tile atlas delays no stroke.
-    if (renderer_ && !canvas_feed_.in_stroke() && worker_->idle()) renderer_->make_room();
+    if (renderer_ && !canvas_feed_.in_stroke() && worker().idle()) renderer_->make_room();
     if (capture) {
       screenshot_done = true;
       std::cout << "wrote " << options_.screenshot->string() << "\n";
     }
-    maybe_autosave();
-    if (recording_failure_.empty()) recording_failure_ = worker_->stats().recording_error;
-    if (options_.exit_after && screenshot_done && worker_->idle()) break;
+    document_->maybe_autosave(glfwGetTime(), canvas_feed_.in_stroke());
+    document_->note_recording_failure();
+    if (options_.exit_after && screenshot_done && worker().idle()) break;
   }
   report_latency();
-  // Closed as the user chose: nothing to recover. A crash never gets here.
-  worker_->wait_idle();
-  const bool unsaved = worker_->stats().events_since_save > 0;
-  // Told to go with unsaved work: autosave it, and leave the session recoverable.
-  if (terminated && unsaved && live_session_) {
-    worker_->finish_stroke();
-    worker_->autosave(live_session_->entry().autosave);
-    worker_->wait_idle();
-  }
-  if (recording_failure_.empty()) recording_failure_ = worker_->stats().recording_error;
-  worker_.reset();  // syncs and closes the recording
-  if (!(terminated && unsaved)) end_session();
-  // A session that could not be recorded fails the command, so scripts notice.
-  if (!recording_failure_.empty()) throw std::runtime_error(recording_failure_);
+  document_->close(terminated);
 }
 
 // The session's input latency, for measuring it (docs/window.md).

@@ -334,15 +334,10 @@ TEST(WindowTools, AWheelNotchZoomsByAQuarter) {
     }
     return first < 0 ? 0 : last - first + 1;
   };
-  int before = 0;
-  ASSERT_TRUE(wait_for([&] { return (before = canvas_width()) > 300; })) << "no canvas";
-  window.wheel(320, 350, -1);  // a notch down
-  int after = 0;
-  ASSERT_TRUE(wait_for([&] { return (after = canvas_width()) > 0 && after < before - 20; }))
-      << "the wheel did not zoom out";
-  // The view settled: refined from the motion's coarse frame (blocks of up to 16 pixels on a
-  // loaded machine), which goes on a few blocks a frame for a second or more. Settled when
-  // two captures 700 ms apart show the same canvas area, pixel for pixel.
+  // The view settled: shaded whole, or refined from a motion's coarse frame (blocks of up to
+  // 16 pixels on a loaded machine, which blur the canvas's edge and go on a few blocks a frame
+  // for a second or more). Settled when two captures 700 ms apart show the same canvas area,
+  // pixel for pixel; measured before the notch as after it.
   const auto canvas_area = [&] {  // left of the panels, between the tool bar and status bar
     const impasto::render::Image s = window.screenshot();
     std::vector<float> area;
@@ -350,14 +345,25 @@ TEST(WindowTools, AWheelNotchZoomsByAQuarter) {
     for (int y = 120; y < 650; ++y) area.insert(area.end(), s.pixel(0, y), s.pixel(660, y));
     return area;
   };
-  std::vector<float> last;
-  EXPECT_TRUE(wait_for([&] {
-    std::this_thread::sleep_for(std::chrono::milliseconds(700));
-    std::vector<float> now = canvas_area();
-    const bool same = !now.empty() && now == last;
-    last = std::move(now);
-    return same;
-  }));
+  const auto settled = [&] {
+    std::vector<float> last;
+    return wait_for([&] {
+      std::this_thread::sleep_for(std::chrono::milliseconds(700));
+      std::vector<float> now = canvas_area();
+      const bool same = !now.empty() && now == last;
+      last = std::move(now);
+      return same;
+    });
+  };
+  int before = 0;
+  ASSERT_TRUE(wait_for([&] { return (before = canvas_width()) > 300; })) << "no canvas";
+  EXPECT_TRUE(settled());
+  before = canvas_width();
+  window.wheel(320, 350, -1);  // a notch down
+  int after = 0;
+  ASSERT_TRUE(wait_for([&] { return (after = canvas_width()) > 0 && after < before - 20; }))
+      << "the wheel did not zoom out";
+  EXPECT_TRUE(settled());
   after = canvas_width();
   EXPECT_NEAR(static_cast<double>(before) / after, 1.25, 0.03) << before << " -> " << after;
   fs::remove_all(dir);
