@@ -47,6 +47,7 @@
 #include "window/brush_outline.hpp"
 #include "window/brush_outline_overlay.hpp"
 #include "window/canvas_menu.hpp"
+#include "window/canvas_viewer.hpp"
 #include "window/document.hpp"
 #include "window/edit_help_menus.hpp"
 #include "window/eyedropper.hpp"
@@ -93,8 +94,6 @@ double ms_since(Clock::time_point start) {
 // The shortest time between frames while nothing changes (see run()).
 constexpr auto kIdleFrame = std::chrono::milliseconds(8);
 
-// How long the view and the light stay still before a coarse view is refined.
-constexpr double kRefineAfter_s = 0.3;
 // The width the panels take at the window's right (pixels): the canvas is fitted left of it.
 constexpr int kPanelsWidth = 360;
 // How long an opening window waits for its palette's rule (built on first use of a set of
@@ -189,29 +188,12 @@ class PaintWindow {
   GlfwLibrary glfw_;
   GLFWwindow* window_ = nullptr;
   WindowState state_;
-  paintcore::Painting::ChangeSubscriber view_changes_;  // what the GPU copy has not taken
-  std::unique_ptr<render_gl::CanvasRenderer> renderer_;
-  render_gl::ShadedViewCache view_cache_;       // frames re-shade only what changed in view
   std::unique_ptr<WindowPresenter> presenter_;  // frames present only what changed
   UiDamage ui_damage_;
   bool present_whole_ = true;  // the window's pixels may be lost: the next frame shows them all
   int presented_w_ = 0, presented_h_ = 0;
-  bool frame_changed_ = true;            // the last frame re-shaded some of the canvas
-  std::array<double, 6> last_motion_{};  // the view and the light at the last frame
-  double last_motion_s_ = -1e9;          // when they last changed
-  double canvas_changed_s_ = -1e9;       // when the last upload had changed cells
-  double tip_down_s_ = -1e9;             // when the last sample with the tip down came
-  std::unique_ptr<render::SpectralPalette> palette_;
-  bool palette_stands_in_ = false;    // the Gaussian rule while the palette's own is built
-  std::uint64_t rules_finished_ = 0;  // render::palette_rules_finished() when it was made
-  std::vector<std::string> rendered_slots_;
-  int canvas_w_ = 0, canvas_h_ = 0;
-  bool full_upload_ = true;
-  // The view must be shaded whole, not coarsely, at the next frame that no stroke is drawing:
-  // it changed by no hand (the window opened on a painting and fitted it, the palette's own
-  // rule arrived), so no motion waits on it, and a coarse frame refined block by block over
-  // seconds read as a blotchy, broken first look.
-  bool shade_whole_ = true;
+  bool frame_changed_ = true;  // the last frame re-shaded some of the canvas
+  double tip_down_s_ = -1e9;   // when the last sample with the tip down came
   // The first frames: the panels and a note (opening_note.hpp) until the palette's own rule is
   // built, for at most kRuleWait_s (the view is then shaded whole once, not twice).
   bool opening_ = true;
@@ -263,6 +245,7 @@ class PaintWindow {
 
   // The painting and its session (after the panels: it opens the board beside the painting).
   std::unique_ptr<Document> document_;
+  std::unique_ptr<CanvasViewer> viewer_;  // the painting on the GPU and its shaded view
   // The preview of a session offered for recovery, as a texture.
   unsigned preview_texture_ = 0;
   int preview_w_ = 0, preview_h_ = 0;
@@ -280,14 +263,14 @@ PaintWindow::PaintWindow(const PaintOptions& options) : options_(options) {
   state_.recent = session::load_recent_files();
   create_window();
   document_ = std::make_unique<Document>(options_, state_, board_panel_);
-  view_changes_ = worker().subscribe_changes();
+  viewer_ = std::make_unique<CanvasViewer>(worker());
   start_tablets();
 }
 
 PaintWindow::~PaintWindow() {
   tablets_.reset();
   document_.reset();
-  renderer_.reset();
+  viewer_.reset();
   if (preview_texture_) glDeleteTextures(1, &preview_texture_);
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();
@@ -375,8 +358,7 @@ void PaintWindow::show_preview(const paintcore::Painting& painting) {
 }
 
 void PaintWindow::painting_replaced() {
-  rendered_slots_.clear();
-  canvas_w_ = canvas_h_ = 0;  // a new canvas: new textures, fit it to the window
+  viewer_->painting_replaced();
 }
 
 // A stroke begun with nothing on the brush paints nothing: say so where the pointer is, once a
@@ -422,9 +404,9 @@ TabletTargetGeometry PaintWindow::tablet_geometry() const {
     }
   }
   geometry.view = state_.view;
-  geometry.canvas_w_cells = canvas_w_;
-  geometry.canvas_h_cells = canvas_h_;
-  geometry.cell_mm = renderer_ ? renderer_->cell_mm() : 0.1;
+  geometry.canvas_w_cells = viewer_->width_cells();
+  geometry.canvas_h_cells = viewer_->height_cells();
+  geometry.cell_mm = viewer_->cell_mm();
   return geometry;
 }
 
@@ -432,7 +414,7 @@ void PaintWindow::poll_tablets() {
   if (!tablets_) return;
   state_.tablets = tablets_->tablets();
   const std::vector<input::hid::TabletSamples> polled = tablets_->poll_tablets();
-  if (polled.empty() || canvas_w_ == 0) return;
+  if (polled.empty() || viewer_->width_cells() == 0) return;
   tablet_seen_s_ = glfwGetTime();
   state_.tablet_samples +=
       feed_tablet_samples(polled, tablet_time_offset_s_, state_.tablet, tablet_geometry(),
@@ -459,60 +441,9 @@ PaintingSnapshot PaintWindow::snapshot() {
 // Brings the GPU textures up to date: every tile after a new painting, light or slot table;
 // otherwise only the tiles the simulation dirtied since the last frame.
 void PaintWindow::sync_gpu() {
-  const auto start = Clock::now();
   // Every job applied by now has dirtied its tiles before the upload below takes them.
   applied_at_upload_ = worker().stats().applied;
-  worker().with_changes(view_changes_, [&](const paintcore::Painting& painting,
-                                           std::span<const paintcore::DirtyTile> changed) {
-    const paintcore::Canvas& canvas = painting.canvas();
-    const bool resized = canvas.width_cells() != canvas_w_ || canvas.height_cells() != canvas_h_;
-    const bool slots_changed = painting.pigment_slots() != rendered_slots_;
-    // The palette's trained rule, built in the background, is ready: it takes over.
-    // (Not while a stroke draws: it waits for the pen to lift rather than re-shade under it.)
-    const bool rule_ready = palette_stands_in_ && !canvas_feed_.in_stroke() &&
-                            render::palette_rules_finished() != rules_finished_;
-    if (resized || slots_changed || state_.settings_changed || !palette_ || rule_ready) {
-      rules_finished_ = render::palette_rules_finished();
-      const render::BackgroundPaletteRules background;  // no frame waits for a rule's build
-      palette_ =
-          std::make_unique<render::SpectralPalette>(state_.settings, painting);  // its pigments
-      palette_stands_in_ = background.stood_in();
-      rendered_slots_ = painting.pigment_slots();
-      if (resized || !renderer_) {
-        renderer_ = std::make_unique<render_gl::CanvasRenderer>(
-            canvas.width_cells(), canvas.height_cells(), state_.settings, *palette_,
-            state_.view_options);
-        canvas_w_ = canvas.width_cells();
-        canvas_h_ = canvas.height_cells();
-        state_.fit_requested = true;
-      } else {
-        renderer_->set_settings(state_.settings, *palette_);
-      }
-      // (A new canvas, a new set of pigments or the rule: no hand moves while it is shaded.)
-      shade_whole_ = shade_whole_ || resized || slots_changed || rule_ready;
-      state_.settings_changed = false;
-      state_.mix_changed = true;  // the swatch depends on the light
-      full_upload_ = true;
-    }
-    if (state_.visibility_changed) {
-      renderer_->set_hidden_dry_layers(state_.hidden_dry_layers);
-      state_.visibility_changed = false;
-      full_upload_ = true;
-    }
-    const std::vector<int> dirty = paintcore::tile_indices(changed);
-    if (full_upload_) {
-      renderer_->upload_all(canvas);
-      view_cache_.invalidate_all();
-      state_.tiles_uploaded += canvas.tile_count();
-      full_upload_ = false;
-    } else {
-      renderer_->upload_tiles(canvas, dirty);
-      view_cache_.invalidate_cells(changed);  // only the cells changed, not whole tiles
-      if (!changed.empty()) canvas_changed_s_ = glfwGetTime();
-      state_.tiles_uploaded += static_cast<long long>(dirty.size());
-    }
-  });
-  state_.upload_ms = ms_since(start);
+  viewer_->sync(worker(), state_, canvas_feed_.in_stroke(), glfwGetTime());
 }
 
 // The Palette panel's chips, painted and rendered off the UI thread (swatch_chips.hpp).
@@ -524,7 +455,7 @@ void PaintWindow::update_swatch() {
 
 void PaintWindow::pen_sample(const PointerEvent& at, bool tip_down) {
   const auto cell = state_.view.window_to_cell(at.x, at.y, window_w_, window_h_);
-  const double cell_mm = renderer_ ? renderer_->cell_mm() : 0.1;
+  const double cell_mm = viewer_->cell_mm();
   paintcore::PenSample sample;
   sample.time_s = at.time_s - session_start_s_;  // the event's own time
   sample.x_mm = cell[0] * cell_mm;
@@ -583,10 +514,8 @@ void PaintWindow::time_view_motion(double swap_time_s) {
   shown_light_ = light;
   view_latency_.shown(swap_time_s);
   // A drag's move that arrives while a frame is drawn waits for it, then for its own frame:
-  // while a motion goes on, a coarse pass gets half the budget, so the two fit the 100 ms.
-  using Cache = render_gl::ShadedViewCache;
-  view_cache_.set_coarse_budget_ms(Cache::kDefaultCoarseBudgetMs /
-                                   (view_latency_.moving() ? 2.0 : 1.0));
+  // the two fit the 100 ms.
+  viewer_->set_moving(view_latency_.moving());
 }
 
 // Applies every mouse event since the last frame in order: each move of a stroke is a pen
@@ -792,7 +721,7 @@ void PaintWindow::present_frame(const std::vector<render_gl::PixelRect>& canvas_
   presented_h_ = fb_h;
   glViewport(0, 0, fb_w, fb_h);
   if (whole) {
-    view_cache_.copy_to(0, {0, 0, fb_w, fb_h});
+    viewer_->copy_to(0, {0, 0, fb_w, fb_h});
     ImGui_ImplOpenGL3_RenderDrawData(&ui);
     if (take_screenshot) save_window_screenshot(*options_.screenshot, fb_w, fb_h);
     presenter_->present_all();
@@ -802,7 +731,7 @@ void PaintWindow::present_frame(const std::vector<render_gl::PixelRect>& canvas_
   for (const UiRect& r : ui_changed) rects.push_back(to_gl_pixels(r, fb_scale, fb_w, fb_h));
   rects = merge_rects(std::move(rects));
   for (const render_gl::PixelRect& r : rects) {
-    view_cache_.copy_to(0, r);
+    viewer_->copy_to(0, r);
     const ClipDrawData clipped(ui, to_ui_rect(r, fb_scale, fb_h));
     ImGui_ImplOpenGL3_RenderDrawData(&ui);
   }
@@ -825,8 +754,8 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   glfwGetWindowSize(window_, &win_w, &win_h);
   if (state_.fit_requested && fb_w > 0) {
     // Fit into the part of the window left of the panels.
-    state_.view = render_gl::fit_canvas(canvas_w_, canvas_h_, std::max(win_w - kPanelsWidth, 100),
-                                        win_h - 60);
+    state_.view = render_gl::fit_canvas(viewer_->width_cells(), viewer_->height_cells(),
+                                        std::max(win_w - kPanelsWidth, 100), win_h - 60);
     // (shifted right of centre)
     state_.view.center_x_cells += 0.5 * kPanelsWidth / state_.view.pixels_per_cell;
     state_.fit_requested = false;
@@ -837,12 +766,13 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   ImGui::NewFrame();
   const PaintingSnapshot painting = snapshot();
   const FileActions files = document_->file_actions();
-  PanelContext context{state_, worker(), painting, *palette_, files, board_panel_};
+  PanelContext context{state_, worker(), painting, viewer_->palette(), files, board_panel_};
   draw_panels(context);
   draw_tool_bar(state_, worker(), painting.brush_volume_mm3);
   draw_session_banners(worker().stats(), document_->notice());
-  pigment_editor_.draw(state_, *palette_);
-  const CanvasMenuRequest canvas_request = canvas_menu_.draw(canvas_w_, canvas_h_, state_.file);
+  pigment_editor_.draw(state_, viewer_->palette());
+  const CanvasMenuRequest canvas_request =
+      canvas_menu_.draw(viewer_->width_cells(), viewer_->height_cells(), state_.file);
   if (ImGui::BeginMainMenuBar()) {  // Help, last on the menu bar
     help_menu(state_);
     ImGui::EndMainMenuBar();
@@ -889,39 +819,18 @@ void PaintWindow::present_opening(int fb_w, int fb_h) {
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
   presenter_->present_all();
   present_whole_ = true;
-  opening_ = palette_stands_in_ && glfwGetTime() - session_start_s_ < kRuleWait_s;
+  opening_ = viewer_->palette_stands_in() && glfwGetTime() - session_start_s_ < kRuleWait_s;
   frame_changed_ = false;  // the loop idles between these frames: the rule has the cores
 }
 
 void PaintWindow::draw_canvas(int fb_w, int fb_h, int win_w, bool take_screenshot) {
-  renderer_->set_view_options(state_.view_options);
   // The view is in window coordinates; scale it to framebuffer pixels (HiDPI).
   render_gl::CanvasView fb_view = state_.view;
   const double fb_scale = win_w > 0 ? static_cast<double>(fb_w) / win_w : 1.0;
   fb_view.pixels_per_cell *= fb_scale;
-  renderer_->set_shading(state_.settings);
-  // While the view or the light moves, frames that re-shade everything do it coarsely, and
-  // while a stroke changes the canvas, its changes are drafted where they cost too much; the
-  // view is refined, a few blocks a frame, once both have stopped for kRefineAfter_s.
-  const double now_s = glfwGetTime();
-  const std::array<double, 6> motion = {fb_view.center_x_cells,
-                                        fb_view.center_y_cells,
-                                        fb_view.pixels_per_cell,
-                                        fb_view.rotation_rad,
-                                        state_.settings.light_azimuth_deg,
-                                        state_.settings.light_elevation_deg};
-  if (motion != last_motion_) last_motion_s_ = now_s;
-  last_motion_ = motion;
-  using Detail = render_gl::ShadedViewCache::Detail;
-  // A stroke that changes nothing in view (an empty brush) is not kept waiting either.
-  const double still_s = now_s - std::max({last_motion_s_, canvas_changed_s_, tip_down_s_});
-  const bool whole = take_screenshot || (shade_whole_ && !canvas_feed_.in_stroke());
-  const Detail detail = whole                      ? Detail::kFull
-                        : still_s < kRefineAfter_s ? Detail::kCoarse
-                                                   : Detail::kRefining;
-  if (whole) shade_whole_ = false;
   const render_gl::CachedDrawStats canvas =
-      view_cache_.update(*renderer_, fb_view, fb_w, fb_h, detail);
+      viewer_->shade(state_, fb_view, fb_w, fb_h, take_screenshot, canvas_feed_.in_stroke(),
+                     glfwGetTime(), tip_down_s_);
   state_.pixels_shaded += canvas.pixels_shaded;
   frame_changed_ = !canvas.changed.empty();
   present_frame(canvas.changed, fb_w, fb_h, fb_scale, take_screenshot);
@@ -958,7 +867,8 @@ void PaintWindow::run() {
     handle_canvas_input();
     // A scripted run waits until the replay is applied, the palette's own rule is built and a
     // few frames have laid out the panels, then captures the whole window.
-    frames_since_idle = worker().idle() && !palette_stands_in_ ? frames_since_idle + 1 : 0;
+    frames_since_idle =
+        worker().idle() && !viewer_->palette_stands_in() ? frames_since_idle + 1 : 0;
     const bool capture = !screenshot_done && frames_since_idle >= 3;
     const auto frame_start = Clock::now();
     draw_frame(capture);
@@ -967,7 +877,7 @@ void PaintWindow::run() {
     if (!frame_changed_ && worker().idle()) std::this_thread::sleep_until(frame_start + kIdleFrame);
     // Pen up and nothing to simulate: the GPU makes room for the next strokes' tiles now, when
     // a growth of its tile atlas delays no stroke.
-    if (renderer_ && !canvas_feed_.in_stroke() && worker().idle()) renderer_->make_room();
+    if (!canvas_feed_.in_stroke() && worker().idle()) viewer_->make_room();
     if (capture) {
       screenshot_done = true;
       std::cout << "wrote " << options_.screenshot->string() << "\n";
