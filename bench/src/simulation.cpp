@@ -36,7 +36,8 @@ struct LongStepRun {
 };
 
 // Pen samples a brush's width apart: 4, as the window's mouse moves a 128-cell brush about
-// 31 cells an event on a 4096-cell canvas fitted to the screen (docs/window.md).
+// 31 cells an event on a 4096-cell canvas fitted to the screen (docs/measurements/window.md,
+// "Latency").
 constexpr double kSamplesABrush = 4.0;
 
 LongStepRun long_step_run(int brush_cells, double share, int threads, SimulationParams params) {
