@@ -77,6 +77,7 @@ class CanvasViewer {
   std::array<double, 6> last_motion_{};  // the view and the light at the last frame
   double last_motion_s_ = -1e9;          // when they last changed
   double canvas_changed_s_ = -1e9;       // when the last upload had changed cells
+  double look_changed_s_ = -1e9;         // when the user last changed the pigments or the settings
 };
 
 }  // namespace impasto::app::window

@@ -838,6 +838,8 @@ void PaintWindow::draw_canvas(int fb_w, int fb_h, int win_w, bool take_screensho
   time_view_motion(glfwGetTime());
   if (canvas.coarse) coarse_factors_.push_back(canvas.coarse_factor);
   state_.input_latency_ms = latency_.recent_median_ms().value_or(-1.0);
+  state_.input_latency_p95_ms = latency_.recent_percentile_ms(0.95).value_or(-1.0);
+  state_.input_behind_ms = latency_.behind_ms(glfwGetTime() - session_start_s_);
 }
 
 void PaintWindow::run() {
@@ -890,7 +892,7 @@ void PaintWindow::run() {
   document_->close(terminated);
 }
 
-// The session's input latency, for measuring it (docs/window.md).
+// The session's input latency, for measuring it (docs/measurements/window.md, "Latency").
 void PaintWindow::report_latency() const {
   std::cout << view_latency_.report(coarse_factors_);
   if (latency_.shown_count() == 0) return;

@@ -741,15 +741,13 @@ void status_bar(PanelContext& c) {
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus);
   const session::SimStats sim = c.worker.stats();
-  char latency[48] = "pen to screen: paint to measure";
-  if (s.input_latency_ms >= 0.0) {
-    std::snprintf(latency, sizeof latency, "pen to screen %.0f ms", s.input_latency_ms);
-  }
-  ImGui::TextUnformatted(latency);
+  ImGui::TextUnformatted(
+      pen_to_screen_text(s.input_latency_ms, s.input_latency_p95_ms, s.input_behind_ms).c_str());
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip(
-        "Median over the last 100 pen samples shown: from each mouse or pen event's own time\n"
-        "stamp to the buffer swap of the first frame that shows it.");
+        "Median and 95th percentile over the last 100 pen samples shown: from each mouse or\n"
+        "pen event's own time stamp to the buffer swap of the first frame that shows it,\n"
+        "queued or not. \"behind\": the oldest sample the screen does not show yet.");
   }
   ImGui::SameLine();
   ImGui::Text(

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "latency_lines.hpp"
 
@@ -41,8 +42,29 @@ std::optional<double> InputLatency::recent_median_ms() const {
   return percentile_of({recent_ms_.begin(), recent_ms_.end()}, 0.5);
 }
 
+std::optional<double> InputLatency::recent_percentile_ms(double q) const {
+  return percentile_of({recent_ms_.begin(), recent_ms_.end()}, q);
+}
+
+double InputLatency::behind_ms(double now_s) const {
+  return waiting_.empty() ? 0.0 : 1e3 * std::max(0.0, now_s - waiting_.front().event_time_s);
+}
+
 std::optional<double> InputLatency::percentile_ms(double q) const {
   return percentile_of(all_ms_, q);
+}
+
+std::string pen_to_screen_text(double median_ms, double p95_ms, double behind_ms) {
+  char text[96] = "pen to screen: paint to measure";
+  if (median_ms >= 0.0)
+    std::snprintf(text, sizeof text, "pen to screen %.0f / %.0f ms", median_ms,
+                  std::max(median_ms, p95_ms));
+  std::string out = text;
+  if (behind_ms > kBehindShown_ms) {
+    std::snprintf(text, sizeof text, ", behind %.0f ms", behind_ms);
+    out += text;
+  }
+  return out;
 }
 
 void ViewLatency::submitted(ViewMotion kind, double event_time_s) {

@@ -28,6 +28,11 @@ class InputLatency {
 
   // Median over the last `recent` samples shown, in ms; none before the first.
   std::optional<double> recent_median_ms() const;
+  // The same for quantile q in [0, 1] (0.95: the status bar's second figure).
+  std::optional<double> recent_percentile_ms(double q) const;
+  // How far the screen is behind the pen at now_s: the age of the oldest sample submitted and
+  // not yet shown (queued for the simulation, simulated or uploaded), in ms; 0 when none waits.
+  double behind_ms(double now_s) const;
   // Over every sample shown since construction; q in [0, 1].
   std::optional<double> percentile_ms(double q) const;
   std::size_t shown_count() const { return all_ms_.size(); }
@@ -43,6 +48,12 @@ class InputLatency {
   std::deque<double> recent_ms_;
   std::vector<double> all_ms_;
 };
+
+// The status bar's figure: "pen to screen 12 / 40 ms" (median / 95th percentile), then
+// "behind 350 ms" while the screen is behind the pen by more than kBehindShown_ms (a frame or
+// two behind is every sample's normal wait); before the first sample, how to get one.
+inline constexpr double kBehindShown_ms = 50.0;
+std::string pen_to_screen_text(double median_ms, double p95_ms, double behind_ms);
 
 // What moves the view or the light: a wheel click's zoom step, a move of a rotating (right
 // button) or panning drag, a pointer event that moved the light (the Light panel's disc).

@@ -148,9 +148,11 @@ struct WindowState {
   // --- status ---
   double frame_ms = 0.0;
   double upload_ms = 0.0;
-  long long tiles_uploaded = 0;    // since the window opened
-  long long pixels_shaded = 0;     // by the K-M pass since the window opened (the rest cached)
-  double input_latency_ms = -1.0;  // median, pen event to the swap showing it (< 0: none yet)
+  long long tiles_uploaded = 0;  // since the window opened
+  long long pixels_shaded = 0;   // by the K-M pass since the window opened (the rest cached)
+  // Pen event to the swap showing it, over the last 100 samples (< 0: none yet), and how far
+  // the screen is behind the pen now (the oldest sample not yet shown; 0: none waits).
+  double input_latency_ms = -1.0, input_latency_p95_ms = -1.0, input_behind_ms = 0.0;
   std::array<double, 2> cursor_cell{-1, -1};
   bool quit = false;
   // Textures a panel re-uploaded this frame: ImGui draws them the same, but their pixels

@@ -288,6 +288,27 @@ TEST(InputLatency, MeasuresFromEachSamplesTimeToTheFirstSwapAfterItWasApplied) {
   EXPECT_EQ(latency.shown_count(), 7u);
 }
 
+// The status bar's figures count every sample from its own event, queued or not, and say how
+// far the screen is behind while samples wait.
+TEST(InputLatency, SaysHowFarTheScreenIsBehindThePen) {
+  InputLatency latency(100);
+  EXPECT_EQ(pen_to_screen_text(-1.0, -1.0, 0.0), "pen to screen: paint to measure");
+  EXPECT_EQ(latency.behind_ms(5.0), 0.0);
+  // 20 samples 8 ms apart; the simulation falls behind: each is shown later than the last.
+  for (int i = 0; i < 20; ++i) latency.submitted(i + 1, 1.0 + 0.008 * i);
+  EXPECT_NEAR(latency.behind_ms(1.5), 500.0, 1e-9);  // the first sample, 1.0 s, not yet shown
+  for (int i = 0; i < 10; ++i) latency.shown(i + 1, 1.02 + 0.02 * i);  // 20 ms, then + 12 each
+  EXPECT_NEAR(latency.behind_ms(1.3), 1e3 * (1.3 - 1.08), 1e-9);       // sample 11, at 1.08 s
+  for (int i = 10; i < 20; ++i) latency.shown(i + 1, 1.02 + 0.02 * i);
+  EXPECT_EQ(latency.behind_ms(2.0), 0.0);
+  // Shown 20, 32, ..., 248 ms after their events (nearest ranks: the 11th and the 19th).
+  EXPECT_NEAR(*latency.recent_median_ms(), 140.0, 1e-6);
+  EXPECT_NEAR(*latency.recent_percentile_ms(0.95), 236.0, 1e-6);
+  EXPECT_EQ(pen_to_screen_text(134.0, 236.6, 0.0), "pen to screen 134 / 237 ms");
+  EXPECT_EQ(pen_to_screen_text(134.0, 236.6, 40.0), "pen to screen 134 / 237 ms");
+  EXPECT_EQ(pen_to_screen_text(134.0, 236.6, 420.0), "pen to screen 134 / 237 ms, behind 420 ms");
+}
+
 TEST(ViewLatency, TimesEachKindFromItsEventsToTheFirstSwapAfterTheFrameAppliedThem) {
   ViewLatency view;
   // Two wheel clicks reach the window; the frame that zooms applies both.
