@@ -45,12 +45,16 @@ void CanvasViewer::sync(session::SimWorker& worker, WindowState& state, bool in_
       } else {
         renderer_->set_settings(state.settings, *palette_);
       }
-      // A new canvas or the palette's own rule: no hand moves while it is shaded, so it is
-      // shaded whole. A pigment the user just loaded, or a setting the user changed, is
-      // answered at once, coarsely, and refined as a motion is: whole, the view took 2.4 s on
-      // llvmpipe (1000 x 700), and the stroke begun after the chip click waited for it.
-      shade_whole_ = shade_whole_ || resized || rule_ready;
-      if (!resized && (slots_changed || state.settings_changed)) look_changed_s_ = now_s;
+      // A new canvas: no hand moves while it is shaded, so it is shaded whole. A pigment the
+      // user just loaded, or a setting the user changed, is answered at once, coarsely, and
+      // refined as a motion is: shaded whole, the view took 2.4 s on llvmpipe (1000 x 700),
+      // and the stroke begun after the chip click waited for it. The palette's own rule,
+      // arriving alone, changes the colours by a fraction of a step: the view keeps its image
+      // and refines it block by block, neither blurred nor frozen.
+      shade_whole_ = shade_whole_ || resized;
+      const bool hand = slots_changed || state.settings_changed;
+      if (!resized && hand) look_changed_s_ = now_s;
+      refine_upload_ = rule_ready && !resized && !hand;
       state.settings_changed = false;
       state.mix_changed = true;  // the swatch depends on the light
       full_upload_ = true;
@@ -59,11 +63,16 @@ void CanvasViewer::sync(session::SimWorker& worker, WindowState& state, bool in_
       renderer_->set_hidden_dry_layers(state.hidden_dry_layers);
       state.visibility_changed = false;
       full_upload_ = true;
+      refine_upload_ = false;  // layers shown or hidden: a change the user waits to see
     }
     const std::vector<int> dirty = paintcore::tile_indices(changed);
     if (full_upload_) {
       renderer_->upload_all(canvas);
-      cache_.invalidate_all();
+      if (refine_upload_)
+        cache_.refine_all();
+      else
+        cache_.invalidate_all();
+      refine_upload_ = false;
       state.tiles_uploaded += canvas.tile_count();
       full_upload_ = false;
     } else {

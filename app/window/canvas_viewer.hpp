@@ -69,6 +69,7 @@ class CanvasViewer {
   std::vector<std::string> rendered_slots_;
   int width_cells_ = 0, height_cells_ = 0;
   bool full_upload_ = true;
+  bool refine_upload_ = false;  // the full upload changed the colours a little: refine the view
   // The view must be shaded whole, not coarsely, at the next frame that no stroke is drawing:
   // it changed by no hand (the window opened on a painting and fitted it, the palette's own
   // rule arrived), so no motion waits on it, and a coarse frame refined block by block over

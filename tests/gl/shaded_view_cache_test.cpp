@@ -333,6 +333,45 @@ TEST(CachedViewCoarse, RefinedInBlocksMatchesAWholeRedraw) {
   EXPECT_LE(pixels_differing(window.read_rgba8(), full_redraw(renderer, view, w, h)), w * h / 200);
 }
 
+// A full upload whose colours change a little (a palette's own rule replacing its stand-in)
+// keeps the image and refines it block by block: no frame re-shades the whole view, and the
+// refined image is the whole redraw of the new data.
+TEST(CachedViewRefineAll, KeepsTheImageAndRefinesItBlockByBlock) {
+  auto context = create_headless_context();
+  const int w = 240, h = 180;
+  paintcore::Painting painting = loaded_painting({{"Red", 1.0}, {"White", 1.0}});
+  stroke(painting, 14.0, 4.0, 30.0);
+  const auto uploaded = uploaded_renderer(painting, four_nodes());
+  CanvasRenderer& renderer = *uploaded;
+  Framebuffer window(w, h, TexelFormat::kRGBA8);
+  using Detail = ShadedViewCache::Detail;
+  ShadedViewCache cache;
+  cache.set_refine_step_ms(1e-9);  // one block a frame
+  const CanvasView view{120.0, 90.0, 1.0, 0.0};
+  cache.draw(renderer, view, w, h, window.id());
+  const std::vector<std::uint8_t> before = window.read_rgba8();
+  // The same painting's canvas changed under the view: more paint, uploaded whole.
+  stroke(painting, 20.0, 6.0, 30.0);
+  renderer.upload_all(painting.canvas());
+  cache.refine_all();
+  const CachedDrawStats first = cache.update(renderer, view, w, h, Detail::kRefining);
+  cache.copy_to(window.id(), {0, 0, w, h});
+  EXPECT_TRUE(first.refining);
+  EXPECT_FALSE(first.full);
+  constexpr int kBlock = ShadedViewCache::kRefineBlock;
+  EXPECT_LE(first.pixels_shaded, static_cast<long long>(kBlock) * kBlock);
+  // Still the old image but for the block refined.
+  EXPECT_LE(pixels_differing(window.read_rgba8(), before), kBlock * kBlock);
+  int frames = 1;
+  for (bool refining = true; refining && frames < 1000; ++frames)
+    refining = cache.update(renderer, view, w, h, Detail::kRefining).refining;
+  const int blocks = (w + kBlock - 1) / kBlock * ((h + kBlock - 1) / kBlock);
+  EXPECT_EQ(frames, blocks);  // a block a frame, the first one included
+  cache.copy_to(window.id(), {0, 0, w, h});
+  EXPECT_EQ(window.read_rgba8(), full_redraw(renderer, view, w, h));
+  EXPECT_NE(window.read_rgba8(), before);
+}
+
 // While a stroke changes the canvas (kCoarse), changed regions over the draft budget are
 // shaded as a draft at a fraction of the pixels, and refined to exactly a whole redraw.
 TEST(CachedViewDraft, DraftedStrokesAreRefinedToAWholeRedraw) {

@@ -111,6 +111,11 @@ class ShadedViewCache {
   void invalidate_cells(std::span<const paintcore::DirtyTile> changed);
   // Everything changed (a full upload, new settings, a new renderer).
   void invalidate_all() { all_invalid_ = true; }
+  // Everything changed a little (a full upload whose colours differ from the last by a
+  // fraction of a step, as when a palette's own wavelength rule replaces its stand-in): the
+  // image stays and every block is refined, a few a frame (kRefining), as after a coarse pass,
+  // so no frame waits for a whole re-shade. Before the first update, as invalidate_all().
+  void refine_all() { rough_.mark_all(); }
 
   // Brings the cached image up to date for `view` on a viewport_w × viewport_h viewport and
   // copies it into the framebuffer `target` (0: the window's). The shading uniforms are taken
