@@ -2,9 +2,9 @@
 // painting file, and evaluate single cavities.
 #include <impasto/cracks/cavity_correction.hpp>
 #include <impasto/cracks/cavity_table.hpp>
+#include <impasto/cracks/crack_layer_maps.hpp>
 #include <impasto/cracks/craquelure.hpp>
 #include <impasto/cracks/gouffe.hpp>
-#include <impasto/cracks/painting_cracks.hpp>
 #include <impasto/files/atomic_file.hpp>
 
 #include <algorithm>
@@ -20,7 +20,7 @@
 #include <string>
 
 #include "command.hpp"
-#include "progress.hpp"
+#include "progress_reporter.hpp"
 #include "vocabulary.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).

@@ -13,7 +13,7 @@
 #include "impasto/session/rebuild.hpp"
 #include "impasto/session/recovery_folder.hpp"
 #include "impasto/session/session_registry.hpp"
-#include "progress.hpp"
+#include "progress_reporter.hpp"
 #include "vocabulary.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).

@@ -14,7 +14,7 @@
 #include <string>
 
 #include "command.hpp"
-#include "progress.hpp"
+#include "progress_reporter.hpp"
 #include "surface_options.hpp"
 #include "vocabulary.hpp"
 #include "window_services.hpp"

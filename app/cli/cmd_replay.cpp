@@ -16,7 +16,7 @@
 #include "impasto/session/preview.hpp"
 #include "impasto/session/rebuild.hpp"
 #include "impasto/session/replay.hpp"
-#include "progress.hpp"
+#include "progress_reporter.hpp"
 #include "replay_overrides.hpp"
 #include "vocabulary.hpp"
 

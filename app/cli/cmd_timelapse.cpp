@@ -10,7 +10,7 @@
 
 #include "command.hpp"
 #include "impasto/session/timelapse.hpp"
-#include "progress.hpp"
+#include "progress_reporter.hpp"
 #include "replay_overrides.hpp"
 #include "video_writer.hpp"
 #include "vocabulary.hpp"

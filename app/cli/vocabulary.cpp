@@ -14,7 +14,7 @@
 
 #include "impasto/files/message_text.hpp"
 #include "impasto/util/text.hpp"
-#include "progress.hpp"
+#include "progress_reporter.hpp"
 
 namespace impasto::app {
 namespace {

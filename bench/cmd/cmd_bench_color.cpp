@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "command.hpp"
-#include "progress.hpp"
+#include "progress_reporter.hpp"
 #include "vocabulary.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).

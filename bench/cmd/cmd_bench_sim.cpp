@@ -12,7 +12,7 @@
 
 #include "command.hpp"
 #include "impasto/util/statistics.hpp"
-#include "progress.hpp"
+#include "progress_reporter.hpp"
 #include "vocabulary.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).

@@ -4,7 +4,7 @@
 // of light in a paint layer, and ΔE00 of flat swatches under a raking light.
 #include <impasto/data/lights.hpp>
 #include <impasto/data/pigments.hpp>
-#include <impasto/render/kubelka_munk.hpp>
+#include <impasto/render/kubelka_munk_cell.hpp>
 #include <impasto/render/subsurface.hpp>
 #include <impasto/render/surface_reference.hpp>
 #include <impasto/render/tile_renderer.hpp>

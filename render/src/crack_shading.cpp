@@ -4,8 +4,8 @@
 #include <span>
 
 #include "impasto/cracks/cavity_correction.hpp"
+#include "impasto/cracks/cavity_look.hpp"
 #include "impasto/cracks/cavity_table.hpp"
-#include "impasto/cracks/crack_shading.hpp"
 #include "impasto/cracks/gouffe.hpp"
 
 namespace impasto::render {

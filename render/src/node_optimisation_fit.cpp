@@ -12,7 +12,7 @@
 #include <string>
 
 #include "impasto/data/colorimetry.hpp"
-#include "impasto/render/kubelka_munk.hpp"
+#include "impasto/render/kubelka_munk_cell.hpp"
 
 namespace impasto::render {
 namespace {

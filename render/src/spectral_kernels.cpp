@@ -12,7 +12,7 @@ namespace {
 
 using util::greater;
 
-// One K-M layer (K, S per lane, thickness d) over `below`, in place: kubelka_munk.hpp's
+// One K-M layer (K, S per lane, thickness d) over `below`, in place: kubelka_munk_cell.hpp's
 // layer() and composite() with both branches computed and selected.
 inline void layer_over(const float* __restrict absorption, const float* __restrict scattering,
                        float d, float* __restrict below) {

@@ -5,7 +5,7 @@
 // loops are written branch-free over fixed 8-wide blocks and compiled twice (AVX2 and
 // baseline x86-64, util/simd_clones.hpp, no FMA: both give the same bits).
 //
-// They follow kubelka_munk.hpp (the reference) operation for operation, except that e^x is
+// They follow kubelka_munk_cell.hpp (the reference) operation for operation, except that e^x is
 // fast_exp below (within 2 ulp of std::exp), so results agree with the reference within a
 // few float ulps (tests/render/spectral_kernels_test.cpp).
 #include <bit>

@@ -5,7 +5,7 @@
 
 #include "impasto/data/cie.hpp"
 #include "impasto/data/lights.hpp"
-#include "impasto/render/kubelka_munk.hpp"
+#include "impasto/render/kubelka_munk_cell.hpp"
 #include "impasto/render/node_optimisation.hpp"
 #include "impasto/render/pigment_records.hpp"
 

@@ -6,11 +6,11 @@
 #include <vector>
 
 #include "impasto/cracks/cavity_correction.hpp"
-#include "impasto/cracks/crack_shading.hpp"
+#include "impasto/cracks/cavity_look.hpp"
+#include "impasto/cracks/crack_layer_maps.hpp"
 #include "impasto/cracks/craquelure.hpp"
 #include "impasto/cracks/gouffe.hpp"
 #include "impasto/cracks/monte_carlo.hpp"
-#include "impasto/cracks/painting_cracks.hpp"
 #include "impasto/render/tile_renderer.hpp"
 
 namespace {

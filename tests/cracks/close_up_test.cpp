@@ -4,8 +4,8 @@
 #include <cmath>
 #include <vector>
 
+#include "impasto/cracks/cavity_look.hpp"
 #include "impasto/cracks/close_up.hpp"
-#include "impasto/cracks/crack_shading.hpp"
 #include "impasto/cracks/gouffe.hpp"
 
 namespace impasto::cracks {

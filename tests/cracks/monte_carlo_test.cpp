@@ -5,9 +5,9 @@
 
 #include <cmath>
 
-#include "impasto/cracks/counter_rng.hpp"
 #include "impasto/cracks/gouffe.hpp"
 #include "impasto/cracks/monte_carlo.hpp"
+#include "impasto/cracks/philox_rng.hpp"
 
 namespace impasto::cracks {
 namespace {

@@ -1,6 +1,6 @@
 // Crack maps in a painting: conversion to the painting's crack records and back, craquelure
 // of a painting's dry layers, the crack brush on a painting, and the file round trip.
-#include "impasto/cracks/painting_cracks.hpp"
+#include "impasto/cracks/crack_layer_maps.hpp"
 
 #include <gtest/gtest.h>
 

@@ -4,7 +4,7 @@
 #include <numbers>
 #include <vector>
 
-#include "impasto/flakes/lights.hpp"
+#include "impasto/flakes/sparkle_lights.hpp"
 
 namespace impasto::flakes::test {
 

@@ -1,5 +1,5 @@
 // The GLSL ports of the per-cell K-M and shading maths against the CPU reference functions
-// (render/kubelka_munk.hpp, render/shading.hpp) and against their analytic limits.
+// (render/kubelka_munk_cell.hpp, render/shading.hpp) and against their analytic limits.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "impasto/render/kubelka_munk.hpp"
+#include "impasto/render/kubelka_munk_cell.hpp"
 #include "impasto/render/shading.hpp"
 #include "impasto/render_gl/framebuffer.hpp"
 #include "impasto/render_gl/fullscreen_pass.hpp"

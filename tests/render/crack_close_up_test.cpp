@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "impasto/cracks/crack_shading.hpp"
+#include "impasto/cracks/cavity_look.hpp"
 #include "impasto/cracks/gouffe.hpp"
 #include "impasto/render/render_painting.hpp"
 

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "impasto/render/kubelka_munk.hpp"
+#include "impasto/render/kubelka_munk_cell.hpp"
 
 using namespace impasto::render;
 

@@ -7,7 +7,7 @@
 #include "impasto/data/lights.hpp"
 #include "impasto/data/pigments.hpp"
 #include "impasto/render/color_accuracy.hpp"
-#include "impasto/render/kubelka_munk.hpp"
+#include "impasto/render/kubelka_munk_cell.hpp"
 #include "impasto/render/node_optimisation.hpp"
 #include "impasto/render/spectral_palette.hpp"
 

@@ -1,5 +1,5 @@
 // The per-cell Kubelka–Munk maths against closed forms and limits, at the extremes.
-#include "impasto/render/kubelka_munk.hpp"
+#include "impasto/render/kubelka_munk_cell.hpp"
 
 #include <gtest/gtest.h>
 

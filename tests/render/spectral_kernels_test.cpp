@@ -1,5 +1,5 @@
 // The tile renderer's spectral kernels (structure-of-arrays over the nodes, SIMD) against the
-// scalar reference (kubelka_munk.hpp, paint_layer.hpp): e^x, a layer over many cells, whole
+// scalar reference (kubelka_munk_cell.hpp, paint_layer.hpp): e^x, a layer over many cells, whole
 // renders with dry and wet paint, relief, half storage and Saunderson; the shading factors a
 // relight reuses against a fresh render; and the parallel PNG encoder.
 #include <gtest/gtest.h>

@@ -10,7 +10,7 @@
 #include "image_checks.hpp"
 #include "impasto/data/lights.hpp"
 #include "impasto/data/pigments.hpp"
-#include "impasto/render/kubelka_munk.hpp"
+#include "impasto/render/kubelka_munk_cell.hpp"
 #include "impasto/render/paint_layer.hpp"
 #include "three_pigment_palette.hpp"
 

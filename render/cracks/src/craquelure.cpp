@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "impasto/cracks/counter_rng.hpp"
+#include "impasto/cracks/philox_rng.hpp"
 
 namespace impasto::cracks {
 

@@ -9,7 +9,7 @@
 #include <stdexcept>
 
 #include "cavity_geometry.hpp"
-#include "impasto/cracks/counter_rng.hpp"
+#include "impasto/cracks/philox_rng.hpp"
 
 namespace impasto::cracks {
 

@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "impasto/flakes/lights.hpp"
+#include "impasto/flakes/sparkle_lights.hpp"
 
 namespace impasto::flakes {
 

@@ -1,5 +1,5 @@
 // Kubelka–Munk per-cell maths at one wavelength: a line-by-line port of
-// render/include/impasto/render/kubelka_munk.hpp (the CPU reference; see its comments for
+// render/include/impasto/render/kubelka_munk_cell.hpp (the CPU reference; see its comments for
 // the derivation and the limits these forms keep exact). Included after #version.
 
 // (1 - e^-x) / x, with a short series where x is tiny (GLSL has no expm1).

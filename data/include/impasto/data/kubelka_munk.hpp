@@ -1,7 +1,7 @@
 #pragma once
 // Kubelka–Munk relations of an opaque (infinitely thick) layer and the paint–air interface:
 // the one definition of each, written once on the scalar type. The K/S fit calls them in
-// double; the renderer's float reference (render/kubelka_munk.hpp) and its vectorised
+// double; the renderer's float reference (render/kubelka_munk_cell.hpp) and its vectorised
 // kernels (render/src/spectral_kernels.cpp) in float, inlined into their loops (plain
 // arithmetic, no branch a vector cannot select). The layer formulas of finite thickness live
 // in render/.

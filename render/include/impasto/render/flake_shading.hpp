@@ -10,7 +10,7 @@
 #include <span>
 #include <vector>
 
-#include "impasto/flakes/lights.hpp"
+#include "impasto/flakes/sparkle_lights.hpp"
 #include "impasto/flakes/sparkles.hpp"
 #include "impasto/paintcore/canvas.hpp"
 #include "impasto/render/render_settings.hpp"

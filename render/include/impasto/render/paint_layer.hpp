@@ -14,7 +14,7 @@ inline float pigment_concentration(float amount, float inverse_volume) {
 #include <algorithm>
 #include <span>
 
-#include "impasto/render/kubelka_munk.hpp"
+#include "impasto/render/kubelka_munk_cell.hpp"
 #include "impasto/render/spectral_palette.hpp"
 
 namespace impasto::render {

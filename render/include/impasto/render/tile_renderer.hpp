@@ -64,7 +64,7 @@ class TileRenderer {
 
   // The display-encoded (or linear, per settings.display) RGB of the whole canvas.
   Image image() const;
-  // The per-cell scalar code (kubelka_munk.hpp, one node at a time) instead of the spectral
+  // The per-cell scalar code (kubelka_munk_cell.hpp, one node at a time) instead of the spectral
   // kernels (structure-of-arrays over the nodes, SIMD): the reference the kernels are tested
   // against. Takes effect at the next render_all.
   void use_reference_kernels(bool reference) {

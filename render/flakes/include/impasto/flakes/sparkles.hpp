@@ -12,7 +12,7 @@
 
 #include "impasto/flakes/counter_rng.hpp"
 #include "impasto/flakes/flake_tables.hpp"
-#include "impasto/flakes/lights.hpp"
+#include "impasto/flakes/sparkle_lights.hpp"
 
 namespace impasto::flakes {
 

@@ -1,4 +1,4 @@
-#include "impasto/cracks/crack_shading.hpp"
+#include "impasto/cracks/cavity_look.hpp"
 
 #include <algorithm>
 #include <numbers>

@@ -1,4 +1,4 @@
-#include "impasto/cracks/painting_cracks.hpp"
+#include "impasto/cracks/crack_layer_maps.hpp"
 
 #include <cmath>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "progress.hpp"
+#include "progress_reporter.hpp"
 
 #include <unistd.h>
 
