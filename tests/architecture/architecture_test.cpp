@@ -32,7 +32,7 @@ Modules modules_in_the_build() {
   const std::regex call(R"(impasto_module\(\s*(\w+)([^)]*)\))");
   const std::regex dependency(R"(impasto::(\w+))");
   for (const char* top :
-       {"util", "files", "paintcore", "input", "data", "render", "session", "bench"})
+       {"util", "files", "paintcore", "input", "data", "optics", "render", "session", "bench"})
     for (const auto& entry : fs::recursive_directory_iterator(kSource / top)) {
       if (entry.path().filename() != "CMakeLists.txt") continue;
       const std::string text = read(entry.path());
@@ -81,7 +81,8 @@ std::vector<std::string> includes_outside(const std::regex& family,
                                           const std::vector<fs::path>& allowed) {
   std::vector<std::string> found;
   for (const char* top :
-       {"util", "files", "paintcore", "input", "data", "render", "session", "bench", "app"})
+       {"util", "files", "paintcore", "input", "data", "optics", "render", "session", "bench",
+        "app"})
     for (const auto& entry : fs::recursive_directory_iterator(kSource / top)) {
       const fs::path& file = entry.path();
       if (file.extension() != ".cpp" && file.extension() != ".hpp") continue;

@@ -1,5 +1,5 @@
 // Cracks seen from afar: the cavity's apparent reflectance blended into the cell by the
-// crack's area, as the CPU reference does it (render/cracks/src/cavity_look.cpp): Gouffe's
+// crack's area, as the CPU reference does it (optics/cracks/src/cavity_look.cpp): Gouffe's
 // closed form (gouffe.hpp, cracks::apparent_reflectance) plus, in the corrected model, the
 // measured correction blended for the light (cavity_correction.cpp, interpolate_difference in
 // cavity_table.cpp). Needs

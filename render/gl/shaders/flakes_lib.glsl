@@ -1,4 +1,4 @@
-// Sparkles of flake paint: a port of the CPU reference in render/flakes (counter_rng.hpp,
+// Sparkles of flake paint: a port of the CPU reference in optics/flakes (counter_rng.hpp,
 // sparkle_count.cpp, sparkle_math.hpp, fresnel.hpp, sparkles.cpp) and of the renderer hook
 // render/src/flake_shading.cpp, line by line, in float. Needs MAX_NODES; MAX_FLAKES (flake
 // pigments one canvas can hold on the GPU), FLAKE_ORIENTATION_SAMPLES and FLAKE_ANGLE_SAMPLES

@@ -1,5 +1,5 @@
 // Optics shared by the surface models and the flakes: one GLSL home, the twin of
-// render/flakes/include/impasto/flakes/fresnel.hpp (tests/gl/optics_glsl_test.cpp compares
+// optics/flakes/include/impasto/flakes/fresnel.hpp (tests/gl/optics_glsl_test.cpp compares
 // them). Guarded: the libraries that need it each bring it, and a shader holds it once.
 #ifndef OPTICS_LIB
 #define OPTICS_LIB
