@@ -66,6 +66,7 @@
 #include "window/shortcuts.hpp"
 #include "window/swatch_chips.hpp"
 #include "window/tablet_input.hpp"
+#include "window/tablets.hpp"
 #include "window/tool_bar.hpp"
 #include "window/ui_damage.hpp"
 #include "window/window_present.hpp"
@@ -175,11 +176,8 @@ class PaintWindow {
   void time_view_motion(double swap_time_s);
   void submit_pen_event(input::StrokeEvent event);
   void report_latency() const;
-  void start_tablets();
-  void poll_tablets();
   TabletTargetGeometry tablet_geometry() const;
   PaintingSnapshot snapshot();
-  void show_preview(const paintcore::Painting& painting);
   // The document replaced its painting (new, open, recovered, reframed): the view starts again.
   void painting_replaced();
   session::SimWorker& worker() { return document_->worker(); }
@@ -213,10 +211,7 @@ class PaintWindow {
   PigmentDriftNote pigment_drift_;
   SwatchChips swatch_chips_;
 
-  // Tablets, read on their own threads, polled once a frame.
-  std::unique_ptr<input::hid::TabletManager> tablets_;
-  double tablet_time_offset_s_ = 0.0;  // tablet clock -> session clock
-  double tablet_seen_s_ = -1e9;        // when a tablet last sent a sample (GLFW time)
+  std::unique_ptr<Tablets> tablets_;  // read on their own threads, polled once a frame
 
   // The mouse: every event from GLFW's callbacks, applied in order once a frame.
   PointerEventQueue pointer_events_;
@@ -246,9 +241,9 @@ class PaintWindow {
   // The painting and its session (after the panels: it opens the board beside the painting).
   std::unique_ptr<Document> document_;
   std::unique_ptr<CanvasViewer> viewer_;  // the painting on the GPU and its shaded view
-  // The preview of a session offered for recovery, as a texture.
-  unsigned preview_texture_ = 0;
-  int preview_w_ = 0, preview_h_ = 0;
+  // The preview of a session offered for recovery, as a texture (released with the window's
+  // context, in the destructor).
+  std::unique_ptr<PreviewTexture> preview_ = std::make_unique<PreviewTexture>();
   std::string shown_title_;
 };
 
@@ -264,14 +259,14 @@ PaintWindow::PaintWindow(const PaintOptions& options) : options_(options) {
   create_window();
   document_ = std::make_unique<Document>(options_, state_, board_panel_);
   viewer_ = std::make_unique<CanvasViewer>(worker());
-  start_tablets();
+  tablets_ = std::make_unique<Tablets>(glfwGetTime() - session_start_s_, state_);
 }
 
 PaintWindow::~PaintWindow() {
   tablets_.reset();
   document_.reset();
   viewer_.reset();
-  if (preview_texture_) glDeleteTextures(1, &preview_texture_);
+  preview_.reset();
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
@@ -333,30 +328,6 @@ void PaintWindow::create_window() {
   session_start_s_ = glfwGetTime();
 }
 
-// The recovered painting's false-colour view, at most 480 px across, as a texture.
-void PaintWindow::show_preview(const paintcore::Painting& painting) {
-  const render::Image full = session::render_preview(painting);
-  const int step = std::max(1, (std::max(full.width, full.height) + 479) / 480);
-  preview_w_ = std::max(1, full.width / step);
-  preview_h_ = std::max(1, full.height / step);
-  std::vector<float> rgb;
-  rgb.reserve(static_cast<std::size_t>(preview_w_) * preview_h_ * 3);
-  for (int y = 0; y < preview_h_; ++y) {
-    for (int x = 0; x < preview_w_; ++x) {
-      const float* p = full.pixel(x * step, y * step);
-      rgb.insert(rgb.end(), p, p + 3);
-    }
-  }
-  if (!preview_texture_) glGenTextures(1, &preview_texture_);
-  glBindTexture(GL_TEXTURE_2D, preview_texture_);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB32F, preview_w_, preview_h_, 0, GL_RGB, GL_FLOAT,
-               rgb.data());
-  glBindTexture(GL_TEXTURE_2D, 0);
-}
-
 void PaintWindow::painting_replaced() {
   viewer_->painting_replaced();
 }
@@ -368,22 +339,6 @@ void PaintWindow::note_an_empty_brush() {
   pointer_overlay_.stroke_began(
       worker().with_painting([](const paintcore::Painting& p) { return p.brush_totals().volume; }),
       glfwGetTime());
-}
-
-// Tablets are optional: without hidapi or without any tablet the mouse paints alone.
-void PaintWindow::start_tablets() {
-  if (!input::hid::hid_available()) return;
-  try {
-    tablets_ = std::make_unique<input::hid::TabletManager>();
-    // Tablet times count from the manager's origin (steady clock); the session's from the
-    // window's (GLFW time). Read both clocks now and the origin's age moves one onto the other.
-    const double origin_age_s =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - tablets_->origin())
-            .count();
-    tablet_time_offset_s_ = glfwGetTime() - origin_age_s - session_start_s_;
-  } catch (const std::exception& e) {
-    state_.tablet_error = e.what();
-  }
 }
 
 TabletTargetGeometry PaintWindow::tablet_geometry() const {
@@ -408,17 +363,6 @@ TabletTargetGeometry PaintWindow::tablet_geometry() const {
   geometry.canvas_h_cells = viewer_->height_cells();
   geometry.cell_mm = viewer_->cell_mm();
   return geometry;
-}
-
-void PaintWindow::poll_tablets() {
-  if (!tablets_) return;
-  state_.tablets = tablets_->tablets();
-  const std::vector<input::hid::TabletSamples> polled = tablets_->poll_tablets();
-  if (polled.empty() || viewer_->width_cells() == 0) return;
-  tablet_seen_s_ = glfwGetTime();
-  state_.tablet_samples +=
-      feed_tablet_samples(polled, tablet_time_offset_s_, state_.tablet, tablet_geometry(),
-                          canvas_feed_, &state_.tablet_error);
 }
 
 PaintingSnapshot PaintWindow::snapshot() {
@@ -528,7 +472,7 @@ void PaintWindow::handle_canvas_input() {
   frame.space_down = glfwGetKey(window_, GLFW_KEY_SPACE) == GLFW_PRESS;
   // While a tablet's pen is near, it paints: it moves the cursor and presses the button
   // too, and its own samples carry the real pressure.
-  frame.tablet_near = glfwGetTime() - tablet_seen_s_ < 0.25;
+  frame.tablet_near = tablets_->near(glfwGetTime());
   frame.canvas_at = [](double x, double y) { return !ui_at(x, y); };
   // The eyedropper (its tool, or Alt held) takes left presses on the canvas; a stroke under
   // way goes on to its end.
@@ -789,8 +733,8 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   pigment_drift_.draw(state_, worker());
   std::optional<RecoveryPreview> preview;
   if (document_->previewing() && document_->preview()) {
-    preview = RecoveryPreview{*document_->previewing(), preview_texture_, preview_w_, preview_h_,
-                              document_->preview()->base};
+    preview = RecoveryPreview{*document_->previewing(), preview_->texture(), preview_->width(),
+                              preview_->height(), document_->preview()->base};
   }
   const RecoveryChoice recovery = draw_recovery_offer(document_->recoverable(), preview);
   const bool opening = opening_ && !take_screenshot;
@@ -803,7 +747,7 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   state_.frame_ms = ms_since(start);
   switch (document_->recover(recovery)) {
     case Document::Recovered::kPreviewReady:
-      show_preview(document_->preview()->painting);
+      preview_->show(document_->preview()->painting);
       break;
     case Document::Recovered::kReplaced:
       painting_replaced();
@@ -865,7 +809,8 @@ void PaintWindow::run() {
     update_title();
     // Reports written to the older status line are shown as notifications.
     handle_shortcuts();
-    poll_tablets();
+    tablets_->poll(
+        state_, [this] { return tablet_geometry(); }, canvas_feed_, glfwGetTime());
     handle_canvas_input();
     // A scripted run waits until the replay is applied, the palette's own rule is built and a
     // few frames have laid out the panels, then captures the whole window.

@@ -1,8 +1,13 @@
 #include "window/session_banner.hpp"
 
 #include <imgui.h>
+#include <impasto/render_gl/gl.hpp>
 
+#include <algorithm>
 #include <cstdint>
+#include <vector>
+
+#include "impasto/session/preview.hpp"
 
 namespace impasto::app::window {
 namespace {
@@ -86,6 +91,32 @@ RecoveryChoice draw_recovery_offer(const std::vector<session::SessionEntry>& ses
   if (last) ImGui::CloseCurrentPopup();
   ImGui::EndPopup();
   return choice;
+}
+
+PreviewTexture::~PreviewTexture() {
+  if (texture_) glDeleteTextures(1, &texture_);
+}
+
+void PreviewTexture::show(const paintcore::Painting& painting) {
+  const render::Image full = session::render_preview(painting);
+  const int step = std::max(1, (std::max(full.width, full.height) + 479) / 480);
+  width_ = std::max(1, full.width / step);
+  height_ = std::max(1, full.height / step);
+  std::vector<float> rgb;
+  rgb.reserve(static_cast<std::size_t>(width_) * height_ * 3);
+  for (int y = 0; y < height_; ++y) {
+    for (int x = 0; x < width_; ++x) {
+      const float* p = full.pixel(x * step, y * step);
+      rgb.insert(rgb.end(), p, p + 3);
+    }
+  }
+  if (!texture_) glGenTextures(1, &texture_);
+  glBindTexture(GL_TEXTURE_2D, texture_);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB32F, width_, height_, 0, GL_RGB, GL_FLOAT, rgb.data());
+  glBindTexture(GL_TEXTURE_2D, 0);
 }
 
 }  // namespace impasto::app::window

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "impasto/paintcore/painting.hpp"
 #include "impasto/session/session_registry.hpp"
 #include "impasto/session/sim_worker.hpp"
 
@@ -26,6 +27,24 @@ struct RecoveryPreview {
   unsigned texture = 0;   // OpenGL texture name
   int width = 0, height = 0;
   std::string caption;
+};
+
+// A rebuilt session's false-colour view (session/preview.hpp), at most 480 px across, as an
+// OpenGL texture for the offer.
+class PreviewTexture {
+ public:
+  PreviewTexture() = default;
+  PreviewTexture(const PreviewTexture&) = delete;
+  PreviewTexture& operator=(const PreviewTexture&) = delete;
+  ~PreviewTexture();
+  void show(const paintcore::Painting& painting);
+  unsigned texture() const { return texture_; }
+  int width() const { return width_; }
+  int height() const { return height_; }
+
+ private:
+  unsigned texture_ = 0;
+  int width_ = 0, height_ = 0;
 };
 
 // The offer to recover `sessions`, modal (the canvas takes no input while it is open).
