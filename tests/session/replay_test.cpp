@@ -103,10 +103,11 @@ wipe
 
 // A recording at a high dpi that names no brush replays with the default head narrowed to
 // what the cells allow (it once failed: "6 mm is 1181 cells at this DPI", naming no line).
+// A short, light touch: each step of a head that wide covers the whole 1.5 mm canvas.
 TEST(Replay, AFineCanvasNarrowsTheDefaultBrushToFit) {
   std::istringstream text(
-      "impasto-strokes 1\ncanvas 600 600 5000\npen 0 1 1 0.5 0 0 0 1\n"
-      "pen 0.01 2 2 0.5 0 0 0 1\npen 0.02 2 2 0 0 0 0 0\n");
+      "impasto-strokes 1\ncanvas 300 300 5000\npen 0 0.75 0.75 0.1 0 0 0 1\n"
+      "pen 0.01 0.8 0.8 0.1 0 0 0 1\npen 0.02 0.8 0.8 0 0 0 0 0\n");
   const auto file = input::parse_strokes(text, "fine.strokes");
   const paintcore::Painting painting = replay(file, {});
   EXPECT_LE(painting.brush().cells_across(), paintcore::kMaxBrushCells);
