@@ -12,11 +12,6 @@
 namespace impasto::app::window {
 namespace {
 
-std::array<float, 3> clamped_rgb(const session::DisplayRgb& rgb) {
-  return {std::clamp(rgb[0], 0.0f, 1.0f), std::clamp(rgb[1], 0.0f, 1.0f),
-          std::clamp(rgb[2], 0.0f, 1.0f)};
-}
-
 // The Palette panel's sliders run from 0 to this many parts.
 constexpr float kPaletteMaxParts = 10.0f;
 
@@ -50,11 +45,11 @@ void render_picked_colours(PickedPaint& picked, const render::RenderSettings& se
   // The layer: the visible paint's thickness, wet where it is wet, else the dry paint's.
   const double layer_mm = std::max(picked.dry ? picked.dry_mm : picked.wet_mm, 1e-3);
   picked.masstone_rgb =
-      clamped_rgb(session::render_flat_layers(settings, std::span(&mix, 1),
-                                              session::masstone_thickness_mm(settings))
-                      .front());
+      session::clamped(session::render_flat_layers(settings, std::span(&mix, 1),
+                                                   session::masstone_thickness_mm(settings))
+                           .front());
   picked.layer_rgb =
-      clamped_rgb(session::render_flat_layers(settings, std::span(&mix, 1), layer_mm).front());
+      session::clamped(session::render_flat_layers(settings, std::span(&mix, 1), layer_mm).front());
   picked.rendered = true;
 }
 

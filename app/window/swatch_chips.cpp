@@ -9,11 +9,6 @@
 namespace impasto::app::window {
 namespace {
 
-std::array<float, 3> clamped(const session::DisplayRgb& rgb) {
-  return {std::clamp(rgb[0], 0.0f, 1.0f), std::clamp(rgb[1], 0.0f, 1.0f),
-          std::clamp(rgb[2], 0.0f, 1.0f)};
-}
-
 // A glaze thin enough to show a dark paint's hue over the ground (2 optical units at the
 // default thickness scale).
 constexpr double kGlazeChipMm = 0.01;
@@ -47,19 +42,19 @@ void SwatchChips::update(WindowState& s, const paintcore::CanvasSpec& canvas) {
     try {
       const Result result = job_.get();
       if (result.swatch) {
-        s.swatch_on_canvas_rgb = clamped(result.swatch->on_canvas);
-        s.swatch_masstone_rgb = clamped(result.swatch->masstone);
+        s.swatch_on_canvas_rgb = session::clamped(result.swatch->on_canvas);
+        s.swatch_masstone_rgb = session::clamped(result.swatch->masstone);
         s.swatch_thickness_mm = result.swatch->deposit.median_mm;
       }
       s.pigment_masstone_rgb.clear();
       s.pigment_layer_rgb.clear();
       for (const session::DisplayRgb& rgb : result.pigment_masstones)
-        s.pigment_masstone_rgb.push_back(clamped(rgb));
+        s.pigment_masstone_rgb.push_back(session::clamped(rgb));
       for (const session::DisplayRgb& rgb : result.pigment_layers)
-        s.pigment_layer_rgb.push_back(clamped(rgb));
+        s.pigment_layer_rgb.push_back(session::clamped(rgb));
       s.pigment_glaze_rgb.clear();
       for (const session::DisplayRgb& rgb : result.pigment_glazes)
-        s.pigment_glaze_rgb.push_back(clamped(rgb));
+        s.pigment_glaze_rgb.push_back(session::clamped(rgb));
       s.swatch_error.clear();
     } catch (const std::exception& e) {
       s.swatch_error = e.what();

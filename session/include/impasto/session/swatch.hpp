@@ -8,6 +8,7 @@
 #include <impasto/paintcore/painting.hpp>
 #include <impasto/render/render_settings.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -50,6 +51,11 @@ struct Deposit {
 Deposit wet_deposit(const paintcore::Painting& painting);
 
 using DisplayRgb = std::array<float, 3>;  // as the renderer writes it under settings.display
+// The colour within [0, 1] each, as a chip or a colour button shows it.
+inline DisplayRgb clamped(const DisplayRgb& rgb) {
+  return {std::clamp(rgb[0], 0.0f, 1.0f), std::clamp(rgb[1], 0.0f, 1.0f),
+          std::clamp(rgb[2], 0.0f, 1.0f)};
+}
 
 // The area of strokes painted along x: in each column, the cells from the first to the last
 // painted one, so the skips between bristles count as the eye sees them, part of the stroke.
