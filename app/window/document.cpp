@@ -401,4 +401,21 @@ void Document::close(bool terminated) {
   if (!recording_failure_.empty()) throw std::runtime_error(recording_failure_);
 }
 
+PaintingSnapshot Document::snapshot() {
+  return worker_->with_painting([](const paintcore::Painting& p) {
+    PaintingSnapshot s;
+    s.width_cells = p.canvas().width_cells();
+    s.height_cells = p.canvas().height_cells();
+    s.dpi = p.canvas().spec().dpi;
+    s.undo_depth = p.undo_depth();
+    s.redo_depth = p.redo_depth();
+    s.dry_layers = p.canvas().dry_layers().size();
+    s.slots = p.pigment_slots();
+    s.brush_volume_mm3 = p.brush_totals().volume;
+    s.brush_head = p.brush().head();
+    s.brush_cells = p.brush().cells_across();
+    return s;
+  });
+}
+
 }  // namespace impasto::app::window

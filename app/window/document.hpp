@@ -35,6 +35,8 @@ class Document {
   ~Document();
 
   session::SimWorker& worker() { return *worker_; }
+  // What the panels show of the painting this frame (waits for the simulation's lock).
+  PaintingSnapshot snapshot();
   // What the session's start or a recovery has to say (a banner), until the next save.
   const std::string& notice() const { return notice_; }
 

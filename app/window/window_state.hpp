@@ -183,4 +183,8 @@ inline input::LoadEvent load_event(const WindowState& s) {
   return event;
 }
 
+// The state a window opens with: D65, `wavelengths`, the brush heads and presets found, the
+// recent files.
+WindowState initial_window_state(int wavelengths);
+
 }  // namespace impasto::app::window
