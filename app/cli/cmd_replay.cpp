@@ -29,6 +29,7 @@ struct ReplayArgs {
   std::optional<double> dpi;
   std::optional<CanvasSize> size;
   std::vector<std::string> params;
+  std::string quality;  // empty: the recording's own
   int threads = 0;
   double source_dpi = 150.0;
   bool no_auto_load = false;
@@ -81,6 +82,8 @@ void run_replay(ReplayArgs args) {
   if (!args.out.empty()) render::image_file_type(args.out);
   session::ReplayOptions options = replay_options(args.size, args.dpi, args.threads, args.params);
   options.auto_load = !args.no_auto_load;
+  if (!args.quality.empty())
+    options.quality = util::parse_name(paintcore::kStepQualityNames, args.quality, "quality");
   input::ImportOptions import;
   import.source_dpi = args.source_dpi;
   const input::StrokeFile file = input::load_strokes_any(args.strokes, import);
@@ -166,6 +169,9 @@ const CommandRegistrar registrar("replay", [](CLI::App& root) {
   add_size_option(*cmd, args->size, "a blank canvas instead of the recording's");
   add_dpi_option(*cmd, args->dpi, "a blank canvas instead of the recording's");
   cmd->add_option("--param", args->params, vocabulary_help("--param"));
+  add_quality_option(*cmd, args->quality,
+                     "every stroke, whatever the recording's quality records say (balanced "
+                     "where it has none)");
   add_threads_option(*cmd, args->threads);
   cmd->add_option("--source-dpi", args->source_dpi,
                   "Pixels per inch of a libmypaint .dat recording")

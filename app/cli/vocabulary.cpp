@@ -1,5 +1,7 @@
 #include "vocabulary.hpp"
 
+#include <impasto/paintcore/step_quality.hpp>
+
 #include <impasto/cracks/cavity.hpp>
 #include <impasto/paintcore/paint_body.hpp>
 #include <impasto/paintcore/simulation_params.hpp>
@@ -103,6 +105,8 @@ const std::vector<VocabularyChoice>& vocabulary_choices() {
         choice("--shape", "a crack's or a pit's section", cracks::kCavityShapeNames,
                cracks::CavityShape::VGroove),
     };
+    list.push_back(choice("--quality", "how finely the simulation steps a brush",
+                          paintcore::kStepQualityNames, paintcore::StepQuality::balanced));
     list.push_back(choice("--surface", "the paint surface's reflection model",
                           render::kSurfaceModelNames, defaults.surface.model));
     list.push_back(choice("--medium", "the finish the paint's medium dries to",
@@ -306,6 +310,15 @@ CLI::Option* add_save_option(CLI::App& cmd, std::string& save, std::string_view 
 
 CLI::Option* add_json_flag(CLI::App& cmd, bool& json, std::string_view detail) {
   return cmd.add_flag("--json", json, vocabulary_help("--json", detail));
+}
+
+CLI::Option* add_quality_option(CLI::App& cmd, std::string& quality, std::string_view detail) {
+  std::string help =
+      "How finely the simulation steps a brush: exact (a cell at a time), balanced or fast "
+      "(quicker on big brushes, a faint ripple; docs/simulation.md, Quality)";
+  if (!detail.empty()) help += "; " + std::string(detail);
+  return cmd.add_option("--quality", quality, help)
+      ->check(CLI::IsMember(util::names_of(paintcore::kStepQualityNames)));
 }
 
 CLI::Option* add_threads_option(CLI::App& cmd, int& threads) {

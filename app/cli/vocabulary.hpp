@@ -46,6 +46,8 @@ CLI::Option* add_out_option(CLI::App& cmd, std::string& out, std::string_view de
 CLI::Option* add_light_dir_option(CLI::App& cmd, std::string& light_dir);
 CLI::Option* add_save_option(CLI::App& cmd, std::string& save, std::string_view detail = {});
 CLI::Option* add_json_flag(CLI::App& cmd, bool& json, std::string_view detail);
+// --quality LEVEL: exact, balanced or fast (paintcore::kStepQualityNames).
+CLI::Option* add_quality_option(CLI::App& cmd, std::string& quality, std::string_view detail = {});
 CLI::Option* add_threads_option(CLI::App& cmd, int& threads);
 
 // An option whose value is one of an enum's names (CLI11 checks it; the help lists them).

@@ -12,6 +12,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <impasto/input/stroke_import.hpp>
+#include <impasto/paintcore/step_quality.hpp>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -32,7 +34,9 @@
 #include <vector>
 
 #include "command.hpp"
+#include "impasto/bench/simulation.hpp"
 #include "impasto/session/recovery_folder.hpp"
+#include "impasto/session/replay.hpp"
 #include "impasto/session/session_registry.hpp"
 #include "latency_lines.hpp"
 #include "screen_spot.hpp"
@@ -49,6 +53,12 @@ struct BenchWindowArgs {
   std::vector<std::string> canvases = {"1024x768", "4096x3072"};
   int window_w = 1400, window_h = 900;
   int brush_cells = 128;  // the brush's width in cells
+  std::string head = "round";
+  bool wet = false;  // a layer of wet paint under the circles first
+  std::string quality{
+      util::name_of(paintcore::kStepQualityNames, paintcore::StepQuality::balanced)};
+  bool catch_up = true;  // fast steps while the simulation is behind (the window's default)
+  bool marks = false;    // compare the recorded session's marks with exact steps'
   double dpi = 300.0;
   double load_mm3 = 0.0;  // paint on the brush (0: the drawing path and an empty brush's sim)
   int circles = 3;
@@ -74,8 +84,21 @@ struct BenchWindowArgs {
 struct Latency {
   int width = 0, height = 0;
   LatencyFigures figures;
-  MotionFrames frames;  // view motions only
+  MotionFrames frames;                           // view motions only
+  std::optional<bench::HeightDifference> marks;  // --marks: the session's against exact steps
 };
+
+// The session the window recorded, replayed as recorded (every change of quality where the
+// window made it) and at exact quality: how far the window's marks lie from exact steps'.
+bench::HeightDifference marks_against_exact(const std::filesystem::path& session) {
+  const input::StrokeFile file = input::load_strokes_any(session);
+  session::ReplayOptions as_recorded;
+  session::ReplayOptions exact;
+  exact.quality = paintcore::StepQuality::exact;
+  const paintcore::Painting painted = session::replay(file, as_recorded);
+  const paintcore::Painting reference = session::replay(file, exact);
+  return bench::compare_wet_heights(painted.canvas(), reference.canvas());
+}
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -146,6 +169,43 @@ void forget_sessions_of(pid_t pid) {
   }
 }
 
+// A layer of wet paint (White, heavy, about 0.3 mm) under where the circles go:
+// horizontal sweeps of a wide flat over the middle of the canvas, which the window fits
+// left of its panels as the circles' radius in cells needs.
+void write_wet_layer(std::ostream& file, const BenchWindowArgs& args, int width, int height) {
+  const double cell_mm = 25.4 / args.dpi;
+  const double pixels_per_cell = std::min(static_cast<double>(args.window_w - 360) / width,
+                                          static_cast<double>(args.window_h - 60) / height);
+  const double reach = args.radius_px / pixels_per_cell + args.brush_cells;  // cells
+  const double sweep = std::clamp(reach / 2.0, 16.0, 600.0);                 // the flat's width
+  const double cx = width / 2.0, cy = height / 2.0;
+  const double x0 = std::max(0.0, cx - reach), x1 = std::min(width - 1.0, cx + reach);
+  file << "brush flat size=" << sweep * cell_mm << " stiffness=0.5\n";
+  double t = 0.0;
+  for (double y = std::max(sweep / 2, cy - reach); y <= std::min(height - sweep / 2, cy + reach);
+       y += 0.8 * sweep) {
+    const double length_mm = (x1 - x0) * cell_mm;
+    file << "wipe\nload " << 1.3 * 0.3 * length_mm * sweep * cell_mm << " \"White\" 1 body=heavy\n";
+    for (double x = x0; x <= x1; x += sweep / 8.0, t += 0.008)
+      file << "pen " << t << " " << x * cell_mm << " " << y * cell_mm << " 0.7 0 0 0 17\n";
+    file << "pen " << t << " " << x1 * cell_mm << " " << y * cell_mm << " 0 0 0 0 16\n";
+    t += 0.5;
+  }
+}
+
+// Until the window says its replay is on screen (cmd_paint's "replayed:" line).
+void wait_for_replay(const std::filesystem::path& out, double timeout_s) {
+  const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+  while (std::chrono::steady_clock::now() < until) {
+    std::ifstream text(out);
+    const std::string printed((std::istreambuf_iterator<char>(text)), {});
+    if (printed.find("replayed: ") != std::string::npos) return;
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  throw std::runtime_error("the window did not show its replay within " +
+                           std::to_string(static_cast<int>(timeout_s)) + " s");
+}
+
 Latency measure(const BenchWindowArgs& args, int width, int height,
                 const std::filesystem::path& dir) {
   const double cell_mm = 25.4 / args.dpi;
@@ -153,23 +213,29 @@ Latency measure(const BenchWindowArgs& args, int width, int height,
   const auto strokes = dir / (name + ".strokes");
   {
     std::ofstream file(strokes);
-    file << "impasto-strokes 1\ncanvas " << width << " " << height << " " << args.dpi
-         << "\nbrush round size=" << args.brush_cells * cell_mm << " stiffness=0.5\n";
-    if (args.load_mm3 > 0) file << "load " << args.load_mm3 << " \"Red Oxide\" 5\n";
+    file << "impasto-strokes 1\ncanvas " << width << " " << height << " " << args.dpi << "\n";
+    if (args.wet) write_wet_layer(file, args, width, height);
+    file << "brush " << args.head << " size=" << args.brush_cells * cell_mm << " stiffness=0.5\n";
+    if (args.load_mm3 > 0) file << "wipe\nload " << args.load_mm3 << " \"Red Oxide\" 5\n";
   }
   const auto out = dir / (name + "-window.txt");
-  const pid_t pid = start_window(
-      {"impasto", "paint", "--replay", strokes.string(), "--record",
-       (dir / (name + "-session.strokes")).string(), "--window-width",
-       std::to_string(args.window_w), "--window-height", std::to_string(args.window_h)},
-      out);
+  const auto session = dir / (name + "-session.strokes");
+  std::vector<std::string> paint = {"impasto",         "paint",
+                                    "--replay",        strokes.string(),
+                                    "--record",        session.string(),
+                                    "--window-width",  std::to_string(args.window_w),
+                                    "--window-height", std::to_string(args.window_h),
+                                    "--quality",       args.quality};
+  if (!args.catch_up) paint.push_back("--no-catch-up");
+  const pid_t pid = start_window(paint, out);
   std::string failure;
   try {
     const std::string id = run_output("timeout 30 xdotool search --sync --onlyvisible --pid " +
                                       std::to_string(pid) + " --name ' Impasto$' | head -1");
     if (id.empty()) throw std::runtime_error("the window did not appear within 30 s");
     const std::string window = id.substr(0, id.find('\n'));
-    std::this_thread::sleep_for(std::chrono::seconds(3));  // the replay applied, panels laid out
+    wait_for_replay(out, args.wet ? 600.0 : 60.0);
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
     // Circles about the middle of the canvas's part of the window (left of the panels).
     const double cx = (args.window_w - 360) / 2.0, cy = args.window_h / 2.0;
     const auto xdotool = [&](const std::string& script, const std::string& what) {
@@ -257,7 +323,9 @@ Latency measure(const BenchWindowArgs& args, int width, int height,
     throw std::runtime_error("impasto paint printed no " + args.kind() + " latency (exit status " +
                              std::to_string(status) + "): " + printed);
   }
-  return {width, height, *figures, frames.value_or(MotionFrames{})};
+  Latency result{width, height, *figures, frames.value_or(MotionFrames{}), std::nullopt};
+  if (args.marks) result.marks = marks_against_exact(session);
+  return result;
 }
 
 void run(const BenchWindowArgs& args) {
@@ -286,6 +354,8 @@ void run(const BenchWindowArgs& args) {
     j["window"] = {args.window_w, args.window_h};
     j["kind"] = args.kind();
     j["brush_cells"] = args.brush_cells;
+    j["head"] = args.head;
+    j["wet"] = args.wet;
     j["load_mm3"] = args.load_mm3;
     if (args.zoom_clicks > 0) j["zoom_interval_s"] = args.zoom_interval_s;
     if (args.rotate_drags > 0 || args.light_drags > 0) j["moves_per_drag"] = args.moves;
@@ -295,6 +365,14 @@ void run(const BenchWindowArgs& args) {
                                {"median_ms", r.figures.median_ms},
                                {"p95_ms", r.figures.p95_ms},
                                {"samples", r.figures.events}});
+      if (r.marks) {
+        j["canvases"].back()["marks_against_exact"] = {
+            {"mean_height_mm", r.marks->mean_height_mm},
+            {"mean_error_mm", r.marks->mean_error_mm},
+            {"max_error_mm", r.marks->max_error_mm},
+            {"mean_block_error_mm", r.marks->mean_block_error_mm},
+            {"max_block_error_mm", r.marks->max_block_error_mm}};
+      }
       if (args.view_motion()) {
         j["canvases"].back()["coarse_frames"] = r.frames.coarse;
         j["canvases"].back()["coarse_factor"] = r.frames.median_factor;
@@ -319,9 +397,11 @@ void run(const BenchWindowArgs& args) {
          << " drags of the light's disc, " << args.moves << " moves at 125 Hz";
     events = "events";
   } else {
-    what << "input latency, mouse event to the swap showing it (" << args.brush_cells
-         << "-cell brush, " << args.load_mm3 << " mm3 loaded, " << args.circles << " circles of "
-         << args.moves << " moves at 125 Hz";
+    what << "input latency, mouse event to the swap showing it (" << args.brush_cells << "-cell "
+         << args.head << ", " << args.load_mm3 << " mm3 loaded"
+         << (args.wet ? " over wet paint" : "") << ", " << args.circles << " circles of "
+         << args.moves << " moves at 125 Hz, quality " << args.quality
+         << (args.catch_up ? " (fast while behind)" : "");
   }
   std::cout << what.str() << ", " << args.window_w << "x" << args.window_h << " window):\n";
   for (const Latency& r : results) {
@@ -332,6 +412,12 @@ void run(const BenchWindowArgs& args) {
       std::cout << "; " << r.frames.coarse << " coarse frames, median factor "
                 << r.frames.median_factor << ", frames " << r.frames.interval_ms
                 << " ms apart while moving";
+    }
+    if (r.marks) {
+      std::cout << "; wet paint against exact steps: " << r.marks->mean_error_mm << " mm mean, "
+                << r.marks->max_error_mm << " mm max (4x4 blocks " << r.marks->mean_block_error_mm
+                << " / " << r.marks->max_block_error_mm << " mm; mean height "
+                << r.marks->mean_height_mm << " mm)";
     }
     std::cout << "\n";
   }
@@ -351,6 +437,17 @@ void setup(CLI::App& root) {
       ->check(finite_range(240, 8192));
   cmd->add_option("--brush", args->brush_cells, "Brush width in cells")
       ->check(finite_range(1, 4096));
+  cmd->add_option("--head", args->head, "Brush head (a file in the brushes folder)")
+      ->capture_default_str();
+  add_quality_option(*cmd, args->quality, "the window's")->capture_default_str();
+  cmd->add_flag("--no-catch-up{false}", args->catch_up,
+                "The window keeps its quality while behind (by default it takes fast steps)");
+  cmd->add_flag("--marks", args->marks,
+                "Then replay the session the window recorded, as recorded and at exact quality, "
+                "and compare their wet paint (the cost of its quality in the marks)");
+  cmd->add_flag("--wet", args->wet,
+                "Paint a layer of wet paint (White, heavy, about 0.3 mm) under the "
+                "circles first");
   add_dpi_option(*cmd, args->dpi);
   cmd->add_option("--load", args->load_mm3, "Paint loaded on the brush, mm3 (Red Oxide)")
       ->check(finite_range(0.0, 10000.0));

@@ -17,6 +17,8 @@ namespace {
 
 struct PaintArgs {
   std::string painting, replay, screenshot, record;
+  std::string quality{
+      util::name_of(paintcore::kStepQualityNames, paintcore::StepQuality::balanced)};
   std::optional<CanvasSize> size;
   window::PaintOptions options;
 };
@@ -50,6 +52,11 @@ void setup(CLI::App& root) {
   add_dpi_option(*cmd, args->options.new_canvas.dpi, "for a new canvas");
   add_wavelengths_option(*cmd, args->options.wavelengths, false,
                          "here 1..16 (the window renders on the GPU)");
+  add_quality_option(*cmd, args->quality, "to begin with (the View panel changes it)")
+      ->capture_default_str();
+  cmd->add_flag("--no-catch-up{false}", args->options.catch_up,
+                "Keep the quality while the simulation is behind the pen (by default it takes "
+                "fast steps until it has caught up)");
   add_deprecated_option(*cmd, "--width", "--size WxH", [args](const std::string& text) {
     args->options.new_canvas.width_cells = parse_canvas_size(text + "x1", "--width").width;
   });
@@ -58,6 +65,7 @@ void setup(CLI::App& root) {
   });
   cmd->callback([args] {
     window::PaintOptions options = args->options;
+    options.quality = util::parse_name(paintcore::kStepQualityNames, args->quality, "quality");
     if (args->size) {
       options.new_canvas.width_cells = args->size->width;
       options.new_canvas.height_cells = args->size->height;

@@ -46,6 +46,9 @@ void InputRouter::route() {
   tablets_->poll(
       state_, [this] { return tablet_geometry(); }, feed_, shell_.now_s());
   route_pointer();
+  // The status bar says so while a sample taken at fast steps is still on its way.
+  state_.catching_up =
+      catch_up_.catching_up() && latency_.behind_ms(shell_.now_s() - session_start_s_) > 0.0;
 }
 
 TabletTargetGeometry InputRouter::tablet_geometry() const {
@@ -84,12 +87,22 @@ void InputRouter::pen_sample(const PointerEvent& at, bool tip_down) {
 void InputRouter::submit_pen_event(input::StrokeEvent event) {
   const auto* sample = std::get_if<input::SampleEvent>(&event);
   const double time_s = sample ? sample->sample.time_s : 0.0;
+  if (sample) choose_quality(shell_.now_s());
   worker().submit(std::move(event));
   const double now = shell_.now_s();
   document_.note_input(now);
   // Only this thread submits, so the count just read is this event's job number.
   if (sample) latency_.submitted(worker().stats().submitted, time_s);
   if (sample && (sample->sample.buttons & paintcore::kPenTip) != 0) tip_down_s_ = now;
+}
+
+// Each change of quality is a record in the session, so a replay steps as the window did.
+void InputRouter::choose_quality(double now_s) {
+  const paintcore::StepQuality wanted =
+      catch_up_.next(state_.quality, state_.catch_up, latency_.behind_ms(now_s - session_start_s_));
+  if (sent_quality_ == wanted) return;
+  worker().submit(input::QualityEvent{wanted});
+  sent_quality_ = wanted;
 }
 
 void InputRouter::pan_view(double from_x, double from_y, double to_x, double to_y, double time_s) {

@@ -4,6 +4,7 @@
 // the simulation, view motions, eyedropper picks and commands, in the order they came. A
 // stroke's samples go through one pen feed; a brush change asked mid-stroke waits for it to end.
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,8 @@ class InputRouter {
   // This frame's presses and moves (what moved the light, when the Light panel's disc did).
   const std::vector<double>& frame_pointer_times() const { return frame_pointer_times_; }
   bool pick_cursor() const { return pick_cursor_; }  // the eyedropper would pick here
+  // A new painting steps at the chosen quality from its first sample (its file may hold any).
+  void painting_replaced() { sent_quality_.reset(); }
 
  private:
   void route_keys();
@@ -48,6 +51,8 @@ class InputRouter {
   void pan_view(double from_x, double from_y, double to_x, double to_y, double time_s);
   void rotate_view(double from_x, double from_y, double to_x, double to_y, double time_s);
   void submit_pen_event(input::StrokeEvent event);
+  // Before a pen sample: the quality the simulation should step it at, told when it changes.
+  void choose_quality(double now_s);
   TabletTargetGeometry tablet_geometry() const;
   session::SimWorker& worker() { return document_.worker(); }
 
@@ -77,6 +82,8 @@ class InputRouter {
   bool pick_cursor_ = false;
   std::string head_before_knife_ = "round";  // where B returns to from the knife (K)
   std::unique_ptr<Tablets> tablets_;         // read on their own threads, polled once a frame
+  CatchUp catch_up_;
+  std::optional<paintcore::StepQuality> sent_quality_;  // the last quality record submitted
 };
 
 }  // namespace impasto::app::window

@@ -1,6 +1,7 @@
 #pragma once
 // What `impasto paint` was asked to do.
 #include <impasto/paintcore/canvas.hpp>
+#include <impasto/paintcore/step_quality.hpp>
 
 #include <filesystem>
 #include <optional>
@@ -18,6 +19,10 @@ struct PaintOptions {
   int window_height = 900;
   paintcore::CanvasSpec new_canvas{1024, 768, 150.0, 1};  // when no painting is opened
   int wavelengths = 8;
+  // How finely the simulation steps the brush, and whether it takes fast steps while it is
+  // behind the pen (the View panel's Quality).
+  paintcore::StepQuality quality = paintcore::StepQuality::balanced;
+  bool catch_up = true;
   // An autosave to the recovery folder at least this often while painting (and whenever the
   // pen rests a few seconds).
   double autosave_seconds = 120.0;

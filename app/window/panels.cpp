@@ -469,6 +469,22 @@ void brush_panel(PanelContext& c) {
   ImGui::BeginDisabled(s.pressure_from_speed);
   ImGui::SliderFloat("mouse pressure", &s.mouse_pressure, 0.05f, 1.0f);
   ImGui::EndDisabled();
+  // Sent with the next pen sample (InputRouter::choose_quality), as the session records it.
+  enum_combo("quality", s.quality, paintcore::kStepQualityNames);
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "How finely the simulation steps the brush along its path. exact: a cell at a time;\n"
+        "balanced: big brushes (64 cells and more) a sixteenth of their width; fast: an\n"
+        "eighth from 32 cells, quicker on big brushes, with a faint ripple along the stroke.\n"
+        "docs/simulation.md, Quality.");
+  }
+  ImGui::Checkbox("fast while behind", &s.catch_up);
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip(
+        "When the screen falls 150 ms behind the pen, take fast steps until it is back\n"
+        "within 50 ms. Replay the session with `impasto replay --quality exact` to paint\n"
+        "it again at full quality.");
+  }
 }
 
 // The light's spectrum over the rendering range with the quadrature nodes marked.
@@ -742,7 +758,9 @@ void status_bar(PanelContext& c) {
                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus);
   const session::SimStats sim = c.worker.stats();
   ImGui::TextUnformatted(
-      pen_to_screen_text(s.input_latency_ms, s.input_latency_p95_ms, s.input_behind_ms).c_str());
+      (pen_to_screen_text(s.input_latency_ms, s.input_latency_p95_ms, s.input_behind_ms) +
+       (s.catching_up ? ", catching up (fast steps)" : ""))
+          .c_str());
   if (ImGui::IsItemHovered()) {
     ImGui::SetTooltip(
         "Median and 95th percentile over the last 100 pen samples shown: from each mouse or\n"

@@ -127,4 +127,15 @@ std::string ViewLatency::report(std::vector<int> coarse_factors) const {
          "\n";
 }
 
+paintcore::StepQuality CatchUp::next(paintcore::StepQuality chosen, bool enabled,
+                                     double behind_ms) {
+  if (!enabled || chosen == paintcore::StepQuality::fast)
+    catching_up_ = false;
+  else if (behind_ms > kFallenBehind_ms)
+    catching_up_ = true;
+  else if (behind_ms < kCaughtUp_ms)
+    catching_up_ = false;
+  return catching_up_ ? paintcore::StepQuality::fast : chosen;
+}
+
 }  // namespace impasto::app::window

@@ -4,6 +4,8 @@
 // Samples are known by their job number in the simulation's queue (session::SimStats::submitted
 // right after submitting); a frame knows how many jobs were applied before it uploaded.
 // ViewLatency times the view's motions the same way.
+#include <impasto/paintcore/step_quality.hpp>
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -54,6 +56,22 @@ class InputLatency {
 // two behind is every sample's normal wait); before the first sample, how to get one.
 inline constexpr double kBehindShown_ms = 50.0;
 std::string pen_to_screen_text(double median_ms, double p95_ms, double behind_ms);
+
+// Whether the simulation takes fast steps to catch up with the pen (the Brush panel's "fast
+// while behind"): from when the screen is kFallenBehind_ms behind the pen until it is back
+// within kCaughtUp_ms, two thresholds so that it does not switch back and forth at one.
+class CatchUp {
+ public:
+  static constexpr double kFallenBehind_ms = 150.0;
+  static constexpr double kCaughtUp_ms = 50.0;
+  // The level the next pen sample steps at: `chosen`, or fast while catching up (`enabled`,
+  // `behind_ms` as InputLatency::behind_ms says).
+  paintcore::StepQuality next(paintcore::StepQuality chosen, bool enabled, double behind_ms);
+  bool catching_up() const { return catching_up_; }
+
+ private:
+  bool catching_up_ = false;
+};
 
 // What moves the view or the light: a wheel click's zoom step, a move of a rotating (right
 // button) or panning drag, a pointer event that moved the light (the Light panel's disc).

@@ -26,9 +26,11 @@ std::vector<std::string> brush_heads() {
 
 }  // namespace
 
-WindowState initial_window_state(int wavelengths) {
+WindowState initial_window_state(const PaintOptions& options) {
   WindowState state;
-  state.settings.wavelengths = wavelengths;
+  state.settings.wavelengths = options.wavelengths;
+  state.quality = options.quality;
+  state.catch_up = options.catch_up;
   state.illuminants = data::illuminant_names();
   const auto d65 = std::find(state.illuminants.begin(), state.illuminants.end(), "D65");
   state.illuminant =

@@ -28,6 +28,7 @@
 #include "window/eyedropper.hpp"
 #include "window/file_browser.hpp"
 #include "window/notifications.hpp"
+#include "window/paint_options.hpp"
 #include "window/shortcuts.hpp"
 #include "window/tablet_input.hpp"
 
@@ -96,6 +97,11 @@ struct WindowState {
   std::vector<std::string> brush_heads;
   bool pressure_from_speed = false;
   float mouse_pressure = 0.6f;
+
+  // --- simulation (paintcore/step_quality.hpp) ---
+  paintcore::StepQuality quality = paintcore::StepQuality::balanced;
+  bool catch_up = true;      // fast steps while the simulation is behind the pen
+  bool catching_up = false;  // taking them now (the status bar says so)
 
   // --- tools, brush presets, commands (eyedropper.hpp, brush_presets.hpp, shortcuts.hpp) ---
   EyedropperState eyedropper;
@@ -183,8 +189,8 @@ inline input::LoadEvent load_event(const WindowState& s) {
   return event;
 }
 
-// The state a window opens with: D65, `wavelengths`, the brush heads and presets found, the
-// recent files.
-WindowState initial_window_state(int wavelengths);
+// The state a window opens with: D65, the options' wavelengths and quality, the brush heads
+// and presets found, the recent files.
+WindowState initial_window_state(const PaintOptions& options);
 
 }  // namespace impasto::app::window

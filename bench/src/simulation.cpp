@@ -88,6 +88,46 @@ LongStepRun long_step_run(int brush_cells, double share, int threads, Simulation
 
 }  // namespace
 
+HeightDifference compare_wet_heights(const Canvas& a, const Canvas& reference) {
+  if (a.width_cells() != reference.width_cells() || a.height_cells() != reference.height_cells())
+    throw std::invalid_argument("compare_wet_heights: the canvases differ in size");
+  const Canvas& b = reference;
+  HeightDifference d;
+  double height_sum = 0, error_sum = 0;
+  std::size_t cells = 0;
+  for (int y = 0; y < a.height_cells(); ++y)
+    for (int x = 0; x < a.width_cells(); ++x) {
+      const double ha = a.wet_volume_mm(x, y), hb = b.wet_volume_mm(x, y);
+      if (ha <= 0.001 && hb <= 0.001) continue;
+      ++cells;
+      height_sum += hb;
+      error_sum += std::abs(ha - hb);
+      d.max_error_mm = std::max(d.max_error_mm, std::abs(ha - hb));
+    }
+  constexpr int kBlock = 4;
+  double block_sum = 0;
+  std::size_t blocks = 0;
+  for (int by = 0; by + kBlock <= a.height_cells(); by += kBlock)
+    for (int bx = 0; bx + kBlock <= a.width_cells(); bx += kBlock) {
+      double ha = 0, hb = 0;
+      for (int y = by; y < by + kBlock; ++y)
+        for (int x = bx; x < bx + kBlock; ++x) {
+          ha += a.wet_volume_mm(x, y);
+          hb += b.wet_volume_mm(x, y);
+        }
+      ha /= kBlock * kBlock;
+      hb /= kBlock * kBlock;
+      if (ha <= 0.001 && hb <= 0.001) continue;
+      ++blocks;
+      block_sum += std::abs(ha - hb);
+      d.max_block_error_mm = std::max(d.max_block_error_mm, std::abs(ha - hb));
+    }
+  d.mean_height_mm = cells ? height_sum / cells : 0.0;
+  d.mean_error_mm = cells ? error_sum / cells : 0.0;
+  d.mean_block_error_mm = blocks ? block_sum / blocks : 0.0;
+  return d;
+}
+
 std::vector<LongStepResult> run_long_step_benchmark(int brush_cells,
                                                     const std::vector<double>& shares, int runs,
                                                     int threads, const SimulationParams& base) {
@@ -125,17 +165,17 @@ std::vector<LongStepResult> run_long_step_benchmark(int brush_cells,
     const int white = static_cast<int>(
         std::find(painting.pigment_slots().begin(), painting.pigment_slots().end(), "white") -
         painting.pigment_slots().begin());
-    double height_sum = 0, error_sum = 0, white_sum = 0;
-    std::size_t cells = 0, mixed = 0;
+    const HeightDifference heights = compare_wet_heights(a, b);
+    result.mean_height_mm = heights.mean_height_mm;
+    result.mean_height_error_mm = heights.mean_error_mm;
+    result.max_height_error_mm = heights.max_error_mm;
+    result.mean_block_error_mm = heights.mean_block_error_mm;
+    result.max_block_error_mm = heights.max_block_error_mm;
+    double white_sum = 0;
+    std::size_t mixed = 0;
     for (int y = 0; y < a.height_cells(); ++y)
       for (int x = 0; x < a.width_cells(); ++x) {
-        const double ha = a.wet_volume_mm(x, y), hb = b.wet_volume_mm(x, y);
-        if (ha <= 0.001 && hb <= 0.001) continue;
-        ++cells;
-        height_sum += hb;
-        error_sum += std::abs(ha - hb);
-        result.max_height_error_mm = std::max(result.max_height_error_mm, std::abs(ha - hb));
-        if (ha < 0.01 || hb < 0.01) continue;
+        if (a.wet_volume_mm(x, y) < 0.01 || b.wet_volume_mm(x, y) < 0.01) continue;
         // White's share of the pigment (the rest is the band's blue).
         const auto share_of_white = [white](const Canvas& c, int cx, int cy) {
           double total = 0;
@@ -147,27 +187,6 @@ std::vector<LongStepResult> run_long_step_benchmark(int brush_cells,
         white_sum += d;
         result.max_white_error = std::max(result.max_white_error, d);
       }
-    constexpr int kBlock = 4;
-    double block_sum = 0;
-    std::size_t blocks = 0;
-    for (int by = 0; by + kBlock <= a.height_cells(); by += kBlock)
-      for (int bx = 0; bx + kBlock <= a.width_cells(); bx += kBlock) {
-        double ha = 0, hb = 0;
-        for (int y = by; y < by + kBlock; ++y)
-          for (int x = bx; x < bx + kBlock; ++x) {
-            ha += a.wet_volume_mm(x, y);
-            hb += b.wet_volume_mm(x, y);
-          }
-        ha /= kBlock * kBlock;
-        hb /= kBlock * kBlock;
-        if (ha <= 0.001 && hb <= 0.001) continue;
-        ++blocks;
-        block_sum += std::abs(ha - hb);
-        result.max_block_error_mm = std::max(result.max_block_error_mm, std::abs(ha - hb));
-      }
-    result.mean_block_error_mm = blocks ? block_sum / blocks : 0.0;
-    result.mean_height_mm = cells ? height_sum / cells : 0.0;
-    result.mean_height_error_mm = cells ? error_sum / cells : 0.0;
     result.mean_white_error = mixed ? white_sum / mixed : 0.0;
     results.push_back(result);
     if (!reference) reference.emplace(std::move(last->painting));

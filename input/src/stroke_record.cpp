@@ -314,6 +314,9 @@ struct LineWriter {
   }
   std::string operator()(const WipeEvent&) const { return "wipe"; }
   std::string operator()(const DryEvent& e) const { return "dry " + shortest(e.fraction); }
+  std::string operator()(const QualityEvent& e) const {
+    return "quality " + std::string(util::name_of(paintcore::kStepQualityNames, e.quality));
+  }
   std::string operator()(const VarnishEvent& e) const {
     RecordLine line;
     line.add("varnish");
@@ -357,6 +360,15 @@ StrokeEvent parse_record(const Fields& f, const LineContext& where) {
     return DryEvent{in_range(parse_double(f[1], where, "fraction"), 0.0, 1.0, where, "fraction")};
   }
   if (kind == "varnish") return parse_varnish(f, where);
+  if (kind == "quality") {
+    expect_count(f, 2, where, "level");
+    try {
+      return QualityEvent{
+          util::parse_name(paintcore::kStepQualityNames, f[1].substr(0, 40), "quality")};
+    } catch (const std::runtime_error& error) {
+      where.fail("level", error.what());
+    }
+  }
   if (kind == "undo") {
     expect_count(f, 1, where, "none");
     return UndoEvent{};

@@ -1,5 +1,7 @@
 #include "impasto/session/replay.hpp"
 
+#include <impasto/paintcore/step_quality.hpp>
+
 #include <impasto/data/pigments.hpp>
 
 #include <algorithm>
@@ -95,7 +97,9 @@ void SessionPlayer::on_sample(const paintcore::PenSample& sample) {
 
 void SessionPlayer::apply(const input::StrokeEvent& event) {
   // Records other than samples end an open stroke first, as a live session would.
-  if (!std::holds_alternative<input::SampleEvent>(event)) finish();
+  if (!std::holds_alternative<input::SampleEvent>(event) &&
+      !std::holds_alternative<input::QualityEvent>(event))
+    finish();
   std::visit(
       Overloaded{
           [&](const input::SampleEvent& e) { on_sample(e.sample); },
@@ -130,6 +134,10 @@ void SessionPlayer::apply(const input::StrokeEvent& event) {
           },
           [&](const input::WipeEvent&) { painting_.wipe_brush(); },
           [&](const input::DryEvent& e) { painting_.dry(e.fraction); },
+          [&](const input::QualityEvent& e) {
+            if (!options_.quality)
+              painting_.set_params(paintcore::with_step_quality(painting_.params(), e.quality));
+          },
           [&](const input::VarnishEvent& e) {
             painting_.apply_varnish(e.finish, e.thickness_mm, e.region);
           },
@@ -169,7 +177,9 @@ paintcore::CanvasSpec replay_canvas(const input::StrokeFile& file, const ReplayO
 paintcore::Painting replay(const input::StrokeFile& file, const ReplayOptions& options,
                            ReplayReport* report) {
   paintcore::Painting painting(replay_canvas(file, options), options.threads);
-  painting.set_params(options.params);
+  painting.set_params(options.quality
+                          ? paintcore::with_step_quality(options.params, *options.quality)
+                          : options.params);
   SessionPlayer player(painting, options, options.auto_load && !has_load_record(file));
   const auto start = std::chrono::steady_clock::now();
   for (std::size_t i = 0; i < file.events.size(); ++i) {

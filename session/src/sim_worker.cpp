@@ -215,10 +215,13 @@ void SimWorker::run() {
           error = e.what();
         }
         const auto* pen = std::get_if<input::SampleEvent>(&job.event);
-        const bool tip_down = pen && pen->sample.tip_down();
-        // A stroke's end (or any other event: they are few) is synced at once.
-        sync_recording(!tip_down && (tip_was_down_ || !pen));
-        tip_was_down_ = tip_down;
+        // A stroke's end (or any other event: they are few) is synced at once; a change of
+        // quality may come mid-stroke, while the simulation catches up, and waits with it.
+        if (!std::holds_alternative<input::QualityEvent>(job.event)) {
+          const bool tip_down = pen && pen->sample.tip_down();
+          sync_recording(!tip_down && (tip_was_down_ || !pen));
+          tip_was_down_ = tip_down;
+        }
       }
     }
     const double elapsed_ms = 1e3 * (now_s() - start);

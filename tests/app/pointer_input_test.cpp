@@ -265,6 +265,28 @@ TEST(SpeedPressure, UsesTheSamplesOwnTimes) {
   EXPECT_FLOAT_EQ(pressure, 1.0f);
 }
 
+TEST(CatchUp, FastFromFallingBehindUntilCaughtUp) {
+  using paintcore::StepQuality;
+  CatchUp catch_up;
+  EXPECT_EQ(catch_up.next(StepQuality::balanced, true, 20.0), StepQuality::balanced);
+  EXPECT_EQ(catch_up.next(StepQuality::balanced, true, 120.0), StepQuality::balanced);
+  EXPECT_EQ(catch_up.next(StepQuality::balanced, true, 160.0), StepQuality::fast);
+  EXPECT_TRUE(catch_up.catching_up());
+  // Between the thresholds it keeps catching up...
+  EXPECT_EQ(catch_up.next(StepQuality::balanced, true, 80.0), StepQuality::fast);
+  // ...until the screen is back within 50 ms.
+  EXPECT_EQ(catch_up.next(StepQuality::balanced, true, 40.0), StepQuality::balanced);
+  EXPECT_FALSE(catch_up.catching_up());
+  // Exact is the chosen level again once caught up; turned off, it never leaves it.
+  EXPECT_EQ(catch_up.next(StepQuality::exact, true, 400.0), StepQuality::fast);
+  EXPECT_EQ(catch_up.next(StepQuality::exact, true, 10.0), StepQuality::exact);
+  EXPECT_EQ(catch_up.next(StepQuality::exact, false, 400.0), StepQuality::exact);
+  EXPECT_FALSE(catch_up.catching_up());
+  // Fast chosen: nothing to catch up with.
+  EXPECT_EQ(catch_up.next(StepQuality::fast, true, 400.0), StepQuality::fast);
+  EXPECT_FALSE(catch_up.catching_up());
+}
+
 TEST(InputLatency, MeasuresFromEachSamplesTimeToTheFirstSwapAfterItWasApplied) {
   InputLatency latency(4);
   EXPECT_FALSE(latency.recent_median_ms());

@@ -15,6 +15,7 @@
 #include "impasto/cracks/cavity.hpp"
 #include "impasto/paintcore/paint_body.hpp"
 #include "impasto/paintcore/simulation_params.hpp"
+#include "impasto/paintcore/step_quality.hpp"
 #include "impasto/render/render_settings.hpp"
 #include "vocabulary_words.hpp"
 
@@ -124,6 +125,8 @@ TEST(CommandLineVocabulary, EachChoiceNameIsOneItsParserTakes) {
       {"--shape", [](const std::string& n) { cracks::shape_from_name(n); }},
       {"--flake-depth",
        [](const std::string& n) { util::parse_name(render::kFlakeDepthNames, n, "flake depth"); }},
+      {"--quality",
+       [](const std::string& n) { util::parse_name(paintcore::kStepQualityNames, n, "quality"); }},
       {"--surface",
        [](const std::string& n) { util::parse_name(render::kSurfaceModelNames, n, "surface"); }},
       {"--medium",

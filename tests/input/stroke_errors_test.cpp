@@ -74,6 +74,11 @@ INSTANTIATE_TEST_SUITE_P(
         ErrorCase{"UnknownBody", kHeader + "load 5 \"White\" 1 body=gel\n",
                   "bad.strokes:2: field 'body': unknown paint body 'gel' (known: fluid, soft, "
                   "heavy, paste)"},
+        ErrorCase{"QualityUnknown", kHeader + "quality quick\n",
+                  "bad.strokes:2: field 'level': unknown quality 'quick' (expected exact, "
+                  "balanced or fast)"},
+        ErrorCase{"QualityMissing", kHeader + "quality\n",
+                  "bad.strokes:2: 'quality' takes 1 field(s): level, found 0"},
         ErrorCase{"VarnishUnknownFinish", kHeader + "varnish shiny 0.05\n",
                   "bad.strokes:2: field 'finish': unknown finish 'shiny' (known: gloss, satin, "
                   "matte)"},

@@ -137,6 +137,20 @@ TEST(StrokeFile, VarnishRecordsReadAsWritten) {
   EXPECT_THROW(format_strokes(out, bad), std::runtime_error);
 }
 
+TEST(StrokeFile, QualityRecordsReadAsWritten) {
+  std::istringstream text(
+      "impasto-strokes 2\n"
+      "quality fast\n"
+      "quality exact  # a comment\n");
+  const StrokeFile read = parse_strokes(text, "memory");
+  ASSERT_EQ(read.events.size(), 2u);
+  EXPECT_EQ(read.events[0], StrokeEvent(QualityEvent{paintcore::StepQuality::fast}));
+  EXPECT_EQ(read.events[1], StrokeEvent(QualityEvent{paintcore::StepQuality::exact}));
+  std::ostringstream out;
+  format_strokes(out, read);
+  EXPECT_NE(out.str().find("\nquality fast\nquality exact\n"), std::string::npos) << out.str();
+}
+
 TEST(StrokeFile, SplitsStrokesByTheTipBit) {
   std::vector<PenSample> samples(7);
   const std::uint32_t tip = paintcore::kPenTip;

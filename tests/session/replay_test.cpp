@@ -101,6 +101,43 @@ wipe
   expect_conserved(painting, 1e-5);
 }
 
+// The window records a change of quality where it takes it, mid-stroke while it catches up:
+// the stroke goes on, the steps after it are the new level's, and a replay told a quality
+// steps every stroke at it.
+TEST(Replay, AQualityRecordChangesTheStepsMidStroke) {
+  std::string text = R"(impasto-strokes 2
+canvas 400 300 100
+brush round size=20 stiffness=0.5
+load 200 "White" 1
+)";
+  for (int k = 0; k <= 40; ++k) {
+    if (k == 20) text += "quality fast\n";
+    text += "pen " + std::to_string(0.008 * k) + " " + std::to_string(20 + 1.5 * k) + " 40 " +
+            (k < 40 ? "0.7 0 0 0 17\n" : "0 0 0 0 16\n");
+  }
+  std::istringstream in(text);
+  const auto file = input::parse_strokes(in, "quality.strokes");
+  ReplayReport report;
+  const auto recorded = replay(file, {}, &report);
+  EXPECT_EQ(report.strokes, 1u);
+  EXPECT_EQ(paintcore::step_quality_of(recorded.params()), paintcore::StepQuality::fast);
+  EXPECT_EQ(recorded.nonfinite_count(), 0u);
+  expect_conserved(recorded, 1e-5);
+
+  ReplayOptions exact;
+  exact.quality = paintcore::StepQuality::exact;
+  ReplayReport exact_report;
+  const auto reference = replay(file, exact, &exact_report);
+  EXPECT_EQ(exact_report.strokes, 1u);
+  EXPECT_EQ(paintcore::step_quality_of(reference.params()), paintcore::StepQuality::exact);
+  // A 79-cell head: balanced steps it 4.9 cells and fast 9.8, exact a cell at a time.
+  EXPECT_GT(reference.steps(), 3 * recorded.steps());
+  expect_conserved(reference, 1e-5);
+  // The same paint, laid much the same.
+  EXPECT_NEAR(recorded.canvas_totals().volume, reference.canvas_totals().volume,
+              0.05 * reference.canvas_totals().volume);
+}
+
 // A recording at a high dpi that names no brush replays with the default head narrowed to
 // what the cells allow (it once failed: "6 mm is 1181 cells at this DPI", naming no line).
 // A short, light touch: each step of a head that wide covers the whole 1.5 mm canvas.

@@ -3,6 +3,7 @@
 // they happened, so that a whole session can be replayed. Files: docs/stroke-format.md.
 #include <impasto/paintcore/paint_surface.hpp>
 #include <impasto/paintcore/pen_sample.hpp>
+#include <impasto/paintcore/step_quality.hpp>
 
 #include <cstdint>
 #include <optional>
@@ -103,6 +104,13 @@ struct VarnishEvent {
   bool operator==(const VarnishEvent&) const = default;
 };
 
+// How finely the simulation steps the brush from here on (paintcore/step_quality.hpp). It
+// does not end a stroke: the window takes faster steps mid-stroke while it is behind.
+struct QualityEvent {
+  paintcore::StepQuality quality = paintcore::StepQuality::balanced;
+  bool operator==(const QualityEvent&) const = default;
+};
+
 struct UndoEvent {
   bool operator==(const UndoEvent&) const = default;
 };
@@ -129,7 +137,7 @@ struct SavedEvent {
 
 using StrokeEvent =
     std::variant<SampleEvent, CanvasEvent, ToolEvent, BrushEvent, LoadEvent, WipeEvent, DryEvent,
-                 UndoEvent, RedoEvent, OriginEvent, SavedEvent, VarnishEvent>;
+                 UndoEvent, RedoEvent, OriginEvent, SavedEvent, VarnishEvent, QualityEvent>;
 
 // A whole stroke file: its format version and its records in order. Two files are equal
 // when their versions and events are; where they were read from does not count.

@@ -3,6 +3,7 @@
 // live session takes, so a replay reproduces the painting bit-exactly.
 #include <impasto/input/stroke_events.hpp>
 #include <impasto/paintcore/painting.hpp>
+#include <impasto/paintcore/step_quality.hpp>
 #include <impasto/util/progress.hpp>
 
 #include <cstdint>
@@ -23,6 +24,9 @@ struct ReplayOptions {
   std::optional<double> dpi;
   int threads = 0;                     // 0: all cores
   paintcore::SimulationParams params;  // the paint model's constants
+  // Steps every stroke at this quality (paintcore/step_quality.hpp), the recording's `quality`
+  // records skipped: a session painted fast while the window caught up, replayed exact.
+  std::optional<paintcore::StepQuality> quality;
   // Recordings from other programs carry no brush or paint: give every stroke a clean brush
   // loaded from demo_palette() in turn. Only used when the file has no load record.
   bool auto_load = true;
