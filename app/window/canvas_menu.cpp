@@ -74,10 +74,10 @@ CanvasMenuRequest CanvasMenu::draw(int canvas_width, int canvas_height,
 
 bool CanvasMenu::dialog(const char* title, const char* action, const std::function<bool()>& body) {
   bool open = true, chosen = false;
-  ImGui::SetNextWindowSize(ImVec2(460, 0), ImGuiCond_Appearing);
   ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing,
                           ImVec2(0.5f, 0.5f));
-  if (ImGui::Begin(title, &open, ImGuiWindowFlags_NoCollapse)) {
+  // Sized to its fields, which may appear as it is filled in (the export's solid).
+  if (ImGui::Begin(title, &open, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::BeginDisabled(!body());
     if (ImGui::Button(action)) chosen = true;
     ImGui::EndDisabled();
@@ -159,43 +159,83 @@ CanvasMenuRequest CanvasMenu::draw_varnish() {
   return request;
 }
 
+session::ExportRequest export_request(const ExportChoice& choice) {
+  session::ExportRequest e;
+  e.scale = choice.scale;
+  const std::string base =
+      choice.stem + (choice.scale > 1 ? "@" + std::to_string(choice.scale) + "x" : "");
+  if (choice.image) e.image = base + ".png";
+  if (choice.height_format != 0)
+    e.height_map = base + (choice.height_format == 1 ? ".height.png" : ".height.exr");
+  if (choice.normal) e.normal_map = base + ".normal.png";
+  switch (choice.solid) {
+    case SolidFormat::kNone:
+      break;
+    case SolidFormat::kStl:
+      e.solids.push_back(base + ".stl");
+      break;
+    case SolidFormat::kPly:
+      e.solids.push_back(base + ".ply");
+      break;
+    case SolidFormat::kObj:
+      e.solids.push_back(base + ".obj");
+      break;
+  }
+  e.solid = choice.solid_options;
+  return e;
+}
+
 CanvasMenuRequest CanvasMenu::draw_export() {
   CanvasMenuRequest request;
-  int scale = 1;
-  std::string stem, suffix;
+  ExportChoice& c = export_;
   const bool export_now = dialog("Export at scale and maps", "Export", [&] {
     ImGui::Combo("scale", &scale_index_,
                  "1x\0"
                  "2x\0"
                  "4x\0");
-    scale = kScales[static_cast<std::size_t>(std::clamp(scale_index_, 0, 2))];
-    ImGui::Text("%d x %d pixels, relief interpolated smoothly", canvas_w_ * scale,
-                canvas_h_ * scale);
+    c.scale = kScales[static_cast<std::size_t>(std::clamp(scale_index_, 0, 2))];
+    ImGui::Text("%d x %d pixels, relief interpolated smoothly", canvas_w_ * c.scale,
+                canvas_h_ * c.scale);
     ImGui::InputText("files (stem)", stem_.data(), stem_.size());
-    stem = stem_.data();
-    suffix = scale > 1 ? "@" + std::to_string(scale) + "x" : "";
-    ImGui::Checkbox(("image: " + stem + suffix + ".png").c_str(), &image_);
+    c.stem = stem_.data();
+    const std::string base = c.stem + (c.scale > 1 ? "@" + std::to_string(c.scale) + "x" : "");
+    ImGui::Checkbox(("image: " + base + ".png").c_str(), &c.image);
     ImGui::TextUnformatted("height map (mm):");
     ImGui::SameLine();
-    ImGui::RadioButton("none", &height_format_, 0);
+    ImGui::RadioButton("none", &c.height_format, 0);
     ImGui::SameLine();
-    ImGui::RadioButton("16-bit PNG", &height_format_, 1);
+    ImGui::RadioButton("16-bit PNG", &c.height_format, 1);
     ImGui::SameLine();
-    ImGui::RadioButton("float EXR", &height_format_, 2);
-    ImGui::Checkbox(("normal map, OpenGL +Y up: " + stem + suffix + ".normal.png").c_str(),
-                    &normal_);
-    const bool any = image_ || height_format_ != 0 || normal_;
-    return any && !stem.empty();
+    ImGui::RadioButton("float EXR", &c.height_format, 2);
+    ImGui::Checkbox(("normal map, OpenGL +Y up: " + base + ".normal.png").c_str(), &c.normal);
+    // The relief as a closed mesh in mm at the painting's size, for a 3D printer or a viewer
+    // (docs/canvas-and-export.md).
+    int solid = static_cast<int>(c.solid);
+    ImGui::TextUnformatted("solid (mm):");
+    ImGui::SameLine();
+    ImGui::RadioButton("none##solid", &solid, 0);
+    ImGui::SameLine();
+    ImGui::RadioButton("STL", &solid, 1);
+    ImGui::SameLine();
+    ImGui::RadioButton("PLY, coloured", &solid, 2);
+    ImGui::SameLine();
+    ImGui::RadioButton("OBJ, coloured", &solid, 3);
+    c.solid = static_cast<SolidFormat>(solid);
+    if (c.solid != SolidFormat::kNone) {
+      float base_mm = static_cast<float>(c.solid_options.base_mm);
+      if (ImGui::InputFloat("base (mm)", &base_mm, 0.5f, 1.0f, "%.2f"))
+        c.solid_options.base_mm = std::clamp(static_cast<double>(base_mm), 0.01, 100.0);
+      float relief = static_cast<float>(c.solid_options.relief_scale);
+      if (ImGui::InputFloat("relief x", &relief, 0.5f, 1.0f, "%.2f"))
+        c.solid_options.relief_scale = std::clamp(static_cast<double>(relief), 0.1, 100.0);
+      float error = static_cast<float>(c.solid_options.max_error_mm);
+      if (ImGui::InputFloat("max error (mm)", &error, 0.01f, 0.05f, "%.3f"))
+        c.solid_options.max_error_mm = std::clamp(static_cast<double>(error), 0.0, 10.0);
+    }
+    const bool any = c.image || c.height_format != 0 || c.normal || c.solid != SolidFormat::kNone;
+    return any && !c.stem.empty();
   });
-  if (export_now) {
-    session::ExportRequest e;
-    e.scale = scale;
-    if (image_) e.image = stem + suffix + ".png";
-    if (height_format_ != 0)
-      e.height_map = stem + suffix + (height_format_ == 1 ? ".height.png" : ".height.exr");
-    if (normal_) e.normal_map = stem + suffix + ".normal.png";
-    request.exports = e;
-  }
+  if (export_now) request.exports = export_request(c);
   return request;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
-// The Image menu: Resize canvas..., Crop..., Varnish... and Export at scale and maps..., each
+// The Image menu: Resize canvas..., Crop..., Varnish... and Export at scale and maps... (with
+// the relief as a printable solid), each
 // with a small dialog. The menu only asks; the window applies a reframe (a new session from
 // the changed painting, paint_window.cpp) or a varnish (a session event, recorded as a
 // stroke file's `varnish` record) and runs the export (canvas_edit.hpp).
@@ -25,6 +26,20 @@ using VarnishRequest = input::VarnishEvent;
 // width and height in cells. Clipped to the canvas when applied (apply_varnish).
 VarnishRequest varnish_request(paintcore::Finish finish, float thickness_mm, bool whole,
                                const std::array<int, 4>& region);
+
+// The Export dialog's fields as the user left them.
+enum class SolidFormat { kNone, kStl, kPly, kObj };
+struct ExportChoice {
+  int scale = 2;     // pixels per cell
+  std::string stem;  // the files' path less their suffixes
+  bool image = true, normal = true;
+  int height_format = 1;  // 0 none, 1 16-bit PNG, 2 float EXR
+  SolidFormat solid = SolidFormat::kNone;
+  render::SolidOptions solid_options;
+};
+// The files they name (stem, "@2x" beyond scale 1, and each file's suffix), as `impasto
+// export` writes them.
+session::ExportRequest export_request(const ExportChoice& choice);
 
 struct CanvasMenuRequest {
   std::optional<paintcore::CanvasFrame> frame;    // resize or crop: apply this frame
@@ -61,8 +76,7 @@ class CanvasMenu {
   std::array<int, 4> varnish_region_{};  // x, y, w, h
   int scale_index_ = 1;                  // 1x, 2x, 4x
   std::array<char, 512> stem_{};
-  bool image_ = true, normal_ = true;
-  int height_format_ = 1;  // 0 none, 1 16-bit PNG, 2 float EXR
+  ExportChoice export_;
 };
 
 }  // namespace impasto::app::window

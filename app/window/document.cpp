@@ -1,5 +1,7 @@
 #include "window/document.hpp"
 
+#include <impasto/util/text.hpp>
+
 #include <impasto/input/stroke_import.hpp>
 #include <impasto/render/render_painting.hpp>
 
@@ -337,8 +339,14 @@ bool Document::apply_canvas_request(const CanvasMenuRequest& request) {
       worker_->wait_idle();
       session::ExportRequest exports = *request.exports;
       exports.settings = state_.settings;  // the window's light and look
-      worker_->with_painting([&](const paintcore::Painting& p) { export_painting(p, exports); });
-      state_.notifications.info("Exported at " + std::to_string(request.exports->scale) + "x");
+      session::ExportReport report;
+      worker_->with_painting(
+          [&](const paintcore::Painting& p) { report = export_painting(p, exports); });
+      std::string said = "Exported at " + std::to_string(request.exports->scale) + "x";
+      if (!exports.solids.empty())
+        said += "; the solid: " + std::to_string(report.solid_triangles) + " triangles, " +
+                util::number_text(report.solid_error_mm, 3) + " mm error";
+      state_.notifications.info(said);
     }
     if (const auto& v = request.varnish) {
       // A session event like a stroke: recorded (a `varnish` record), replayed, undone.

@@ -96,6 +96,41 @@ TEST(WindowSurfaceOps, PaintLoadedWithAMediumIsRecordedAndLaidWithIt) {
   fs::remove_all(dir);
 }
 
+// The Image menu's export names its files as `impasto export` does, the solid included; the
+// solid it writes is closed and as large as the painting.
+TEST(WindowSurfaceOps, TheExportDialogWritesTheReliefAsASolid) {
+  ExportChoice choice;
+  const fs::path dir = fs::temp_directory_path() / "impasto-export-dialog-test";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  choice.stem = (dir / "study").string();
+  choice.scale = 2;
+  choice.image = false;
+  choice.normal = false;
+  choice.height_format = 0;
+  choice.solid = SolidFormat::kStl;
+  choice.solid_options.base_mm = 1.5;
+  session::ExportRequest request = export_request(choice);
+  ASSERT_EQ(request.solids.size(), 1u);
+  EXPECT_EQ(request.solids[0], dir / "study@2x.stl");
+  EXPECT_TRUE(request.image.empty());
+  EXPECT_EQ(request.solid.base_mm, 1.5);
+  choice.solid = SolidFormat::kPly;
+  choice.scale = 1;
+  choice.image = true;
+  EXPECT_EQ(export_request(choice).solids.at(0), dir / "study.ply");
+  EXPECT_EQ(export_request(choice).image, dir / "study.png");
+  choice.solid = SolidFormat::kNone;
+  EXPECT_TRUE(export_request(choice).solids.empty());
+
+  // A binary STL: 84 bytes of header and count, 50 a triangle.
+  paintcore::Painting p({40, 30, 100.0, 1}, 1);
+  const session::ExportReport report = session::export_painting(p, request);
+  ASSERT_GT(report.solid_triangles, 0u);
+  EXPECT_EQ(fs::file_size(dir / "study@2x.stl"), 84 + 50 * report.solid_triangles);
+  fs::remove_all(dir);
+}
+
 TEST(WindowSurfaceOps, TheVarnishDialogCoatsTheTypedCellsAsOneUndoStep) {
   const VarnishRequest whole = varnish_request(Finish::satin, 0.03f, true, {4, 5, 10, 6});
   EXPECT_FALSE(whole.region.has_value()) << "'the whole painting' ignores the typed region";
