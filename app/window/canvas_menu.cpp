@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstring>
 
@@ -76,7 +77,9 @@ bool CanvasMenu::dialog(const char* title, const char* action, const std::functi
   bool open = true, chosen = false;
   ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing,
                           ImVec2(0.5f, 0.5f));
-  // Sized to its fields, which may appear as it is filled in (the export's solid).
+  // 460 pixels wide, as tall as its fields, which may appear as it is filled in (the
+  // export's solid).
+  ImGui::SetNextWindowSizeConstraints(ImVec2(460, 0), ImVec2(460, FLT_MAX));
   if (ImGui::Begin(title, &open, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_AlwaysAutoResize)) {
     ImGui::BeginDisabled(!body());
     if (ImGui::Button(action)) chosen = true;
