@@ -172,8 +172,9 @@ void InputRouter::route_keys() {
   run_commands();
 }
 
-// Carries out what the keys and the menus asked for (the File menu's own at its next frame).
-// A brush change waits for the stroke under way to end.
+// Carries out what the keys and the menus asked for, in order; the file commands stay on the
+// queue for the File menu, drawn later in this frame. A brush change waits for the stroke
+// under way to end.
 void InputRouter::run_commands() {
   std::vector<Command> waiting;
   const auto set_brush = [&](Command command, auto&& change) {
@@ -188,16 +189,12 @@ void InputRouter::run_commands() {
     paintcore::BrushSettings& brush = state_.brush;
     switch (command) {
       case Command::kNew:
-        state_.file_command = FileCommand::kNew;
-        break;
       case Command::kOpen:
-        state_.file_command = FileCommand::kOpen;
-        break;
       case Command::kSave:
-        state_.file_command = FileCommand::kSave;
-        break;
       case Command::kSaveAs:
-        state_.file_command = FileCommand::kSaveAs;
+      case Command::kExportImage:
+      case Command::kQuit:
+        waiting.push_back(command);  // the File menu's, at this frame's panels
         break;
       case Command::kUndo:
         worker().submit(input::UndoEvent{});

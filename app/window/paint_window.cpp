@@ -240,7 +240,7 @@ void PaintWindow::run() {
     if (shell_.take_close_request()) {
       if (options_.exit_after) break;
       // As File > Quit: with unsaved changes, Save / Discard / Cancel.
-      state_.file_command = FileCommand::kQuit;
+      state_.commands.push_back(Command::kQuit);
     }
     if (document_->run_pending_action()) painting_replaced();
     if (state_.quit) break;

@@ -242,18 +242,18 @@ void file_menu(PanelContext& c) {
       browse = FilePurpose::kSavePainting;
     }
   };
-  // A shortcut's command, unless a dialog is up (it has the keyboard).
-  FileCommand command = std::exchange(s.file_command, FileCommand::kNone);
+  // A shortcut's file command, unless a dialog is up (it has the keyboard).
+  std::optional<Command> command = take_file_command(s.commands);
   // (Quit, from the window's close button too, always gets through: its prompt replaces the
   // dialog.)
-  if (command != FileCommand::kQuit &&
+  if (command != Command::kQuit &&
       (s.file_browser.is_open() || ImGui::IsPopupOpen("", ImGuiPopupFlags_AnyPopupId))) {
-    command = FileCommand::kNone;
+    command.reset();
   }
   if (ImGui::BeginMainMenuBar()) {
     if (ImGui::BeginMenu("File")) {
-      if (ImGui::MenuItem("New...", keys(Command::kNew))) command = FileCommand::kNew;
-      if (ImGui::MenuItem("Open...", keys(Command::kOpen))) command = FileCommand::kOpen;
+      if (ImGui::MenuItem("New...", keys(Command::kNew))) command = Command::kNew;
+      if (ImGui::MenuItem("Open...", keys(Command::kOpen))) command = Command::kOpen;
       if (ImGui::BeginMenu("Open recent", !s.recent.empty())) {
         for (std::size_t i = 0; i < s.recent.size(); ++i) {
           const auto& file = s.recent[i];
@@ -265,11 +265,11 @@ void file_menu(PanelContext& c) {
         ImGui::EndMenu();
       }
       ImGui::Separator();
-      if (ImGui::MenuItem("Save", keys(Command::kSave))) command = FileCommand::kSave;
-      if (ImGui::MenuItem("Save as...", keys(Command::kSaveAs))) command = FileCommand::kSaveAs;
-      if (ImGui::MenuItem("Export image...")) command = FileCommand::kExport;
+      if (ImGui::MenuItem("Save", keys(Command::kSave))) command = Command::kSave;
+      if (ImGui::MenuItem("Save as...", keys(Command::kSaveAs))) command = Command::kSaveAs;
+      if (ImGui::MenuItem("Export image...")) command = Command::kExportImage;
       ImGui::Separator();
-      if (ImGui::MenuItem("Quit")) command = FileCommand::kQuit;
+      if (ImGui::MenuItem("Quit")) command = Command::kQuit;
       ImGui::EndMenu();
     }
     edit_menu(s, c.worker, c.painting.undo_depth, c.painting.redo_depth);
@@ -282,27 +282,29 @@ void file_menu(PanelContext& c) {
     }
     ImGui::EndMainMenuBar();
   }
-  switch (command) {
-    case FileCommand::kNew:
-      open_new = true;
-      break;
-    case FileCommand::kOpen:
-      browse = FilePurpose::kOpenPainting;
-      break;
-    case FileCommand::kSave:
-      save();
-      break;
-    case FileCommand::kSaveAs:
-      browse = FilePurpose::kSavePainting;
-      break;
-    case FileCommand::kExport:
-      browse = FilePurpose::kExportImage;
-      break;
-    case FileCommand::kQuit:
-      ask(PendingAction::kQuit);
-      break;
-    case FileCommand::kNone:
-      break;
+  if (command) {
+    switch (*command) {
+      case Command::kNew:
+        open_new = true;
+        break;
+      case Command::kOpen:
+        browse = FilePurpose::kOpenPainting;
+        break;
+      case Command::kSave:
+        save();
+        break;
+      case Command::kSaveAs:
+        browse = FilePurpose::kSavePainting;
+        break;
+      case Command::kExportImage:
+        browse = FilePurpose::kExportImage;
+        break;
+      case Command::kQuit:
+        ask(PendingAction::kQuit);
+        break;
+      default:
+        break;
+    }
   }
   if (open_new) ImGui::OpenPopup("New painting");
   if (browse) s.file_browser.open(browser_request(*browse, s));

@@ -36,6 +36,8 @@ constexpr std::array kCommands{
     CommandInfo{Command::kOpen, "Open painting", "File"},
     CommandInfo{Command::kSave, "Save", "File"},
     CommandInfo{Command::kSaveAs, "Save as", "File"},
+    CommandInfo{Command::kExportImage, "Export image", "File"},
+    CommandInfo{Command::kQuit, "Quit", "File"},
     CommandInfo{Command::kUndo, "Undo", "Edit"},
     CommandInfo{Command::kRedo, "Redo", "Edit"},
     CommandInfo{Command::kBrush, "Brush", "Tools"},
@@ -127,6 +129,30 @@ bool take_command(std::vector<Command>& pending, Command command) {
   if (found == pending.end()) return false;
   pending.erase(found);
   return true;
+}
+
+bool is_file_command(Command command) {
+  switch (command) {
+    case Command::kNew:
+    case Command::kOpen:
+    case Command::kSave:
+    case Command::kSaveAs:
+    case Command::kExportImage:
+    case Command::kQuit:
+      return true;
+    default:
+      return false;
+  }
+}
+
+std::optional<Command> take_file_command(std::vector<Command>& pending) {
+  std::optional<Command> last;
+  std::erase_if(pending, [&last](Command command) {
+    if (!is_file_command(command)) return false;
+    last = command;
+    return true;
+  });
+  return last;
 }
 
 }  // namespace impasto::app::window

@@ -9,13 +9,16 @@
 
 namespace impasto::app::window {
 
-// What a key or a menu item asks for. The window carries out most; the File menu those that
-// open its dialogs (WindowState::commands).
+// What a key, a menu item or the window's close button asks for, queued in order on one queue
+// (WindowState::commands). The input router carries out most; the File menu the file
+// commands (is_file_command), which open its dialogs and prompts.
 enum class Command {
   kNew,
   kOpen,
   kSave,
   kSaveAs,
+  kExportImage,
+  kQuit,  // as File > Quit: with unsaved changes, Save / Discard / Cancel
   kUndo,
   kRedo,
   kBrush,         // paint with the brush (leaves the eyedropper; back from the knife)
@@ -73,5 +76,10 @@ std::span<const GestureHelp> mouse_gestures();
 // Commands waiting to be carried out: a key or a menu item adds one, and whoever carries
 // it out takes it.
 bool take_command(std::vector<Command>& pending, Command command);
+// New, Open, Save, Save as, Export image and Quit: the File menu's own.
+bool is_file_command(Command command);
+// Takes every file command out of `pending` (the others keep their order) and returns the
+// last: pressed twice in one frame, the later wins.
+std::optional<Command> take_file_command(std::vector<Command>& pending);
 
 }  // namespace impasto::app::window

@@ -37,10 +37,6 @@ namespace impasto::app::window {
 // An action that discards the painting, held while the unsaved-changes prompt is open.
 enum class PendingAction { kNone, kNew, kOpen, kOpenRecent, kQuit };
 
-// A File menu command asked for elsewhere (a keyboard shortcut): set it, and the File menu
-// carries it out at its next frame exactly as if its item had been chosen.
-enum class FileCommand { kNone, kNew, kOpen, kSave, kSaveAs, kExport, kQuit };
-
 // The light of a fresh window: 30° above the canvas, as galleries hang their lights (the
 // "30° rule"), where `impasto render` keeps 60°: low enough that a first stroke of heavy paint
 // shows its ridges, furrows and cast shadow (docs/window.md, "The first stroke").
@@ -108,7 +104,9 @@ struct WindowState {
   PresetLibrary presets;
   bool open_save_preset = false;  // open the "Save brush preset" prompt
   std::string preset_name_input;
-  std::vector<Command> commands;  // asked for by keys and menu items, not yet carried out
+  // Asked for by keys, menu items and the close button, not yet carried out (shortcuts.hpp):
+  // the one queue of requests.
+  std::vector<Command> commands;
   bool show_shortcuts = false, show_about = false;
 
   // --- tablets (the mouse paints when none is in use) ---
@@ -136,7 +134,6 @@ struct WindowState {
   bool ask_unsaved = false;          // open the Save / Discard / Cancel prompt for `pending`
   bool continue_after_save = false;  // that prompt's Save went to Save as: go on once saved
   std::filesystem::path pending_path;
-  FileCommand file_command = FileCommand::kNone;
   FileBrowser file_browser{session::window_config_folder().empty()
                                ? std::filesystem::path()
                                : session::window_config_folder() / "folders.txt"};

@@ -27,6 +27,21 @@ TEST(Shortcuts, EveryChordIsBoundOnceAndEveryCommandIsNamed) {
   for (const CommandInfo& info : commands()) EXPECT_FALSE(std::string(info.name).empty());
 }
 
+// One queue of requests: the File menu takes the file commands (the later of two), the rest
+// stay in order for the input router.
+TEST(Shortcuts, TheFileMenuTakesItsCommandsFromTheOneQueue) {
+  std::vector<Command> queue = {Command::kUndo, Command::kSave, Command::kBrushLarger,
+                                Command::kQuit, Command::kFitCanvas};
+  EXPECT_EQ(take_file_command(queue), Command::kQuit);
+  EXPECT_EQ(queue,
+            (std::vector<Command>{Command::kUndo, Command::kBrushLarger, Command::kFitCanvas}));
+  EXPECT_EQ(take_file_command(queue), std::nullopt);
+  for (const CommandInfo& info : commands()) {
+    const bool file = std::string(info.group) == "File";
+    EXPECT_EQ(is_file_command(info.command), file) << info.name;
+  }
+}
+
 TEST(Shortcuts, KeysFindTheirCommandsWithExactlyTheirModifiers) {
   EXPECT_EQ(command_for_key(GLFW_KEY_S, GLFW_MOD_CONTROL), Command::kSave);
   EXPECT_EQ(command_for_key(GLFW_KEY_S, GLFW_MOD_CONTROL | GLFW_MOD_SHIFT), Command::kSaveAs);
