@@ -186,16 +186,12 @@ void InputRouter::run_commands() {
     worker().submit(brush_event(state_));
   };
   for (const Command command : std::exchange(state_.commands, {})) {
+    if (is_file_command(command)) {
+      waiting.push_back(command);  // the File menu's, at this frame's panels
+      continue;
+    }
     paintcore::BrushSettings& brush = state_.brush;
     switch (command) {
-      case Command::kNew:
-      case Command::kOpen:
-      case Command::kSave:
-      case Command::kSaveAs:
-      case Command::kExportImage:
-      case Command::kQuit:
-        waiting.push_back(command);  // the File menu's, at this frame's panels
-        break;
       case Command::kUndo:
         worker().submit(input::UndoEvent{});
         break;
@@ -235,6 +231,8 @@ void InputRouter::run_commands() {
         break;
       case Command::kShowShortcuts:
         state_.show_shortcuts = !state_.show_shortcuts;
+        break;
+      default:  // a file command: taken above
         break;
     }
   }

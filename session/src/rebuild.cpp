@@ -90,7 +90,7 @@ RebuiltSession rebuild_session(const input::StrokeFile& file, const ReplayOption
     }
   }
   paintcore::Painting painting(replay_canvas(file, options), options.threads);
-  painting.set_params(options.params);
+  painting.set_params(replay_params(options));
   ReplayReport report;
   replay_from(painting, file, 0, options, false, report);
   return {std::move(painting), "the whole recording, replayed onto a new canvas", warnings, report};

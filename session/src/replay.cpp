@@ -174,12 +174,15 @@ paintcore::CanvasSpec replay_canvas(const input::StrokeFile& file, const ReplayO
   return spec;
 }
 
+paintcore::SimulationParams replay_params(const ReplayOptions& options) {
+  return options.quality ? paintcore::with_step_quality(options.params, *options.quality)
+                         : options.params;
+}
+
 paintcore::Painting replay(const input::StrokeFile& file, const ReplayOptions& options,
                            ReplayReport* report) {
   paintcore::Painting painting(replay_canvas(file, options), options.threads);
-  painting.set_params(options.quality
-                          ? paintcore::with_step_quality(options.params, *options.quality)
-                          : options.params);
+  painting.set_params(replay_params(options));
   SessionPlayer player(painting, options, options.auto_load && !has_load_record(file));
   const auto start = std::chrono::steady_clock::now();
   for (std::size_t i = 0; i < file.events.size(); ++i) {

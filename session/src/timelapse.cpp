@@ -103,7 +103,7 @@ TimelapseReport play_timelapse(const input::StrokeFile& file, const ReplayOption
 
   paintcore::Painting painting(replay_canvas(file, replay), replay.threads);
   render::check_render_memory(painting.canvas(), file.source);
-  painting.set_params(replay.params);
+  painting.set_params(replay_params(replay));
   SessionPlayer player(painting, replay, replay.auto_load && !has_load_record(file));
   FrameRenderer renderer(options.settings);
   const double azimuth0 = options.settings.light_azimuth_deg;

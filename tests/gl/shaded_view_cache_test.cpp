@@ -88,6 +88,24 @@ std::unique_ptr<CanvasRenderer> uploaded_renderer(const paintcore::Painting& pai
   return renderer;
 }
 
+// What most of these tests shade: a stroke of red and white on the GPU (four nodes), and a
+// window of width x height to show it in.
+struct StrokeScene {
+  StrokeScene(int width, int height)
+      : context(create_headless_context()),
+        painting(loaded_painting({{"Red", 1.0}, {"White", 1.0}})),
+        window(width, height, TexelFormat::kRGBA8) {
+    stroke(painting, 14.0, 4.0, 30.0);
+    uploaded = uploaded_renderer(painting, four_nodes());
+  }
+  CanvasRenderer& renderer() { return *uploaded; }
+
+  std::unique_ptr<GlContext> context;
+  paintcore::Painting painting;
+  Framebuffer window;
+  std::unique_ptr<CanvasRenderer> uploaded;
+};
+
 // The cells the painting changed since the last call, uploaded and invalidated in the cache.
 void upload_changes(paintcore::Painting& painting, paintcore::Painting::ChangeSubscriber changes,
                     CanvasRenderer& renderer, ShadedViewCache& cache) {
@@ -149,13 +167,10 @@ INSTANTIATE_TEST_SUITE_P(Views, CachedView,
 
 // Pans by whole pixels move the cached image and shade only what they uncover.
 TEST(CachedViewPan, WholePixelPansShadeOnlyTheUncoveredStrips) {
-  auto context = create_headless_context();
   const int w = 240, h = 180;
-  paintcore::Painting painting = loaded_painting({{"Red", 1.0}, {"White", 1.0}});
-  stroke(painting, 14.0, 4.0, 30.0);
-  const auto uploaded = uploaded_renderer(painting, four_nodes());
-  CanvasRenderer& renderer = *uploaded;
-  Framebuffer window(w, h, TexelFormat::kRGBA8);
+  StrokeScene scene(w, h);
+  CanvasRenderer& renderer = scene.renderer();
+  Framebuffer& window = scene.window;
   ShadedViewCache cache;
 
   // One pixel a cell: the shifted image is exactly what a redraw gives.
@@ -192,13 +207,10 @@ TEST(CachedViewPan, WholePixelPansShadeOnlyTheUncoveredStrips) {
 // re-shades every pixel (the subsurface map's toggle once did not, and the window rebuilt the
 // surface tables to show it).
 TEST(CachedViewOptions, EachViewOptionReshadesEverything) {
-  auto context = create_headless_context();
   const int w = 120, h = 90;
-  paintcore::Painting painting = loaded_painting({{"Red", 1.0}, {"White", 1.0}});
-  stroke(painting, 14.0, 4.0, 30.0);
-  const auto uploaded = uploaded_renderer(painting, four_nodes());
-  CanvasRenderer& renderer = *uploaded;
-  Framebuffer window(w, h, TexelFormat::kRGBA8);
+  StrokeScene scene(w, h);
+  CanvasRenderer& renderer = scene.renderer();
+  Framebuffer& window = scene.window;
   ShadedViewCache cache;
   const CanvasView view{128.0, 96.0, 0.5, 0.0};
   cache.draw(renderer, view, w, h, window.id());
@@ -238,13 +250,10 @@ TEST(CoarseFactor, TheSmallestThatFitsTheBudget) {
 // Coarse frames while the view moves, at whatever factor the budget asks for; the refined
 // frame after them is exactly a whole redraw.
 TEST(CachedViewCoarse, RefinedAfterCoarseFramesMatchesAWholeRedraw) {
-  auto context = create_headless_context();
   const int w = 240, h = 180;
-  paintcore::Painting painting = loaded_painting({{"Red", 1.0}, {"White", 1.0}});
-  stroke(painting, 14.0, 4.0, 30.0);
-  const auto uploaded = uploaded_renderer(painting, four_nodes());
-  CanvasRenderer& renderer = *uploaded;
-  Framebuffer window(w, h, TexelFormat::kRGBA8);
+  StrokeScene scene(w, h);
+  CanvasRenderer& renderer = scene.renderer();
+  Framebuffer& window = scene.window;
   using Detail = ShadedViewCache::Detail;
   for (const double budget_ms : {1e9, 1e-9}) {  // the finest factor, then the coarsest
     ShadedViewCache cache;
@@ -277,13 +286,10 @@ TEST(CachedViewCoarse, RefinedAfterCoarseFramesMatchesAWholeRedraw) {
 // it is refined; once done, exactly a whole redraw. A pan by whole pixels meanwhile moves the
 // blocks still to refine with the image: the refined ones are not refined again.
 TEST(CachedViewCoarse, RefinedInBlocksMatchesAWholeRedraw) {
-  auto context = create_headless_context();
   const int w = 240, h = 180;
-  paintcore::Painting painting = loaded_painting({{"Red", 1.0}, {"White", 1.0}});
-  stroke(painting, 14.0, 4.0, 30.0);
-  const auto uploaded = uploaded_renderer(painting, four_nodes());
-  CanvasRenderer& renderer = *uploaded;
-  Framebuffer window(w, h, TexelFormat::kRGBA8);
+  StrokeScene scene(w, h);
+  CanvasRenderer& renderer = scene.renderer();
+  Framebuffer& window = scene.window;
   using Detail = ShadedViewCache::Detail;
   ShadedViewCache cache;
   cache.set_refine_step_ms(1e-9);  // one block a frame
@@ -337,13 +343,11 @@ TEST(CachedViewCoarse, RefinedInBlocksMatchesAWholeRedraw) {
 // keeps the image and refines it block by block: no frame re-shades the whole view, and the
 // refined image is the whole redraw of the new data.
 TEST(CachedViewRefineAll, KeepsTheImageAndRefinesItBlockByBlock) {
-  auto context = create_headless_context();
   const int w = 240, h = 180;
-  paintcore::Painting painting = loaded_painting({{"Red", 1.0}, {"White", 1.0}});
-  stroke(painting, 14.0, 4.0, 30.0);
-  const auto uploaded = uploaded_renderer(painting, four_nodes());
-  CanvasRenderer& renderer = *uploaded;
-  Framebuffer window(w, h, TexelFormat::kRGBA8);
+  StrokeScene scene(w, h);
+  paintcore::Painting& painting = scene.painting;
+  CanvasRenderer& renderer = scene.renderer();
+  Framebuffer& window = scene.window;
   using Detail = ShadedViewCache::Detail;
   ShadedViewCache cache;
   cache.set_refine_step_ms(1e-9);  // one block a frame

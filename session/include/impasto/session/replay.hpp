@@ -71,6 +71,9 @@ class SessionPlayer {
   ReplayReport report_;
 };
 
+// The paint model a replay starts with: options.params, at options.quality's long steps when
+// one is set.
+paintcore::SimulationParams replay_params(const ReplayOptions& options);
 // The canvas a replay of `file` paints on: the file's canvas record, overridden by options.
 paintcore::CanvasSpec replay_canvas(const input::StrokeFile& file, const ReplayOptions& options);
 
