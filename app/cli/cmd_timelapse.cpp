@@ -2,7 +2,6 @@
 #include <impasto/input/stroke_import.hpp>
 #include <impasto/render/render_settings.hpp>
 
-#include <cstdio>
 #include <memory>
 #include <optional>
 #include <string>
@@ -12,7 +11,7 @@
 #include "impasto/session/timelapse.hpp"
 #include "progress_reporter.hpp"
 #include "replay_overrides.hpp"
-#include "video_writer.hpp"
+#include "timelapse_video.hpp"
 #include "vocabulary.hpp"
 
 // A namespace of its own: the command files are compiled together (unity build).
@@ -38,7 +37,6 @@ struct TimelapseArgs {
 };
 
 void run(const TimelapseArgs& args) {
-  (void)video_kind(args.out);  // a bad extension fails now, not after the replay
   const session::ReplayOptions replay =
       replay_options(args.size, args.dpi, args.threads, args.params);
   const input::StrokeFile file = input::load_strokes_any(args.strokes, input::ImportOptions{});
@@ -58,22 +56,11 @@ void run(const TimelapseArgs& args) {
   ProgressReporter progress("time-lapse", "frames");
   options.progress = progress.callback();
 
-  const paintcore::CanvasSpec canvas = replay_canvas(file, replay);
-  const int width = args.frame_size ? args.frame_size->width : canvas.width_cells;
-  const int height = args.frame_size ? args.frame_size->height : canvas.height_cells;
-  VideoWriter video(args.out, width, height, args.fps);
-  const session::TimelapseReport report = play_timelapse(
-      file, replay, options, [&video](const render::Image& frame) { video.add_frame(frame); });
-  video.finish();
+  const TimelapseVideo video =
+      write_timelapse_video(file, replay, options, args.out, args.frame_size);
   progress.finish();
-  char summary[200];
-  std::snprintf(summary, sizeof summary,
-                "wrote %s (%dx%d, %d frames at %g fps: %d of the growth of %llu strokes, %d of "
-                "the finished painting)",
-                args.out.c_str(), video.width(), video.height(), video.frames(), args.fps,
-                report.growth_frames, static_cast<unsigned long long>(report.replay.strokes),
-                report.hold_frames);
-  note(summary);
+  for (const auto& warning : video.report.warnings) warn(warning);
+  note(timelapse_summary(video, args.out, args.fps));
 }
 
 const CommandRegistrar registrar("timelapse", [](CLI::App& root) {

@@ -3,12 +3,12 @@
 #include <imgui.h>
 
 #include <algorithm>
-#include <cfloat>
 #include <cmath>
 #include <cstring>
 
 #include <impasto/render/surface_brdf.hpp>
 #include "window/enum_combo.hpp"
+#include "window/imgui_layout.hpp"
 
 namespace impasto::app::window {
 namespace {
@@ -74,21 +74,9 @@ CanvasMenuRequest CanvasMenu::draw(int canvas_width, int canvas_height,
 }
 
 bool CanvasMenu::dialog(const char* title, const char* action, const std::function<bool()>& body) {
-  bool open = true, chosen = false;
-  ImGui::SetNextWindowPos(ImGui::GetMainViewport()->GetCenter(), ImGuiCond_Appearing,
-                          ImVec2(0.5f, 0.5f));
-  // 460 pixels wide, as tall as its fields, which may appear as it is filled in (the
-  // export's solid).
-  ImGui::SetNextWindowSizeConstraints(ImVec2(460, 0), ImVec2(460, FLT_MAX));
-  if (ImGui::Begin(title, &open, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_AlwaysAutoResize)) {
-    ImGui::BeginDisabled(!body());
-    if (ImGui::Button(action)) chosen = true;
-    ImGui::EndDisabled();
-    ImGui::SameLine();
-    if (ImGui::Button("Cancel")) open = false;
-  }
-  ImGui::End();
-  if (chosen || !open) open_ = Dialog::kNone;
+  bool open = true;
+  const bool chosen = action_dialog(title, action, open, body);
+  if (!open) open_ = Dialog::kNone;
   return chosen;
 }
 

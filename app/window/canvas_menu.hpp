@@ -60,9 +60,8 @@ class CanvasMenu {
   CanvasMenuRequest draw_crop();
   CanvasMenuRequest draw_varnish();
   CanvasMenuRequest draw_export();
-  // The open dialog `title`: `body` draws its fields and says whether `action` may be taken
-  // now; then the `action` and Cancel buttons. True in the frame `action` is pressed; the
-  // dialog closes then, on Cancel and by its close box.
+  // The open dialog (action_dialog, imgui_layout.hpp); it closes when `action` is pressed, on
+  // Cancel and by its close box.
   bool dialog(const char* title, const char* action, const std::function<bool()>& body);
 
   Dialog open_ = Dialog::kNone;

@@ -38,6 +38,14 @@ session::RebuiltSession rebuild_entry(const session::SessionEntry& entry) {
   return rebuild_session(input::read_stroke_file(entry.strokes), session::ReplayOptions{});
 }
 
+// "NAME (RECORDING)", or "an untitled painting (RECORDING)", escaped for the screen.
+std::string session_label(const std::optional<std::filesystem::path>& painting,
+                          const std::filesystem::path& recording) {
+  return (painting ? files::terminal_text(painting->filename().string())
+                   : std::string("an untitled painting")) +
+         " (" + files::terminal_text(recording.filename().string()) + ")";
+}
+
 }  // namespace
 
 Document::Document(const PaintOptions& options, WindowState& state, PaletteBoardPanel& board)
@@ -65,6 +73,9 @@ void Document::find_recoverable_sessions() {
     for (auto& entry : session::unfinished_sessions(session::recovery_folder())) {
       // A session killed before anything was painted has nothing to offer.
       if (session::has_work_to_recover(entry)) {
+        // Its recording stays whether it is recovered, left for later or discarded.
+        earlier_sessions_.push_back(
+            {"not ended cleanly: " + session_label(entry.painting, entry.strokes), entry.strokes});
         recoverable_.push_back(std::move(entry));
       } else {
         session::discard_session(entry);
@@ -73,6 +84,14 @@ void Document::find_recoverable_sessions() {
   } catch (const std::exception&) {
     // no recovery folder: begin_session has said so
   }
+}
+
+std::vector<TimelapseSource> Document::timelapse_sources() const {
+  std::vector<TimelapseSource> sources;
+  if (const auto recording = worker_->recording_path())
+    sources.push_back({"this session", *recording});
+  sources.insert(sources.end(), earlier_sessions_.rbegin(), earlier_sessions_.rend());
+  return sources;
 }
 
 // The recorded events take the same path as live input: the worker's queue.
@@ -102,6 +121,11 @@ session::SessionRecording Document::begin_session(
     const std::optional<std::filesystem::path>& origin) {
   session::SessionRecording recording;
   recording.opened_from = origin;
+  if (worker_) {  // the session ending: its recording can still be played as a time-lapse
+    if (const auto recorded = worker_->recording_path())
+      earlier_sessions_.push_back(
+          {"earlier in this window: " + session_label(state_.file, *recorded), *recorded});
+  }
   live_session_.reset();
   notice_.clear();
   if (options_.no_record) return recording;

@@ -19,6 +19,7 @@
 #include "window/palette_board_panel.hpp"
 #include "window/panels.hpp"
 #include "window/session_banner.hpp"
+#include "window/timelapse_export.hpp"
 #include "window/window_state.hpp"
 
 namespace impasto::app::window {
@@ -57,6 +58,9 @@ class Document {
 
   // The sessions offered for recovery, and the one being previewed (rebuilt).
   const std::vector<session::SessionEntry>& recoverable() const { return recoverable_; }
+  // The sessions a time-lapse can be made of: this window's, then the earlier ones of this
+  // window and those found unfinished at its start, the latest first.
+  std::vector<TimelapseSource> timelapse_sources() const;
   std::optional<std::size_t> previewing() const { return previewing_; }
   const session::RebuiltSession* preview() const { return preview_.get(); }
   enum class Recovered { kNothing, kPreviewReady, kReplaced };
@@ -88,6 +92,7 @@ class Document {
   std::unique_ptr<session::LiveSession> live_session_;
   std::string notice_;
   std::vector<session::SessionEntry> recoverable_;
+  std::vector<TimelapseSource> earlier_sessions_;  // their recordings, oldest first
   std::optional<std::size_t> previewing_;
   std::unique_ptr<session::RebuiltSession> preview_;
   double last_input_s_ = 0.0, last_autosave_s_ = 0.0;

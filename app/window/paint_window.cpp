@@ -28,6 +28,7 @@
 #include "window/pointer_latency.hpp"
 #include "window/session_banner.hpp"
 #include "window/swatch_chips.hpp"
+#include "window/timelapse_export.hpp"
 #include "window/tool_bar.hpp"
 #include "window/window_shell.hpp"
 #include "window/window_title.hpp"
@@ -63,8 +64,7 @@ class PaintWindow {
   // A frame's canvas, shaded as the view's motion and the canvas's changes allow, and shown.
   void draw_canvas(int fb_w, int fb_h, int win_w, bool take_screenshot);
   void time_view_motion(double swap_time_s);
-  // The document replaced its painting (new, open, recovered, reframed): the view and the
-  // quality it steps at start again.
+  // The painting was replaced (new, open, recovered, reframed): the view and quality restart.
   void painting_replaced() {
     viewer_->painting_replaced();
     router_->painting_replaced();
@@ -88,6 +88,7 @@ class PaintWindow {
   PaletteBoardPanel board_panel_;
   PigmentEditor pigment_editor_;
   CanvasMenu canvas_menu_;
+  TimelapseExport timelapse_;  // File > Export time-lapse... and the video being written
   PigmentDriftNote pigment_drift_;
   SwatchChips swatch_chips_;
   PointerOverlay pointer_overlay_;  // the brush's outline and the empty-brush note
@@ -158,6 +159,7 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   pigment_editor_.draw(state_, viewer_->palette());
   const CanvasMenuRequest canvas_request =
       canvas_menu_.draw(viewer_->width_cells(), viewer_->height_cells(), state_.file);
+  timelapse_.draw(state_, *document_, viewer_->width_cells(), viewer_->height_cells());
   if (ImGui::BeginMainMenuBar()) {  // Help, last on the menu bar
     help_menu(state_);
     ImGui::EndMainMenuBar();

@@ -268,6 +268,7 @@ void file_menu(PanelContext& c) {
       if (ImGui::MenuItem("Save", keys(Command::kSave))) command = Command::kSave;
       if (ImGui::MenuItem("Save as...", keys(Command::kSaveAs))) command = Command::kSaveAs;
       if (ImGui::MenuItem("Export image...")) command = Command::kExportImage;
+      if (ImGui::MenuItem("Export time-lapse...")) command = Command::kExportTimelapse;
       ImGui::Separator();
       if (ImGui::MenuItem("Quit")) command = Command::kQuit;
       ImGui::EndMenu();
@@ -298,6 +299,9 @@ void file_menu(PanelContext& c) {
         break;
       case Command::kExportImage:
         browse = FilePurpose::kExportImage;
+        break;
+      case Command::kExportTimelapse:
+        s.timelapse_requested = true;  // the window opens its dialog (timelapse_export.hpp)
         break;
       case Command::kQuit:
         ask(PendingAction::kQuit);

@@ -37,6 +37,7 @@ constexpr std::array kCommands{
     CommandInfo{Command::kSave, "Save", "File"},
     CommandInfo{Command::kSaveAs, "Save as", "File"},
     CommandInfo{Command::kExportImage, "Export image", "File"},
+    CommandInfo{Command::kExportTimelapse, "Export time-lapse", "File"},
     CommandInfo{Command::kQuit, "Quit", "File"},
     CommandInfo{Command::kUndo, "Undo", "Edit"},
     CommandInfo{Command::kRedo, "Redo", "Edit"},
@@ -138,6 +139,7 @@ bool is_file_command(Command command) {
     case Command::kSave:
     case Command::kSaveAs:
     case Command::kExportImage:
+    case Command::kExportTimelapse:
     case Command::kQuit:
       return true;
     default:

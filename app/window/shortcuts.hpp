@@ -18,6 +18,7 @@ enum class Command {
   kSave,
   kSaveAs,
   kExportImage,
+  kExportTimelapse,
   kQuit,  // as File > Quit: with unsaved changes, Save / Discard / Cancel
   kUndo,
   kRedo,

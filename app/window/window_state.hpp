@@ -133,6 +133,7 @@ struct WindowState {
   bool pending_confirmed = false;    // no unsaved changes, or the user said to go ahead
   bool ask_unsaved = false;          // open the Save / Discard / Cancel prompt for `pending`
   bool continue_after_save = false;  // that prompt's Save went to Save as: go on once saved
+  bool timelapse_requested = false;  // File > Export time-lapse...: open its dialog
   std::filesystem::path pending_path;
   FileBrowser file_browser{session::window_config_folder().empty()
                                ? std::filesystem::path()

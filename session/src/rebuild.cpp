@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "impasto/files/memory_budget.hpp"
+#include "impasto/session/kept_origin.hpp"
 
 namespace impasto::session {
 namespace {
@@ -21,6 +22,11 @@ std::vector<Mark> marks_of(const input::StrokeFile& file) {
   for (std::size_t i = 0; i < file.events.size(); ++i) {
     if (const auto* origin = std::get_if<input::OriginEvent>(&file.events[i])) {
       if (!origin->new_canvas) {
+        // The copy kept beside the recording (kept_origin.hpp), tried after the file itself:
+        // marks are tried from the last.
+        if (!file.source.empty())
+          marks.push_back(
+              {i + 1, kept_origin_path(file.source).string(), origin->state_hash, file.where(i)});
         marks.push_back({i + 1, origin->painting, origin->state_hash, file.where(i)});
       }
     } else if (const auto* saved = std::get_if<input::SavedEvent>(&file.events[i])) {

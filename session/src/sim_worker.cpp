@@ -1,7 +1,10 @@
 #include "impasto/session/sim_worker.hpp"
 
+#include "impasto/session/kept_origin.hpp"
+
 #include <algorithm>
 #include <chrono>
+#include <iostream>
 #include <variant>
 
 namespace impasto::session {
@@ -61,6 +64,15 @@ void SimWorker::start_recording(SessionRecording recording) {
     }
     record(origin);
     sync_recording(true);
+    // Saving over the painting replaces its file: its first state is kept for the time-lapse
+    // and the rebuild (kept_origin.hpp). Without it they still work from the session's saves.
+    if (recorder_ && recording.opened_from) {
+      const std::string not_kept = keep_origin(*recording.opened_from, recorder_->path());
+      if (!not_kept.empty())
+        std::cerr << "impasto: warning: the painting the session began from is not kept beside "
+                     "its recording ("
+                  << not_kept << ")\n";
+    }
   }
   std::lock_guard lock(queue_mutex_);
   stats_.recording_error = recording_error_;

@@ -9,6 +9,7 @@
 
 #include "impasto/files/memory_budget.hpp"
 #include "impasto/render/render_painting.hpp"
+#include "impasto/session/kept_origin.hpp"
 
 namespace impasto::session {
 
@@ -44,13 +45,16 @@ void check_options(const TimelapseOptions& options) {
     throw std::runtime_error("time-lapse: --seconds must be in (0, 3600]");
   if (!(options.hold_seconds >= 0.0 && options.hold_seconds <= 600.0))
     throw std::runtime_error("time-lapse: --hold must be in [0, 600] seconds");
+  if (options.shade_scale < 1 || options.shade_scale > 4)
+    throw std::runtime_error("time-lapse: the shading scale must be 1..4");
 }
 
 // The canvas rendered incrementally: the tiles changed since the last frame are re-shaded; a
 // new pigment slot (the palette grows) or a turned light re-shades everything.
 class FrameRenderer {
  public:
-  explicit FrameRenderer(render::RenderSettings settings) : settings_(std::move(settings)) {}
+  FrameRenderer(render::RenderSettings settings, int shade_scale)
+      : settings_(std::move(settings)), shade_scale_(shade_scale) {}
 
   const render::Image& render(paintcore::Painting& painting, double azimuth_deg) {
     const paintcore::Canvas& canvas = painting.canvas();
@@ -58,6 +62,12 @@ class FrameRenderer {
     const std::vector<int> changed = paintcore::tile_indices(painting.take_changes(changes_));
     const bool turned = azimuth_deg != settings_.light_azimuth_deg;
     settings_.light_azimuth_deg = azimuth_deg;
+    if (shade_scale_ > 1 && canvas.cracks().empty()) {
+      // The relief refined to the frame's size: a whole render of each frame that changed.
+      if (image_.rgb.empty() || turned || !changed.empty())
+        image_ = render::render_painting(painting.refined(shade_scale_), settings_);
+      return image_;
+    }
     if (!renderer_ || painting.slot_count() != slots_) {
       palette_.emplace(settings_, painting);
       renderer_.emplace(settings_, *palette_);
@@ -75,6 +85,7 @@ class FrameRenderer {
 
  private:
   render::RenderSettings settings_;
+  int shade_scale_ = 1;
   std::optional<render::SpectralPalette> palette_;
   std::optional<render::TileRenderer> renderer_;
   int slots_ = -1;
@@ -82,7 +93,33 @@ class FrameRenderer {
   render::Image image_;
 };
 
+// The painting the session began from (kept_origin.hpp), with the constants it was painted
+// with, as the window painted on it; a blank canvas for a new one, or when a canvas is forced.
+paintcore::Painting start_painting(const input::StrokeFile& file, const ReplayOptions& replay,
+                                   TimelapseReport& report) {
+  const bool forced = replay.width_cells || replay.height_cells || replay.dpi;
+  if (!forced) {
+    std::optional<paintcore::Painting> origin =
+        load_session_origin(file, replay.threads, report.warnings);
+    if (origin) {
+      report.base = "the painting the session began from";
+      return std::move(*origin);
+    }
+  }
+  paintcore::Painting painting(replay_canvas(file, replay), replay.threads);
+  painting.set_params(replay_params(replay));
+  return painting;
+}
+
 }  // namespace
+
+int timelapse_shade_scale(const paintcore::CanvasSpec& canvas, int frame_width, int frame_height) {
+  int scale = 1;
+  while (scale < 4 && (static_cast<long>(canvas.width_cells) * scale < frame_width ||
+                       static_cast<long>(canvas.height_cells) * scale < frame_height))
+    ++scale;
+  return scale;
+}
 
 int timelapse_growth_frames(const input::StrokeFile& file, const TimelapseOptions& options) {
   check_options(options);
@@ -101,11 +138,10 @@ TimelapseReport play_timelapse(const input::StrokeFile& file, const ReplayOption
   const int frames = report.growth_frames + report.hold_frames;
   const SessionClock clock = session_clock(file);
 
-  paintcore::Painting painting(replay_canvas(file, replay), replay.threads);
+  paintcore::Painting painting = start_painting(file, replay, report);
   render::check_render_memory(painting.canvas(), file.source);
-  painting.set_params(replay_params(replay));
   SessionPlayer player(painting, replay, replay.auto_load && !has_load_record(file));
-  FrameRenderer renderer(options.settings);
+  FrameRenderer renderer(options.settings, options.shade_scale);
   const double azimuth0 = options.settings.light_azimuth_deg;
   const auto azimuth_at = [&](int index) {
     if (!options.light_azimuth_end_deg || frames < 2) return azimuth0;

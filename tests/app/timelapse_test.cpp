@@ -192,6 +192,38 @@ TEST_F(Timelapse, TheFramesFollowTheSessionAndTheLightTurnsEvenly) {
   EXPECT_EQ(timelapse_growth_frames(file, options), 13);
 }
 
+TEST_F(Timelapse, AVideoLargerThanTheCanvasShadesTheReliefAtItsSize) {
+  const paintcore::CanvasSpec canvas{240, 160, 254.0, 1};
+  EXPECT_EQ(session::timelapse_shade_scale(canvas, 240, 160), 1);
+  EXPECT_EQ(session::timelapse_shade_scale(canvas, 120, 80), 1);
+  EXPECT_EQ(session::timelapse_shade_scale(canvas, 242, 160), 2);
+  EXPECT_EQ(session::timelapse_shade_scale(canvas, 481, 160), 3);
+  EXPECT_EQ(session::timelapse_shade_scale(canvas, 7680, 4320), 4);
+
+  const input::StrokeFile file = input::load_strokes_any(session_);
+  session::TimelapseOptions options;
+  options.fps = 2;
+  options.growth_seconds = 1;
+  options.hold_seconds = 0.5;
+  options.shade_scale = 2;
+  std::vector<render::Image> frames;
+  play_timelapse(file, {}, options, [&](const render::Image& f) { frames.push_back(f); });
+  ASSERT_EQ(frames.size(), 3u);
+  EXPECT_EQ(frames.back().width, 480);
+  EXPECT_EQ(frames.back().height, 320);
+  // The refined relief's render, not the canvas's cells enlarged.
+  const paintcore::Painting painting = session::replay(file, {});
+  EXPECT_EQ(frames.back().rgb, render::render_painting(painting.refined(2), {}).rgb);
+
+  // Through the command line: a 2x frame comes out of the encoder at that size.
+  const fs::path out = dir_ / "large.webm";
+  run_command_in_process("timelapse " + session_.string() + " -o " + out.string() +
+                         " --fps 2 --seconds 1 --hold 0 --frame-size 480x320");
+  const DecodedVideo video = decode(out);
+  EXPECT_EQ(video.width, 480);
+  EXPECT_EQ(video.frames.size(), 2u);
+}
+
 TEST_F(Timelapse, ABadSessionNamesItsLineAndLeavesNoFile) {
   std::ofstream(dir_ / "bad.strokes") << "impasto-strokes 1\ncanvas 64 64 100\n"
                                          "pen 0 1 1 0.5 0 0 0 17\ntool trowel\n";

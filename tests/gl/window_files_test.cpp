@@ -25,7 +25,7 @@ using impasto::render::Image;
 // file dialog (780 x 500, centred) with its fields and buttons.
 constexpr int kWindowW = 1200, kWindowH = 800;
 constexpr int kFileMenuX = 20, kFileMenuY = 10;
-constexpr int kMenuOpenY = 50, kMenuSaveAsY = 106, kMenuQuitY = 143;
+constexpr int kMenuOpenY = 50, kMenuSaveAsY = 106, kMenuQuitY = 162;
 constexpr int kDialogX = (kWindowW - 780) / 2, kDialogY = (kWindowH - 500) / 2;
 constexpr int kFolderFieldX = kDialogX + 320, kFolderFieldY = kDialogY + 36;
 constexpr int kNameFieldX = kDialogX + 300, kNameFieldY = kDialogY + 451;
