@@ -1,5 +1,6 @@
 #include "window/panels.hpp"
 #include "impasto/files/message_text.hpp"
+#include "window/colour_target.hpp"
 #include "window/edit_help_menus.hpp"
 #include "window/enum_combo.hpp"
 #include "window/imgui_layout.hpp"
@@ -807,6 +808,7 @@ void draw_panels(PanelContext& context) {
   palette_panel(context);
   eyedropper_panel(context.state, context.worker);
   context.board.draw(context.state, context.worker);
+  colour_target_panel(context.state, context.worker, context.painting.brush_volume_mm3);
   brush_panel(context);
   tablet_panel(context);
   light_panel(context);

@@ -7,6 +7,7 @@
 #include <impasto/paintcore/brush.hpp>
 #include <impasto/paintcore/paint_body.hpp>
 #include <impasto/paintcore/paint_surface.hpp>
+#include <impasto/render/colour_recipe.hpp>
 #include <impasto/render/render_settings.hpp>
 #include <impasto/render_gl/canvas_view.hpp>
 #include <impasto/render_gl/gpu_view_options.hpp>
@@ -87,6 +88,11 @@ struct WindowState {
   std::vector<std::array<float, 3>> pigment_masstone_rgb, pigment_layer_rgb;
   std::vector<std::array<float, 3>> pigment_glaze_rgb;  // 0.01 mm over the ground: the hue
   bool mix_changed = true;  // the light changed: the swatch is redone even for the same stroke
+  // The colour target (colour_target.hpp), display sRGB, and its recipes under the light
+  // they were found under.
+  std::array<float, 3> colour_target{0.54f, 0.23f, 0.17f};
+  std::vector<render::Recipe> recipes;
+  std::string recipes_light;
 
   // --- brush and pen ---
   paintcore::BrushSettings brush{"round", 6.0, 0.5};

@@ -429,6 +429,24 @@ TEST_F(Cli, ColorXyzTakesTheLightAndTheOldIlluminant) {
   EXPECT_NE(r.err.find("-i is deprecated: use --light"), std::string::npos) << r.err;
 }
 
+TEST_F(Cli, ColorRecipeNamesThePigmentsNearestAColour) {
+  CommandRun r = impasto("color recipe '#2E8B57' --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json out = nlohmann::json::parse(r.out);
+  const nlohmann::json& recipes = out.at("recipes");
+  ASSERT_GE(recipes.size(), 2u);
+  // Each offered recipe has a pigment more and comes nearer than the one before.
+  for (std::size_t k = 1; k < recipes.size(); ++k) {
+    EXPECT_EQ(recipes[k].at("parts").size(), k + 1);
+    EXPECT_LT(recipes[k].at("delta_e00").get<double>(),
+              recipes[k - 1].at("delta_e00").get<double>());
+  }
+  EXPECT_EQ(impasto("color recipe 46,139,87 --json").out, r.out);
+  r = impasto("color recipe '#2E8B' --json");
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("colour '#2E8B': expected #RRGGBB or R,G,B"), std::string::npos) << r.err;
+}
+
 TEST_F(Cli, RecoverSavesToSaveAndStillTakesOut) {
   const CommandRun r = impasto("recover --apply latest --out x.impasto");
   EXPECT_EQ(r.status, 1);  // no session to recover in this test's folder
