@@ -4,9 +4,16 @@
 #include <impasto/data/pigments.hpp>
 
 #include <algorithm>
+#include <array>
+#include <cstdio>
+#include <optional>
 #include <string>
 
+#include "impasto/data/lights.hpp"
+#include "impasto/files/message_text.hpp"
+#include "impasto/render/colour_recipe.hpp"
 #include "window/imgui_layout.hpp"
+#include "window/saved_mixes.hpp"
 
 namespace impasto::app::window {
 namespace {
@@ -25,6 +32,124 @@ std::array<float, 3> mix_rgb(const WindowState& s) {
   if (count == 1 && static_cast<std::size_t>(only) < s.pigment_masstone_rgb.size())
     return s.pigment_masstone_rgb[static_cast<std::size_t>(only)];
   return s.swatch_masstone_rgb;
+}
+
+std::vector<std::string> pigment_names() {
+  std::vector<std::string> names;
+  for (const auto& pigment : data::PigmentDatabase::defaults().all()) names.push_back(pigment.name);
+  return names;
+}
+
+// The saved mixes, read on first use (what was passed over, said once), and their chips'
+// colours: each mix's masstone under the window's light, as the colour target computes it.
+void update_saved_mixes(WindowState& s) {
+  const std::vector<std::string> names = pigment_names();
+  if (!s.saved_mixes) {
+    SavedMixes loaded = load_saved_mixes(names);
+    for (const auto& warning : loaded.warnings) s.notifications.warning(warning);
+    s.saved_mixes = std::move(loaded.mixes);
+    s.saved_mix_light.clear();
+  }
+  if (s.saved_mix_light == s.settings.light && s.saved_mix_rgb.size() == s.saved_mixes->size())
+    return;
+  const auto& pigments = data::PigmentDatabase::defaults().all();
+  const render::RecipeFinder finder(pigments, data::light_from_spec(s.settings.light));
+  s.saved_mix_rgb.clear();
+  for (const SavedMix& mix : *s.saved_mixes) {
+    const std::vector<float> parts = mix_parts_of(mix, names);
+    std::vector<render::RecipePart> recipe;
+    for (std::size_t i = 0; i < parts.size(); ++i)
+      if (parts[i] > 0.0f) recipe.push_back({i, parts[i]});
+    const render::Recipe look = finder.evaluate(recipe, data::Lab{});
+    s.saved_mix_rgb.push_back({static_cast<float>(look.srgb[0]), static_cast<float>(look.srgb[1]),
+                               static_cast<float>(look.srgb[2])});
+  }
+  s.saved_mix_light = s.settings.light;
+}
+
+// Keeps the list in the painter's file; says so when it cannot.
+void store(WindowState& s) {
+  try {
+    store_saved_mixes(*s.saved_mixes);
+  } catch (const std::exception& e) {
+    s.notifications.error(std::string("mixes not saved: ") + e.what());
+  }
+  s.saved_mix_light.clear();  // the chips are made again
+}
+
+// The saved row: a chip each (click: load; right-click: remove), and "+" to save the
+// Palette's mix under a name.
+void draw_saved_mixes(WindowState& s, session::SimWorker& worker, double brush_volume_mm3,
+                      float bar_right) {
+  update_saved_mixes(s);
+  const std::vector<std::string> names = pigment_names();
+  flow(ImGui::CalcTextSize("saved").x + kChip, bar_right);
+  ImGui::TextDisabled("saved");
+  std::optional<std::size_t> remove;
+  for (std::size_t i = 0; i < s.saved_mixes->size(); ++i) {
+    const SavedMix& mix = (*s.saved_mixes)[i];
+    flow(kChip, bar_right);
+    ImGui::PushID(2000 + static_cast<int>(i));
+    const bool clicked = ImGui::ColorButton("##saved", rgba(s.saved_mix_rgb[i]),
+                                            ImGuiColorEditFlags_NoTooltip, ImVec2(kChip, kChip));
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip("%s\n%s\nclick: load the brush with it\nright-click: remove it",
+                        files::terminal_text(mix.name).c_str(),
+                        files::terminal_text(mix_description(mix)).c_str());
+    }
+    if (ImGui::BeginPopupContextItem("##saved_menu")) {
+      if (ImGui::MenuItem(("Remove " + files::terminal_text(mix.name)).c_str())) remove = i;
+      ImGui::EndPopup();
+    }
+    ImGui::PopID();
+    if (clicked) {
+      s.mix_parts = mix_parts_of(mix, names);
+      s.mix_changed = true;
+      load_palette_mix(s, worker, brush_volume_mm3);
+    }
+  }
+  if (remove) {
+    s.saved_mixes->erase(s.saved_mixes->begin() + static_cast<std::ptrdiff_t>(*remove));
+    store(s);
+  }
+  // "+": the Palette's mix, under a name (its parts, unless the painter types another).
+  std::array<char, 128>& name = s.saved_mix_name;
+  flow(kChip, bar_right);
+  const bool any =
+      std::any_of(s.mix_parts.begin(), s.mix_parts.end(), [](float p) { return p > 0.0f; });
+  ImGui::BeginDisabled(!any);
+  if (ImGui::Button("+##save_mix", ImVec2(kChip, kChip))) {
+    const std::string description = mix_description(saved_mix("", s.mix_parts, names));
+    std::snprintf(name.data(), name.size(), "%s", description.c_str());
+    ImGui::OpenPopup("Save mix");
+  }
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip(any ? "save the Palette's mix among the saved ones"
+                          : "save the Palette's mix (give pigments parts first)");
+  if (ImGui::BeginPopup("Save mix")) {
+    ImGui::SetNextItemWidth(260.0f);
+    if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+    const bool entered =
+        ImGui::InputText("name", name.data(), name.size(), ImGuiInputTextFlags_EnterReturnsTrue);
+    if ((ImGui::Button("Save") || entered) && name[0] != '\0') {
+      SavedMix mix = saved_mix(name.data(), s.mix_parts, names);
+      // The same name is the same mix: saved again, it takes the new parts.
+      auto& mixes = *s.saved_mixes;
+      std::erase_if(mixes, [&](const SavedMix& m) { return m.name == mix.name; });
+      if (mixes.size() < kMaxSavedMixes) {
+        mixes.push_back(std::move(mix));
+        store(s);
+      } else {
+        s.notifications.warning("at most " + std::to_string(kMaxSavedMixes) +
+                                " saved mixes: remove one first (right-click it)");
+      }
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel")) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+  }
 }
 
 }  // namespace
@@ -89,6 +214,13 @@ void draw_paint_strip(WindowState& s, session::SimWorker& worker, double brush_v
     }
     s.mix_changed = true;
   }
+  draw_recent_mixes(s, worker, brush_volume_mm3, bar_right);
+  draw_saved_mixes(s, worker, brush_volume_mm3, bar_right);
+}
+
+void draw_recent_mixes(WindowState& s, session::SimWorker& worker, double brush_volume_mm3,
+                       float bar_right) {
+  const auto& pigments = data::PigmentDatabase::defaults().all();
   if (s.recent_mixes.empty()) return;
   flow(ImGui::CalcTextSize("recent").x + kChip, bar_right);
   ImGui::TextDisabled("recent");

@@ -22,8 +22,13 @@ void load_palette_mix(WindowState& s, session::SimWorker& worker, double brush_v
 // The mix remembered: moved to the front of `recent` (kept to kRecentMixes).
 void remember_mix(std::vector<RecentMix>& recent, const RecentMix& mix);
 
-// The strip, drawn in the current ImGui window, flowing within `bar_right`.
+// The strip, drawn in the current ImGui window, flowing within `bar_right`: the paints, then
+// the recent mixes and the saved ones (saved_mixes.hpp; a click loads one, a right-click
+// removes it, "+" saves the Palette's mix under a name).
 void draw_paint_strip(WindowState& s, session::SimWorker& worker, double brush_volume_mm3,
                       float bar_right);
+// The recent row alone (draw_paint_strip draws it).
+void draw_recent_mixes(WindowState& s, session::SimWorker& worker, double brush_volume_mm3,
+                       float bar_right);
 
 }  // namespace impasto::app::window

@@ -30,6 +30,7 @@
 #include "window/file_browser.hpp"
 #include "window/notifications.hpp"
 #include "window/paint_options.hpp"
+#include "window/saved_mixes.hpp"
 #include "window/shortcuts.hpp"
 #include "window/tablet_input.hpp"
 
@@ -68,6 +69,12 @@ struct WindowState {
   // --- paint on the brush ---
   std::vector<float> mix_parts;         // per pigment of the database
   std::vector<RecentMix> recent_mixes;  // loaded lately, newest first (paint_strip.hpp)
+  // The painter's saved mixes (saved_mixes.hpp), read on first use, and how each looks (its
+  // masstone) under the light named in saved_mix_light.
+  std::optional<std::vector<SavedMix>> saved_mixes;
+  std::vector<std::array<float, 3>> saved_mix_rgb;
+  std::string saved_mix_light;
+  std::array<char, 128> saved_mix_name{};  // the Save mix popup's field
   // Enough heavy paint for the default 6 mm round to lay a stroke about half a millimetre
   // thick and a few centimetres long (6 × 40 × 0.5 mm³), as a loaded brush does.
   float load_volume_mm3 = 120.0f;
