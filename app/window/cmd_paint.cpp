@@ -16,7 +16,7 @@ namespace impasto::app::paint_cmd {
 namespace {
 
 struct PaintArgs {
-  std::string painting, replay, screenshot, record;
+  std::string painting, replay, screenshot, record, reference;
   std::string quality{
       util::name_of(paintcore::kStepQualityNames, paintcore::StepQuality::balanced)};
   std::optional<CanvasSize> size;
@@ -31,6 +31,9 @@ void setup(CLI::App& root) {
   cmd->add_option("--replay", args->replay,
                   "Replay a stroke file (native, libmypaint .dat or BDALab .svc) through the "
                   "window's input path")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--reference", args->reference,
+                  "A PNG to paint from, in a window of its own (View > Reference image...)")
       ->check(CLI::ExistingFile);
   cmd->add_option("--screenshot", args->screenshot,
                   "Save a PNG of the whole window once the replay is applied");
@@ -73,6 +76,7 @@ void setup(CLI::App& root) {
     if (!args->painting.empty()) options.painting = args->painting;
     if (!args->replay.empty()) options.replay = args->replay;
     if (!args->screenshot.empty()) options.screenshot = args->screenshot;
+    if (!args->reference.empty()) options.reference = args->reference;
     if (!args->record.empty()) options.record = args->record;
     window::run_paint_window(options);
   });

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 
 #include "impasto/data/lights.hpp"
 #include "impasto/data/pigments.hpp"
@@ -32,6 +33,7 @@ void find_recipes(WindowState& s) {
 }
 
 void colour_target_panel(WindowState& s, session::SimWorker& worker, double brush_volume_mm3) {
+  if (std::exchange(s.show_colour_target, false)) ImGui::SetNextItemOpen(true);
   if (!ImGui::CollapsingHeader("Colour target")) return;
   ImGui::SetNextItemWidth(150.0f);
   const bool picked =

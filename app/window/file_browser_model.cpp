@@ -22,7 +22,8 @@ bool is_impasto_kind(const std::string& extension) {
 }
 
 constexpr FilePurpose kAllFilePurposes[] = {FilePurpose::kOpenPainting, FilePurpose::kSavePainting,
-                                            FilePurpose::kExportImage, FilePurpose::kOpenStrokes};
+                                            FilePurpose::kExportImage, FilePurpose::kOpenStrokes,
+                                            FilePurpose::kOpenReference};
 
 }  // namespace
 
@@ -37,6 +38,8 @@ std::vector<FileFilter> filters_for(FilePurpose purpose) {
       return {{"PNG image (*.png)", {".png"}}, {"OpenEXR image (*.exr)", {".exr"}}};
     case FilePurpose::kOpenStrokes:
       return {{"Strokes (*.strokes, *.dat, *.svc)", {".strokes", ".dat", ".svc"}}, all};
+    case FilePurpose::kOpenReference:
+      return {{"PNG image (*.png)", {".png"}}, all};
   }
   return {all};
 }
@@ -54,6 +57,8 @@ std::string folder_key(FilePurpose purpose) {
       return "export";
     case FilePurpose::kOpenStrokes:
       return "strokes";
+    case FilePurpose::kOpenReference:
+      return "reference";
   }
   return "other";
 }
@@ -139,6 +144,7 @@ std::string proposed_file_name(FilePurpose purpose, const std::optional<fs::path
       return stem + filters_for(purpose).front().extensions.front();
     case FilePurpose::kOpenPainting:
     case FilePurpose::kOpenStrokes:
+    case FilePurpose::kOpenReference:
       return {};
   }
   return {};

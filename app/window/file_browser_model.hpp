@@ -12,7 +12,7 @@
 namespace impasto::app::window {
 
 // What a file is chosen for; each has its own filters and remembered folder.
-enum class FilePurpose { kOpenPainting, kSavePainting, kExportImage, kOpenStrokes };
+enum class FilePurpose { kOpenPainting, kSavePainting, kExportImage, kOpenStrokes, kOpenReference };
 
 // "Painting (*.impasto)" and the extensions it takes, lower case with the dot.
 struct FileFilter {

@@ -11,6 +11,7 @@ namespace impasto::app::window {
 struct PaintOptions {
   std::optional<std::filesystem::path> painting;    // open this .impasto file
   std::optional<std::filesystem::path> replay;      // stroke file replayed at start
+  std::optional<std::filesystem::path> reference;   // a reference image shown at start
   std::optional<std::filesystem::path> screenshot;  // PNG of the whole window once replayed
   std::optional<std::filesystem::path> record;      // session stroke file (default: beside)
   bool no_record = false;

@@ -26,6 +26,7 @@
 #include "window/pigment_drift_note.hpp"
 #include "window/pigment_editor.hpp"
 #include "window/pointer_latency.hpp"
+#include "window/reference_image.hpp"
 #include "window/session_banner.hpp"
 #include "window/swatch_chips.hpp"
 #include "window/timelapse_export.hpp"
@@ -89,6 +90,7 @@ class PaintWindow {
   PigmentEditor pigment_editor_;
   CanvasMenu canvas_menu_;
   TimelapseExport timelapse_;  // File > Export time-lapse... and the video being written
+  ReferenceImage reference_;   // View > Reference image...
   PigmentDriftNote pigment_drift_;
   SwatchChips swatch_chips_;
   PointerOverlay pointer_overlay_;  // the brush's outline and the empty-brush note
@@ -160,6 +162,7 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   const CanvasMenuRequest canvas_request =
       canvas_menu_.draw(viewer_->width_cells(), viewer_->height_cells(), state_.file);
   timelapse_.draw(state_, *document_, viewer_->width_cells(), viewer_->height_cells());
+  reference_.draw(state_);
   if (ImGui::BeginMainMenuBar()) {  // Help, last on the menu bar
     help_menu(state_);
     ImGui::EndMainMenuBar();

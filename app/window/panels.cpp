@@ -59,6 +59,10 @@ FileBrowserRequest browser_request(FilePurpose purpose, const WindowState& s) {
       request.title = "Open strokes";
       request.accept_label = "Open";
       break;
+    case FilePurpose::kOpenReference:
+      request.title = "Open a reference image";
+      request.accept_label = "Open";
+      break;
   }
   return request;
 }
@@ -280,6 +284,8 @@ void file_menu(PanelContext& c) {
       if (ImGui::MenuItem("One cell per pixel", keys(Command::kOneCellPerPixel)))
         s.view.pixels_per_cell = 1.0;
       if (ImGui::MenuItem("Reset rotation")) s.view.rotation_rad = 0.0;
+      ImGui::Separator();
+      if (ImGui::MenuItem("Reference image...")) browse = FilePurpose::kOpenReference;
       ImGui::EndMenu();
     }
     ImGui::EndMainMenuBar();
@@ -348,6 +354,9 @@ void file_menu(PanelContext& c) {
         c.files.export_image(chosen.file);
         break;
       case FilePurpose::kOpenStrokes:
+        break;
+      case FilePurpose::kOpenReference:
+        s.reference_requested = chosen.file;  // the window opens it (reference_image.hpp)
         break;
     }
   } else if (chosen.kind == FileBrowserResult::kCancelled && continuing) {

@@ -31,6 +31,7 @@ WindowState initial_window_state(const PaintOptions& options) {
   state.settings.wavelengths = options.wavelengths;
   state.quality = options.quality;
   state.catch_up = options.catch_up;
+  state.reference_requested = options.reference;
   state.illuminants = data::illuminant_names();
   const auto d65 = std::find(state.illuminants.begin(), state.illuminants.end(), "D65");
   state.illuminant =

@@ -100,6 +100,7 @@ struct WindowState {
   std::array<float, 3> colour_target{0.54f, 0.23f, 0.17f};
   std::vector<render::Recipe> recipes;
   std::string recipes_light;
+  bool show_colour_target = false;  // a colour was picked elsewhere: open the panel
 
   // --- brush and pen ---
   paintcore::BrushSettings brush{"round", 6.0, 0.5};
@@ -147,6 +148,7 @@ struct WindowState {
   bool ask_unsaved = false;          // open the Save / Discard / Cancel prompt for `pending`
   bool continue_after_save = false;  // that prompt's Save went to Save as: go on once saved
   bool timelapse_requested = false;  // File > Export time-lapse...: open its dialog
+  std::optional<std::filesystem::path> reference_requested;  // View > Reference image...
   std::filesystem::path pending_path;
   FileBrowser file_browser{session::window_config_folder().empty()
                                ? std::filesystem::path()
