@@ -24,28 +24,31 @@ std::vector<float> recipe_mix_parts(const render::Recipe& recipe, std::size_t pi
   return parts;
 }
 
-void find_recipes(WindowState& s) {
+void ColourTarget::find(const std::string& light) {
   const auto& pigments = data::PigmentDatabase::defaults().all();
-  const render::RecipeFinder finder(pigments, data::light_from_spec(s.settings.light));
-  const std::array<double, 3> target{s.colour_target[0], s.colour_target[1], s.colour_target[2]};
-  s.recipes = finder.find(render::srgb_to_lab(target));
-  s.recipes_light = s.settings.light;
+  const render::RecipeFinder finder(pigments, data::light_from_spec(light));
+  recipes_ = finder.find(render::srgb_to_lab({target_[0], target_[1], target_[2]}));
+  recipes_light_ = light;
 }
 
-void colour_target_panel(WindowState& s, session::SimWorker& worker, double brush_volume_mm3) {
-  if (std::exchange(s.show_colour_target, false)) ImGui::SetNextItemOpen(true);
+void ColourTarget::pick(const std::array<float, 3>& rgb, const std::string& light) {
+  target_ = rgb;
+  find(light);
+  open_next_ = true;
+}
+
+void ColourTarget::draw(WindowState& s, session::SimWorker& worker, double brush_volume_mm3) {
+  if (std::exchange(open_next_, false)) ImGui::SetNextItemOpen(true);
   if (!ImGui::CollapsingHeader("Colour target")) return;
   ImGui::SetNextItemWidth(150.0f);
-  const bool picked =
-      ImGui::ColorEdit3("target", s.colour_target.data(), ImGuiColorEditFlags_DisplayHex);
+  const bool picked = ImGui::ColorEdit3("target", target_.data(), ImGuiColorEditFlags_DisplayHex);
   ImGui::SameLine();
   // Found again when the colour or the light changes (a few tens of milliseconds).
-  if (ImGui::Button("Find") || picked ||
-      (!s.recipes.empty() && s.recipes_light != s.settings.light))
-    find_recipes(s);
+  if (ImGui::Button("Find") || picked || (!recipes_.empty() && recipes_light_ != s.settings.light))
+    find(s.settings.light);
   const auto& pigments = data::PigmentDatabase::defaults().all();
-  for (std::size_t r = 0; r < s.recipes.size(); ++r) {
-    const render::Recipe& recipe = s.recipes[r];
+  for (std::size_t r = 0; r < recipes_.size(); ++r) {
+    const render::Recipe& recipe = recipes_[r];
     ImGui::PushID(static_cast<int>(r));
     const std::array<float, 3> rgb{static_cast<float>(recipe.srgb[0]),
                                    static_cast<float>(recipe.srgb[1]),
@@ -72,7 +75,7 @@ void colour_target_panel(WindowState& s, session::SimWorker& worker, double brus
     ImGui::TextWrapped("%s", text.c_str());
     ImGui::PopID();
   }
-  if (s.recipes.empty()) {
+  if (recipes_.empty()) {
     ImGui::BeginDisabled();
     ImGui::TextWrapped(
         "Pick or type a colour: the library's pigments nearest it, under this light.");

@@ -40,58 +40,58 @@ std::vector<std::string> pigment_names() {
   return names;
 }
 
+}  // namespace
+
 // The saved mixes, read on first use (what was passed over, said once), and their chips'
 // colours: each mix's masstone under the window's light, as the colour target computes it.
-void update_saved_mixes(WindowState& s) {
+void SavedMixRow::update(WindowState& s) {
   const std::vector<std::string> names = pigment_names();
-  if (!s.saved_mixes) {
+  if (!mixes_) {
     SavedMixes loaded = load_saved_mixes(names);
     for (const auto& warning : loaded.warnings) s.notifications.warning(warning);
-    s.saved_mixes = std::move(loaded.mixes);
-    s.saved_mix_light.clear();
+    mixes_ = std::move(loaded.mixes);
+    light_.clear();
   }
-  if (s.saved_mix_light == s.settings.light && s.saved_mix_rgb.size() == s.saved_mixes->size())
-    return;
+  if (light_ == s.settings.light && rgb_.size() == mixes_->size()) return;
   const auto& pigments = data::PigmentDatabase::defaults().all();
   const render::RecipeFinder finder(pigments, data::light_from_spec(s.settings.light));
-  s.saved_mix_rgb.clear();
-  for (const SavedMix& mix : *s.saved_mixes) {
+  rgb_.clear();
+  for (const SavedMix& mix : *mixes_) {
     const std::vector<float> parts = mix_parts_of(mix, names);
     std::vector<render::RecipePart> recipe;
     for (std::size_t i = 0; i < parts.size(); ++i)
       if (parts[i] > 0.0f) recipe.push_back({i, parts[i]});
     const render::Recipe look = finder.evaluate(recipe, data::Lab{});
-    s.saved_mix_rgb.push_back({static_cast<float>(look.srgb[0]), static_cast<float>(look.srgb[1]),
-                               static_cast<float>(look.srgb[2])});
+    rgb_.push_back({static_cast<float>(look.srgb[0]), static_cast<float>(look.srgb[1]),
+                    static_cast<float>(look.srgb[2])});
   }
-  s.saved_mix_light = s.settings.light;
+  light_ = s.settings.light;
 }
 
-// Keeps the list in the painter's file; says so when it cannot.
-void store(WindowState& s) {
+void SavedMixRow::store(WindowState& s) {
   try {
-    store_saved_mixes(*s.saved_mixes);
+    store_saved_mixes(*mixes_);
   } catch (const std::exception& e) {
     s.notifications.error(std::string("mixes not saved: ") + e.what());
   }
-  s.saved_mix_light.clear();  // the chips are made again
+  light_.clear();  // the chips are made again
 }
 
 // The saved row: a chip each (click: load; right-click: remove), and "+" to save the
 // Palette's mix under a name.
-void draw_saved_mixes(WindowState& s, session::SimWorker& worker, double brush_volume_mm3,
-                      float bar_right) {
-  update_saved_mixes(s);
+void SavedMixRow::draw(WindowState& s, session::SimWorker& worker, double brush_volume_mm3,
+                       float bar_right) {
+  update(s);
   const std::vector<std::string> names = pigment_names();
   flow(ImGui::CalcTextSize("saved").x + kChip, bar_right);
   ImGui::TextDisabled("saved");
   std::optional<std::size_t> remove;
-  for (std::size_t i = 0; i < s.saved_mixes->size(); ++i) {
-    const SavedMix& mix = (*s.saved_mixes)[i];
+  for (std::size_t i = 0; i < mixes_->size(); ++i) {
+    const SavedMix& mix = (*mixes_)[i];
     flow(kChip, bar_right);
     ImGui::PushID(2000 + static_cast<int>(i));
-    const bool clicked = ImGui::ColorButton("##saved", rgba(s.saved_mix_rgb[i]),
-                                            ImGuiColorEditFlags_NoTooltip, ImVec2(kChip, kChip));
+    const bool clicked = ImGui::ColorButton("##saved", rgba(rgb_[i]), ImGuiColorEditFlags_NoTooltip,
+                                            ImVec2(kChip, kChip));
     if (ImGui::IsItemHovered()) {
       ImGui::SetTooltip("%s\n%s\nclick: load the brush with it\nright-click: remove it",
                         files::terminal_text(mix.name).c_str(),
@@ -109,11 +109,11 @@ void draw_saved_mixes(WindowState& s, session::SimWorker& worker, double brush_v
     }
   }
   if (remove) {
-    s.saved_mixes->erase(s.saved_mixes->begin() + static_cast<std::ptrdiff_t>(*remove));
+    mixes_->erase(mixes_->begin() + static_cast<std::ptrdiff_t>(*remove));
     store(s);
   }
   // "+": the Palette's mix, under a name (its parts, unless the painter types another).
-  std::array<char, 128>& name = s.saved_mix_name;
+  std::array<char, 128>& name = name_;
   flow(kChip, bar_right);
   const bool any =
       std::any_of(s.mix_parts.begin(), s.mix_parts.end(), [](float p) { return p > 0.0f; });
@@ -135,7 +135,7 @@ void draw_saved_mixes(WindowState& s, session::SimWorker& worker, double brush_v
     if ((ImGui::Button("Save") || entered) && name[0] != '\0') {
       SavedMix mix = saved_mix(name.data(), s.mix_parts, names);
       // The same name is the same mix: saved again, it takes the new parts.
-      auto& mixes = *s.saved_mixes;
+      auto& mixes = *mixes_;
       std::erase_if(mixes, [&](const SavedMix& m) { return m.name == mix.name; });
       if (mixes.size() < kMaxSavedMixes) {
         mixes.push_back(std::move(mix));
@@ -151,8 +151,6 @@ void draw_saved_mixes(WindowState& s, session::SimWorker& worker, double brush_v
     ImGui::EndPopup();
   }
 }
-
-}  // namespace
 
 void remember_mix(std::vector<RecentMix>& recent, const RecentMix& mix) {
   recent.erase(std::remove_if(recent.begin(), recent.end(),
@@ -173,7 +171,7 @@ void load_palette_mix(WindowState& s, session::SimWorker& worker, double brush_v
 }
 
 void draw_paint_strip(WindowState& s, session::SimWorker& worker, double brush_volume_mm3,
-                      float bar_right) {
+                      float bar_right, SavedMixRow& saved) {
   const auto& pigments = data::PigmentDatabase::defaults().all();
   if (s.pigment_masstone_rgb.size() != pigments.size()) return;  // the chips are not made yet
   if (s.mix_parts.size() != pigments.size()) s.mix_parts.assign(pigments.size(), 0.0f);
@@ -215,7 +213,7 @@ void draw_paint_strip(WindowState& s, session::SimWorker& worker, double brush_v
     s.mix_changed = true;
   }
   draw_recent_mixes(s, worker, brush_volume_mm3, bar_right);
-  draw_saved_mixes(s, worker, brush_volume_mm3, bar_right);
+  saved.draw(s, worker, brush_volume_mm3, bar_right);
 }
 
 void draw_recent_mixes(WindowState& s, session::SimWorker& worker, double brush_volume_mm3,

@@ -4,9 +4,13 @@
 // paint or mix (wiping it first when the Palette says so); Shift- or Ctrl-click adds a part of
 // the paint to the Palette's mix instead. The Palette's Load brush goes through the same
 // load_palette_mix, so every load joins the recent mixes.
+#include <array>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "impasto/session/sim_worker.hpp"
+#include "window/saved_mixes.hpp"
 #include "window/window_state.hpp"
 
 namespace impasto::app::window {
@@ -22,11 +26,27 @@ void load_palette_mix(WindowState& s, session::SimWorker& worker, double brush_v
 // The mix remembered: moved to the front of `recent` (kept to kRecentMixes).
 void remember_mix(std::vector<RecentMix>& recent, const RecentMix& mix);
 
+// The saved mixes' row (saved_mixes.hpp): a chip each, drawn as the mix's masstone under the
+// window's light (a click loads it, a right-click removes it), and "+" to save the Palette's
+// mix under a name. It owns the list (read on first use) and the chips' colours.
+class SavedMixRow {
+ public:
+  void draw(WindowState& s, session::SimWorker& worker, double brush_volume_mm3, float bar_right);
+
+ private:
+  void update(WindowState& s);
+  void store(WindowState& s);  // into the painter's file; says so when it cannot
+
+  std::optional<std::vector<SavedMix>> mixes_;
+  std::vector<std::array<float, 3>> rgb_;
+  std::string light_;             // the light rgb_ was made under
+  std::array<char, 128> name_{};  // the Save mix popup's field
+};
+
 // The strip, drawn in the current ImGui window, flowing within `bar_right`: the paints, then
-// the recent mixes and the saved ones (saved_mixes.hpp; a click loads one, a right-click
-// removes it, "+" saves the Palette's mix under a name).
+// the recent mixes and the saved ones.
 void draw_paint_strip(WindowState& s, session::SimWorker& worker, double brush_volume_mm3,
-                      float bar_right);
+                      float bar_right, SavedMixRow& saved);
 // The recent row alone (draw_paint_strip draws it).
 void draw_recent_mixes(WindowState& s, session::SimWorker& worker, double brush_volume_mm3,
                        float bar_right);

@@ -91,6 +91,8 @@ class PaintWindow {
   CanvasMenu canvas_menu_;
   TimelapseExport timelapse_;  // File > Export time-lapse... and the video being written
   ReferenceImage reference_;   // View > Reference image...
+  ColourTarget colour_target_;
+  SavedMixRow saved_mixes_;
   PigmentDriftNote pigment_drift_;
   SwatchChips swatch_chips_;
   PointerOverlay pointer_overlay_;  // the brush's outline and the empty-brush note
@@ -154,15 +156,16 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   shell_.begin_ui_frame();
   const PaintingSnapshot painting = document_->snapshot();
   const FileActions files = document_->file_actions();
-  PanelContext context{state_, worker(), painting, viewer_->palette(), files, board_panel_};
+  PanelContext context{state_, worker(),     painting,      viewer_->palette(),
+                       files,  board_panel_, colour_target_};
   draw_panels(context);
-  draw_tool_bar(state_, worker(), painting.brush_volume_mm3);
+  draw_tool_bar(state_, worker(), painting.brush_volume_mm3, saved_mixes_);
   draw_session_banners(worker().stats(), document_->notice());
   pigment_editor_.draw(state_, viewer_->palette());
   const CanvasMenuRequest canvas_request =
       canvas_menu_.draw(viewer_->width_cells(), viewer_->height_cells(), state_.file);
   timelapse_.draw(state_, *document_, viewer_->width_cells(), viewer_->height_cells());
-  reference_.draw(state_);
+  reference_.draw(state_, colour_target_);
   if (ImGui::BeginMainMenuBar()) {  // Help, last on the menu bar
     help_menu(state_);
     ImGui::EndMainMenuBar();

@@ -817,7 +817,7 @@ void draw_panels(PanelContext& context) {
   palette_panel(context);
   eyedropper_panel(context.state, context.worker);
   context.board.draw(context.state, context.worker);
-  colour_target_panel(context.state, context.worker, context.painting.brush_volume_mm3);
+  context.colour_target.draw(context.state, context.worker, context.painting.brush_volume_mm3);
   brush_panel(context);
   tablet_panel(context);
   light_panel(context);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "impasto/session/sim_worker.hpp"
+#include "window/colour_target.hpp"
 #include "window/palette_board_panel.hpp"
 #include "window/window_state.hpp"
 
@@ -46,6 +47,7 @@ struct PanelContext {
   const render::SpectralPalette& palette;  // for the light's nodes
   const FileActions& files;
   PaletteBoardPanel& board;
+  ColourTarget& colour_target;
 };
 
 void draw_panels(PanelContext& context);

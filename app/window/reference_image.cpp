@@ -77,7 +77,7 @@ void ReferenceImage::open(const std::filesystem::path& file, WindowState& s) {
   fit_ = true;
 }
 
-void ReferenceImage::draw(WindowState& s) {
+void ReferenceImage::draw(WindowState& s, ColourTarget& target) {
   if (s.reference_requested) {
     const std::filesystem::path file = *s.reference_requested;
     s.reference_requested.reset();
@@ -147,9 +147,7 @@ void ReferenceImage::draw(WindowState& s) {
             py = static_cast<int>(std::floor(under[1]));
   const bool inside = px >= 0 && py >= 0 && px < pixels_.width && py < pixels_.height;
   if (clicked && inside) {
-    s.colour_target = picked_colour(pixels_, px, py);
-    s.show_colour_target = true;
-    find_recipes(s);
+    target.pick(picked_colour(pixels_, px, py), s.settings.light);
   }
   if (hovered && inside) {
     const std::array<float, 3> here = picked_colour(pixels_, px, py);

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "window/colour_target.hpp"
 #include "window/window_state.hpp"
 
 namespace impasto::app::window {
@@ -29,8 +30,8 @@ class ReferenceImage {
   ~ReferenceImage();  // frees the texture (the GL context is still current)
 
   // Opens what state.reference_requested names (a notification when it cannot), then draws
-  // the window while an image is open.
-  void draw(WindowState& s);
+  // the window while an image is open; a click picks the colour as `target`'s.
+  void draw(WindowState& s, ColourTarget& target);
 
  private:
   void open(const std::filesystem::path& file, WindowState& s);

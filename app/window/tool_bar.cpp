@@ -99,7 +99,8 @@ void delete_user_preset(WindowState& s, const BrushPreset& preset) {
   reload_presets(s);
 }
 
-void draw_tool_bar(WindowState& s, session::SimWorker& worker, double brush_volume_mm3) {
+void draw_tool_bar(WindowState& s, session::SimWorker& worker, double brush_volume_mm3,
+                   SavedMixRow& saved_mixes) {
   const ImGuiIO& io = ImGui::GetIO();
   constexpr float kPanelsWidth = 330.0f;  // the side panel (panels.cpp) on the right
   const float width = std::max(200.0f, io.DisplaySize.x - kPanelsWidth - 16.0f);
@@ -175,7 +176,7 @@ void draw_tool_bar(WindowState& s, session::SimWorker& worker, double brush_volu
   }
   for (const std::string& error : s.presets.errors)
     ImGui::TextColored(ImVec4(1, 0.6f, 0.4f, 1), "%s", error.c_str());
-  draw_paint_strip(s, worker, brush_volume_mm3, right);
+  draw_paint_strip(s, worker, brush_volume_mm3, right, saved_mixes);
   ImGui::End();
 }
 

@@ -6,6 +6,7 @@
 
 #include "impasto/session/sim_worker.hpp"
 #include "window/brush_presets.hpp"
+#include "window/paint_strip.hpp"
 #include "window/window_state.hpp"
 
 namespace impasto::app::window {
@@ -21,6 +22,7 @@ void delete_user_preset(WindowState& state, const BrushPreset& preset);
 // Reads the shipped and the user's presets into state.presets.
 void reload_presets(WindowState& state);
 
-void draw_tool_bar(WindowState& state, session::SimWorker& worker, double brush_volume_mm3);
+void draw_tool_bar(WindowState& state, session::SimWorker& worker, double brush_volume_mm3,
+                   SavedMixRow& saved_mixes);
 
 }  // namespace impasto::app::window

@@ -7,7 +7,6 @@
 #include <impasto/paintcore/brush.hpp>
 #include <impasto/paintcore/paint_body.hpp>
 #include <impasto/paintcore/paint_surface.hpp>
-#include <impasto/render/colour_recipe.hpp>
 #include <impasto/render/render_settings.hpp>
 #include <impasto/render_gl/canvas_view.hpp>
 #include <impasto/render_gl/gpu_view_options.hpp>
@@ -30,7 +29,6 @@
 #include "window/file_browser.hpp"
 #include "window/notifications.hpp"
 #include "window/paint_options.hpp"
-#include "window/saved_mixes.hpp"
 #include "window/shortcuts.hpp"
 #include "window/tablet_input.hpp"
 
@@ -69,12 +67,6 @@ struct WindowState {
   // --- paint on the brush ---
   std::vector<float> mix_parts;         // per pigment of the database
   std::vector<RecentMix> recent_mixes;  // loaded lately, newest first (paint_strip.hpp)
-  // The painter's saved mixes (saved_mixes.hpp), read on first use, and how each looks (its
-  // masstone) under the light named in saved_mix_light.
-  std::optional<std::vector<SavedMix>> saved_mixes;
-  std::vector<std::array<float, 3>> saved_mix_rgb;
-  std::string saved_mix_light;
-  std::array<char, 128> saved_mix_name{};  // the Save mix popup's field
   // Enough heavy paint for the default 6 mm round to lay a stroke about half a millimetre
   // thick and a few centimetres long (6 × 40 × 0.5 mm³), as a loaded brush does.
   float load_volume_mm3 = 120.0f;
@@ -95,12 +87,6 @@ struct WindowState {
   std::vector<std::array<float, 3>> pigment_masstone_rgb, pigment_layer_rgb;
   std::vector<std::array<float, 3>> pigment_glaze_rgb;  // 0.01 mm over the ground: the hue
   bool mix_changed = true;  // the light changed: the swatch is redone even for the same stroke
-  // The colour target (colour_target.hpp), display sRGB, and its recipes under the light
-  // they were found under.
-  std::array<float, 3> colour_target{0.54f, 0.23f, 0.17f};
-  std::vector<render::Recipe> recipes;
-  std::string recipes_light;
-  bool show_colour_target = false;  // a colour was picked elsewhere: open the panel
 
   // --- brush and pen ---
   paintcore::BrushSettings brush{"round", 6.0, 0.5};

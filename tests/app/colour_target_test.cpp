@@ -23,17 +23,15 @@ TEST(ColourTarget, ARecipeBecomesTheMixInPartsOfTen) {
 }
 
 TEST(ColourTarget, TheRecipesAreFoundUnderTheWindowsLight) {
-  WindowState s;
-  s.colour_target = {46 / 255.0f, 139 / 255.0f, 87 / 255.0f};  // sea green
-  find_recipes(s);
-  ASSERT_FALSE(s.recipes.empty());
-  EXPECT_EQ(s.recipes_light, s.settings.light);
-  EXPECT_LT(s.recipes.back().delta_e00, 3.0);
-  const auto daylight = s.recipes.back().srgb;
-  s.settings.light = "A";
-  find_recipes(s);
-  EXPECT_EQ(s.recipes_light, "A");
-  EXPECT_NE(s.recipes.back().srgb, daylight) << "the masstone as seen under the new light";
+  ColourTarget target;
+  target.pick({46 / 255.0f, 139 / 255.0f, 87 / 255.0f}, "D65");  // sea green
+  ASSERT_FALSE(target.recipes().empty());
+  EXPECT_EQ(target.recipes_light(), "D65");
+  EXPECT_LT(target.recipes().back().delta_e00, 3.0);
+  const auto daylight = target.recipes().back().srgb;
+  target.pick(target.target(), "A");
+  EXPECT_EQ(target.recipes_light(), "A");
+  EXPECT_NE(target.recipes().back().srgb, daylight) << "the masstone as seen under the new light";
 }
 
 TEST(ReferenceImage, APickIsTheMeanOfItsBlockInLinearLight) {
