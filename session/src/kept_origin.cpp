@@ -3,8 +3,10 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <vector>
 
 namespace impasto::session {
 namespace {
@@ -47,6 +49,29 @@ std::string copy_new_file(const std::filesystem::path& from, const std::filesyst
   return failure;
 }
 
+// Of a painting's sessions recorded in one folder ("NAME.session-STAMP.strokes", STAMP in
+// time order), only the newest kKeptOrigins keep their origin: each kept one holds a version
+// of the painting once it is saved over, so the folder would otherwise grow by a painting a
+// session. An older session's time-lapse then starts on a blank canvas, with a warning.
+void prune_kept_origins(const std::filesystem::path& recording) {
+  const std::string name = recording.filename().string();
+  const std::size_t session = name.rfind(".session-");
+  if (session == std::string::npos) return;  // a recording named by hand: its own business
+  const std::string prefix = name.substr(0, session + 9);
+  std::vector<std::filesystem::path> kept;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(recording.parent_path(), error)) {
+    const std::string other = entry.path().filename().string();
+    if (other.starts_with(prefix) && other.ends_with(".origin") &&
+        entry.symlink_status(error).type() == std::filesystem::file_type::regular)
+      kept.push_back(entry.path());
+  }
+  if (kept.size() <= kKeptOrigins) return;
+  std::sort(kept.begin(), kept.end());
+  for (std::size_t i = 0; i + kKeptOrigins < kept.size(); ++i)
+    std::filesystem::remove(kept[i], error);
+}
+
 }  // namespace
 
 std::filesystem::path kept_origin_path(const std::filesystem::path& recording) {
@@ -58,10 +83,12 @@ std::string keep_origin(const std::filesystem::path& painting,
                         const std::filesystem::path& recording) {
   const std::filesystem::path kept = kept_origin_path(recording);
   // A link where the file system allows one (the painting's folder holds the recording).
-  if (::linkat(AT_FDCWD, painting.c_str(), AT_FDCWD, kept.c_str(), AT_SYMLINK_FOLLOW) == 0)
-    return "";
-  if (errno == EEXIST) return kept.string() + " is already there";
-  return copy_new_file(painting, kept);
+  std::string failure;
+  if (::linkat(AT_FDCWD, painting.c_str(), AT_FDCWD, kept.c_str(), AT_SYMLINK_FOLLOW) != 0) {
+    failure = errno == EEXIST ? kept.string() + " is already there" : copy_new_file(painting, kept);
+  }
+  if (failure.empty()) prune_kept_origins(recording);
+  return failure;
 }
 
 OriginCandidates origin_candidates(const input::StrokeFile& file) {

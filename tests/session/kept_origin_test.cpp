@@ -6,6 +6,7 @@
 #include <impasto/input/stroke_file.hpp>
 #include <impasto/render/render_painting.hpp>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -98,6 +99,32 @@ TEST(KeptOrigin, NeverWritesThroughALinkPlantedWhereItGoes) {
   fs::create_symlink(folder / "victim", folder / "s.origin");
   EXPECT_NE(keep_origin(folder / "p.impasto", folder / "s.strokes"), "");
   EXPECT_FALSE(fs::exists(folder / "victim"));
+}
+
+TEST(KeptOrigin, APaintingsFolderKeepsTheNewestSessionsOrigins) {
+  const fs::path folder = test::scratch_folder("impasto_kept_origin_pruned");
+  paintcore::Painting(paintcore::CanvasSpec{16, 16, 254.0, 1}, 1).save(folder / "p.impasto");
+  const auto session = [&](const char* painting, int day) {
+    char name[96];
+    std::snprintf(name, sizeof name, "%s.session-202601%02d-120000.000000-1", painting, day);
+    return folder / name;
+  };
+  for (int day = 1; day <= 10; ++day) {
+    std::ofstream(session("p", day).string() + ".origin") << "an older version";
+    std::ofstream(session("q", day).string() + ".origin") << "another painting's";
+  }
+  EXPECT_EQ(keep_origin(folder / "p.impasto", session("p", 20).string() + ".strokes"), "");
+  int kept_p = 0, kept_q = 0;
+  for (const auto& entry : fs::directory_iterator(folder)) {
+    const std::string name = entry.path().filename().string();
+    kept_p += name.starts_with("p.session-") ? 1 : 0;
+    kept_q += name.starts_with("q.session-") ? 1 : 0;
+  }
+  EXPECT_EQ(kept_p, static_cast<int>(kKeptOrigins));
+  EXPECT_EQ(kept_q, 10) << "another painting's origins are its own";
+  EXPECT_TRUE(fs::exists(session("p", 20).string() + ".origin"));
+  EXPECT_FALSE(fs::exists(session("p", 1).string() + ".origin")) << "the oldest go first";
+  EXPECT_TRUE(fs::exists(session("p", 10).string() + ".origin"));
 }
 
 TEST(KeptOrigin, ATimelapseShowsTheStrokesOverThePaintingTheSessionBeganFrom) {

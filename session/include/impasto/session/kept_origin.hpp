@@ -15,13 +15,18 @@
 
 namespace impasto::session {
 
+// How many of a painting's sessions in one folder keep their origin: the newest (keep_origin
+// removes older ones' as it keeps a new one).
+inline constexpr std::size_t kKeptOrigins = 8;
+
 // Where the origin of the session recorded at `recording` is kept: "NAME.strokes" keeps it as
 // "NAME.origin" (not ".impasto", so that it is not listed among the paintings beside it).
 std::filesystem::path kept_origin_path(const std::filesystem::path& recording);
 
 // Keeps `painting`, the file a session recorded at `recording` began from (symlinks followed;
-// never written through a file or link already at the kept path). Returns why it could not,
-// or "" when kept.
+// never written through a file or link already at the kept path), then removes the origins of
+// the same painting's sessions in that folder beyond the newest kKeptOrigins. Returns why it
+// could not keep it, or "" when kept.
 std::string keep_origin(const std::filesystem::path& painting,
                         const std::filesystem::path& recording);
 
