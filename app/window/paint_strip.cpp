@@ -44,7 +44,7 @@ std::vector<std::string> pigment_names() {
 
 // The saved mixes, read on first use (what was passed over, said once), and their chips'
 // colours: each mix's masstone under the window's light, as the colour target computes it.
-void SavedMixRow::update(WindowState& s) {
+void PaintStrip::update_saved(WindowState& s) {
   const std::vector<std::string> names = pigment_names();
   if (!mixes_) {
     SavedMixes loaded = load_saved_mixes(names);
@@ -68,7 +68,7 @@ void SavedMixRow::update(WindowState& s) {
   light_ = s.settings.light;
 }
 
-void SavedMixRow::store(WindowState& s) {
+void PaintStrip::store_saved(WindowState& s) {
   try {
     store_saved_mixes(*mixes_);
   } catch (const std::exception& e) {
@@ -79,9 +79,9 @@ void SavedMixRow::store(WindowState& s) {
 
 // The saved row: a chip each (click: load; right-click: remove), and "+" to save the
 // Palette's mix under a name.
-void SavedMixRow::draw(WindowState& s, session::SimWorker& worker, double brush_volume_mm3,
-                       float bar_right) {
-  update(s);
+void PaintStrip::draw_saved(WindowState& s, session::SimWorker& worker, double brush_volume_mm3,
+                            float bar_right) {
+  update_saved(s);
   const std::vector<std::string> names = pigment_names();
   flow(ImGui::CalcTextSize("saved").x + kChip, bar_right);
   ImGui::TextDisabled("saved");
@@ -110,7 +110,7 @@ void SavedMixRow::draw(WindowState& s, session::SimWorker& worker, double brush_
   }
   if (remove) {
     mixes_->erase(mixes_->begin() + static_cast<std::ptrdiff_t>(*remove));
-    store(s);
+    store_saved(s);
   }
   // "+": the Palette's mix, under a name (its parts, unless the painter types another).
   std::array<char, 128>& name = name_;
@@ -139,7 +139,7 @@ void SavedMixRow::draw(WindowState& s, session::SimWorker& worker, double brush_
       std::erase_if(mixes, [&](const SavedMix& m) { return m.name == mix.name; });
       if (mixes.size() < kMaxSavedMixes) {
         mixes.push_back(std::move(mix));
-        store(s);
+        store_saved(s);
       } else {
         s.notifications.warning("at most " + std::to_string(kMaxSavedMixes) +
                                 " saved mixes: remove one first (right-click it)");
@@ -170,19 +170,34 @@ void load_palette_mix(WindowState& s, session::SimWorker& worker, double brush_v
   remember_mix(s.recent_mixes, {s.mix_parts, mix_rgb(s)});
 }
 
-void draw_paint_strip(WindowState& s, session::SimWorker& worker, double brush_volume_mm3,
-                      float bar_right, SavedMixRow& saved) {
+void PaintStrip::draw(WindowState& s, session::SimWorker& worker, double brush_volume_mm3,
+                      float bar_right) {
   const auto& pigments = data::PigmentDatabase::defaults().all();
   if (s.pigment_masstone_rgb.size() != pigments.size()) return;  // the chips are not made yet
   if (s.mix_parts.size() != pigments.size()) s.mix_parts.assign(pigments.size(), 0.0f);
-  const bool adding = ImGui::GetIO().KeyShift || ImGui::GetIO().KeyCtrl;
+  if (!palette_) {
+    palette_ = load_strip_palette();
+    for (const auto& warning : palette_->warnings) s.notifications.warning(warning);
+  }
   // Chips close together: the library's paints fit one row of a 1000-pixel window's bar.
   ImGui::PushStyleVar(ImGuiStyleVar_ItemSpacing, ImVec2(2.0f, ImGui::GetStyle().ItemSpacing.y));
   struct PopSpacing {
     ~PopSpacing() { ImGui::PopStyleVar(); }
   } pop_spacing;
+  draw_paints(s, worker, brush_volume_mm3, bar_right);
+  draw_recent_mixes(s, worker, brush_volume_mm3, bar_right);
+  draw_saved(s, worker, brush_volume_mm3, bar_right);
+  draw_palette_choice(s, bar_right);
+}
+
+void PaintStrip::draw_paints(WindowState& s, session::SimWorker& worker, double brush_volume_mm3,
+                             float bar_right) {
+  const auto& pigments = data::PigmentDatabase::defaults().all();
+  const bool adding = ImGui::GetIO().KeyShift || ImGui::GetIO().KeyCtrl;
   ImGui::TextDisabled("paints");
+  std::optional<std::string> leave_out;
   for (std::size_t i = 0; i < pigments.size(); ++i) {
+    if (!palette_->shows(pigments[i].name)) continue;
     flow(kChip, bar_right);
     ImGui::PushID(static_cast<int>(i));
     const bool clicked = ImGui::ColorButton("##paint", rgba(s.pigment_masstone_rgb[i]),
@@ -198,8 +213,13 @@ void draw_paint_strip(WindowState& s, session::SimWorker& worker, double brush_v
     if (ImGui::IsItemHovered()) {
       ImGui::SetTooltip(
           "%s\nclick: load the brush with it\nShift- or Ctrl-click: a part more "
-          "in the Palette's mix (%.1f now)",
+          "in the Palette's mix (%.1f now)\nright-click: leave it out of the strip",
           pigments[i].name.c_str(), s.mix_parts[i]);
+    }
+    if (ImGui::BeginPopupContextItem("##paint_menu")) {
+      if (ImGui::MenuItem(("Leave " + pigments[i].name + " out of the strip").c_str()))
+        leave_out = pigments[i].name;
+      ImGui::EndPopup();
     }
     ImGui::PopID();
     if (!clicked) continue;
@@ -212,8 +232,42 @@ void draw_paint_strip(WindowState& s, session::SimWorker& worker, double brush_v
     }
     s.mix_changed = true;
   }
-  draw_recent_mixes(s, worker, brush_volume_mm3, bar_right);
-  saved.draw(s, worker, brush_volume_mm3, bar_right);
+  if (leave_out) {
+    palette_->hidden.push_back(*leave_out);
+    store_palette(s);
+  }
+}
+
+// "...": every paint of the library with a box, ticked where the strip shows it.
+void PaintStrip::draw_palette_choice(WindowState& s, float bar_right) {
+  const auto& pigments = data::PigmentDatabase::defaults().all();
+  flow(ImGui::CalcTextSize("...").x + 8.0f, bar_right);
+  if (ImGui::SmallButton("...##palette")) ImGui::OpenPopup("Strip palette");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("choose the paints the strip shows");
+  if (!ImGui::BeginPopup("Strip palette")) return;
+  bool changed = false;
+  for (const auto& pigment : pigments) {
+    bool shown = palette_->shows(pigment.name);
+    if (ImGui::Checkbox(pigment.name.c_str(), &shown)) {
+      std::erase(palette_->hidden, pigment.name);
+      if (!shown) palette_->hidden.push_back(pigment.name);
+      changed = true;
+    }
+  }
+  if (ImGui::Button("Show all")) {
+    palette_->hidden.clear();
+    changed = true;
+  }
+  ImGui::EndPopup();
+  if (changed) store_palette(s);
+}
+
+void PaintStrip::store_palette(WindowState& s) {
+  try {
+    store_strip_palette(*palette_);
+  } catch (const std::exception& e) {
+    s.notifications.error(std::string("palette not saved: ") + e.what());
+  }
 }
 
 void draw_recent_mixes(WindowState& s, session::SimWorker& worker, double brush_volume_mm3,

@@ -11,6 +11,7 @@
 
 #include "impasto/session/sim_worker.hpp"
 #include "window/saved_mixes.hpp"
+#include "window/strip_palette.hpp"
 #include "window/window_state.hpp"
 
 namespace impasto::app::window {
@@ -26,28 +27,35 @@ void load_palette_mix(WindowState& s, session::SimWorker& worker, double brush_v
 // The mix remembered: moved to the front of `recent` (kept to kRecentMixes).
 void remember_mix(std::vector<RecentMix>& recent, const RecentMix& mix);
 
-// The saved mixes' row (saved_mixes.hpp): a chip each, drawn as the mix's masstone under the
-// window's light (a click loads it, a right-click removes it), and "+" to save the Palette's
-// mix under a name. It owns the list (read on first use) and the chips' colours.
-class SavedMixRow {
+// The strip, drawn in the current ImGui window, flowing within `bar_right`: the painter's
+// palette of the library's paints (strip_palette.hpp: a right-click leaves a paint out, "..."
+// at the end chooses them all), then the recent mixes, then the saved ones (saved_mixes.hpp:
+// a chip each, drawn as the mix's masstone under the window's light; a click loads it, a
+// right-click removes it, "+" saves the Palette's mix under a name). It owns the palette and
+// the saved mixes (read on first use) and the saved chips' colours.
+class PaintStrip {
  public:
   void draw(WindowState& s, session::SimWorker& worker, double brush_volume_mm3, float bar_right);
 
  private:
-  void update(WindowState& s);
-  void store(WindowState& s);  // into the painter's file; says so when it cannot
+  void draw_paints(WindowState& s, session::SimWorker& worker, double brush_volume_mm3,
+                   float bar_right);
+  void draw_saved(WindowState& s, session::SimWorker& worker, double brush_volume_mm3,
+                  float bar_right);
+  void draw_palette_choice(WindowState& s, float bar_right);
+  void update_saved(WindowState& s);
+  // Into the painter's files; each says so when it cannot.
+  void store_saved(WindowState& s);
+  void store_palette(WindowState& s);
 
+  std::optional<StripPalette> palette_;
   std::optional<std::vector<SavedMix>> mixes_;
   std::vector<std::array<float, 3>> rgb_;
   std::string light_;             // the light rgb_ was made under
   std::array<char, 128> name_{};  // the Save mix popup's field
 };
 
-// The strip, drawn in the current ImGui window, flowing within `bar_right`: the paints, then
-// the recent mixes and the saved ones.
-void draw_paint_strip(WindowState& s, session::SimWorker& worker, double brush_volume_mm3,
-                      float bar_right, SavedMixRow& saved);
-// The recent row alone (draw_paint_strip draws it).
+// The recent row alone (PaintStrip draws it).
 void draw_recent_mixes(WindowState& s, session::SimWorker& worker, double brush_volume_mm3,
                        float bar_right);
 

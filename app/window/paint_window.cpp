@@ -92,7 +92,7 @@ class PaintWindow {
   TimelapseExport timelapse_;  // File > Export time-lapse... and the video being written
   ReferenceImage reference_;   // View > Reference image...
   ColourTarget colour_target_;
-  SavedMixRow saved_mixes_;
+  PaintStrip paint_strip_;  // its palette and saved mixes
   PigmentDriftNote pigment_drift_;
   SwatchChips swatch_chips_;
   PointerOverlay pointer_overlay_;  // the brush's outline and the empty-brush note
@@ -159,7 +159,7 @@ void PaintWindow::draw_frame(bool take_screenshot) {
   PanelContext context{state_, worker(),     painting,      viewer_->palette(),
                        files,  board_panel_, colour_target_};
   draw_panels(context);
-  draw_tool_bar(state_, worker(), painting.brush_volume_mm3, saved_mixes_);
+  draw_tool_bar(state_, worker(), painting.brush_volume_mm3, paint_strip_);
   draw_session_banners(worker().stats(), document_->notice());
   pigment_editor_.draw(state_, viewer_->palette());
   const CanvasMenuRequest canvas_request =

@@ -4,21 +4,20 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
-#include "impasto/files/atomic_file.hpp"
 #include "impasto/files/message_text.hpp"
 #include "impasto/session/recent_files.hpp"
+#include "window/config_files.hpp"
 
 namespace impasto::app::window {
 namespace {
 
-constexpr std::string_view kHeader = "impasto-mixes 1";
+constexpr std::string_view kMixesHeader = "impasto-mixes 1";
 constexpr float kMaxParts = 1000.0f;
-// A file larger than this is not a list of mixes (64 mixes of 29 pigments take some 60 kB).
-constexpr std::uintmax_t kMaxFileBytes = 1 << 20;
+// A file larger than this is not a list of mixes (64 mixes of 30 pigments take some 60 kB).
+constexpr std::size_t kMixesMaxBytes = 1 << 20;
 
 bool known_pigment(const std::vector<std::string>& known, const std::string& name) {
   return std::find(known.begin(), known.end(), name) != known.end();
@@ -44,9 +43,9 @@ SavedMixes parse_saved_mixes(std::string_view text, const std::string& source,
     ++number;
     const std::string_view trimmed = util::trim(line);
     if (trimmed.empty() || trimmed.front() == '#') continue;
-    if (number == 1 || trimmed == kHeader) {
-      if (trimmed != kHeader)
-        throw std::runtime_error(where() + "expected '" + std::string(kHeader) + "'");
+    if (number == 1 || trimmed == kMixesHeader) {
+      if (trimmed != kMixesHeader)
+        throw std::runtime_error(where() + "expected '" + std::string(kMixesHeader) + "'");
       continue;
     }
     if (trimmed.starts_with("mix ")) {
@@ -90,7 +89,7 @@ SavedMixes parse_saved_mixes(std::string_view text, const std::string& source,
 }
 
 std::string format_saved_mixes(const std::vector<SavedMix>& mixes) {
-  std::string text = std::string(kHeader) + "\n";
+  std::string text = std::string(kMixesHeader) + "\n";
   for (const SavedMix& mix : mixes) {
     text += "mix " + util::line_encoded(mix.name) + "\n";
     for (const auto& [pigment, parts] : mix.parts)
@@ -105,27 +104,18 @@ std::filesystem::path saved_mixes_path() {
 }
 
 SavedMixes load_saved_mixes(const std::vector<std::string>& known) {
-  const std::filesystem::path file = saved_mixes_path();
-  std::error_code error;
-  if (file.empty() || !std::filesystem::is_regular_file(file, error)) return {};
-  if (std::filesystem::file_size(file, error) > kMaxFileBytes)
-    return {{}, {file.string() + ": larger than 1 MB, not a list of mixes: none loaded"}};
-  std::ifstream in(file, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
+  std::string warning;
+  const std::string text = read_config_text("mixes.txt", kMixesMaxBytes, warning);
+  if (!warning.empty()) return {{}, {warning + ": no saved mixes loaded"}};
   try {
-    return parse_saved_mixes(text.str(), file.string(), known);
+    return parse_saved_mixes(text, saved_mixes_path().string(), known);
   } catch (const std::exception& e) {
     return {{}, {std::string(e.what()) + " (no saved mixes loaded)"}};
   }
 }
 
 void store_saved_mixes(const std::vector<SavedMix>& mixes) {
-  const std::filesystem::path file = saved_mixes_path();
-  if (file.empty())
-    throw std::runtime_error("cannot save mixes: neither XDG_CONFIG_HOME nor HOME is set");
-  std::filesystem::create_directories(file.parent_path());
-  files::write_file_atomically(file, format_saved_mixes(mixes));
+  write_config_text("mixes.txt", format_saved_mixes(mixes));
 }
 
 SavedMix saved_mix(std::string name, const std::vector<float>& mix_parts,

@@ -100,7 +100,7 @@ void delete_user_preset(WindowState& s, const BrushPreset& preset) {
 }
 
 void draw_tool_bar(WindowState& s, session::SimWorker& worker, double brush_volume_mm3,
-                   SavedMixRow& saved_mixes) {
+                   PaintStrip& strip) {
   const ImGuiIO& io = ImGui::GetIO();
   constexpr float kPanelsWidth = 330.0f;  // the side panel (panels.cpp) on the right
   const float width = std::max(200.0f, io.DisplaySize.x - kPanelsWidth - 16.0f);
@@ -176,7 +176,7 @@ void draw_tool_bar(WindowState& s, session::SimWorker& worker, double brush_volu
   }
   for (const std::string& error : s.presets.errors)
     ImGui::TextColored(ImVec4(1, 0.6f, 0.4f, 1), "%s", error.c_str());
-  draw_paint_strip(s, worker, brush_volume_mm3, right, saved_mixes);
+  strip.draw(s, worker, brush_volume_mm3, right);
   ImGui::End();
 }
 

@@ -23,6 +23,6 @@ void delete_user_preset(WindowState& state, const BrushPreset& preset);
 void reload_presets(WindowState& state);
 
 void draw_tool_bar(WindowState& state, session::SimWorker& worker, double brush_volume_mm3,
-                   SavedMixRow& saved_mixes);
+                   PaintStrip& strip);
 
 }  // namespace impasto::app::window

@@ -98,7 +98,7 @@ TEST(SavedMixes, KeptInTheConfigFolderAndABadFileLosesNothingElse) {
   broken = load_saved_mixes(kKnown);
   EXPECT_TRUE(broken.mixes.empty());
   ASSERT_EQ(broken.warnings.size(), 1u);
-  EXPECT_NE(broken.warnings[0].find("larger than 1 MB"), std::string::npos);
+  EXPECT_NE(broken.warnings[0].find("larger than 1024 kB"), std::string::npos);
   if (old) {
     ::setenv("XDG_CONFIG_HOME", kept.c_str(), 1);
   } else {
