@@ -353,6 +353,15 @@ void Painting::stroke_to(const PenSample& sample) {
   validate(sample);  // before anything changes
   if (!p.in_stroke) throw std::runtime_error("stroke_to: no stroke begun (call begin_stroke)");
   if (p.brush.empty()) throw std::runtime_error("stroke_to: no brush is set (call set_brush)");
+  // A sample that lifts the tip (a mouse's release, where the pressure jumps to 0) ends the
+  // stroke where the last pressed sample left the brush, and end_stroke's lift carries it on
+  // along its travel as it rises. Stepped to, the pressure fell to nothing over that last
+  // segment, a fraction of a millimetre for a mouse, and the brush left on the spot: the
+  // trailing edge of its last footprint stayed in the dab as an arc.
+  if (!sample.tip_down() && p.last_pose && p.last_pose->depth_mm > 0.0) {
+    p.last_time_s = sample.time_s;
+    return;
+  }
   BrushPose target = pose_from_sample(sample, p.canvas.cell_mm(), p.brush.max_depth_mm());
   // The mouse and most tablets report no twist: then the head trails the hand.
   p.stroke_has_twist = p.stroke_has_twist || sample.rotation_deg != 0.0f;

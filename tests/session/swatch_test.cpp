@@ -58,8 +58,11 @@ double delta_e(const DisplayRgb& a, const DisplayRgb& b) {
 }
 
 // The chip against the same stroke painted in the middle of a window-sized canvas and
-// rendered whole, as the window shows it: the small swatch painting changes nothing but the
-// weave beneath the stroke (ΔE2000 0.2–0.6 seen; under 1 is not noticeable).
+// rendered whole, as the window shows it, at nine places a twentieth of a millimetre apart:
+// the small swatch painting changes nothing but the weave beneath the stroke and where the
+// stroke lies on the cells. At 150 dpi the round's faded bristle relief shades by the latter
+// (docs/marks.md, "Texture in millimetres": 0.24-1.26 ΔE2000 over these nine), so the chip
+// holds on average (under 1 is not noticeable) and at worst within 1.5.
 TEST(Swatch, OnCanvasChipMatchesTheStrokeOnACanvas) {
   SwatchStroke stroke = blue_stroke();
   stroke.weave_seed = 1;  // the window's canvas has a weave
@@ -68,17 +71,25 @@ TEST(Swatch, OnCanvasChipMatchesTheStrokeOnACanvas) {
   ASSERT_GT(swatch.deposit.painted_cells, 100u);
   ASSERT_GT(swatch.deposit.median_mm, 0.0);
 
-  paintcore::Painting canvas(paintcore::CanvasSpec{600, 400, stroke.dpi, stroke.weave_seed}, 1);
-  paint_standard_stroke(canvas, stroke, 31.0, 37.0);
-  // The weave under the stroke differs from place to place, and so do a few edge cells.
-  EXPECT_NEAR(static_cast<double>(wet_deposit(canvas).painted_cells),
-              static_cast<double>(swatch.deposit.painted_cells),
-              0.02 * static_cast<double>(swatch.deposit.painted_cells));
-  const double on_canvas = delta_e(swatch.on_canvas, mean_stroke_colour(canvas, settings));
+  double sum = 0.0, worst = 0.0;
+  for (const double dx : {0.0, 0.05, 0.1}) {
+    for (const double dy : {0.0, 0.05, 0.1}) {
+      paintcore::Painting canvas(paintcore::CanvasSpec{600, 400, stroke.dpi, stroke.weave_seed}, 1);
+      paint_standard_stroke(canvas, stroke, 31.0 + dx, 37.0 + dy);
+      // The weave under the stroke differs from place to place, and so do a few edge cells.
+      EXPECT_NEAR(static_cast<double>(wet_deposit(canvas).painted_cells),
+                  static_cast<double>(swatch.deposit.painted_cells),
+                  0.02 * static_cast<double>(swatch.deposit.painted_cells));
+      const double on_canvas = delta_e(swatch.on_canvas, mean_stroke_colour(canvas, settings));
+      sum += on_canvas;
+      worst = std::max(worst, on_canvas);
+    }
+  }
   const double masstone = delta_e(swatch.masstone, swatch.on_canvas);
-  RecordProperty("delta_e_on_canvas", std::to_string(on_canvas));
-  RecordProperty("delta_e_masstone", std::to_string(masstone));
-  EXPECT_LT(on_canvas, 1.0) << "the masstone is " << masstone << " away";
+  RecordProperty("delta_e_on_canvas_mean", std::to_string(sum / 9));
+  RecordProperty("delta_e_on_canvas_worst", std::to_string(worst));
+  EXPECT_LT(sum / 9, 1.0) << "the masstone is " << masstone << " away";
+  EXPECT_LT(worst, 1.5);
 }
 
 // The stroke's area spans each column's painted cells, gaps included, and nothing else; the
