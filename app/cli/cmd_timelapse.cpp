@@ -11,6 +11,7 @@
 #include "impasto/session/timelapse.hpp"
 #include "progress_reporter.hpp"
 #include "replay_overrides.hpp"
+#include "surface_options.hpp"
 #include "timelapse_video.hpp"
 #include "vocabulary.hpp"
 
@@ -32,6 +33,7 @@ struct TimelapseArgs {
   int wavelengths = render::RenderSettings{}.wavelengths;
   std::string light_dir = "225,60";
   std::optional<double> light_turn_to;
+  SurfaceArgs surface;  // --surface, --medium, --varnish (docs/surface.md)
   std::vector<std::string> params;
   int threads = 0;
 };
@@ -51,6 +53,7 @@ void run(const TimelapseArgs& args) {
   options.settings.wavelengths = args.wavelengths;
   options.settings.threads = args.threads;
   parse_light_direction(args.light_dir, options.settings);
+  apply_surface_options(args.surface, options.settings);
   options.light_azimuth_end_deg = args.light_turn_to;
   render::validate(options.settings);
   ProgressReporter progress("time-lapse", "frames");
@@ -100,6 +103,7 @@ const CommandRegistrar registrar("timelapse", [](CLI::App& root) {
                   "The light's azimuth at the last frame, degrees: it turns from --light-dir's "
                   "over the video (every frame then re-shades the whole canvas)")
       ->check(finite_range(-3600.0, 3600.0));
+  add_surface_options(*cmd, args->surface, false);
   add_size_option(*cmd, args->size, "a blank canvas instead of the recording's");
   add_dpi_option(*cmd, args->dpi, "a blank canvas instead of the recording's");
   cmd->add_option("--param", args->params, vocabulary_help("--param"));

@@ -10,7 +10,7 @@
 
 namespace impasto::app {
 
-void add_surface_options(CLI::App& command, SurfaceArgs& args) {
+void add_surface_options(CLI::App& command, SurfaceArgs& args, bool with_subsurface_map) {
   command
       .add_option("--surface", args.model,
                   "Surface reflection: blinn (Blinn-Phong, fast) or ghs (rough dielectric per "
@@ -33,6 +33,7 @@ void add_surface_options(CLI::App& command, SurfaceArgs& args) {
       ->capture_default_str();
   command.add_flag("--no-subsurface", args.no_subsurface,
                    "ghs: no sideways spread of light inside the paint");
+  if (!with_subsurface_map) return;
   command.add_option("--subsurface-map", args.subsurface_map,
                      "ghs: also write where light spreads sideways (per channel, 4 cells = full "
                      "scale) to this PNG");

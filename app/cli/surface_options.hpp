@@ -19,7 +19,9 @@ struct SurfaceArgs {
   std::string subsurface_map;  // the debug view, FILE.png; empty: none
 };
 
-void add_surface_options(CLI::App& command, SurfaceArgs& args);
+// `with_subsurface_map`: --subsurface-map too (a command that writes one image; a video has no
+// use for it).
+void add_surface_options(CLI::App& command, SurfaceArgs& args, bool with_subsurface_map = true);
 // Writes the parsed choices into settings.surface (the CPU and the GL paths alike: both
 // render the ghs surface with its subsurface spread).
 void apply_surface_options(const SurfaceArgs& args, render::RenderSettings& settings);

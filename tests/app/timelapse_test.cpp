@@ -224,6 +224,21 @@ TEST_F(Timelapse, AVideoLargerThanTheCanvasShadesTheReliefAtItsSize) {
   EXPECT_EQ(video.frames.size(), 2u);
 }
 
+TEST_F(Timelapse, UnderTheSurfaceModelAsked) {
+  const fs::path blinn = dir_ / "blinn.webm", ghs = dir_ / "ghs.webm";
+  const std::string common = " --fps 2 --seconds 1 --hold 0";
+  run_command_in_process("timelapse " + session_.string() + " -o " + blinn.string() + common);
+  run_command_in_process("timelapse " + session_.string() + " -o " + ghs.string() + common +
+                         " --surface ghs --medium gloss");
+  const DecodedVideo a = decode(blinn), b = decode(ghs);
+  ASSERT_EQ(a.frames.size(), 2u);
+  ASSERT_EQ(b.frames.size(), 2u);
+  EXPECT_NE(a.frames.back(), b.frames.back()) << "the gloss surface shades the paint otherwise";
+  EXPECT_THROW(run_command_in_process("timelapse " + session_.string() + " -o " +
+                                      (dir_ / "x.webm").string() + " --surface chrome"),
+               UsageError);
+}
+
 TEST_F(Timelapse, ABadSessionNamesItsLineAndLeavesNoFile) {
   std::ofstream(dir_ / "bad.strokes") << "impasto-strokes 1\ncanvas 64 64 100\n"
                                          "pen 0 1 1 0.5 0 0 0 17\ntool trowel\n";
