@@ -3,12 +3,12 @@
 // with a warning; the file is bounded.
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
 
+#include "../common/scoped_env.hpp"
 #include "../common/scratch_folder.hpp"
 #include "window/saved_mixes.hpp"
 
@@ -81,9 +81,7 @@ TEST(SavedMixes, ThePalettesPartsAndBack) {
 
 TEST(SavedMixes, KeptInTheConfigFolderAndABadFileLosesNothingElse) {
   const fs::path folder = impasto::test::scratch_folder("impasto_saved_mixes");
-  const char* old = std::getenv("XDG_CONFIG_HOME");
-  const std::string kept = old ? old : "";
-  ::setenv("XDG_CONFIG_HOME", folder.c_str(), 1);
+  const impasto::test::ScopedEnv config("XDG_CONFIG_HOME", folder.string());
   EXPECT_TRUE(load_saved_mixes(kKnown).mixes.empty()) << "no file: no mixes, no warning";
   const std::vector<SavedMix> mixes = {{"A", {{"Red", 2.0f}}}};
   store_saved_mixes(mixes);
@@ -99,11 +97,6 @@ TEST(SavedMixes, KeptInTheConfigFolderAndABadFileLosesNothingElse) {
   EXPECT_TRUE(broken.mixes.empty());
   ASSERT_EQ(broken.warnings.size(), 1u);
   EXPECT_NE(broken.warnings[0].find("larger than 1024 kB"), std::string::npos);
-  if (old) {
-    ::setenv("XDG_CONFIG_HOME", kept.c_str(), 1);
-  } else {
-    ::unsetenv("XDG_CONFIG_HOME");
-  }
   fs::remove_all(folder);
 }
 

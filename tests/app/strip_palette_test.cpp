@@ -3,11 +3,11 @@
 // cannot be read shows every paint and says why.
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include "../common/scoped_env.hpp"
 #include "../common/scratch_folder.hpp"
 #include "window/strip_palette.hpp"
 
@@ -42,9 +42,7 @@ TEST(StripPalette, ABrokenLineIsAnErrorNamingIt) {
 
 TEST(StripPalette, KeptInTheConfigFolderAndABadFileShowsEveryPaint) {
   const fs::path folder = impasto::test::scratch_folder("impasto_strip_palette");
-  const char* old = std::getenv("XDG_CONFIG_HOME");
-  const std::string kept = old ? old : "";
-  ::setenv("XDG_CONFIG_HOME", folder.c_str(), 1);
+  const impasto::test::ScopedEnv config("XDG_CONFIG_HOME", folder.string());
   EXPECT_TRUE(load_strip_palette().hidden.empty());
   store_strip_palette({{"Black"}, {}});
   EXPECT_EQ(load_strip_palette().hidden, std::vector<std::string>{"Black"});
@@ -54,11 +52,6 @@ TEST(StripPalette, KeptInTheConfigFolderAndABadFileShowsEveryPaint) {
   ASSERT_EQ(broken.warnings.size(), 1u);
   EXPECT_NE(broken.warnings[0].find("palette.txt:2: expected 'hide NAME'"), std::string::npos);
   EXPECT_NE(broken.warnings[0].find("every paint shown"), std::string::npos);
-  if (old) {
-    ::setenv("XDG_CONFIG_HOME", kept.c_str(), 1);
-  } else {
-    ::unsetenv("XDG_CONFIG_HOME");
-  }
   fs::remove_all(folder);
 }
 

@@ -3,7 +3,9 @@
 #include "impasto/files/cache_dir.hpp"
 
 #include <gtest/gtest.h>
+
 #include <sys/stat.h>
+#include "../common/scoped_env.hpp"
 
 #include <chrono>
 #include <cstdlib>
@@ -17,28 +19,7 @@ namespace impasto::files {
 namespace {
 
 namespace fs = std::filesystem;
-
-// Sets (or, with nullopt, unsets) an environment variable for one test's lifetime.
-class ScopedEnv {
- public:
-  ScopedEnv(const char* name, std::optional<std::string> value) : name_(name) {
-    if (const char* old = std::getenv(name)) old_ = old;
-    if (value)
-      setenv(name, value->c_str(), 1);
-    else
-      unsetenv(name);
-  }
-  ~ScopedEnv() {
-    if (old_)
-      setenv(name_, old_->c_str(), 1);
-    else
-      unsetenv(name_);
-  }
-
- private:
-  const char* name_;
-  std::optional<std::string> old_;
-};
+using impasto::test::ScopedEnv;
 
 TEST(CacheDir, IsCreatedPrivateUnderXdgCacheHome) {
   test::TempFolder temp;

@@ -16,6 +16,7 @@
 #include <set>
 #include <string>
 
+#include "../common/scoped_env.hpp"
 #include "../common/short_session.hpp"
 #include "impasto/session/rebuild.hpp"
 #include "impasto/session/recovery_folder.hpp"
@@ -26,29 +27,7 @@ namespace impasto::session {
 namespace {
 
 namespace fs = std::filesystem;
-
-class ScopedEnv {
- public:
-  ScopedEnv(const char* name, const std::optional<std::string>& value) : name_(name) {
-    if (const char* old = std::getenv(name)) old_ = old;
-    if (value) {
-      ::setenv(name, value->c_str(), 1);
-    } else {
-      ::unsetenv(name);
-    }
-  }
-  ~ScopedEnv() {
-    if (old_) {
-      ::setenv(name_, old_->c_str(), 1);
-    } else {
-      ::unsetenv(name_);
-    }
-  }
-
- private:
-  const char* name_;
-  std::optional<std::string> old_;
-};
+using impasto::test::ScopedEnv;
 
 class TempDir {
  public:
