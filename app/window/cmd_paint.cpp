@@ -33,7 +33,8 @@ void setup(CLI::App& root) {
                   "window's input path")
       ->check(CLI::ExistingFile);
   cmd->add_option("--reference", args->reference,
-                  "A PNG to paint from, in a window of its own (View > Reference image...)")
+                  "A picture (PNG or JPEG) to paint from, in a window of its own (View > Reference "
+                  "image...)")
       ->check(CLI::ExistingFile);
   cmd->add_option("--screenshot", args->screenshot,
                   "Save a PNG of the whole window once the replay is applied");

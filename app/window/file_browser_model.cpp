@@ -39,7 +39,7 @@ std::vector<FileFilter> filters_for(FilePurpose purpose) {
     case FilePurpose::kOpenStrokes:
       return {{"Strokes (*.strokes, *.dat, *.svc)", {".strokes", ".dat", ".svc"}}, all};
     case FilePurpose::kOpenReference:
-      return {{"PNG image (*.png)", {".png"}}, all};
+      return {{"Picture (*.png, *.jpg, *.jpeg)", {".png", ".jpg", ".jpeg"}}, all};
   }
   return {all};
 }

@@ -45,7 +45,7 @@ ReferenceImage::~ReferenceImage() {
 void ReferenceImage::open(const std::filesystem::path& file, WindowState& s) {
   render::Image image;
   try {
-    image = render::read_png(file);  // sizes checked against the file and the memory budget
+    image = render::read_picture(file);  // PNG or JPEG, sizes checked against the budget
   } catch (const std::exception& e) {
     s.notifications.error(std::string("reference image: ") + e.what());
     return;

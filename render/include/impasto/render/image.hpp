@@ -30,5 +30,11 @@ void write_png(const std::filesystem::path& path, const Image& image);
 void write_exr(const std::filesystem::path& path, const Image& image);
 // PNG images back as floats in [0, 1] (8- or 16-bit RGB/RGBA/grey); for tests and tools.
 Image read_png(const std::filesystem::path& path);
+// JPEG images (baseline or progressive; grey, YCbCr or RGB) as floats in [0, 1]. The declared
+// size is checked against the memory budget before decoding; CMYK is refused by name.
+Image read_jpeg(const std::filesystem::path& path);
+// A PNG or a JPEG, told apart by the file's first bytes (not its name): for pictures a user
+// opens (the window's reference image). Throws std::runtime_error naming the file otherwise.
+Image read_picture(const std::filesystem::path& path);
 
 }  // namespace impasto::render
