@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "impasto/files/atomic_file.hpp"
+#include "impasto/paintcore/brush_head.hpp"
 #include "recording_input.hpp"
 #include "stroke_record.hpp"
 #include "text_fields.hpp"
@@ -97,6 +98,13 @@ StrokeFile parse_strokes(std::istream& in, const std::string& source_name) {
       skip_torn();
       break;
     }
+    if (const auto* brush = std::get_if<BrushEvent>(&event))
+      for (const BrushParam& param : brush->params)
+        if (!paintcore::find_bristle_setting(param.key))
+          file.warnings.push_back(source_name + ":" + std::to_string(line_number) +
+                                  ": brush setting '" + param.key +
+                                  "' is not one this version knows (" +
+                                  paintcore::bristle_setting_names() + "); ignored");
     file.events.push_back(std::move(event));
     file.lines.push_back(line_number);
   }

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <limits>
 
+#include <impasto/paintcore/brush_head.hpp>
 #include <impasto/paintcore/paint_body.hpp>
 #include <impasto/paintcore/paint_surface.hpp>
 
@@ -106,6 +107,10 @@ BrushEvent parse_brush(const Fields& f, const LineContext& where) {
       brush.stiffness = in_range(value, 0.0, 1.0, where, key);
       has_stiffness = true;
     } else {
+      // A head's bristle setting (paintcore::kBristleSettings) in its range; other keys are
+      // kept for the writer and ignored, with a warning (parse_strokes).
+      const paintcore::BristleSetting* setting = paintcore::find_bristle_setting(key);
+      if (setting && !setting->holds(value)) where.fail(key, "must be in " + setting->range_text());
       brush.params.push_back({key, value});
     }
   }

@@ -129,13 +129,18 @@ BrushHead parse_brush_head(std::istream& in, const std::string& source) {
       head.perturbations.push_back({c[0], quadric_from(c, 1)});
     } else if (key == "bristles") {
       const auto c = parser.numbers(words, key, 3);
-      if (c[0] < 0.0 || c[0] > 100.0) parser.fail("'bristles' spacing must be in 0..100 mm");
-      if (c[1] < 0.0 || c[1] > 100.0) parser.fail("'bristles' depth must be in 0..100 mm");
-      if (c[2] < 0.0 || c[2] > 1.0) parser.fail("'bristles' jitter must be in 0..1");
-      head.bristles = {c[0], c[1], c[2]};
+      static constexpr const char* kParts[] = {"spacing", "depth", "jitter"};
+      for (std::size_t i = 0; i < 3; ++i) {
+        const BristleSetting& setting = kBristleSettings[i];
+        if (!setting.holds(c[i]))
+          parser.fail("'bristles' " + std::string(kParts[i]) + " must be in " +
+                      setting.range_text());
+        setting.of(head) = c[i];
+      }
     } else if (key == "splay") {
-      head.splay = parser.numbers(words, key, 1)[0];
-      if (head.splay < 0.0 || head.splay > 1.0) parser.fail("'splay' must be in 0..1");
+      const BristleSetting& setting = *find_bristle_setting("splay");
+      setting.of(head) = parser.numbers(words, key, 1)[0];
+      if (!setting.holds(head.splay)) parser.fail("'splay' must be in " + setting.range_text());
     } else {
       parser.fail("unknown key '" + key + "'");
     }

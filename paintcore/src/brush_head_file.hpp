@@ -3,6 +3,8 @@
 // (painting_history_file.cpp) both store them (docs/painting-format.md): one writer and one
 // reader for each, so the two files cannot drift. What only one of them stores (the paint
 // grid, body, slot count) stays with its writer.
+#include <iterator>
+
 #include "painting_file_io.hpp"
 
 namespace impasto::paintcore::file_io {
@@ -50,14 +52,17 @@ void write_bristles(W& w, const BrushHead& head) {
 
 // Into `head`; `field` as read_brush_head's.
 inline void read_bristles(Reader& r, const std::string& field, BrushHead& head) {
-  head.bristles.spacing_mm = r.get_finite(field + ".bristles.spacing_mm");
-  head.bristles.depth_mm = r.get_finite(field + ".bristles.depth_mm");
-  head.bristles.jitter = r.get_finite(field + ".bristles.jitter");
-  head.splay = r.get_finite(field + ".splay");
-  const Bristles& b = head.bristles;
-  if (!(b.spacing_mm >= 0 && b.spacing_mm <= 100 && b.depth_mm >= 0 && b.depth_mm <= 100 &&
-        b.jitter >= 0 && b.jitter <= 1 && head.splay >= 0 && head.splay <= 1))
-    r.fail(field + ".bristles", "out of range");
+  // In the file's order, which is kBristleSettings' (the ranges are its).
+  static constexpr const char* kNames[] = {"bristles.spacing_mm", "bristles.depth_mm",
+                                           "bristles.jitter", "splay"};
+  static_assert(std::size(kNames) == kBristleSettings.size());
+  for (std::size_t i = 0; i < kBristleSettings.size(); ++i) {
+    const std::string name = field + "." + kNames[i];
+    const double value = r.get_finite(name);
+    if (!kBristleSettings[i].holds(value))
+      r.fail(name, "must be in " + kBristleSettings[i].range_text());
+    kBristleSettings[i].of(head) = value;
+  }
 }
 
 // The brush settings: head file name, size, stiffness.

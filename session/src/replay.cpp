@@ -1,5 +1,6 @@
 #include "impasto/session/replay.hpp"
 
+#include <impasto/paintcore/brush_head.hpp>
 #include <impasto/paintcore/step_quality.hpp>
 
 #include <impasto/data/pigments.hpp>
@@ -118,7 +119,19 @@ void SessionPlayer::apply(const input::StrokeEvent& event) {
             settings.head = e.head;
             settings.size_mm = e.size_mm;
             settings.stiffness = e.stiffness;
-            painting_.set_brush(settings);
+            // The record's bristle settings replace the head file's (the reader checked their
+            // ranges and warned of keys it does not know).
+            const auto known = [](const input::BrushParam& param) {
+              return paintcore::find_bristle_setting(param.key) != nullptr;
+            };
+            if (std::none_of(e.params.begin(), e.params.end(), known)) {
+              painting_.set_brush(settings);
+              return;
+            }
+            paintcore::BrushHead head = paintcore::load_named_brush_head(e.head);
+            for (const input::BrushParam& param : e.params)
+              if (known(param)) paintcore::find_bristle_setting(param.key)->of(head) = param.value;
+            painting_.set_brush(settings, head);
           },
           [&](const input::LoadEvent& e) {
             std::vector<paintcore::PigmentMixPart> mix;

@@ -105,6 +105,28 @@ TEST(StrokeFile, BrushKeysInAnyOrder) {
   EXPECT_EQ(brush.params[0], (BrushParam{"width", 3.0}));
 }
 
+// A head's bristle settings are checked against the engine's one table of their ranges
+// (paintcore::kBristleSettings) when the file is read, naming the line and the key.
+TEST(StrokeFile, BristleSettingsOutsideTheirRangesNameTheLineAndKey) {
+  for (const char* setting :
+       {"bristle_depth=-1", "bristle_spacing=1e308", "splay=2", "bristle_jitter=1.5"}) {
+    std::istringstream text(std::string("impasto-strokes 2\nbrush round size=4 stiffness=0.5 ") +
+                            setting + "\n");
+    try {
+      parse_strokes(text, "b.strokes");
+      ADD_FAILURE() << setting << " was taken";
+    } catch (const InputFormatError& e) {
+      const std::string key = std::string(setting).substr(0, std::string(setting).find('='));
+      EXPECT_NE(std::string(e.what()).find("b.strokes:2"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(key), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("must be in"), std::string::npos) << e.what();
+    }
+  }
+  std::istringstream ok("impasto-strokes 2\nbrush round size=4 stiffness=0.5 bristle_depth=0.1\n");
+  const StrokeFile file = parse_strokes(ok, "b.strokes");
+  EXPECT_TRUE(file.warnings.empty());
+}
+
 TEST(StrokeFile, WriterRefusesWhatTheReaderWouldReject) {
   StrokeFile bad;
   bad.events = {LoadEvent{1.0, {{"Quote \" inside", 1.0}}, {}}};

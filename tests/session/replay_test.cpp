@@ -151,6 +151,32 @@ TEST(Replay, AFineCanvasNarrowsTheDefaultBrushToFit) {
   EXPECT_GT(painting.canvas_totals().volume, 0.0);
 }
 
+// A brush record's bristle settings replace the head file's, and the painting keeps them (so
+// a save reopens with them); a key this version does not know is ignored with a warning.
+TEST(Replay, ABrushRecordsBristleSettingsReplaceTheHeadFiles) {
+  std::string text = R"(impasto-strokes 2
+canvas 300 200 150
+brush round size=8 stiffness=0.5 bristle_depth=0 splay=0.05 bristles=200
+load 60 "White" 1
+)";
+  for (int k = 0; k <= 20; ++k)
+    text += "pen " + std::to_string(0.008 * k) + " " + std::to_string(10 + 1.5 * k) + " 15 " +
+            (k < 20 ? "0.7 0 0 0 17\n" : "0 0 0 0 16\n");
+  std::istringstream in(text);
+  const auto file = input::parse_strokes(in, "bristles.strokes");
+  ASSERT_EQ(file.warnings.size(), 1u);
+  EXPECT_NE(file.warnings[0].find("bristles.strokes:3: brush setting 'bristles' is not one"),
+            std::string::npos)
+      << file.warnings[0];
+  const paintcore::Painting painting = replay(file, {});
+  const paintcore::BrushHead file_head = paintcore::load_named_brush_head("round");
+  ASSERT_GT(file_head.bristles.depth_mm, 0.0) << "the round's head file has bristles";
+  EXPECT_EQ(painting.brush().head().bristles.depth_mm, 0.0);
+  EXPECT_EQ(painting.brush().head().splay, 0.05);
+  EXPECT_EQ(painting.brush().head().bristles.spacing_mm, file_head.bristles.spacing_mm);
+  EXPECT_GT(painting.canvas_totals().volume, 0.0);
+}
+
 TEST(Replay, UnknownToolNamesTheFileAndLine) {
   std::istringstream text("impasto-strokes 1\ntool trowel\n");
   const auto file = input::parse_strokes(text, "bad.strokes");

@@ -6,9 +6,12 @@
 // The head covers the cells where F' > 0; its underside rises above the tip by
 //   rise * (1 - min(F', 1))   (in half brush sizes),
 // so where F' >= 1 the head is flat and touches first. The format is in docs/brushes.md.
+#include <array>
+#include <cstdio>
 #include <filesystem>
 #include <istream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace impasto::paintcore {
@@ -55,6 +58,45 @@ struct BrushHead {
 };
 
 inline constexpr int kMaxPerturbations = 64;
+
+// The head's bristle settings, each with its one range: a head file (`bristles SPACING DEPTH
+// JITTER`, `splay X`), a stroke file's brush record (`bristle_spacing=MM` ...) and a painting
+// are checked against this table.
+struct BristleSetting {
+  std::string_view key;   // its name in a stroke file's brush record
+  std::string_view unit;  // "mm", or empty for a share
+  double min, max;
+  double& (*of)(BrushHead&);
+  bool holds(double value) const { return value >= min && value <= max; }  // NaN fails
+  std::string range_text() const {                                         // "0..100 mm"
+    char text[64];
+    std::snprintf(text, sizeof text, "%g..%g%s%.*s", min, max, unit.empty() ? "" : " ",
+                  static_cast<int>(unit.size()), unit.data());
+    return text;
+  }
+};
+inline constexpr std::array<BristleSetting, 4> kBristleSettings{{
+    {"bristle_spacing", "mm", 0.0, 100.0,
+     [](BrushHead& h) -> double& { return h.bristles.spacing_mm; }},
+    {"bristle_depth", "mm", 0.0, 100.0,
+     [](BrushHead& h) -> double& { return h.bristles.depth_mm; }},
+    {"bristle_jitter", "", 0.0, 1.0, [](BrushHead& h) -> double& { return h.bristles.jitter; }},
+    {"splay", "", 0.0, 1.0, [](BrushHead& h) -> double& { return h.splay; }},
+}};
+// The setting named `key`, or nullptr. (Inline: the stroke reader checks brush records with
+// it without linking the engine.)
+inline const BristleSetting* find_bristle_setting(std::string_view key) {
+  for (const BristleSetting& setting : kBristleSettings)
+    if (setting.key == key) return &setting;
+  return nullptr;
+}
+// "bristle_spacing, bristle_depth, bristle_jitter, splay", for messages.
+inline std::string bristle_setting_names() {
+  std::string names;
+  for (const BristleSetting& setting : kBristleSettings)
+    names += (names.empty() ? "" : ", ") + std::string(setting.key);
+  return names;
+}
 
 // Parses a head file's text; errors name `source` and the line ("round.brush:4: ...").
 BrushHead parse_brush_head(std::istream& in, const std::string& source);
