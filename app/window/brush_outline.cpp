@@ -1,6 +1,7 @@
 #include "window/brush_outline.hpp"
 
 #include <cmath>
+#include <exception>
 #include <numbers>
 
 namespace impasto::app {
@@ -43,7 +44,24 @@ std::vector<Point2> outline_in_cells(const std::vector<Point2>& outline_uv,
   return cells;
 }
 
+void BrushOutline::pen_at(const paintcore::PenSample& sample, double cell_mm, int brush_cells) {
+  paintcore::BrushPose pose;
+  try {
+    pose = paintcore::pose_from_sample(sample, cell_mm, 0.0);
+  } catch (const std::exception&) {
+    return;  // a sample the engine would refuse (NaN tilt): the outline stays where it was
+  }
+  pointer_at(pose.x_cells, pose.y_cells, brush_cells);
+  tilt_x_rad_ = pose.tilt_x_rad;
+  tilt_y_rad_ = pose.tilt_y_rad;
+  // As the engine turns a head (Painting::stroke_to): by the pen's rotation when it reports one.
+  twist_rad_.reset();
+  if (sample.rotation_deg != 0.0f) twist_rad_ = pose.twist_rad;
+}
+
 void BrushOutline::pointer_at(double x_cells, double y_cells, int brush_cells) {
+  tilt_x_rad_ = tilt_y_rad_ = 0.0;
+  twist_rad_.reset();
   if (!seen_) {
     x_cells_ = x_cells;
     y_cells_ = y_cells;
@@ -70,7 +88,9 @@ std::vector<Point2> BrushOutline::on_screen(const paintcore::BrushHead& head, in
   paintcore::BrushPose pose;
   pose.x_cells = x_cells_;
   pose.y_cells = y_cells_;
-  pose.twist_rad = heading_rad_;
+  pose.twist_rad = twist_rad_.value_or(heading_rad_);
+  pose.tilt_x_rad = tilt_x_rad_;
+  pose.tilt_y_rad = tilt_y_rad_;
   const paintcore::BrushPlacement placement =
       paintcore::place_brush(pose, brush_cells, 1.0 + head.splay * pressure);
   std::vector<Point2> screen;

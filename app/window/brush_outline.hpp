@@ -6,9 +6,11 @@
 // painting, and hides it while a panel or a dialog has the pointer.
 #include <impasto/paintcore/brush_head.hpp>
 #include <impasto/paintcore/brush_pose.hpp>
+#include <impasto/paintcore/pen_sample.hpp>
 #include <impasto/render_gl/canvas_view.hpp>
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,6 +33,10 @@ class BrushOutline {
   // The pointer over the canvas at (x, y) cells: the heading trails its travel, as a stroke's
   // head would, over a length of one brush width (`brush_cells`).
   void pointer_at(double x_cells, double y_cells, int brush_cells);
+  // A tablet's pen at `sample` (canvas mm), hovering or pressed: its tilt leans the outline as
+  // it leans the head (paintcore::place_brush), a barrel rotation turns it; a pen without one
+  // trails its travel as the pointer does.
+  void pen_at(const paintcore::PenSample& sample, double cell_mm, int brush_cells);
   // The outline in window pixels (y down) for the head, its grid width in cells, the pressure
   // that splays it and the view; the polygon is closed by its first point.
   std::vector<Point2> on_screen(const paintcore::BrushHead& head, int brush_cells, double pressure,
@@ -41,7 +47,9 @@ class BrushOutline {
   double x_cells_ = 0.0, y_cells_ = 0.0;
   bool seen_ = false;
   double heading_rad_ = 0.0;
-  std::string head_key_;  // the head whose outline is kept
+  double tilt_x_rad_ = 0.0, tilt_y_rad_ = 0.0;  // a pen's (the mouse has none)
+  std::optional<double> twist_rad_;             // a pen's barrel rotation, when it has one
+  std::string head_key_;                        // the head whose outline is kept
   std::vector<Point2> outline_uv_;
 };
 

@@ -18,11 +18,23 @@ void PointerOverlay::stroke_began(double on_brush_mm3, double now_s) {
 
 void PointerOverlay::draw(const PaintingSnapshot& painting, double pressure,
                           const render_gl::CanvasView& view, int window_w, int window_h, double x,
-                          double y, double now_s) {
+                          double y, double now_s, const paintcore::PenSample* pen) {
+  if (pen && painting.dpi > 0.0) {
+    const double cell_mm = 25.4 / painting.dpi;
+    const auto at =
+        view.cell_to_window(pen->x_mm / cell_mm, pen->y_mm / cell_mm, window_w, window_h);
+    x = at[0];
+    y = at[1];
+    pressure = pen->tip_down() ? pen->pressure : 0.0;
+  }
   const bool in_window = x >= 0.0 && y >= 0.0 && x < window_w && y < window_h;
   if (!in_window || !on_canvas_ || painting.brush_cells < 1) return;
-  const auto cell = view.window_to_cell(x, y, window_w, window_h);
-  outline_.pointer_at(cell[0], cell[1], painting.brush_cells);
+  if (pen && painting.dpi > 0.0) {
+    outline_.pen_at(*pen, 25.4 / painting.dpi, painting.brush_cells);
+  } else {
+    const auto cell = view.window_to_cell(x, y, window_w, window_h);
+    outline_.pointer_at(cell[0], cell[1], painting.brush_cells);
+  }
   if (now_s < empty_brush_note_until_s_) {
     draw_pointer_note(static_cast<float>(x), static_cast<float>(y),
                       "The brush is empty: choose paint in the Palette, then Load brush");

@@ -19,9 +19,12 @@ class PointerOverlay {
   void set_on_canvas(bool on_canvas) { on_canvas_ = on_canvas; }
   // A stroke begins with `on_brush_mm3` on the brush: an empty one is told, once.
   void stroke_began(double on_brush_mm3, double now_s);
-  // Draws at window pixel (x, y) with the pointer's pressure.
+  // Draws at window pixel (x, y) with the pointer's pressure; or, where a tablet's pen is near
+  // (`pen`: its newest sample, canvas mm), where the pen is, leaned by its tilt and splayed by
+  // its pressure (none while it hovers).
   void draw(const PaintingSnapshot& painting, double pressure, const render_gl::CanvasView& view,
-            int window_w, int window_h, double x, double y, double now_s);
+            int window_w, int window_h, double x, double y, double now_s,
+            const paintcore::PenSample* pen = nullptr);
 
  private:
   BrushOutline outline_;

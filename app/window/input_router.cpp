@@ -285,4 +285,8 @@ void InputRouter::zoom_with_wheel(double x, double y) {
   if (io.WantCaptureMouse && io.MouseWheel != 0.0f) view_latency_.dropped(ViewMotion::kZoom);
 }
 
+const paintcore::PenSample* InputRouter::tablet_pen() const {
+  return tablets_->pen(shell_.now_s());
+}
+
 }  // namespace impasto::app::window

@@ -38,6 +38,8 @@ class InputRouter {
   // This frame's presses and moves (what moved the light, when the Light panel's disc did).
   const std::vector<double>& frame_pointer_times() const { return frame_pointer_times_; }
   bool pick_cursor() const { return pick_cursor_; }  // the eyedropper would pick here
+  // The newest sample of a tablet's pen that is near (hovering or pressed), else nullptr.
+  const paintcore::PenSample* tablet_pen() const;
   // A new painting steps at the chosen quality from its first sample (its file may hold any).
   void painting_replaced() { sent_quality_.reset(); }
 

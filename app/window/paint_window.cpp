@@ -177,7 +177,7 @@ void PaintWindow::draw_frame(bool take_screenshot) {
     draw_pick_cursor(state_, static_cast<float>(cursor_x), static_cast<float>(cursor_y));
   } else {
     pointer_overlay_.draw(painting, state_.mouse_pressure, state_.view, win_w, win_h, cursor_x,
-                          cursor_y, shell_.now_s());
+                          cursor_y, shell_.now_s(), router_->tablet_pen());
   }
   pigment_drift_.draw(state_, worker());
   std::optional<RecoveryPreview> preview;

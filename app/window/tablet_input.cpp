@@ -50,7 +50,7 @@ paintcore::PenSample map_tablet_sample(const paintcore::PenSample& tablet_sample
 std::size_t feed_tablet_samples(std::span<const input::hid::TabletSamples> polled,
                                 double time_offset_s, const TabletSettings& settings,
                                 const TabletTargetGeometry& geometry, session::PenFeed& feed,
-                                std::string* error) {
+                                std::string* error, paintcore::PenSample* newest) {
   // Several tablets' samples interleaved by their own times (each tablet's order kept), so
   // the feed never has to hold a time back.
   struct Timed {
@@ -69,7 +69,10 @@ std::size_t feed_tablet_samples(std::span<const input::hid::TabletSamples> polle
     paintcore::PenSample sample = *timed.sample;
     sample.time_s += time_offset_s;
     try {
-      feed.feed(map_tablet_sample(sample, timed.tablet->tablet.area, settings, geometry));
+      const paintcore::PenSample mapped =
+          map_tablet_sample(sample, timed.tablet->tablet.area, settings, geometry);
+      feed.feed(mapped);
+      if (newest) *newest = mapped;
     } catch (const std::invalid_argument& e) {
       if (error) *error = timed.tablet->tablet.name + ": " + e.what();
     }

@@ -56,10 +56,12 @@ paintcore::PenSample map_tablet_sample(const paintcore::PenSample& tablet_sample
 // What the window does with each frame's tablet samples, oldest first by their own times
 // (several tablets interleaved): every sample mapped with its own tablet's area, its time
 // moved onto the session clock (+ time_offset_s), and fed. A sample that cannot be mapped is
-// skipped and its reason left in *error. Returns the samples fed.
+// skipped and its reason left in *error; the newest fed is left in *newest. Returns the
+// samples fed.
 std::size_t feed_tablet_samples(std::span<const input::hid::TabletSamples> polled,
                                 double time_offset_s, const TabletSettings& settings,
                                 const TabletTargetGeometry& geometry, session::PenFeed& feed,
-                                std::string* error = nullptr);
+                                std::string* error = nullptr,
+                                paintcore::PenSample* newest = nullptr);
 
 }  // namespace impasto::app::window

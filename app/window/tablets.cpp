@@ -30,8 +30,11 @@ void Tablets::poll(WindowState& state, const std::function<TabletTargetGeometry(
   const TabletTargetGeometry where = geometry();
   if (where.canvas_w_cells == 0) return;
   seen_s_ = now_s;
-  state.tablet_samples +=
-      feed_tablet_samples(polled, time_offset_s_, state.tablet, where, feed, &state.tablet_error);
+  paintcore::PenSample newest;
+  const std::size_t fed = feed_tablet_samples(polled, time_offset_s_, state.tablet, where, feed,
+                                              &state.tablet_error, &newest);
+  state.tablet_samples += fed;
+  if (fed > 0) newest_ = newest;
 }
 
 }  // namespace impasto::app::window

@@ -6,6 +6,7 @@
 
 #include <functional>
 #include <memory>
+#include <optional>
 
 #include "impasto/session/pen_feed.hpp"
 #include "window/tablet_input.hpp"
@@ -25,11 +26,18 @@ class Tablets {
   // A tablet sent a sample within the last quarter second (its pen is near: the outline
   // follows it, not the mouse).
   bool near(double now_s) const { return now_s - seen_s_ < 0.25; }
+  // The newest sample a near pen sent (canvas mm, with its pressure, tilt and rotation),
+  // hovering or pressed; nullptr when no pen is near or it left the tablet's range.
+  const paintcore::PenSample* pen(double now_s) const {
+    return near(now_s) && newest_ && (newest_->buttons & paintcore::kPenInRange) ? &*newest_
+                                                                                 : nullptr;
+  }
 
  private:
   std::unique_ptr<input::hid::TabletManager> manager_;
   double time_offset_s_ = 0.0;  // tablet clock -> session clock
   double seen_s_ = -1e9;        // when a tablet last sent a sample
+  std::optional<paintcore::PenSample> newest_;
 };
 
 }  // namespace impasto::app::window

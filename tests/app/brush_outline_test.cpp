@@ -74,5 +74,48 @@ TEST(BrushOutline, ItTrailsThePointersTravelAsAStrokesHeadDoes) {
               1e-3);
 }
 
+// Width and height of an outline's bounding box.
+std::array<double, 2> extent(const std::vector<Point2>& outline) {
+  double x0 = 1e9, x1 = -1e9, y0 = 1e9, y1 = -1e9;
+  for (const Point2& p : outline) {
+    x0 = std::min(x0, p[0]), x1 = std::max(x1, p[0]);
+    y0 = std::min(y0, p[1]), y1 = std::max(y1, p[1]);
+  }
+  return {x1 - x0, y1 - y0};
+}
+
+// A tablet's pen, hovering: its tilt leans the outline as it leans the head (stretched along
+// the tilt by 1 / cos), its barrel rotation turns a flat; the mouse at the same spot has none.
+TEST(BrushOutline, APensTiltLeansItAndItsRotationTurnsIt) {
+  const paintcore::BrushHead round = paintcore::load_named_brush_head("round");
+  const render_gl::CanvasView view = render_gl::one_pixel_per_cell(200, 200);
+  paintcore::PenSample pen;
+  pen.x_mm = 10.0, pen.y_mm = 10.0;  // cell (100, 100) at 0.1 mm a cell
+  pen.tilt_x_deg = 45.0f;
+  pen.buttons = paintcore::kPenInRange;
+  BrushOutline tilted, mouse;
+  tilted.pen_at(pen, 0.1, 40);
+  mouse.pointer_at(100.0, 100.0, 40);
+  const auto leaned = extent(tilted.on_screen(round, 40, 0.0, view, 200, 200));
+  const auto upright = extent(mouse.on_screen(round, 40, 0.0, view, 200, 200));
+  EXPECT_NEAR(leaned[0] / upright[0], std::sqrt(2.0), 0.05) << "stretched along x by 1/cos 45°";
+  EXPECT_NEAR(leaned[1] / upright[1], 1.0, 0.02);
+  // The mouse's outline after the pen's has no tilt left.
+  tilted.pointer_at(100.0, 100.0, 40);
+  EXPECT_NEAR(extent(tilted.on_screen(round, 40, 0.0, view, 200, 200))[0], upright[0], 1e-6);
+
+  const paintcore::BrushHead flat = paintcore::load_named_brush_head("flat");
+  pen.tilt_x_deg = 0.0f;
+  BrushOutline turned;
+  pen.rotation_deg = 90.0f;
+  turned.pen_at(pen, 0.1, 40);
+  const auto quarter = extent(turned.on_screen(flat, 40, 0.0, view, 200, 200));
+  pen.rotation_deg = 180.0f;
+  turned.pen_at(pen, 0.1, 40);
+  const auto half = extent(turned.on_screen(flat, 40, 0.0, view, 200, 200));
+  EXPECT_GT(quarter[1], 2.0 * quarter[0]) << "a quarter turn puts the flat's width along y";
+  EXPECT_GT(half[0], 2.0 * half[1]);
+}
+
 }  // namespace
 }  // namespace impasto::app

@@ -173,8 +173,14 @@ TEST(TabletFeed, RecordedReportStreamPaintsAndRecordsExactlyWhatTheWindowWould) 
         frame.samples.push_back(polled.samples[k]);
       }
       std::string error;
-      fed += feed_tablet_samples(std::span(&frame, 1), 2.0, settings, g, feed, &error);
+      paintcore::PenSample newest;
+      fed += feed_tablet_samples(std::span(&frame, 1), 2.0, settings, g, feed, &error, &newest);
       EXPECT_TRUE(error.empty()) << error;
+      // The newest sample, hovering or pressed, is handed back for the brush outline.
+      const paintcore::PenSample& last = frame.samples.back();
+      EXPECT_EQ(newest.time_s, last.time_s + 2.0);
+      EXPECT_EQ(newest.tilt_x_deg, last.tilt_x_deg);
+      EXPECT_EQ(newest.buttons, last.buttons);
     }
     worker.wait_idle();
     worker.with_painting([&](const paintcore::Painting& p) {
