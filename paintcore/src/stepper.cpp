@@ -867,17 +867,43 @@ void Stepper::scatter(Canvas& canvas, int slot_count, const BeforeTileChange& be
   }
 }
 
-bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const SimulationParams& params,
-                   const BrushPose& pose, double move_x, double move_y, double seconds,
-                   const BeforeTileChange& before_change, bool lift_off, bool lifting) {
-  last_window_cells_ = 0;
+void Stepper::find_active_spans(int rows, int cols) {
+  for (int y = 0; y < rows; ++y) {
+    int lo = cols, hi = 0;
+    for (int near = std::max(y - 1, 0); near <= std::min(y + 1, rows - 1); ++near) {
+      const auto k = static_cast<std::size_t>(near);
+      if (contact_hi_[k] <= contact_lo_[k]) continue;
+      lo = std::min(lo, contact_lo_[k] - 1);
+      hi = std::max(hi, contact_hi_[k] + 1);
+    }
+    // A long step's earlier sub-steps drag where the contact was: shifted back.
+    for (const auto [sx, sy] : shifts_)
+      for (int near = std::max(y + sy - 1, 0); near <= std::min(y + sy + 1, rows - 1); ++near) {
+        const auto k = static_cast<std::size_t>(near);
+        if (contact_hi_[k] <= contact_lo_[k]) continue;
+        lo = std::min(lo, contact_lo_[k] - sx - 1);
+        hi = std::max(hi, contact_hi_[k] - sx + 1);
+      }
+    span_lo_[static_cast<std::size_t>(y)] = std::clamp(lo, 0, cols);
+    span_hi_[static_cast<std::size_t>(y)] = std::clamp(hi, 0, cols);
+    if (span_hi_[static_cast<std::size_t>(y)] <= span_lo_[static_cast<std::size_t>(y)])
+      span_lo_[static_cast<std::size_t>(y)] = span_hi_[static_cast<std::size_t>(y)] = 0;
+  }
+}
+
+std::optional<Stepper::StepPlan> Stepper::plan_step(const Canvas& canvas, Brush& brush,
+                                                    int slot_count, const SimulationParams& params,
+                                                    const BrushPose& pose, double move_x,
+                                                    double move_y, double seconds, bool lift_off,
+                                                    bool lifting) {
+  StepPlan plan;
   // Where the tip was at the last step's end (its depth, as the pen pressed then).
-  const double depth_from = last_depth_mm_.value_or(pose.depth_mm);
+  plan.depth_from = last_depth_mm_.value_or(pose.depth_mm);
   last_depth_mm_ = pose.depth_mm;
   // A pen that does not press (pressure 0) holds the brush off the paint.
-  if (brush.empty() || !(pose.depth_mm > 0.0 || lifting)) return false;
+  if (brush.empty() || !(pose.depth_mm > 0.0 || lifting)) return std::nullopt;
   brush.ensure_slots(slot_count);
-  StepInputs in{};
+  StepInputs& in = plan.in;
   in.canvas = &canvas;
   in.brush = &brush;
   in.slot_count = slot_count;
@@ -888,7 +914,8 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   // A head without bristles is a blade: rigid, it carries all the paint above its underside
   // (drag 1, contact_rows.cpp); bristles drag a share of what they touch.
   in.blade = brush.blade();
-  const double drag = in.blade ? 1.0 : params.drag;
+  plan.drag = in.blade ? 1.0 : params.drag;
+  const double drag = plan.drag;
   const BrushPlacement& placement = in.placement;
   // The window: the canvas cells the brush grid can cover, plus one cell that advection
   // can push paint into, clipped to the canvas.
@@ -906,18 +933,18 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   const int x1 = static_cast<int>(std::clamp(std::ceil(max_x) + 1.0, 0.0, width));
   const int y0 = static_cast<int>(std::clamp(std::floor(min_y) - 1.0, 0.0, height));
   const int y1 = static_cast<int>(std::clamp(std::ceil(max_y) + 1.0, 0.0, height));
-  if (x1 <= x0 || y1 <= y0) return false;  // the brush is off the canvas
+  if (x1 <= x0 || y1 <= y0) return std::nullopt;  // the brush is off the canvas
   // A long step (more than a cell) drags the paint in sub-steps of at most
   // long_step_drag_cells travelled, each with the contact where the brush was then (the
   // step's own, shifted back along the move): the drag moves the paint nearly as one-cell
   // steps would, and the contact's trailing edge sweeps the canvas instead of jumping (a jump
   // left a ridge every step). The window reaches back over the cells swept.
   const double travel = std::max(std::abs(move_x), std::abs(move_y));
-  const int substeps =
-      travel > 1.0 + 1e-6
-          ? static_cast<int>(
-                std::ceil(std::max(travel / params.long_step_drag_cells, drag * travel) - 1e-6))
-          : 1;
+  plan.substeps = travel > 1.0 + 1e-6
+                      ? static_cast<int>(std::ceil(
+                            std::max(travel / params.long_step_drag_cells, drag * travel) - 1e-6))
+                      : 1;
+  const int substeps = plan.substeps;
   shifts_.clear();
   for (int j = 1; j < substeps; ++j) {
     const double back = static_cast<double>(substeps - j) / substeps;
@@ -952,8 +979,8 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   const int wy0 = move_y > 0.0 ? std::max(y0 - back_y, 0) : y0;
   const int wy1 = move_y < 0.0 ? std::min(y1 + back_y, canvas.height_cells()) : y1;
   win_ = Window{wx0, wy0, wx1 - wx0, wy1 - wy0};
-  const SqueezePasses squeeze = squeeze_passes(canvas.cell_mm());
-  resize(slot_count, brush.cell_count(), substeps, squeeze.passes);
+  plan.squeeze = squeeze_passes(canvas.cell_mm());
+  resize(slot_count, brush.cell_count(), substeps, plan.squeeze.passes);
   find_bases(canvas);
 
   // The tip sinks depth_mm below the surface it rests on: the ground and dry paint, and the
@@ -992,7 +1019,8 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   // travelled plus squeeze_mm_s per second: in cells this step, per unit slope, over the
   // central difference's two cells.
   const double cell_mm = canvas.cell_mm();
-  const double distance_mm = std::hypot(move_x, move_y) * cell_mm;
+  plan.distance_mm = std::hypot(move_x, move_y) * cell_mm;
+  const double distance_mm = plan.distance_mm;
   const double squeeze_mm = params.plough * distance_mm + params.squeeze_mm_s * seconds;
   in.gradient_scale = static_cast<float>(squeeze_mm / cell_mm * 0.5 / cell_mm);
   in.min_film_mm = static_cast<float>(params.min_film_mm);
@@ -1018,6 +1046,21 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
                                 (std::floor(std::abs(m[2]) + std::abs(m[3])) + 1.0);
     in.sharing_binds = most_sharing * in.deposit_share > 1.0;
   }
+  return plan;
+}
+
+bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const SimulationParams& params,
+                   const BrushPose& pose, double move_x, double move_y, double seconds,
+                   const BeforeTileChange& before_change, bool lift_off, bool lifting) {
+  last_window_cells_ = 0;
+  const std::optional<StepPlan> plan = plan_step(canvas, brush, slot_count, params, pose, move_x,
+                                                 move_y, seconds, lift_off, lifting);
+  if (!plan) return false;
+  const StepInputs& in = plan->in;
+  const double drag = plan->drag, depth_from = plan->depth_from;
+  const double cell_mm = canvas.cell_mm(), distance_mm = plan->distance_mm;
+  const int substeps = plan->substeps;
+  const SqueezePasses squeeze = plan->squeeze;
 
   const int rows = win_.height, cols = win_.width;
   // 1. Gather the window, find where the brush penetrates the paint surface, the velocity
@@ -1055,30 +1098,7 @@ bool Stepper::step(Canvas& canvas, Brush& brush, int slot_count, const Simulatio
   }
   const bool transfers = in.relax > 0.0f;  // a brush neither moving nor pressing moves nothing
   last_transferred_ = transfers;
-  // Paint changes only within a cell of a touching cell (the drag, the transfer and the
-  // squeeze all reach one cell): each row's active span. Beyond it every pass would give back
-  // its input bit for bit, so the passes skip it and the scatter leaves it alone.
-  for (int y = 0; y < rows; ++y) {
-    int lo = cols, hi = 0;
-    for (int near = std::max(y - 1, 0); near <= std::min(y + 1, rows - 1); ++near) {
-      const auto k = static_cast<std::size_t>(near);
-      if (contact_hi_[k] <= contact_lo_[k]) continue;
-      lo = std::min(lo, contact_lo_[k] - 1);
-      hi = std::max(hi, contact_hi_[k] + 1);
-    }
-    // A long step's earlier sub-steps drag where the contact was: shifted back.
-    for (const auto [sx, sy] : shifts_)
-      for (int near = std::max(y + sy - 1, 0); near <= std::min(y + sy + 1, rows - 1); ++near) {
-        const auto k = static_cast<std::size_t>(near);
-        if (contact_hi_[k] <= contact_lo_[k]) continue;
-        lo = std::min(lo, contact_lo_[k] - sx - 1);
-        hi = std::max(hi, contact_hi_[k] - sx + 1);
-      }
-    span_lo_[static_cast<std::size_t>(y)] = std::clamp(lo, 0, cols);
-    span_hi_[static_cast<std::size_t>(y)] = std::clamp(hi, 0, cols);
-    if (span_hi_[static_cast<std::size_t>(y)] <= span_lo_[static_cast<std::size_t>(y)])
-      span_lo_[static_cast<std::size_t>(y)] = span_hi_[static_cast<std::size_t>(y)] = 0;
-  }
+  find_active_spans(rows, cols);
   if (substeps > 1) need_shares(rows, cols, quadrant_x, quadrant_y);
   if ((substeps > 1 || squeeze.passes > 1) && in.gradient_scale > 0.0f) {
     // The head's underside over each cell, where the step's contact found it pressing: what a

@@ -123,6 +123,27 @@ class Stepper {
     bool blade;  // a head without bristles (see step)
   };
 
+  // What one step will do, decided before any row is touched.
+  struct StepPlan {
+    StepInputs in{};
+    double drag = 0.0;        // the share of the paint the head carries (1 for a blade)
+    int substeps = 1;         // a long step's sub-steps; 1 for a step of a cell or less
+    SqueezePasses squeeze{};  // for the canvas's cell size
+    double distance_mm = 0.0;
+    double depth_from = 0.0;  // the tip's depth at the last step's end
+  };
+  // Places the brush, finds and sizes the window (win_, its grids and the tiles' weave), the
+  // sub-steps' contact shifts and moves (shifts_, sub_moves_), and the inputs every row pass
+  // shares. nullopt when the step can change nothing: no brush, no pressure, off the canvas.
+  std::optional<StepPlan> plan_step(const Canvas& canvas, Brush& brush, int slot_count,
+                                    const SimulationParams& params, const BrushPose& pose,
+                                    double move_x, double move_y, double seconds, bool lift_off,
+                                    bool lifting);
+  // Paint changes only within a cell of a touching cell (the drag, the transfer and the
+  // squeeze all reach one cell): each row's active span (span_lo_, span_hi_), from the rows'
+  // contact and, in a long step, its sub-steps' shifted contact. Beyond it every pass would
+  // give back its input bit for bit, so the passes skip it and the scatter leaves it alone.
+  void find_active_spans(int rows, int cols);
   void resize(int slot_count, std::size_t brush_cells, int substeps, int squeeze_passes);
   const float* base_heights(const Canvas& canvas, int tile_index);
   void find_bases(const Canvas& canvas);
