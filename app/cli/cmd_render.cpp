@@ -103,7 +103,12 @@ void run(const RenderArgs& args) {
         "--gpu or --zoom)");
   const auto start = Clock::now();
   const paintcore::Painting painting = paintcore::Painting::load(args.painting, args.threads);
-  check_render_memory(painting.canvas(), args.painting);
+  // The whole canvas's render state for the GPU and the close-up; the file's render goes by
+  // bands where it can, which takes less.
+  if (args.gpu || args.zoom > 0)
+    check_render_memory(painting.canvas(), args.painting);
+  else
+    check_render_to_file_memory(painting, settings, args.out, args.supersample, args.painting);
   const double load_seconds = seconds_since(start);
   const auto render_start = Clock::now();
   int width = painting.canvas().width_cells(), height = painting.canvas().height_cells();

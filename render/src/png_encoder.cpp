@@ -134,6 +134,10 @@ void parallel(std::size_t count, int threads, const Work& work) {
 
 }  // namespace
 
+void to_png_bytes(const float* rgb, std::size_t count, std::uint8_t* bytes) {
+  std::transform(rgb, rgb + count, bytes, to_byte);
+}
+
 std::string encode_png(const Image& image, int threads) {
   if (image.width <= 0 || image.height <= 0 ||
       image.rgb.size() != static_cast<std::size_t>(kChannels) *
@@ -141,20 +145,32 @@ std::string encode_png(const Image& image, int threads) {
                               static_cast<std::size_t>(image.height)) {
     throw std::runtime_error("PNG: the image has no pixels or a wrong buffer size");
   }
-  const auto width = static_cast<std::size_t>(image.width);
+  const std::size_t row_bytes = kChannels * static_cast<std::size_t>(image.width);
   const auto height = static_cast<std::size_t>(image.height);
+  const std::size_t strips = (height + kStripRows - 1) / kStripRows;
+  std::vector<std::uint8_t> bytes(image.rgb.size());
+  parallel(strips, threads, [&](std::size_t s) {
+    const std::size_t y0 = s * kStripRows, y1 = std::min(height, y0 + kStripRows);
+    to_png_bytes(image.rgb.data() + y0 * row_bytes, (y1 - y0) * row_bytes,
+                 bytes.data() + y0 * row_bytes);
+  });
+  return encode_png_bytes(bytes, image.width, image.height, threads);
+}
+
+std::string encode_png_bytes(const std::vector<std::uint8_t>& bytes, int image_width,
+                             int image_height, int threads) {
+  if (image_width <= 0 || image_height <= 0 ||
+      bytes.size() != static_cast<std::size_t>(kChannels) * static_cast<std::size_t>(image_width) *
+                          static_cast<std::size_t>(image_height)) {
+    throw std::runtime_error("PNG: the image has no pixels or a wrong buffer size");
+  }
+  const auto width = static_cast<std::size_t>(image_width);
+  const auto height = static_cast<std::size_t>(image_height);
   const std::size_t row_bytes = kChannels * width;
   const std::size_t strips = (height + kStripRows - 1) / kStripRows;
 
-  // Bytes, then filtered rows (a type byte each): PNG's uncompressed stream.
-  std::vector<std::uint8_t> bytes(image.rgb.size());
+  // Filtered rows (a type byte each): PNG's uncompressed stream.
   std::vector<std::uint8_t> filtered(height * (row_bytes + 1));
-  parallel(strips, threads, [&](std::size_t s) {
-    const std::size_t y0 = s * kStripRows, y1 = std::min(height, y0 + kStripRows);
-    std::transform(image.rgb.begin() + static_cast<std::ptrdiff_t>(y0 * row_bytes),
-                   image.rgb.begin() + static_cast<std::ptrdiff_t>(y1 * row_bytes),
-                   bytes.begin() + static_cast<std::ptrdiff_t>(y0 * row_bytes), to_byte);
-  });
   parallel(strips, threads, [&](std::size_t s) {
     std::vector<std::uint8_t> trial;
     const std::vector<std::uint8_t> zeros(row_bytes, 0);

@@ -151,7 +151,8 @@ ExportReport export_painting(const paintcore::Painting& painting, const ExportRe
   if (request.scale != 1) refined.emplace(painting.refined(request.scale));
   const paintcore::Painting& source = refined ? *refined : painting;
   if (!request.image.empty()) {
-    render::check_render_memory(source.canvas(), request.image.string());
+    render::check_render_to_file_memory(source, request.settings, request.image,
+                                        request.supersample, request.image.string());
     render::render_painting_to_file(source, request.settings, request.image, {},
                                     request.supersample);
   }

@@ -1,6 +1,8 @@
 // Whole paintings to files: PNG and EXR written, PNG read back, bad names rejected.
 #include "impasto/render/render_painting.hpp"
 
+#include "impasto/render/png_encoder.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -110,4 +112,88 @@ TEST(RenderPainting, SupersamplingConvergesAndLeavesAUniformCanvasAlone) {
   for (std::size_t i = 0; i < flat_one.rgb.size(); ++i)
     ASSERT_NEAR(flat_four.rgb[i], flat_one.rgb[i], 2e-4) << i;
   EXPECT_THROW(render::render_painting_supersampled(painting, settings, 5), std::runtime_error);
+}
+
+namespace {
+
+// A 300 x 260-cell painting at 150 dpi with thick strokes across and down it, and dry paint
+// under them: shadows and occlusion cross every band boundary.
+paintcore::Painting banded_painting() {
+  paintcore::Painting painting({300, 260, 150.0, 3});
+  painting.set_brush(paintcore::BrushSettings{"round", 6.0, 0.5});
+  const auto stroke = [&](double x0, double y0, double x1, double y1) {
+    painting.load_brush({{"Blue Red Shade", 1.0}, {"White", 2.0}}, 80.0);
+    painting.begin_stroke();
+    for (int i = 0; i <= 30; ++i) {
+      paintcore::PenSample sample;
+      sample.time_s = 0.01 * i;
+      sample.x_mm = x0 + (x1 - x0) * i / 30.0;
+      sample.y_mm = y0 + (y1 - y0) * i / 30.0;
+      sample.pressure = 0.8f;
+      sample.buttons = paintcore::kPenTip | paintcore::kPenInRange;
+      painting.stroke_to(sample);
+    }
+    painting.end_stroke();
+  };
+  stroke(5.0, 20.0, 45.0, 22.0);
+  painting.dry(1.0);
+  stroke(25.0, 3.0, 27.0, 40.0);
+  return painting;
+}
+
+}  // namespace
+
+// A painting rendered a band of rows at a time is the painting rendered whole, bit for bit:
+// each band reads the margins its shadows and occlusion reach (a low light: long shadows).
+TEST(RenderPainting, ByBandsIsTheWholeRenderBitForBit) {
+  const paintcore::Painting painting = banded_painting();
+  for (const auto light : {render::LightType::directional, render::LightType::diffuse}) {
+    render::RenderSettings settings;
+    settings.light_type = light;
+    settings.light_azimuth_deg = 280.0;  // from above, a little left: shadows down the rows
+    settings.light_elevation_deg = 15.0;
+    ASSERT_TRUE(render::renders_by_bands(painting, settings));
+    const render::Image whole = render::render_painting(painting, settings);
+    render::Image banded{whole.width, whole.height, std::vector<float>(whole.rgb.size(), -1.0f)};
+    int bands = 0, next_row = 0;
+    std::uint64_t last_done = 0, last_total = 0;
+    render::render_painting_by_bands(
+        painting, settings, 64,
+        [&](int first_row, const render::Image& band) {
+          EXPECT_EQ(first_row, next_row);
+          EXPECT_EQ(band.width, whole.width);
+          next_row += band.height;
+          ++bands;
+          std::copy(band.rgb.begin(), band.rgb.end(),
+                    banded.rgb.begin() + 3 * static_cast<std::ptrdiff_t>(first_row) * band.width);
+        },
+        [&](std::uint64_t done, std::uint64_t total) {
+          EXPECT_GE(done, last_done) << "progress runs over all the bands, never back";
+          last_done = done;
+          last_total = total;
+        });
+    EXPECT_EQ(bands, 5);
+    EXPECT_EQ(next_row, whole.height);
+    EXPECT_EQ(last_done, last_total);
+    std::size_t differing = 0;
+    for (std::size_t i = 0; i < whole.rgb.size(); ++i) differing += whole.rgb[i] != banded.rgb[i];
+    EXPECT_EQ(differing, 0u) << "light " << static_cast<int>(light);
+    // And the PNG of its bytes is the PNG of the whole image.
+    std::vector<std::uint8_t> bytes(banded.rgb.size());
+    render::to_png_bytes(banded.rgb.data(), banded.rgb.size(), bytes.data());
+    EXPECT_TRUE(render::encode_png_bytes(bytes, banded.width, banded.height) ==
+                render::encode_png(whole))
+        << "the PNG's bytes differ";
+  }
+}
+
+// What bands cannot render as the whole does is rendered whole: a point or spot light is placed
+// from the canvas's centre.
+TEST(RenderPainting, APointLightIsNotRenderedByBands) {
+  const paintcore::Painting painting = banded_painting();
+  render::RenderSettings settings;
+  settings.light_type = render::LightType::point;
+  EXPECT_FALSE(render::renders_by_bands(painting, settings));
+  settings.light_type = render::LightType::spot;
+  EXPECT_FALSE(render::renders_by_bands(painting, settings));
 }
