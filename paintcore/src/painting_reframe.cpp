@@ -27,6 +27,16 @@ PaintTotals Painting::reframe_canvas(const CanvasFrame& frame) {
   return removed;
 }
 
+Painting Painting::cropped(const CanvasFrame& frame) const {
+  const Impl& p = *impl_;
+  validate(frame, p.canvas.spec());
+  std::unique_ptr<Impl> band = p.resampled(reframed_spec(p.canvas.spec(), frame));
+  CutPaint cut;
+  band->canvas = reframed_canvas(p.canvas, frame, slot_count(), cut);
+  band->canvas.cracks() = CrackLayer{};  // not carried, as refined and coarsened do not
+  return Painting(std::move(band));
+}
+
 void Painting::set_saved_history_bytes(std::size_t bytes) {
   impl_->saved_history_bytes = bytes;
 }

@@ -1,6 +1,7 @@
 #include "impasto/render/render_painting.hpp"
 
 #include <array>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -99,45 +100,72 @@ int band_rows(int width_cells) {
 void render_painting_by_bands(const paintcore::Painting& painting, const RenderSettings& settings,
                               int rows,
                               const std::function<void(int first_row, const Image& band)>& band,
-                              const util::ProgressCallback& progress) {
+                              const util::ProgressCallback& progress, int scale) {
+  if (scale < 1 || scale > 16)
+    throw std::runtime_error("render by bands: field 'scale' must be in 1..16, got " +
+                             std::to_string(scale));
   const paintcore::Canvas& canvas = painting.canvas();
-  const int width = canvas.width_cells(), height = canvas.height_cells();
+  // The canvas rendered: the painting's, or `scale` times finer (Painting::refined).
+  const int width = canvas.width_cells() * scale, height = canvas.height_cells() * scale;
   // What a cell's shading reads around it, on either side (the shadows toward the light).
-  const relief::Reach reach = relief::reach(relief::relief_params(settings, canvas.cell_mm()));
+  const relief::Reach reach =
+      relief::reach(relief::relief_params(settings, canvas.cell_mm() / scale));
   const int margin = std::max(reach.top, reach.bottom);
+  // A finer cell interpolates the coarse cells around it (Catmull-Rom: one before, two after).
+  constexpr int kRefineReach = 2;
   const SpectralPalette palette(settings, painting);
-  // Each band's canvas rows, margins included, and the progress over all the bands' tiles.
+  // Each band's rows of the rendered canvas, its margins included: for a refined render, the
+  // coarse rows they are refined from (whole, so the band starts at a coarse row's first).
+  struct Span {
+    int from, to;
+  };
   const auto band_span = [&](int y0) {
-    return std::pair{std::max(0, y0 - margin), std::min(height, y0 + rows + margin)};
+    Span span{std::max(0, y0 - margin), std::min(height, y0 + rows + margin)};
+    if (scale > 1) {
+      span.from = std::max(0, span.from / scale - kRefineReach) * scale;
+      span.to =
+          std::min(canvas.height_cells(), (span.to + scale - 1) / scale + kRefineReach) * scale;
+    }
+    return span;
+  };
+  const auto tile_rows = [](int cells) {
+    return static_cast<std::uint64_t>((cells + paintcore::kTileSize - 1) / paintcore::kTileSize);
   };
   std::uint64_t total_tiles = 0;
   for (int y0 = 0; y0 < height; y0 += rows) {
-    const auto [from, to] = band_span(y0);
-    total_tiles +=
-        static_cast<std::uint64_t>(canvas.tiles_x()) *
-        static_cast<std::uint64_t>((to - from + paintcore::kTileSize - 1) / paintcore::kTileSize);
+    const Span span = band_span(y0);
+    total_tiles += tile_rows(width) * tile_rows(span.to - span.from);
   }
   std::uint64_t tiles_before = 0;
   for (int y0 = 0; y0 < height; y0 += rows) {
     const int y1 = std::min(height, y0 + rows);
-    const auto [from, to] = band_span(y0);
-    paintcore::CutPaint cut;
-    const paintcore::Canvas cropped =
-        paintcore::reframed_canvas(canvas, paintcore::crop_frame(0, from, width, to - from),
-                                   static_cast<int>(painting.pigment_slots().size()), cut);
+    const Span span = band_span(y0);
     TileRenderer renderer(settings, palette);
     util::ProgressCallback band_progress;
     if (progress)
       band_progress = [&](std::uint64_t done, std::uint64_t) {
         progress(tiles_before + done, total_tiles);
       };
-    renderer.render_all(cropped, band_progress);
-    tiles_before += static_cast<std::uint64_t>(cropped.tile_count());
-    Image whole = renderer.image();
+    if (scale == 1) {
+      paintcore::CutPaint cut;
+      const paintcore::Canvas cropped = paintcore::reframed_canvas(
+          canvas, paintcore::crop_frame(0, span.from, width, span.to - span.from),
+          painting.slot_count(), cut);
+      renderer.render_all(cropped, band_progress);
+    } else {
+      const paintcore::Painting fine =
+          painting
+              .cropped(paintcore::crop_frame(0, span.from / scale, canvas.width_cells(),
+                                             (span.to - span.from) / scale))
+              .refined(scale);
+      renderer.render_all(fine.canvas(), band_progress);
+    }
+    tiles_before += tile_rows(width) * tile_rows(span.to - span.from);
+    const Image whole = renderer.image();
     Image rows_image;
     rows_image.width = width;
     rows_image.height = y1 - y0;
-    const auto first = whole.rgb.begin() + 3 * static_cast<std::ptrdiff_t>(y0 - from) * width;
+    const auto first = whole.rgb.begin() + 3 * static_cast<std::ptrdiff_t>(y0 - span.from) * width;
     rows_image.rgb.assign(first, first + 3 * static_cast<std::ptrdiff_t>(y1 - y0) * width);
     band(y0, rows_image);
   }
@@ -151,94 +179,106 @@ std::uint64_t file_bytes_per_cell(const std::filesystem::path& path) {
   return image_file_type(path) == ImageFileType::png ? 3 + 3 : 12 + 8;
 }
 
-bool by_bands(const paintcore::Painting& painting, const RenderSettings& settings,
-              int supersample) {
+bool by_bands(const paintcore::Painting& painting, const RenderSettings& settings, int supersample,
+              int scale) {
+  const paintcore::Canvas& canvas = painting.canvas();
+  // (A refined render goes by bands at any size: the finer canvas itself is what it saves.)
   return supersample == 1 &&
-         painting.canvas().height_cells() > band_rows(painting.canvas().width_cells()) &&
+         (scale > 1 || canvas.height_cells() > band_rows(canvas.width_cells())) &&
          renders_by_bands(painting, settings);
+}
+
+std::string canvas_words(const paintcore::Canvas& canvas, int scale) {
+  std::string words = "the " + std::to_string(canvas.width_cells()) + " x " +
+                      std::to_string(canvas.height_cells()) +
+                      "-cell canvas (canvas.width_cells x canvas.height_cells)";
+  if (scale > 1) words += " " + std::to_string(scale) + " times finer";
+  return words;
 }
 
 }  // namespace
 
 void check_render_to_file_memory(const paintcore::Painting& painting,
                                  const RenderSettings& settings, const std::filesystem::path& path,
-                                 int supersample, const std::string& where) {
+                                 int supersample, const std::string& where, int scale) {
   const paintcore::Canvas& canvas = painting.canvas();
-  if (!by_bands(painting, settings, supersample)) {
-    if (supersample > 1) {
-      const auto cells = static_cast<std::uint64_t>(canvas.tiles_x()) * canvas.tiles_y() *
-                         paintcore::kTileCells * static_cast<std::uint64_t>(supersample) *
-                         static_cast<std::uint64_t>(supersample);
-      files::check_allocation(where,
-                              "rendering the " + std::to_string(canvas.width_cells()) + " x " +
-                                  std::to_string(canvas.height_cells()) + "-cell canvas " +
-                                  std::to_string(supersample) + " x " +
-                                  std::to_string(supersample) + " supersampled",
-                              kRenderBytesPerCell * cells);
-    } else {
-      check_render_memory(canvas, where);
-    }
+  const auto cells = static_cast<std::uint64_t>(canvas.width_cells()) *
+                     static_cast<std::uint64_t>(canvas.height_cells()) *
+                     static_cast<std::uint64_t>(scale) * static_cast<std::uint64_t>(scale);
+  if (by_bands(painting, settings, supersample, scale)) {
+    files::check_allocation(
+        where,
+        "rendering " + canvas_words(canvas, scale) + " by bands into " + path.filename().string(),
+        2 * kBandRenderBytes + file_bytes_per_cell(path) * cells);
     return;
   }
-  const auto cells = static_cast<std::uint64_t>(canvas.width_cells()) *
-                     static_cast<std::uint64_t>(canvas.height_cells());
+  // The whole canvas at once (the finer one, each of whose tiles the render shades), and its
+  // supersamples.
+  const auto samples =
+      static_cast<std::uint64_t>(supersample) * static_cast<std::uint64_t>(supersample);
+  const std::uint64_t tiles_cells = static_cast<std::uint64_t>(canvas.tiles_x()) *
+                                    canvas.tiles_y() * paintcore::kTileCells * scale * scale;
   files::check_allocation(where,
-                          "rendering the " + std::to_string(canvas.width_cells()) + " x " +
-                              std::to_string(canvas.height_cells()) +
-                              "-cell canvas (canvas.width_cells x canvas.height_cells) by bands "
-                              "into " +
-                              path.filename().string(),
-                          2 * kBandRenderBytes + file_bytes_per_cell(path) * cells);
+                          "rendering " + canvas_words(canvas, scale) +
+                              (supersample > 1 ? ", " + std::to_string(supersample) + " x " +
+                                                     std::to_string(supersample) + " supersampled"
+                                               : std::string()),
+                          kRenderBytesPerCell * tiles_cells * samples);
 }
 
 void render_painting_to_file(const paintcore::Painting& painting, const RenderSettings& settings,
                              const std::filesystem::path& path,
-                             const util::ProgressCallback& progress, int supersample) {
+                             const util::ProgressCallback& progress, int supersample, int scale) {
   const bool png = image_file_type(path) == ImageFileType::png;
   RenderSettings file_settings = settings;
   if (!png) file_settings.display = DisplayEncoding::linear_srgb;
-  if (by_bands(painting, file_settings, supersample)) {
-    // A band at a time: the canvas's pixels are kept as the file stores them, not the render's
-    // per-cell state (40 bytes a cell: a 16384 x 12288 canvas took 8 GB).
-    const int width = painting.canvas().width_cells(), height = painting.canvas().height_cells();
-    const int rows = band_rows(width);
-    if (png) {
-      std::vector<std::uint8_t> bytes(3 * static_cast<std::size_t>(width) *
-                                      static_cast<std::size_t>(height));
-      render_painting_by_bands(
-          painting, file_settings, rows,
-          [&](int first_row, const Image& band) {
-            to_png_bytes(band.rgb.data(), band.rgb.size(),
-                         bytes.data() + 3 * static_cast<std::size_t>(first_row) * width);
-          },
-          progress);
-      std::string encoded;
-      try {
-        encoded = encode_png_bytes(bytes, width, height);
-      } catch (const std::exception& error) {
-        throw std::runtime_error(path.string() + ": cannot write PNG: " + error.what());
-      }
-      files::write_file_atomically(path, encoded);
-    } else {
-      Image image;
-      image.width = width;
-      image.height = height;
-      image.rgb.resize(3 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
-      render_painting_by_bands(
-          painting, file_settings, rows,
-          [&](int first_row, const Image& band) {
-            std::copy(band.rgb.begin(), band.rgb.end(),
-                      image.rgb.begin() + 3 * static_cast<std::ptrdiff_t>(first_row) * width);
-          },
-          progress);
+  if (!by_bands(painting, file_settings, supersample, scale)) {
+    const std::optional<paintcore::Painting> fine =
+        scale > 1 ? std::optional(painting.refined(scale)) : std::nullopt;
+    const Image image =
+        render_painting_supersampled(fine ? *fine : painting, file_settings, supersample, progress);
+    if (png)
+      write_png(path, image);
+    else
       write_exr(path, image);
-    }
     return;
   }
+  // A band at a time: the canvas's pixels are kept as the file stores them, not the render's
+  // per-cell state (40 bytes a cell: a 16384 x 12288 canvas took 8 GB), nor a refined
+  // painting's whole finer canvas.
+  const int width = painting.canvas().width_cells() * scale;
+  const int height = painting.canvas().height_cells() * scale;
+  const int rows = band_rows(width);
   if (png) {
-    write_png(path, render_painting_supersampled(painting, file_settings, supersample, progress));
+    std::vector<std::uint8_t> bytes(3 * static_cast<std::size_t>(width) *
+                                    static_cast<std::size_t>(height));
+    render_painting_by_bands(
+        painting, file_settings, rows,
+        [&](int first_row, const Image& band) {
+          to_png_bytes(band.rgb.data(), band.rgb.size(),
+                       bytes.data() + 3 * static_cast<std::size_t>(first_row) * width);
+        },
+        progress, scale);
+    std::string encoded;
+    try {
+      encoded = encode_png_bytes(bytes, width, height);
+    } catch (const std::exception& error) {
+      throw std::runtime_error(path.string() + ": cannot write PNG: " + error.what());
+    }
+    files::write_file_atomically(path, encoded);
   } else {
-    write_exr(path, render_painting_supersampled(painting, file_settings, supersample, progress));
+    Image image;
+    image.width = width;
+    image.height = height;
+    image.rgb.resize(3 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+    render_painting_by_bands(
+        painting, file_settings, rows,
+        [&](int first_row, const Image& band) {
+          std::copy(band.rgb.begin(), band.rgb.end(),
+                    image.rgb.begin() + 3 * static_cast<std::ptrdiff_t>(first_row) * width);
+        },
+        progress, scale);
+    write_exr(path, image);
   }
 }
 

@@ -147,16 +147,17 @@ ExportReport export_painting(const paintcore::Painting& painting, const ExportRe
         throw std::runtime_error(std::string("export: ") + outputs[i].first + " and " +
                                  outputs[j].first + " name the same file, " + a.string());
     }
-  std::optional<paintcore::Painting> refined;
-  if (request.scale != 1) refined.emplace(painting.refined(request.scale));
-  const paintcore::Painting& source = refined ? *refined : painting;
   if (!request.image.empty()) {
-    render::check_render_to_file_memory(source, request.settings, request.image,
-                                        request.supersample, request.image.string());
-    render::render_painting_to_file(source, request.settings, request.image, {},
-                                    request.supersample);
+    // Refined a band at a time where it can be (render_painting_to_file).
+    render::check_render_to_file_memory(painting, request.settings, request.image,
+                                        request.supersample, request.image.string(), request.scale);
+    render::render_painting_to_file(painting, request.settings, request.image, {},
+                                    request.supersample, request.scale);
   }
   if (!request.height_map.empty() || !request.normal_map.empty() || !request.solids.empty()) {
+    std::optional<paintcore::Painting> refined;
+    if (request.scale != 1) refined.emplace(painting.refined(request.scale));
+    const paintcore::Painting& source = refined ? *refined : painting;
     const render::HeightGrid heights = render::surface_heights(source.canvas());
     if (!request.height_map.empty()) render::write_height_map(request.height_map, heights);
     if (!request.normal_map.empty()) render::write_normal_map(request.normal_map, heights);

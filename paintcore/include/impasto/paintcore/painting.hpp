@@ -118,6 +118,11 @@ class Painting {
   // zero, so that its render shades a smooth relief. Slots, records and parameters are kept;
   // the brush, ledger, history and cracks are not. Throws when the canvas would be too large.
   Painting refined(int scale) const;
+  // The painting's canvas in `frame` (canvas_reframe.hpp; a crop, usually), as a new painting:
+  // paint, dry layers and the weave's origin moved cell for cell, slots, records and
+  // parameters kept; the brush, ledger, history and cracks are not (what a render of a band
+  // of a large export needs; reframe_canvas is the undoable edit). Throws on an invalid frame.
+  Painting cropped(const CanvasFrame& frame) const;
   // The painting on a canvas `factor` times coarser (dpi / factor, flat cloth), for a small
   // picture of it: each cell the mean of the factor x factor block it covers (heights and
   // pigment amounts; a block's medium and varnish from its centre cell). Slots, records and

@@ -49,10 +49,13 @@ int band_rows(int width_cells);
 // renders_by_bands says so): `band` hears of each band in order, top first, with the canvas row
 // it starts at. Memory in proportion to a band, not the canvas. progress hears of each band's
 // tiles (margins included).
+// With `scale` above 1, the painting refined that many times (Painting::refined, as export
+// --scale renders it), each band refined from the coarse rows it reads: `rows` are the finer
+// canvas's, and no band holds more of the finer canvas than its rows and margins.
 void render_painting_by_bands(const paintcore::Painting& painting, const RenderSettings& settings,
                               int rows,
                               const std::function<void(int first_row, const Image& band)>& band,
-                              const util::ProgressCallback& progress = {});
+                              const util::ProgressCallback& progress = {}, int scale = 1);
 
 // The memory render_painting_to_file takes for this painting and file: by bands where it can
 // (a band's render and the file's pixels, 3 bytes a cell for PNG, 12 for OpenEXR), else the
@@ -60,14 +63,16 @@ void render_painting_by_bands(const paintcore::Painting& painting, const RenderS
 // memory budget before anything is allocated; throws std::runtime_error "<where>: ...".
 void check_render_to_file_memory(const paintcore::Painting& painting,
                                  const RenderSettings& settings, const std::filesystem::path& path,
-                                 int supersample, const std::string& where);
+                                 int supersample, const std::string& where, int scale = 1);
 
 // Renders and writes by extension: .png (8-bit, settings.display, sRGB by default) or .exr
 // (linear sRGB primaries, full range; settings.display is ignored), by bands where
-// renders_by_bands says so (the same file). Throws std::runtime_error naming the file for
-// another extension or a write error.
+// renders_by_bands says so (the same file). `scale` above 1 renders the painting refined that
+// many times (export --scale), by bands from the coarse rows each needs where it can. Throws
+// std::runtime_error naming the file for another extension or a write error.
 void render_painting_to_file(const paintcore::Painting& painting, const RenderSettings& settings,
                              const std::filesystem::path& path,
-                             const util::ProgressCallback& progress = {}, int supersample = 1);
+                             const util::ProgressCallback& progress = {}, int supersample = 1,
+                             int scale = 1);
 
 }  // namespace impasto::render
