@@ -9,6 +9,8 @@
 #include <array>
 #include <cstdint>
 #include <stdexcept>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 namespace impasto::render {
@@ -157,62 +159,93 @@ std::string encode_png(const Image& image, int threads) {
   return encode_png_bytes(bytes, image.width, image.height, threads);
 }
 
-std::string encode_png_bytes(const std::vector<std::uint8_t>& bytes, int image_width,
-                             int image_height, int threads) {
-  if (image_width <= 0 || image_height <= 0 ||
-      bytes.size() != static_cast<std::size_t>(kChannels) * static_cast<std::size_t>(image_width) *
-                          static_cast<std::size_t>(image_height)) {
-    throw std::runtime_error("PNG: the image has no pixels or a wrong buffer size");
-  }
-  const auto width = static_cast<std::size_t>(image_width);
-  const auto height = static_cast<std::size_t>(image_height);
-  const std::size_t row_bytes = kChannels * width;
-  const std::size_t strips = (height + kStripRows - 1) / kStripRows;
-
-  // Filtered rows (a type byte each): PNG's uncompressed stream.
-  std::vector<std::uint8_t> filtered(height * (row_bytes + 1));
-  parallel(strips, threads, [&](std::size_t s) {
-    std::vector<std::uint8_t> trial;
-    const std::vector<std::uint8_t> zeros(row_bytes, 0);
-    const std::size_t y0 = s * kStripRows, y1 = std::min(height, y0 + kStripRows);
-    for (std::size_t y = y0; y < y1; ++y) {
-      filter_row(&bytes[y * row_bytes], y > 0 ? &bytes[(y - 1) * row_bytes] : zeros.data(),
-                 row_bytes, &filtered[y * (row_bytes + 1)], trial);
-    }
-  });
-  std::vector<std::string> deflated(strips);
-  std::vector<uLong> adlers(strips);
-  parallel(strips, threads, [&](std::size_t s) {
-    const std::size_t begin = s * kStripRows * (row_bytes + 1);
-    const std::size_t end = std::min(filtered.size(), begin + kStripRows * (row_bytes + 1));
-    deflated[s] = deflate_strip(filtered.data(), begin, end, s + 1 == strips);
-    adlers[s] =
-        adler32(adler32(0, nullptr, 0), filtered.data() + begin, static_cast<uInt>(end - begin));
-  });
-  uLong adler = adler32(0, nullptr, 0);
-  for (std::size_t s = 0; s < strips; ++s) {
-    const std::size_t begin = s * kStripRows * (row_bytes + 1);
-    const std::size_t end = std::min(filtered.size(), begin + kStripRows * (row_bytes + 1));
-    adler = adler32_combine(adler, adlers[s], static_cast<z_off_t>(end - begin));
-  }
-
-  std::string png("\x89PNG\r\n\x1a\n", 8);
+PngRowWriter::PngRowWriter(int width, int height, std::function<void(std::string_view)> out,
+                           int threads)
+    : width_(width), height_(height), threads_(threads), out_(std::move(out)) {
+  if (width <= 0 || height <= 0) throw std::runtime_error("PNG: the image has no pixels");
+  adler_ = adler32(0, nullptr, 0);
+  std::string head("\x89PNG\r\n\x1a\n", 8);
   std::string header;
   put_u32(header, static_cast<std::uint32_t>(width));
   put_u32(header, static_cast<std::uint32_t>(height));
   header += std::string{'\x08', '\x02', '\0', '\0', '\0'};  // 8-bit RGB, deflate, no interlace
-  put_chunk(png, "IHDR", header);
-  put_chunk(png, "sRGB", std::string(1, '\0'));  // perceptual intent, as libpng writes it
-  // The zlib stream: header, the strips, the Adler-32.
-  std::string first = "\x78\x01";  // 32 KiB window, the fastest level (FLEVEL 0)
-  first += deflated.front();
-  if (strips == 1) put_u32(first, static_cast<std::uint32_t>(adler));
-  put_chunk(png, "IDAT", first);
-  for (std::size_t s = 1; s < strips; ++s) {
-    if (s + 1 == strips) put_u32(deflated[s], static_cast<std::uint32_t>(adler));
-    put_chunk(png, "IDAT", deflated[s]);
+  put_chunk(head, "IHDR", header);
+  put_chunk(head, "sRGB", std::string(1, '\0'));  // perceptual intent, as libpng writes it
+  out_(head);
+}
+
+void PngRowWriter::add_rows(const std::uint8_t* rgb, int rows) {
+  const auto row_bytes = static_cast<std::size_t>(kChannels) * static_cast<std::size_t>(width_);
+  if (rows <= 0 || rows_done_ + rows > height_)
+    throw std::runtime_error("PNG: more rows than the image's " + std::to_string(height_));
+  if (rows_done_ % kStripRows != 0)
+    throw std::runtime_error("PNG: rows must come in whole strips of 64 but for the last");
+  const auto count = static_cast<std::size_t>(rows);
+  const std::size_t strips = (count + kStripRows - 1) / kStripRows;
+  // The rows filtered (a type byte each: PNG's uncompressed stream), after the last 32 KiB of
+  // what came before, which primes the first strip's deflate.
+  const std::size_t primer = history_.size();
+  std::vector<std::uint8_t> filtered(primer + count * (row_bytes + 1));
+  std::copy(history_.begin(), history_.end(), filtered.begin());
+  if (above_.empty()) above_.assign(row_bytes, 0);
+  parallel(strips, threads_, [&](std::size_t s) {
+    std::vector<std::uint8_t> trial;
+    const std::size_t y0 = s * kStripRows, y1 = std::min(count, y0 + kStripRows);
+    for (std::size_t y = y0; y < y1; ++y) {
+      filter_row(rgb + y * row_bytes, y > 0 ? rgb + (y - 1) * row_bytes : above_.data(), row_bytes,
+                 &filtered[primer + y * (row_bytes + 1)], trial);
+    }
+  });
+  const bool ends = rows_done_ + rows == height_;
+  std::vector<std::string> deflated(strips);
+  std::vector<uLong> adlers(strips);
+  const auto strip_begin = [&](std::size_t s) { return primer + s * kStripRows * (row_bytes + 1); };
+  const auto strip_end = [&](std::size_t s) {
+    return std::min(filtered.size(), strip_begin(s) + kStripRows * (row_bytes + 1));
+  };
+  parallel(strips, threads_, [&](std::size_t s) {
+    deflated[s] =
+        deflate_strip(filtered.data(), strip_begin(s), strip_end(s), ends && s + 1 == strips);
+    adlers[s] = adler32(adler32(0, nullptr, 0), filtered.data() + strip_begin(s),
+                        static_cast<uInt>(strip_end(s) - strip_begin(s)));
+  });
+  // The zlib stream, a strip an IDAT: its header first, its Adler-32 last.
+  for (std::size_t s = 0; s < strips; ++s) {
+    adler_ =
+        adler32_combine(adler_, adlers[s], static_cast<z_off_t>(strip_end(s) - strip_begin(s)));
+    std::string body = rows_done_ == 0 && s == 0 ? "\x78\x01" : "";  // 32 KiB window, level 0
+    body += deflated[s];
+    if (ends && s + 1 == strips) put_u32(body, static_cast<std::uint32_t>(adler_));
+    std::string chunk;
+    put_chunk(chunk, "IDAT", body);
+    out_(chunk);
   }
-  put_chunk(png, "IEND", {});
+  above_.assign(rgb + (count - 1) * row_bytes, rgb + count * row_bytes);
+  const std::size_t keep = std::min(kWindow, filtered.size());
+  history_.assign(filtered.end() - static_cast<std::ptrdiff_t>(keep), filtered.end());
+  rows_done_ += rows;
+  if (ends) {
+    std::string end;
+    put_chunk(end, "IEND", {});
+    out_(end);
+  }
+}
+
+bool PngRowWriter::finished() const {
+  return rows_done_ == height_;
+}
+
+std::string encode_png_bytes(const std::vector<std::uint8_t>& bytes, int width, int height,
+                             int threads) {
+  if (width <= 0 || height <= 0 ||
+      bytes.size() != static_cast<std::size_t>(kChannels) * static_cast<std::size_t>(width) *
+                          static_cast<std::size_t>(height)) {
+    throw std::runtime_error("PNG: the image has no pixels or a wrong buffer size");
+  }
+  std::string png;
+  PngRowWriter writer(
+      width, height, [&](std::string_view part) { png += part; }, threads);
+  writer.add_rows(bytes.data(), height);
   return png;
 }
 

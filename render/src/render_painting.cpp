@@ -173,10 +173,10 @@ void render_painting_by_bands(const paintcore::Painting& painting, const RenderS
 
 namespace {
 
-// The memory of the file's pixels a render by bands keeps: PNG bytes (and their filtered copy
-// as they are encoded), or OpenEXR's floats and halves.
+// The memory of the file's pixels a render by bands keeps: none for PNG (each band is encoded
+// and written as it comes), OpenEXR's floats and halves.
 std::uint64_t file_bytes_per_cell(const std::filesystem::path& path) {
-  return image_file_type(path) == ImageFileType::png ? 3 + 3 : 12 + 8;
+  return image_file_type(path) == ImageFileType::png ? 0 : 12 + 8;
 }
 
 bool by_bands(const paintcore::Painting& painting, const RenderSettings& settings, int supersample,
@@ -250,22 +250,23 @@ void render_painting_to_file(const paintcore::Painting& painting, const RenderSe
   const int height = painting.canvas().height_cells() * scale;
   const int rows = band_rows(width);
   if (png) {
-    std::vector<std::uint8_t> bytes(3 * static_cast<std::size_t>(width) *
-                                    static_cast<std::size_t>(height));
+    // Each band encoded and written as it comes (the file appears whole or not at all).
+    files::AtomicFile file(path);
+    PngRowWriter writer(width, height, [&](std::string_view part) { file.write(part); });
+    std::vector<std::uint8_t> bytes;
     render_painting_by_bands(
         painting, file_settings, rows,
-        [&](int first_row, const Image& band) {
-          to_png_bytes(band.rgb.data(), band.rgb.size(),
-                       bytes.data() + 3 * static_cast<std::size_t>(first_row) * width);
+        [&](int, const Image& band) {
+          bytes.resize(band.rgb.size());
+          to_png_bytes(band.rgb.data(), band.rgb.size(), bytes.data());
+          try {
+            writer.add_rows(bytes.data(), band.height);
+          } catch (const std::runtime_error& error) {
+            throw std::runtime_error(path.string() + ": cannot write PNG: " + error.what());
+          }
         },
         progress, scale);
-    std::string encoded;
-    try {
-      encoded = encode_png_bytes(bytes, width, height);
-    } catch (const std::exception& error) {
-      throw std::runtime_error(path.string() + ": cannot write PNG: " + error.what());
-    }
-    files::write_file_atomically(path, encoded);
+    file.commit();
   } else {
     Image image;
     image.width = width;

@@ -7,8 +7,10 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <stdexcept>
+#include <string_view>
 
 using namespace impasto;
 
@@ -230,4 +232,39 @@ TEST(RenderPainting, RefinedByBandsIsTheWholeRefinedRenderBitForBit) {
     for (std::size_t i = 0; i < whole.rgb.size(); ++i) differing += whole.rgb[i] != banded.rgb[i];
     EXPECT_EQ(differing, 0u) << "scale " << scale;
   }
+}
+
+// A PNG written a band of rows at a time is encode_png's file, whatever the bands, and reads
+// back as its pixels; rows out of strip order are refused.
+TEST(RenderPainting, APngWrittenByBandsIsTheWholeFile) {
+  const int width = 37, height = 200;  // three whole strips and a part
+  render::Image image{width, height, std::vector<float>(3 * width * height)};
+  for (std::size_t i = 0; i < image.rgb.size(); ++i)
+    image.rgb[i] = static_cast<float>((i * 2654435761u) % 997) / 996.0f;
+  const std::string whole = render::encode_png(image);
+  std::vector<std::uint8_t> bytes(image.rgb.size());
+  render::to_png_bytes(image.rgb.data(), image.rgb.size(), bytes.data());
+  for (const int band : {64, 128, 192}) {
+    std::string png;
+    render::PngRowWriter writer(width, height, [&](std::string_view part) { png += part; });
+    for (int y = 0; y < height; y += band) {
+      EXPECT_FALSE(writer.finished());
+      writer.add_rows(bytes.data() + 3 * static_cast<std::size_t>(y) * width,
+                      std::min(band, height - y));
+    }
+    EXPECT_TRUE(writer.finished());
+    EXPECT_TRUE(png == whole) << "bands of " << band << " rows: the bytes differ";
+  }
+  const auto file = temp_file("bands.png");
+  std::ofstream(file, std::ios::binary) << whole;
+  const render::Image back = render::read_png(file);
+  ASSERT_EQ(back.rgb.size(), bytes.size());
+  for (std::size_t i = 0; i < bytes.size(); ++i)
+    ASSERT_EQ(std::lround(back.rgb[i] * 255.0f), bytes[i]) << i;
+  std::filesystem::remove(file);
+  std::string ignored;
+  render::PngRowWriter writer(width, height, [&](std::string_view part) { ignored += part; });
+  writer.add_rows(bytes.data(), 10);  // not a whole strip, and not the end
+  EXPECT_THROW(writer.add_rows(bytes.data(), 10), std::runtime_error);
+  EXPECT_THROW(writer.add_rows(bytes.data(), height), std::runtime_error);
 }
