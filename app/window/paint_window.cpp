@@ -251,6 +251,8 @@ void PaintWindow::run() {
       state_.commands.push_back(Command::kQuit);
     }
     if (document_->run_pending_action()) painting_replaced();
+    // A time-lapse being written asks before it is stopped (its dialog sets quit again).
+    if (state_.quit && !timelapse_.allow_quit()) state_.quit = false;
     if (state_.quit) break;
     shell_.set_title(window_title(state_.file, worker().stats().events_since_save > 0));
     router_->route();

@@ -91,6 +91,7 @@ void TimelapseExport::draw(WindowState& state, Document& document, int canvas_wi
                            int canvas_height) {
   if (std::exchange(state.timelapse_requested, false)) open(state, canvas_width, canvas_height);
   draw_job(state.notifications);
+  draw_quit_question(state);
   if (!open_) return;
   const std::vector<TimelapseSource> sources = document.timelapse_sources();
   const std::optional<TimelapseChoice> choice = draw_dialog(sources);
@@ -114,6 +115,43 @@ void TimelapseExport::open(const WindowState& state, int canvas_width, int canva
                                ? (painting_file->parent_path() / painting_file->stem()).string()
                                : std::string("painting");
   std::snprintf(stem_.data(), stem_.size(), "%s", (stem + "-timelapse").c_str());
+}
+
+bool TimelapseExport::allow_quit() {
+  if (!job_ || quit_agreed_) return true;
+  ask_quit_ = true;
+  return false;
+}
+
+void TimelapseExport::draw_quit_question(WindowState& state) {
+  if (!ask_quit_) return;
+  if (!job_) {  // it finished while the question was up
+    ask_quit_ = false;
+    state.quit = true;
+    return;
+  }
+  if (!ImGui::IsPopupOpen("Quit while writing a time-lapse?")) {
+    ImGui::OpenPopup("Quit while writing a time-lapse?");
+  }
+  if (!ImGui::BeginPopupModal("Quit while writing a time-lapse?", nullptr,
+                              ImGuiWindowFlags_AlwaysAutoResize))
+    return;
+  ImGui::Text("%s is %d %% written; quitting stops it and leaves no file.",
+              files::terminal_text(job_->out().filename().string()).c_str(),
+              static_cast<int>(100.0 * job_->fraction_done()));
+  if (ImGui::Button("Stop it and quit")) {
+    job_->stop();
+    quit_agreed_ = true;
+    ask_quit_ = false;
+    state.quit = true;
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Keep working") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
+    ask_quit_ = false;
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::EndPopup();
 }
 
 void TimelapseExport::draw_job(Notifications& notes) {

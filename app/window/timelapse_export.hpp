@@ -100,6 +100,10 @@ class TimelapseExport {
   // progress; what a finished job did goes to state.notifications.
   void draw(WindowState& state, Document& document, int canvas_width, int canvas_height);
   bool running() const { return job_ != nullptr; }
+  // The window is about to quit: while a time-lapse is being written, asks first (Stop it and
+  // quit, or keep working) and returns false; true when the window may quit now.
+  bool allow_quit();
+  // The answer, drawn in draw(): sets state.quit when the painter chose to stop and quit.
 
  private:
   void open(const WindowState& state, int canvas_width, int canvas_height);
@@ -107,7 +111,11 @@ class TimelapseExport {
   // The choice in the frame the dialog's Export button is pressed.
   std::optional<TimelapseChoice> draw_dialog(const std::vector<TimelapseSource>& sources);
 
+  void draw_quit_question(WindowState& state);
+
   bool open_ = false;
+  bool ask_quit_ = false;     // the question is up
+  bool quit_agreed_ = false;  // stop and quit was chosen: the next allow_quit lets it through
   TimelapseChoice choice_;
   std::array<char, 512> stem_{};
   std::unique_ptr<TimelapseJob> job_;
