@@ -435,6 +435,28 @@ void TileRenderer::shade_region(const paintcore::Canvas& canvas, int tile_index,
     }
   };
 
+  // The relief's light at a cell, the one shading both paths below give it: its normal from
+  // the heights around it, the shadow and occlusion the relief casts, and Blinn-Phong's diffuse
+  // and specular factors for its gloss (wet paint shines).
+  struct CellLight {
+    shade::Vec3 normal;
+    shade::Visibility visibility;
+    shade::Shading shading;
+  };
+  const auto light_at = [&](int gx, int gy, float wet_volume) {
+    CellLight light;
+    light.normal = shade::height_normal(field.at(gx - 1, gy), field.at(gx + 1, gy),
+                                        field.at(gx, gy - 1), field.at(gx, gy + 1), cell_mm);
+    const shade::Material material =
+        shade::blend(settings_.dry_material, settings_.wet_material, wet_volume * inverse_gloss);
+    if (relief_.shadows)
+      light.visibility.shadow = relief::shadow(field, gx, gy, max_height_, relief_);
+    if (relief_.occlusion) light.visibility.occlusion = relief::occlusion(field, gx, gy, relief_);
+    light.shading =
+        shade::blinn_phong(light.normal, to_light, ambient, material, light.visibility, sky);
+    return light;
+  };
+
   if (fast_kernels() && !surface_ && !cracked_tile) {
     // A row at a time: the colour of every cell through the spectral kernels, then the
     // shading factors (cached, or computed and cached), then both combined.
@@ -504,18 +526,7 @@ void TileRenderer::shade_region(const paintcore::Canvas& canvas, int tile_index,
         const int gy = origin_y + y;
         float* factors = &cache.shading[2 * cell];
         if (!reuse) {
-          const shade::Vec3 normal =
-              shade::height_normal(field.at(gx - 1, gy), field.at(gx + 1, gy), field.at(gx, gy - 1),
-                                   field.at(gx, gy + 1), cell_mm);
-          const shade::Material material = shade::blend(
-              settings_.dry_material, settings_.wet_material, wet_volume * inverse_gloss);
-          shade::Visibility visibility;
-          if (relief_.shadows) {
-            visibility.shadow = relief::shadow(field, gx, gy, max_height_, relief_);
-          }
-          if (relief_.occlusion) visibility.occlusion = relief::occlusion(field, gx, gy, relief_);
-          const shade::Shading shading =
-              shade::blinn_phong(normal, to_light, ambient, material, visibility, sky);
+          const shade::Shading shading = light_at(gx, gy, wet_volume).shading;
           factors[0] = shading.diffuse;
           factors[1] = shading.specular;
           cache.shading_wet[cell] = wet_volume;
@@ -580,28 +591,19 @@ void TileRenderer::shade_region(const paintcore::Canvas& canvas, int tile_index,
       // Shading from the total height around the cell, the light the relief lets through.
       const int gx = origin_x + x;
       const int gy = origin_y + y;
-      const shade::Vec3 normal =
-          shade::height_normal(field.at(gx - 1, gy), field.at(gx + 1, gy), field.at(gx, gy - 1),
-                               field.at(gx, gy + 1), cell_mm);
-      const shade::Material material =
-          shade::blend(settings_.dry_material, settings_.wet_material, wet_volume * inverse_gloss);
-      shade::Visibility visibility;
-      if (relief_.shadows) visibility.shadow = relief::shadow(field, gx, gy, max_height_, relief_);
-      if (relief_.occlusion) visibility.occlusion = relief::occlusion(field, gx, gy, relief_);
-      const shade::Shading shading =
-          shade::blinn_phong(normal, to_light, ambient, material, visibility, sky);
+      const CellLight light = light_at(gx, gy, wet_volume);
       float* out = &cache.rgb[3 * cell];
       if (surface_) {  // the ghs surface model (surface_shading.hpp) in place of Blinn-Phong
-        surface_->shade(normal, to_light, visibility, wet_volume * inverse_gloss,
+        surface_->shade(light.normal, to_light, light.visibility, wet_volume * inverse_gloss,
                         paintcore::cell_surface(tile, c), reflectance, out);
       } else {
         for (int ch = 0; ch < 3; ++ch) {
-          out[ch] =
-              xyz[ch] * shading.diffuse + white[static_cast<std::size_t>(ch)] * shading.specular;
+          out[ch] = xyz[ch] * light.shading.diffuse +
+                    white[static_cast<std::size_t>(ch)] * light.shading.specular;
         }
       }
       if (flakes.active()) {
-        flakes.add_cell(c, gx, gy, normal, field.at(gx, gy), wet_volume, out);
+        flakes.add_cell(c, gx, gy, light.normal, field.at(gx, gy), wet_volume, out);
       }
     }
     display_rows(y);  // XYZ to the display
