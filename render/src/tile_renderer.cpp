@@ -386,6 +386,58 @@ void TileRenderer::bake_dry_stack(const paintcore::Canvas& canvas, int tile_inde
   }
 }
 
+// The light at a cell (light_at).
+struct TileRenderer::CellLight {
+  shade::Vec3 normal;
+  shade::Visibility visibility;
+  shade::Shading shading;
+};
+
+// What shading a region of one tile shares, whichever path shades it.
+struct TileRenderer::RegionShading {
+  const paintcore::Canvas& canvas;
+  int tile_index;
+  const paintcore::Tile* tile;  // nullptr where nothing was ever painted
+  int x0, y0, x1, y1;           // the region, in the tile's cells
+  int origin_x, origin_y;       // the tile's first cell on the canvas
+  relief::HeightField field;
+  int nodes;
+  float inverse_scale, inverse_gloss, cell_mm, ambient, k1, k2;
+  float sky;  // the sky's reflection in the paint's surface (shade::blinn_phong)
+  shade::Vec3 to_light;
+  const std::array<float, 3>& white;
+  bool has_dry;
+};
+
+// The relief's light at a cell, the one shading both paths give it: its normal from the heights
+// around it, the shadow and occlusion the relief casts, and Blinn-Phong's diffuse and specular
+// factors for its gloss (wet paint shines).
+TileRenderer::CellLight TileRenderer::light_at(const RegionShading& r, int gx, int gy,
+                                               float wet_volume) const {
+  CellLight light;
+  light.normal = shade::height_normal(r.field.at(gx - 1, gy), r.field.at(gx + 1, gy),
+                                      r.field.at(gx, gy - 1), r.field.at(gx, gy + 1), r.cell_mm);
+  const shade::Material material =
+      shade::blend(settings_.dry_material, settings_.wet_material, wet_volume * r.inverse_gloss);
+  if (relief_.shadows)
+    light.visibility.shadow = relief::shadow(r.field, gx, gy, max_height_, relief_);
+  if (relief_.occlusion) light.visibility.occlusion = relief::occlusion(r.field, gx, gy, relief_);
+  light.shading =
+      shade::blinn_phong(light.normal, r.to_light, r.ambient, material, light.visibility, r.sky);
+  return light;
+}
+
+// The display transform of the rows done: one call for a whole tile, else one a row.
+void TileRenderer::display_rows(const RegionShading& r, int y, TileCache& cache) const {
+  if (r.x0 == 0 && r.x1 == kTileSize && y == r.y1 - 1) {
+    display_->apply(&cache.rgb[3 * static_cast<std::size_t>(r.y0 * kTileSize)],
+                    static_cast<std::size_t>((r.y1 - r.y0) * kTileSize));
+  } else if (!(r.x0 == 0 && r.x1 == kTileSize)) {
+    display_->apply(&cache.rgb[3 * static_cast<std::size_t>(y * kTileSize + r.x0)],
+                    static_cast<std::size_t>(r.x1 - r.x0));
+  }
+}
+
 void TileRenderer::shade_region(const paintcore::Canvas& canvas, int tile_index, int x0, int y0,
                                 int x1, int y1, TileCache& cache, bool may_reuse_shading) const {
   const paintcore::Tile* tile = canvas.tile(tile_index);
@@ -395,173 +447,154 @@ void TileRenderer::shade_region(const paintcore::Canvas& canvas, int tile_index,
                              " pigment slots but the palette has " +
                              std::to_string(palette_.pigment_count()) + " pigments");
   }
-  const int origin_x = (tile_index % tiles_x_) * kTileSize;
-  const int origin_y = (tile_index / tiles_x_) * kTileSize;
-
-  const relief::HeightField field{heights_.data(), width_, height_};
-
   if (cache.rgb.empty()) cache.rgb.assign(3 * static_cast<std::size_t>(kTileCells), 0.0f);
-  const int nodes = palette_.nodes();
-  const auto inverse_scale = static_cast<float>(1.0 / settings_.thickness_scale_mm);
-  const auto inverse_gloss = static_cast<float>(1.0 / settings_.wet_gloss_mm);
-  const auto cell_mm = static_cast<float>(cell_mm_);
-  const auto ambient = static_cast<float>(settings_.ambient);
-  const auto k1 = static_cast<float>(settings_.saunderson_k1);
-  const auto k2 = static_cast<float>(settings_.saunderson_k2);
-  // The sky's reflection in the paint's surface (shade::blinn_phong): k1 with the surface on.
-  const float sky = settings_.saunderson ? k1 : 0.0f;
-  const shade::Vec3 to_light =
+  const RegionShading region{
+      canvas,
+      tile_index,
+      tile,
+      x0,
+      y0,
+      x1,
+      y1,
+      (tile_index % tiles_x_) * kTileSize,
+      (tile_index / tiles_x_) * kTileSize,
+      relief::HeightField{heights_.data(), width_, height_},
+      palette_.nodes(),
+      static_cast<float>(1.0 / settings_.thickness_scale_mm),
+      static_cast<float>(1.0 / settings_.wet_gloss_mm),
+      static_cast<float>(cell_mm_),
+      static_cast<float>(settings_.ambient),
+      static_cast<float>(settings_.saunderson_k1),
+      static_cast<float>(settings_.saunderson_k2),
+      settings_.saunderson ? static_cast<float>(settings_.saunderson_k1) : 0.0f,
       shade::light_direction(static_cast<float>(settings_.light_azimuth_deg * kDegreesToRadians),
-                             static_cast<float>(settings_.light_elevation_deg * kDegreesToRadians));
-  const std::array<float, 3>& white = palette_.white_xyz();
-  const bool has_dry = !cache.dry_f32.empty() || !cache.dry_f16.empty();
-
-  std::array<PigmentShare, paintcore::kMaxPigmentSlots> shares{};
-  std::vector<float> node_values(static_cast<std::size_t>(nodes));
-  float* reflectance = node_values.data();
+                             static_cast<float>(settings_.light_elevation_deg * kDegreesToRadians)),
+      palette_.white_xyz(),
+      !cache.dry_f32.empty() || !cache.dry_f16.empty()};
   // Flake sparkles: inactive (no per-cell work) where the tile holds no flake pigment.
   FlakeTileView flakes = flakes_ ? flakes_->tile(canvas, tile_index) : FlakeTileView{};
-  // Cracks: inactive (no per-cell work) where the tile has no crack. Made only for a tile
-  // with cracks: it looks up the light's cavity tables under a lock.
+  // Cracks: inactive (no per-cell work) where the tile has no crack.
   const bool cracked_tile = settings_.cracks && canvas.cracks().tile(tile_index) != nullptr;
-  // The display transform of the rows done: one call for a whole tile, else one a row.
-  const auto display_rows = [&](int y) {
-    if (x0 == 0 && x1 == kTileSize && y == y1 - 1) {
-      display_->apply(&cache.rgb[3 * static_cast<std::size_t>(y0 * kTileSize)],
-                      static_cast<std::size_t>((y1 - y0) * kTileSize));
-    } else if (!(x0 == 0 && x1 == kTileSize)) {
-      display_->apply(&cache.rgb[3 * static_cast<std::size_t>(y * kTileSize + x0)],
-                      static_cast<std::size_t>(x1 - x0));
-    }
-  };
-
-  // The relief's light at a cell, the one shading both paths below give it: its normal from
-  // the heights around it, the shadow and occlusion the relief casts, and Blinn-Phong's diffuse
-  // and specular factors for its gloss (wet paint shines).
-  struct CellLight {
-    shade::Vec3 normal;
-    shade::Visibility visibility;
-    shade::Shading shading;
-  };
-  const auto light_at = [&](int gx, int gy, float wet_volume) {
-    CellLight light;
-    light.normal = shade::height_normal(field.at(gx - 1, gy), field.at(gx + 1, gy),
-                                        field.at(gx, gy - 1), field.at(gx, gy + 1), cell_mm);
-    const shade::Material material =
-        shade::blend(settings_.dry_material, settings_.wet_material, wet_volume * inverse_gloss);
-    if (relief_.shadows)
-      light.visibility.shadow = relief::shadow(field, gx, gy, max_height_, relief_);
-    if (relief_.occlusion) light.visibility.occlusion = relief::occlusion(field, gx, gy, relief_);
-    light.shading =
-        shade::blinn_phong(light.normal, to_light, ambient, material, light.visibility, sky);
-    return light;
-  };
-
   if (fast_kernels() && !surface_ && !cracked_tile) {
-    // A row at a time: the colour of every cell through the spectral kernels, then the
-    // shading factors (cached, or computed and cached), then both combined.
-    const auto padded = static_cast<std::size_t>(lanes_->padded);
-    const int columns = x1 - x0;
-    std::vector<float> row_reflectance(static_cast<std::size_t>(kTileSize) * padded, 0.0f);
-    std::array<float, 3 * kTileSize> row_xyz{};
-    std::array<int, paintcore::kMaxPigmentSlots> slots{};
-    for (int k = 0; k < paintcore::kMaxPigmentSlots; ++k) slots[static_cast<std::size_t>(k)] = k;
-    if (cache.shading.empty()) {
-      cache.shading.assign(2 * static_cast<std::size_t>(kTileCells), 0.0f);
-      cache.shading_wet.assign(static_cast<std::size_t>(kTileCells), 0.0f);
-    }
-    // The cached factors hold for this light and these heights (may_reuse_shading) if the
-    // wet paint, which sets the gloss, is the same too.
-    const bool reuse =
-        may_reuse_shading && cache.shading_valid &&
-        (tile != nullptr
-             ? std::equal(tile->wet_volume_mm.begin(), tile->wet_volume_mm.end(),
-                          cache.shading_wet.begin(),
-                          [](float a, float b) {
-                            return std::bit_cast<std::uint32_t>(a) ==
-                                   std::bit_cast<std::uint32_t>(b);
-                          })
-             : std::all_of(cache.shading_wet.begin(), cache.shading_wet.end(),
-                           [](float w) { return std::bit_cast<std::uint32_t>(w) == 0; }));
-    // Bare canvas (no paint, no dry layer): one colour for the whole tile.
-    const bool bare = tile == nullptr && !has_dry;
-    if (bare) {
-      std::copy_n(lanes_->ground.data(), padded, row_reflectance.data());
-      kernels::cells_to_xyz(*lanes_, row_reflectance.data(), 1, row_xyz.data());
-      for (int x = 1; x < columns; ++x)
-        std::copy_n(row_xyz.data(), 3, &row_xyz[3 * static_cast<std::size_t>(x)]);
-    }
-    for (int y = y0; y < y1; ++y) {
-      const int first = y * kTileSize + x0;
-      for (int x = 0; x < columns && !bare; ++x) {
-        float* r = &row_reflectance[static_cast<std::size_t>(x) * padded];
-        const std::size_t base =
-            static_cast<std::size_t>(first + x) * static_cast<std::size_t>(nodes);
-        if (!has_dry) {
-          std::copy_n(lanes_->ground.data(), padded, r);
-        } else if (cache.dry_f32.empty()) {
-          for (int i = 0; i < nodes; ++i) {
-            r[i] = static_cast<float>(cache.dry_f16[base + static_cast<std::size_t>(i)]);
-          }
-        } else {
-          std::copy_n(&cache.dry_f32[base], nodes, r);
-        }
-      }
-      if (tile != nullptr) {
-        std::array<const float*, paintcore::kMaxPigmentSlots> amounts{};
-        for (int k = 0; k < tile->slot_count(); ++k) {
-          amounts[static_cast<std::size_t>(k)] = tile->pigment(k) + first;
-        }
-        kernels::composite_layer_cells(*lanes_,
-                                       {&tile->wet_volume_mm[static_cast<std::size_t>(first)],
-                                        tile->slot_count(), slots.data(), amounts.data()},
-                                       columns, inverse_scale, row_reflectance.data());
-      }
-      if (!bare) kernels::cells_to_xyz(*lanes_, row_reflectance.data(), columns, row_xyz.data());
-      for (int x = x0; x < x1; ++x) {
-        const int c = y * kTileSize + x;
-        const auto cell = static_cast<std::size_t>(c);
-        const float wet_volume = tile != nullptr ? tile->wet_volume_mm[cell] : 0.0f;
-        const int gx = origin_x + x;
-        const int gy = origin_y + y;
-        float* factors = &cache.shading[2 * cell];
-        if (!reuse) {
-          const shade::Shading shading = light_at(gx, gy, wet_volume).shading;
-          factors[0] = shading.diffuse;
-          factors[1] = shading.specular;
-          cache.shading_wet[cell] = wet_volume;
-        }
-        const float* xyz = &row_xyz[3 * static_cast<std::size_t>(x - x0)];
-        float* out = &cache.rgb[3 * cell];
-        for (int ch = 0; ch < 3; ++ch) {
-          out[ch] = xyz[ch] * factors[0] + white[static_cast<std::size_t>(ch)] * factors[1];
-        }
-        if (flakes.active()) {
-          const shade::Vec3 normal =
-              shade::height_normal(field.at(gx - 1, gy), field.at(gx + 1, gy), field.at(gx, gy - 1),
-                                   field.at(gx, gy + 1), cell_mm);
-          flakes.add_cell(c, gx, gy, normal, field.at(gx, gy), wet_volume, out);
-        }
-      }
-      display_rows(y);
-    }
-    // Cells shaded in place keep the cache whole; a tile's first shading is a whole tile.
-    if (x0 == 0 && y0 == 0 && x1 == kTileSize && y1 == kTileSize) cache.shading_valid = true;
-    cache.flake_cells += flakes.cells_evaluated();
-    return;
+    shade_with_kernels(region, cache, flakes, may_reuse_shading);
+  } else {
+    shade_cell_by_cell(region, cache, flakes);
   }
+  cache.flake_cells += flakes.cells_evaluated();
+}
 
-  cache.shading_valid = false;  // the reference path below keeps no shading factors
-  CrackTileShading cracks(canvas, tile_index, settings_, palette_.ground(), nodes);
-  for (int y = y0; y < y1; ++y) {
-    for (int x = x0; x < x1; ++x) {
+// A row at a time: the colour of every cell through the spectral kernels, then the shading
+// factors (cached, or computed and cached), then both combined.
+void TileRenderer::shade_with_kernels(const RegionShading& r, TileCache& cache,
+                                      FlakeTileView& flakes, bool may_reuse_shading) const {
+  const paintcore::Tile* tile = r.tile;
+  const auto padded = static_cast<std::size_t>(lanes_->padded);
+  const int columns = r.x1 - r.x0;
+  std::vector<float> row_reflectance(static_cast<std::size_t>(kTileSize) * padded, 0.0f);
+  std::array<float, 3 * kTileSize> row_xyz{};
+  std::array<int, paintcore::kMaxPigmentSlots> slots{};
+  for (int k = 0; k < paintcore::kMaxPigmentSlots; ++k) slots[static_cast<std::size_t>(k)] = k;
+  if (cache.shading.empty()) {
+    cache.shading.assign(2 * static_cast<std::size_t>(kTileCells), 0.0f);
+    cache.shading_wet.assign(static_cast<std::size_t>(kTileCells), 0.0f);
+  }
+  // The cached factors hold for this light and these heights (may_reuse_shading) if the
+  // wet paint, which sets the gloss, is the same too.
+  const bool reuse =
+      may_reuse_shading && cache.shading_valid &&
+      (tile != nullptr
+           ? std::equal(tile->wet_volume_mm.begin(), tile->wet_volume_mm.end(),
+                        cache.shading_wet.begin(),
+                        [](float a, float b) {
+                          return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b);
+                        })
+           : std::all_of(cache.shading_wet.begin(), cache.shading_wet.end(),
+                         [](float w) { return std::bit_cast<std::uint32_t>(w) == 0; }));
+  // Bare canvas (no paint, no dry layer): one colour for the whole tile.
+  const bool bare = tile == nullptr && !r.has_dry;
+  if (bare) {
+    std::copy_n(lanes_->ground.data(), padded, row_reflectance.data());
+    kernels::cells_to_xyz(*lanes_, row_reflectance.data(), 1, row_xyz.data());
+    for (int x = 1; x < columns; ++x)
+      std::copy_n(row_xyz.data(), 3, &row_xyz[3 * static_cast<std::size_t>(x)]);
+  }
+  for (int y = r.y0; y < r.y1; ++y) {
+    const int first = y * kTileSize + r.x0;
+    for (int x = 0; x < columns && !bare; ++x) {
+      float* reflectance = &row_reflectance[static_cast<std::size_t>(x) * padded];
+      const std::size_t base =
+          static_cast<std::size_t>(first + x) * static_cast<std::size_t>(r.nodes);
+      if (!r.has_dry) {
+        std::copy_n(lanes_->ground.data(), padded, reflectance);
+      } else if (cache.dry_f32.empty()) {
+        for (int i = 0; i < r.nodes; ++i) {
+          reflectance[i] = static_cast<float>(cache.dry_f16[base + static_cast<std::size_t>(i)]);
+        }
+      } else {
+        std::copy_n(&cache.dry_f32[base], r.nodes, reflectance);
+      }
+    }
+    if (tile != nullptr) {
+      std::array<const float*, paintcore::kMaxPigmentSlots> amounts{};
+      for (int k = 0; k < tile->slot_count(); ++k) {
+        amounts[static_cast<std::size_t>(k)] = tile->pigment(k) + first;
+      }
+      kernels::composite_layer_cells(*lanes_,
+                                     {&tile->wet_volume_mm[static_cast<std::size_t>(first)],
+                                      tile->slot_count(), slots.data(), amounts.data()},
+                                     columns, r.inverse_scale, row_reflectance.data());
+    }
+    if (!bare) kernels::cells_to_xyz(*lanes_, row_reflectance.data(), columns, row_xyz.data());
+    for (int x = r.x0; x < r.x1; ++x) {
+      const int c = y * kTileSize + x;
+      const auto cell = static_cast<std::size_t>(c);
+      const float wet_volume = tile != nullptr ? tile->wet_volume_mm[cell] : 0.0f;
+      const int gx = r.origin_x + x;
+      const int gy = r.origin_y + y;
+      float* factors = &cache.shading[2 * cell];
+      if (!reuse) {
+        const shade::Shading shading = light_at(r, gx, gy, wet_volume).shading;
+        factors[0] = shading.diffuse;
+        factors[1] = shading.specular;
+        cache.shading_wet[cell] = wet_volume;
+      }
+      const float* xyz = &row_xyz[3 * static_cast<std::size_t>(x - r.x0)];
+      float* out = &cache.rgb[3 * cell];
+      for (int ch = 0; ch < 3; ++ch) {
+        out[ch] = xyz[ch] * factors[0] + r.white[static_cast<std::size_t>(ch)] * factors[1];
+      }
+      if (flakes.active()) {
+        const shade::Vec3 normal =
+            shade::height_normal(r.field.at(gx - 1, gy), r.field.at(gx + 1, gy),
+                                 r.field.at(gx, gy - 1), r.field.at(gx, gy + 1), r.cell_mm);
+        flakes.add_cell(c, gx, gy, normal, r.field.at(gx, gy), wet_volume, out);
+      }
+    }
+    display_rows(r, y, cache);
+  }
+  // Cells shaded in place keep the cache whole; a tile's first shading is a whole tile.
+  if (r.x0 == 0 && r.y0 == 0 && r.x1 == kTileSize && r.y1 == kTileSize) cache.shading_valid = true;
+}
+
+// A cell at a time, one wavelength node at a time (kubelka_munk_cell.hpp): the reference the
+// kernels are tested against, and the path of cracks and the ghs surface model.
+void TileRenderer::shade_cell_by_cell(const RegionShading& r, TileCache& cache,
+                                      FlakeTileView& flakes) const {
+  const paintcore::Tile* tile = r.tile;
+  cache.shading_valid = false;  // this path keeps no shading factors
+  CrackTileShading cracks(r.canvas, r.tile_index, settings_, palette_.ground(), r.nodes);
+  std::array<PigmentShare, paintcore::kMaxPigmentSlots> shares{};
+  std::vector<float> node_values(static_cast<std::size_t>(r.nodes));
+  float* reflectance = node_values.data();
+  for (int y = r.y0; y < r.y1; ++y) {
+    for (int x = r.x0; x < r.x1; ++x) {
       const int c = y * kTileSize + x;
       const auto cell = static_cast<std::size_t>(c);
       // The dry stack over the ground, baked for this light.
-      const std::size_t base = cell * static_cast<std::size_t>(nodes);
-      for (int i = 0; i < nodes; ++i) {
+      const std::size_t base = cell * static_cast<std::size_t>(r.nodes);
+      for (int i = 0; i < r.nodes; ++i) {
         const auto k = base + static_cast<std::size_t>(i);
-        reflectance[i] = !has_dry                ? palette_.ground()[i]
+        reflectance[i] = !r.has_dry              ? palette_.ground()[i]
                          : cache.dry_f32.empty() ? static_cast<float>(cache.dry_f16[k])
                                                  : cache.dry_f32[k];
       }
@@ -578,37 +611,37 @@ void TileRenderer::shade_region(const paintcore::Canvas& canvas, int tile_index,
               },
               shares);
           composite_paint_layer(palette_, std::span(shares.data(), static_cast<std::size_t>(count)),
-                                wet_volume * inverse_scale, reflectance);
+                                wet_volume * r.inverse_scale, reflectance);
         }
       }
       if (cracked) cracks.blend(reflectance);
       if (settings_.saunderson) {
-        for (int i = 0; i < nodes; ++i) reflectance[i] = km::saunderson(reflectance[i], k1, k2);
+        for (int i = 0; i < r.nodes; ++i)
+          reflectance[i] = km::saunderson(reflectance[i], r.k1, r.k2);
       }
       float xyz[3];
       node_reflectance_to_xyz(palette_, reflectance, xyz);
 
       // Shading from the total height around the cell, the light the relief lets through.
-      const int gx = origin_x + x;
-      const int gy = origin_y + y;
-      const CellLight light = light_at(gx, gy, wet_volume);
+      const int gx = r.origin_x + x;
+      const int gy = r.origin_y + y;
+      const CellLight light = light_at(r, gx, gy, wet_volume);
       float* out = &cache.rgb[3 * cell];
       if (surface_) {  // the ghs surface model (surface_shading.hpp) in place of Blinn-Phong
-        surface_->shade(light.normal, to_light, light.visibility, wet_volume * inverse_gloss,
+        surface_->shade(light.normal, r.to_light, light.visibility, wet_volume * r.inverse_gloss,
                         paintcore::cell_surface(tile, c), reflectance, out);
       } else {
         for (int ch = 0; ch < 3; ++ch) {
           out[ch] = xyz[ch] * light.shading.diffuse +
-                    white[static_cast<std::size_t>(ch)] * light.shading.specular;
+                    r.white[static_cast<std::size_t>(ch)] * light.shading.specular;
         }
       }
       if (flakes.active()) {
-        flakes.add_cell(c, gx, gy, light.normal, field.at(gx, gy), wet_volume, out);
+        flakes.add_cell(c, gx, gy, light.normal, r.field.at(gx, gy), wet_volume, out);
       }
     }
-    display_rows(y);  // XYZ to the display
+    display_rows(r, y, cache);  // XYZ to the display
   }
-  cache.flake_cells += flakes.cells_evaluated();
 }
 
 Image TileRenderer::image() const {

@@ -20,6 +20,7 @@
 namespace impasto::render {
 
 class FlakeShading;
+class FlakeTileView;
 namespace kernels {
 struct PaddedPalette;
 }
@@ -84,6 +85,16 @@ class TileRenderer {
   // shading factors were computed with (a relight).
   void shade_region(const paintcore::Canvas& canvas, int tile_index, int x0, int y0, int x1, int y1,
                     TileCache& cache, bool may_reuse_shading) const;
+  // The two ways shade_region shades: the spectral kernels a row at a time with cached shading
+  // factors, or a cell at a time (the reference, cracks, the ghs surface model).
+  struct RegionShading;
+  struct CellLight;
+  void shade_with_kernels(const RegionShading& region, TileCache& cache, FlakeTileView& flakes,
+                          bool may_reuse_shading) const;
+  void shade_cell_by_cell(const RegionShading& region, TileCache& cache,
+                          FlakeTileView& flakes) const;
+  CellLight light_at(const RegionShading& region, int gx, int gy, float wet_volume) const;
+  void display_rows(const RegionShading& region, int y, TileCache& cache) const;
   // Returns whether any height of the tile changed.
   bool store_heights(const paintcore::Canvas& canvas, int tile_index);
   // Everything besides the heights and wet paint that the shading factors depend on.
