@@ -11,6 +11,8 @@
 // (every key of kPresetKeys, once each). The shipped set is data/presets/ (files::data_dir());
 // the user's own go to $XDG_CONFIG_HOME/impasto/presets (~/.config/impasto/presets), where a
 // preset of the same name replaces a shipped one. docs/window.md, "Brush presets".
+#include <impasto/paintcore/brush.hpp>
+
 #include <filesystem>
 #include <span>
 #include <string>
@@ -19,8 +21,11 @@
 
 namespace impasto::app::window {
 
-// The ranges the panels offer, and the brush size keys' step ([ and ]).
-inline constexpr double kBrushSizeMinMm = 0.5, kBrushSizeMaxMm = 60.0;
+// The ranges the panels offer, and the brush size keys' step ([ and ]). The size goes up to the
+// engine's most (less on a fine canvas: paintcore::max_brush_size_mm) from a tenth of a
+// millimetre, the finest a hand sets in the window (a stroke file may go finer).
+inline constexpr double kBrushSizeMinMm = 0.1;
+inline constexpr double kBrushSizeMaxMm = paintcore::kMaxBrushSizeMm;
 inline constexpr double kBrushSizeStep = 1.25;  // six steps double the size, near enough
 inline constexpr double kLoadMinMm3 = 1.0, kLoadMaxMm3 = 400.0;
 

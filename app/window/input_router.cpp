@@ -220,7 +220,8 @@ void InputRouter::run_commands() {
         set_brush(command, [&] {
           const double factor =
               command == Command::kBrushLarger ? kBrushSizeStep : 1.0 / kBrushSizeStep;
-          brush.size_mm = std::clamp(brush.size_mm * factor, kBrushSizeMinMm, kBrushSizeMaxMm);
+          brush.size_mm = std::clamp(brush.size_mm * factor, kBrushSizeMinMm,
+                                     paintcore::max_brush_size_mm(viewer_.cell_mm()));
         });
         break;
       case Command::kFitCanvas:

@@ -468,10 +468,13 @@ void brush_panel(PanelContext& c) {
     }
     ImGui::EndCombo();
   }
+  // The engine's range, up to the widest this canvas's cells hold (typed with Ctrl+click too).
+  const double widest =
+      c.painting.dpi > 0.0 ? paintcore::max_brush_size_mm(25.4 / c.painting.dpi) : kBrushSizeMaxMm;
   float size = static_cast<float>(s.brush.size_mm);
   if (ImGui::SliderFloat("size (mm)", &size, static_cast<float>(kBrushSizeMinMm),
-                         static_cast<float>(kBrushSizeMaxMm), "%.1f",
-                         ImGuiSliderFlags_Logarithmic)) {
+                         static_cast<float>(widest), "%.1f",
+                         ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp)) {
     s.brush.size_mm = size;
   }
   changed = changed || ImGui::IsItemDeactivatedAfterEdit();

@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <limits>
 
+#include <impasto/paintcore/brush.hpp>
 #include <impasto/paintcore/brush_head.hpp>
 #include <impasto/paintcore/paint_body.hpp>
 #include <impasto/paintcore/paint_surface.hpp>
@@ -100,7 +101,8 @@ BrushEvent parse_brush(const Fields& f, const LineContext& where) {
     };
     if (seen()) where.fail(key, "given twice");
     if (key == "size") {
-      if (!(value > 0.0)) where.fail(key, "must be positive (mm)");
+      if (!(value > 0.0 && value <= paintcore::kMaxBrushSizeMm))
+        where.fail(key, "must be in (0, 1000] mm");
       brush.size_mm = value;
       has_size = true;
     } else if (key == "stiffness") {

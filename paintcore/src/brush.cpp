@@ -7,7 +7,7 @@
 namespace impasto::paintcore {
 
 void validate(const BrushSettings& settings) {
-  if (!std::isfinite(settings.size_mm) || settings.size_mm <= 0.0 || settings.size_mm > 1000.0)
+  if (!(settings.size_mm > 0.0 && settings.size_mm <= kMaxBrushSizeMm))
     throw std::runtime_error("brush settings: field 'size_mm' must be in (0, 1000] mm, got " +
                              std::to_string(settings.size_mm));
   if (!std::isfinite(settings.stiffness) || settings.stiffness < 0.0 || settings.stiffness > 1.0)

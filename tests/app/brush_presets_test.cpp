@@ -74,8 +74,8 @@ TEST(BrushPresetFile, BadInputNamesTheFileTheLineAndWhatWasExpected) {
     std::string replacement, expected;
   };
   const std::vector<Case> cases{
-      {4, "size_mm = big", "my.preset:4: size_mm: 'big' is not a size from 0.5 to 60 mm"},
-      {4, "size_mm = 0.1", "my.preset:4: size_mm"},
+      {4, "size_mm = big", "my.preset:4: size_mm: 'big' is not a size from 0.1 to 1000 mm"},
+      {4, "size_mm = 0.05", "my.preset:4: size_mm"},
       {4, "size_mm = 1e999", "my.preset:4: size_mm"},
       {4, "size_mm = nan", "my.preset:4: size_mm"},
       {4, "size_mm = 10 mm", "my.preset:4: size_mm"},
@@ -121,7 +121,7 @@ TEST(BrushPresetFile, WhatIsWrittenReadsBackTheSame) {
   read.file.clear();
   EXPECT_EQ(read, p);
   // A preset that could not be read back is not written.
-  p.size_mm = 1000.0;
+  p.size_mm = 1001.0;  // over paintcore::kMaxBrushSizeMm
   EXPECT_THROW(write_brush_preset(p, dir / "user" / "bad.preset"), std::runtime_error);
   EXPECT_FALSE(fs::exists(dir / "user" / "bad.preset"));
   fs::remove_all(dir);

@@ -126,6 +126,24 @@ TEST(Brush, RasterisesTheHeadAtTheCellSize) {
   EXPECT_GT(soft.max_depth_mm(), brush.max_depth_mm());
 }
 
+// The window offers sizes up to max_brush_size_mm of the canvas's cells: the widest a canvas
+// holds is accepted, a hair more is refused naming the cells, and the most any canvas takes is
+// kMaxBrushSizeMm (a coarse canvas's cells would hold more).
+TEST(Brush, TheWidestSizeOfferedForACanvasIsAccepted) {
+  const BrushHead round = load_named_brush_head("round", kBrushes);
+  for (const double cell_mm : {25.4 / 1200.0, 25.4 / 300.0, 25.4 / 150.0}) {
+    const double widest = max_brush_size_mm(cell_mm);
+    ASSERT_LT(widest, kMaxBrushSizeMm);
+    EXPECT_EQ(Brush(round, BrushSettings{"round", widest, 0.5}, cell_mm, 0).cells_across(),
+              kMaxBrushCells);
+    EXPECT_THROW(Brush(round, BrushSettings{"round", widest + cell_mm, 0.5}, cell_mm, 0),
+                 std::runtime_error);
+  }
+  EXPECT_EQ(max_brush_size_mm(25.4), kMaxBrushSizeMm);  // 1 dpi
+  EXPECT_NO_THROW(validate(BrushSettings{"round", kMaxBrushSizeMm, 0.5}));
+  EXPECT_THROW(validate(BrushSettings{"round", 1.001 * kMaxBrushSizeMm, 0.5}), std::runtime_error);
+}
+
 TEST(Brush, CellColumnsBelongToTheBristleAtTheirCentre) {
   // An 8 mm round at 0.1 mm cells: its 0.45 mm columns of bristles, one centred on the head's
   // middle, span 4 or 5 cell columns each, in order across the head; a knife is one plate.

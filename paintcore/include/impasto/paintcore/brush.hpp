@@ -14,6 +14,15 @@ namespace impasto::paintcore {
 
 inline constexpr int kMaxBrushCells = 1024;  // cells across the brush grid
 
+// A brush's width: (0, kMaxBrushSizeMm] wherever a size is taken (stroke files, paintings, the
+// window's controls and presets), and no wider than a canvas's cells hold (kMaxBrushCells
+// across; Brush refuses more, naming the cells).
+inline constexpr double kMaxBrushSizeMm = 1000.0;
+inline double max_brush_size_mm(double cell_mm) {
+  const double by_cells = (kMaxBrushCells + 0.49) * cell_mm;  // rounds to kMaxBrushCells
+  return by_cells < kMaxBrushSizeMm ? by_cells : kMaxBrushSizeMm;
+}
+
 struct BrushSettings {
   std::string head = "round";  // head file name in the brushes folder (without .brush)
   double size_mm = 4.0;        // width of the head
