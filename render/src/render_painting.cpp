@@ -104,6 +104,9 @@ void render_painting_by_bands(const paintcore::Painting& painting, const RenderS
   if (scale < 1 || scale > 16)
     throw std::runtime_error("render by bands: field 'scale' must be in 1..16, got " +
                              std::to_string(scale));
+  if (rows < 1)
+    throw std::runtime_error("render by bands: field 'rows' must be at least 1, got " +
+                             std::to_string(rows));
   const paintcore::Canvas& canvas = painting.canvas();
   // The canvas rendered: the painting's, or `scale` times finer (Painting::refined).
   const int width = canvas.width_cells() * scale, height = canvas.height_cells() * scale;
@@ -206,10 +209,12 @@ void check_render_to_file_memory(const paintcore::Painting& painting,
                      static_cast<std::uint64_t>(canvas.height_cells()) *
                      static_cast<std::uint64_t>(scale) * static_cast<std::uint64_t>(scale);
   if (by_bands(painting, settings, supersample, scale)) {
+    // A band's render state and the image it becomes; refined, the band's finer painting too.
+    const std::uint64_t band_bytes = (scale > 1 ? 4 : 2) * kBandRenderBytes;
     files::check_allocation(
         where,
         "rendering " + canvas_words(canvas, scale) + " by bands into " + path.filename().string(),
-        2 * kBandRenderBytes + file_bytes_per_cell(path) * cells);
+        band_bytes + file_bytes_per_cell(path) * cells);
     return;
   }
   // The whole canvas at once (the finer one, each of whose tiles the render shades), and its

@@ -194,6 +194,9 @@ TEST(RenderPainting, ByBandsIsTheWholeRenderBitForBit) {
 TEST(RenderPainting, APointLightIsNotRenderedByBands) {
   const paintcore::Painting painting = banded_painting();
   render::RenderSettings settings;
+  EXPECT_THROW(render::render_painting_by_bands(painting, settings, 0, [](int, const auto&) {}),
+               std::runtime_error)
+      << "bands of no rows";
   settings.light_type = render::LightType::point;
   EXPECT_FALSE(render::renders_by_bands(painting, settings));
   settings.light_type = render::LightType::spot;

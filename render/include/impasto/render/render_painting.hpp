@@ -48,7 +48,7 @@ int band_rows(int width_cells);
 // The painting rendered `rows` rows at a time (render_painting's image, bit for bit, where
 // renders_by_bands says so): `band` hears of each band in order, top first, with the canvas row
 // it starts at. Memory in proportion to a band, not the canvas. progress hears of each band's
-// tiles (margins included).
+// tiles (margins included). Throws std::runtime_error for rows under 1 or a scale outside 1..16.
 // With `scale` above 1, the painting refined that many times (Painting::refined, as export
 // --scale renders it), each band refined from the coarse rows it reads: `rows` are the finer
 // canvas's, and no band holds more of the finer canvas than its rows and margins.
