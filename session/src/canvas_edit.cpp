@@ -147,17 +147,21 @@ ExportReport export_painting(const paintcore::Painting& painting, const ExportRe
         throw std::runtime_error(std::string("export: ") + outputs[i].first + " and " +
                                  outputs[j].first + " name the same file, " + a.string());
     }
+  const bool relief_outputs =
+      !request.height_map.empty() || !request.normal_map.empty() || !request.solids.empty();
+  // The maps and solids need the whole finer painting: refined once, the image rendered from it
+  // too. The image alone is refined a band at a time where it can be (render_painting_to_file).
+  std::optional<paintcore::Painting> refined;
+  if (request.scale != 1 && relief_outputs) refined.emplace(painting.refined(request.scale));
+  const paintcore::Painting& source = refined ? *refined : painting;
+  const int image_scale = refined ? 1 : request.scale;
   if (!request.image.empty()) {
-    // Refined a band at a time where it can be (render_painting_to_file).
-    render::check_render_to_file_memory(painting, request.settings, request.image,
-                                        request.supersample, request.image.string(), request.scale);
-    render::render_painting_to_file(painting, request.settings, request.image, {},
-                                    request.supersample, request.scale);
+    render::check_render_to_file_memory(source, request.settings, request.image,
+                                        request.supersample, request.image.string(), image_scale);
+    render::render_painting_to_file(source, request.settings, request.image, {},
+                                    request.supersample, image_scale);
   }
-  if (!request.height_map.empty() || !request.normal_map.empty() || !request.solids.empty()) {
-    std::optional<paintcore::Painting> refined;
-    if (request.scale != 1) refined.emplace(painting.refined(request.scale));
-    const paintcore::Painting& source = refined ? *refined : painting;
+  if (relief_outputs) {
     const render::HeightGrid heights = render::surface_heights(source.canvas());
     if (!request.height_map.empty()) render::write_height_map(request.height_map, heights);
     if (!request.normal_map.empty()) render::write_normal_map(request.normal_map, heights);
