@@ -136,10 +136,12 @@ void run_swatch(const EditArgs& a) {
   if (a.tint.empty()) {
     colours = render::standard_swatches(pigment, white_of(db), light);
   } else {
-    colours.push_back(render::describe_colour("tint " + a.tint,
-                                              render::seen_through_surface(render::tint_reflectance(
-                                                  pigment, white_of(db), tint_parts(a.tint))),
-                                              light));
+    const render::SpectralSampling sampling = render::swatch_sampling(light);
+    colours.push_back(
+        render::describe_colour("tint " + a.tint,
+                                render::seen_through_surface(render::tint_reflectance(
+                                    pigment, white_of(db), tint_parts(a.tint), sampling)),
+                                sampling));
   }
   if (a.json) {
     nlohmann::json rows = nlohmann::json::array();

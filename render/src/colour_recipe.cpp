@@ -74,7 +74,7 @@ data::Lab srgb_to_lab(const std::array<double, 3>& encoded) {
 }
 
 RecipeFinder::RecipeFinder(std::span<const data::Pigment> palette, const data::Spectrum& light)
-    : palette_(palette), light_(light) {
+    : palette_(palette), reference_(swatch_sampling(light)) {
   const std::vector<double> grid = search_grid();
   for (const data::Pigment& pigment : palette) {
     std::vector<double> k, s;
@@ -188,19 +188,15 @@ Recipe RecipeFinder::evaluate(std::vector<RecipePart> parts, const data::Lab& ta
   for (RecipePart& part : parts) part.share = total > 0.0 ? part.share / total : 0.0;
   std::sort(parts.begin(), parts.end(),
             [](const RecipePart& a, const RecipePart& b) { return a.share > b.share; });
-  // The reference: the pigments' own grid, the full colour-matching functions.
-  const data::Pigment& first = palette_[parts.front().pigment];
-  data::Spectrum inside{"R", first.K.wavelengths_nm, {}};
-  for (const double nm : inside.wavelengths_nm) {
-    double k = 0.0, s = 0.0;
-    for (const RecipePart& part : parts) {
-      k += part.share * palette_[part.pigment].K.at(nm);
-      s += part.share * palette_[part.pigment].S.at(nm);
-    }
-    inside.values.push_back(data::reflectance_infinite(k, std::max(s, 1e-9)));
+  // The reference: the swatches' (every nm, the renderer's flat layer).
+  std::vector<const data::Pigment*> pigments;
+  std::vector<double> shares;
+  for (const RecipePart& part : parts) {
+    pigments.push_back(&palette_[part.pigment]);
+    shares.push_back(part.share);
   }
-  const SwatchColour colour =
-      describe_colour("masstone", seen_through_surface(std::move(inside)), light_);
+  const SwatchColour colour = describe_colour(
+      "masstone", seen_through_surface(mix_reflectance(pigments, shares, reference_)), reference_);
   Recipe recipe;
   recipe.parts = std::move(parts);
   recipe.lab = colour.lab;

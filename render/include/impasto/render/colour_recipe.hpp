@@ -15,6 +15,7 @@
 #include "impasto/data/colorimetry.hpp"
 #include "impasto/data/pigments.hpp"
 #include "impasto/data/spectrum.hpp"
+#include "impasto/render/spectral_sampling.hpp"
 
 namespace impasto::render {
 
@@ -57,7 +58,7 @@ class RecipeFinder {
   Candidate best_triple(const std::array<std::size_t, 3>& p, const data::Lab& target) const;
 
   std::span<const data::Pigment> palette_;
-  data::Spectrum light_;
+  SpectralSampling reference_;  // evaluate()'s: the swatches' (pigment_swatches.hpp)
   // The search's grid: every 10 nm from 400 to 700; per pigment K and S there, and the
   // light times each colour-matching function (Y of the white = 100).
   std::vector<std::vector<double>> k_, s_;
