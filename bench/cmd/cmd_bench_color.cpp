@@ -1,17 +1,28 @@
 // impasto bench color: colour error of N-wavelength rendering against the 1-nm full
-// spectrum (CIEDE2000 over masstones, tints, 50/50 mixes and glazes of every pigment), and
-// the cost per cell of each N, for float and half storage of the baked reflectance. For the
-// rules trained on the palette (fitted, optimised) also their error on the training paints
-// and the time to build the rule for a light.
+// spectrum, by the kinds of paint paintings are made of (the bare ground, masstones, tints,
+// glazes 0.5-50 optical units thick, wet over dry stacks, and the painted cells of the bundled
+// replays), mean, 95th percentile and max CIEDE2000 each, and the cost per cell of each N, for
+// float and half storage of the baked reflectance. --samples standard: the older sample set
+// (masstones, one tint, 50/50 mixes and one glaze of every pigment, bare K-M). For the rules
+// trained on the palette (fitted, optimised) also their error on the training paints and the
+// time to build the rule for a light.
 #include <impasto/data/cie.hpp>
+#include <impasto/data/colorimetry.hpp>
+#include <impasto/data/data_dir.hpp>
 #include <impasto/data/lights.hpp>
 #include <impasto/data/pigments.hpp>
+#include <impasto/input/stroke_import.hpp>
+#include <impasto/render/chromatic_adaptation.hpp>
 #include <impasto/render/color_accuracy.hpp>
+#include <impasto/render/display.hpp>
 #include <impasto/render/node_cache.hpp>
 #include <impasto/render/node_optimisation.hpp>
 #include <impasto/render/render_settings.hpp>
 #include <impasto/render/spectral_palette.hpp>
+#include <impasto/render/tile_renderer.hpp>
+#include <impasto/session/replay.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -37,7 +48,85 @@ struct BenchColorArgs {
   std::string weights{util::name_of(kNodeWeightsNames, RenderSettings{}.node_weights)};
   int timing_cells = 20000;
   bool half = true;
+  std::string samples = "paintings";  // or "standard"
 };
+
+// The replays whose painted cells are the "painting" class: the demo and the bundled studies.
+constexpr const char* kPaintingReplays[] = {"demo.dat", "metallic.strokes", "surface_study.strokes",
+                                            "medium_study.strokes"};
+
+struct ReplayedPainting {
+  std::string name;
+  paintcore::Painting painting;
+  std::vector<std::pair<int, int>> cells;  // painted: more than a micrometre of paint
+};
+
+std::vector<ReplayedPainting> replay_paintings() {
+  std::vector<ReplayedPainting> out;
+  for (const char* name : kPaintingReplays) {
+    const input::StrokeFile file = input::load_strokes_any(data::data_dir() / "strokes" / name);
+    session::ReplayOptions options;
+    paintcore::Painting painting = session::replay(file, options);
+    const paintcore::Canvas& canvas = painting.canvas();
+    std::vector<std::pair<int, int>> cells;
+    for (int t = 0; t < canvas.tiles_x() * canvas.tiles_y(); ++t) {
+      const paintcore::Tile* tile = canvas.tile(t);
+      if (!tile) continue;
+      const int x0 = t % canvas.tiles_x() * paintcore::kTileSize;
+      const int y0 = t / canvas.tiles_x() * paintcore::kTileSize;
+      for (int c = 0; c < paintcore::kTileCells; ++c) {
+        const int x = x0 + c % paintcore::kTileSize, y = y0 + c / paintcore::kTileSize;
+        if (x >= canvas.width_cells() || y >= canvas.height_cells()) continue;
+        const auto i = static_cast<std::size_t>(c);
+        if (tile->wet_volume_mm[i] + tile->dry_height_mm[i] > 1e-3f) cells.push_back({x, y});
+      }
+    }
+    out.push_back({name, std::move(painting), std::move(cells)});
+  }
+  return out;
+}
+
+// L*a*b* (relative to D65) of each of `cells` of the painting rendered with `settings`.
+std::vector<data::Lab> rendered_cells(const ReplayedPainting& replayed, RenderSettings settings) {
+  settings.display = DisplayEncoding::linear_srgb;
+  TileRenderer renderer(settings, SpectralPalette(settings, replayed.painting));
+  renderer.render_all(replayed.painting.canvas());
+  const Image image = renderer.image();
+  static const auto to_xyz = invert_3x3(xyz_to_linear_srgb());
+  const data::Xyz white{100 * kD65WhiteXyz[0], 100 * kD65WhiteXyz[1], 100 * kD65WhiteXyz[2]};
+  std::vector<data::Lab> out;
+  for (const auto& [x, y] : replayed.cells) {
+    const float* rgb = image.pixel(x, y);
+    double xyz[3];
+    for (std::size_t i = 0; i < 3; ++i)
+      xyz[i] = 100.0 *
+               (to_xyz[3 * i] * rgb[0] + to_xyz[3 * i + 1] * rgb[1] + to_xyz[3 * i + 2] * rgb[2]);
+    out.push_back(data::xyz_to_lab({xyz[0], xyz[1], xyz[2]}, white));
+  }
+  return out;
+}
+
+// The "painting" class: every painted cell of the replays rendered (the default renderer, its
+// lamp and relief) with `nodes` wavelengths against the full spectrum.
+ClassError painting_cells_error(const std::vector<ReplayedPainting>& paintings,
+                                const std::string& light, int nodes, NodeWeights weights) {
+  std::vector<std::pair<double, std::string>> errors;
+  for (const ReplayedPainting& replayed : paintings) {
+    RenderSettings settings;
+    settings.light = light;
+    settings.node_weights = weights;
+    settings.wavelengths = 0;
+    const std::vector<data::Lab> reference = rendered_cells(replayed, settings);
+    settings.wavelengths = nodes;
+    const std::vector<data::Lab> got = rendered_cells(replayed, settings);
+    for (std::size_t i = 0; i < got.size(); ++i) {
+      const auto [x, y] = replayed.cells[i];
+      errors.push_back({data::ciede2000(reference[i], got[i]),
+                        replayed.name + " (" + std::to_string(x) + ", " + std::to_string(y) + ")"});
+    }
+  }
+  return summarise_errors("painting", errors);
+}
 
 // A rule trained on the palette: its error on the training paints (the Gaussian rule's
 // beside it) and the wall time to build it for this light (all cores).
@@ -71,11 +160,52 @@ TrainingRow train_rule(const data::Spectrum& light, const std::string& light_nam
           training.paint_count()};
 }
 
+// Per light and node count (float storage), each class's mean / 95th percentile / max.
+void print_classes(const std::vector<AccuracyResult>& rows) {
+  std::printf("\nBy class: mean / p95 / max dE00 against the full spectrum (float storage)\n");
+  std::printf("%-6s %4s", "light", "N");
+  for (const char* kind : kColorClasses) std::printf(" %20s", kind);
+  std::printf("\n");
+  for (const AccuracyResult& r : rows) {
+    if (r.nodes == 0 || r.storage != ReflectanceStorage::float32) continue;
+    std::printf("%-6s %4d", r.light.c_str(), r.nodes);
+    for (const char* kind : kColorClasses) {
+      const auto c = std::find_if(r.classes.begin(), r.classes.end(),
+                                  [&](const ClassError& e) { return e.kind == kind; });
+      if (c == r.classes.end() || c->count == 0) {
+        std::printf(" %20s", "-");
+        continue;
+      }
+      char cell[64];
+      std::snprintf(cell, sizeof cell, "%.2f/%.2f/%.2f", c->mean_de00, c->p95_de00, c->max_de00);
+      std::printf(" %20s", cell);
+    }
+    std::printf("\n");
+  }
+  std::printf("%-11s", "samples");
+  if (!rows.empty())
+    for (const char* kind : kColorClasses) {
+      const auto c = std::find_if(rows.front().classes.begin(), rows.front().classes.end(),
+                                  [&](const ClassError& e) { return e.kind == kind; });
+      int count = c == rows.front().classes.end() ? 0 : c->count;
+      if (std::string(kind) == "painting")
+        for (const AccuracyResult& r : rows)
+          for (const ClassError& e : r.classes)
+            if (e.kind == kind) count = e.count;
+      std::printf(" %20d", count);
+    }
+  std::printf("\n");
+}
+
 void run(const BenchColorArgs& args) {
   const NodeWeights weights = parse_node_weights(args.weights);
   const bool trained = weights == NodeWeights::fitted || weights == NodeWeights::optimised;
   const std::vector<data::Pigment>& pigments = data::PigmentDatabase::defaults().all();
-  const std::vector<ColorSample> samples = standard_color_samples(pigments);
+  const bool by_class = args.samples == "paintings";
+  const std::vector<ColorSample> samples =
+      by_class ? painting_color_samples(pigments) : standard_color_samples(pigments);
+  std::vector<ReplayedPainting> paintings;
+  if (by_class) paintings = replay_paintings();
 
   std::vector<AccuracyResult> rows;
   std::vector<TrainingRow> training_rows;
@@ -98,6 +228,8 @@ void run(const BenchColorArgs& args) {
       rows.push_back(evaluate_color_accuracy(light, light_name, n, pigments, samples,
                                              ReflectanceStorage::float32, weights,
                                              args.timing_cells));
+      if (by_class && n != 0)
+        rows.back().classes.push_back(painting_cells_error(paintings, light_name, n, weights));
       progress.update(++done, steps);
       if (args.half && n != 0) {
         rows.push_back(evaluate_color_accuracy(light, light_name, n, pigments, samples,
@@ -118,6 +250,12 @@ void run(const BenchColorArgs& args) {
                          {"ns_per_cell", r.ns_per_cell},
                          {"storage", util::name_of(kReflectanceStorageNames, r.storage)},
                          {"worst", r.worst_sample}};
+      for (const ClassError& c : r.classes)
+        row["classes"][c.kind] = {{"count", c.count},
+                                  {"mean_de00", c.mean_de00},
+                                  {"p95_de00", c.p95_de00},
+                                  {"max_de00", c.max_de00},
+                                  {"worst", c.worst}};
       std::cout << row.dump() << "\n";
     }
     for (const TrainingRow& r : training_rows) {
@@ -144,6 +282,7 @@ void run(const BenchColorArgs& args) {
                 r.mean_de00, r.max_de00, r.ns_per_cell,
                 r.nodes == 0 ? "-" : r.worst_sample.c_str());
   }
+  if (by_class) print_classes(rows);
   if (training_rows.empty()) return;
   std::printf("\nTraining paints (%d; not the samples above): %s rule vs Gauss, build time\n",
               training_rows.front().paints, args.weights.c_str());
@@ -171,6 +310,10 @@ const CommandRegistrar registrar("bench color", [](CLI::App& root) {
   cmd->add_option("--cells", args->timing_cells, "Cells per timing run (0: no timing)")
       ->check(finite_range(0, 10000000));
   cmd->add_flag("!--no-half", args->half, "Skip the half-storage rows");
+  cmd->add_option("--samples", args->samples,
+                  "paintings: the classes paintings are made of, the bundled replays' cells "
+                  "included (docs/color-accuracy.md); standard: the older set, bare K-M")
+      ->check(CLI::IsMember({"paintings", "standard"}));
   cmd->callback([args] { run(*args); });
 });
 

@@ -3,10 +3,13 @@
 #include <Imath/half.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <ctime>
 #include <stdexcept>
 
 #include "impasto/data/colorimetry.hpp"
+#include "impasto/render/kubelka_munk_cell.hpp"
 #include "impasto/render/paint_layer.hpp"
 #include "impasto/render/spectral_palette.hpp"
 #include "spectral_kernels.hpp"
@@ -54,6 +57,12 @@ float round_to_half(float value) {
   return static_cast<float>(Imath::half(value));
 }
 
+std::vector<PigmentShare> shares_of(const std::vector<std::pair<int, float>>& mix) {
+  std::vector<PigmentShare> shares;
+  for (const auto& [pigment, concentration] : mix) shares.push_back({pigment, concentration});
+  return shares;
+}
+
 data::Lab render_sample(const SampledScene& scene, const ColorSample& sample,
                         ReflectanceStorage storage, double thickness_scale_mm) {
   const SpectralPalette& palette = scene.palette;
@@ -65,11 +74,22 @@ data::Lab render_sample(const SampledScene& scene, const ColorSample& sample,
     const float g = ground[static_cast<std::size_t>(i)];
     r[i] = storage == ReflectanceStorage::float16 ? round_to_half(g) : g;
   }
-  std::vector<PigmentShare> shares;
-  for (const auto& [pigment, concentration] : sample.mix)
-    shares.push_back({pigment, concentration});
-  composite_paint_layer(palette, shares,
-                        static_cast<float>(sample.thickness_mm / thickness_scale_mm), r);
+  if (!sample.under_mix.empty()) {
+    composite_paint_layer(palette, shares_of(sample.under_mix),
+                          static_cast<float>(sample.under_mm / thickness_scale_mm), r);
+    // The dry layers are baked into the substrate, stored as the renderer stores them.
+    if (storage == ReflectanceStorage::float16)
+      for (int i = 0; i < palette.nodes(); ++i) r[i] = round_to_half(r[i]);
+  }
+  if (!sample.mix.empty())
+    composite_paint_layer(palette, shares_of(sample.mix),
+                          static_cast<float>(sample.thickness_mm / thickness_scale_mm), r);
+  if (sample.through_surface) {
+    const RenderSettings defaults;
+    const auto k1 = static_cast<float>(defaults.saunderson_k1);
+    const auto k2 = static_cast<float>(defaults.saunderson_k2);
+    for (int i = 0; i < palette.nodes(); ++i) r[i] = k1 + km::saunderson(r[i], k1, k2);
+  }
   float xyz[3];
   node_reflectance_to_xyz(palette, r, xyz);
   const auto& white = palette.white_xyz();
@@ -152,6 +172,18 @@ double time_cells(const SampledScene& scene, ReflectanceStorage storage, int cel
   return best;
 }
 
+// A sample of one layer over a ground (kind empty: the standard samples).
+ColorSample layer_sample(std::string name, std::vector<std::pair<int, float>> mix,
+                         float thickness_mm, bool over_black, std::string kind = {}) {
+  ColorSample sample;
+  sample.name = std::move(name);
+  sample.mix = std::move(mix);
+  sample.thickness_mm = thickness_mm;
+  sample.over_black = over_black;
+  sample.kind = std::move(kind);
+  return sample;
+}
+
 }  // namespace
 
 std::vector<ColorSample> standard_color_samples(const std::vector<data::Pigment>& pigments) {
@@ -161,26 +193,93 @@ std::vector<ColorSample> standard_color_samples(const std::vector<data::Pigment>
   const int count = static_cast<int>(pigments.size());
   for (int p = 0; p < count; ++p) {
     const std::string& name = pigments[static_cast<std::size_t>(p)].name;
-    samples.push_back({name + " masstone", {{p, 1.0f}}, kOpaqueMm, false});
+    samples.push_back(layer_sample(name + " masstone", {{p, 1.0f}}, kOpaqueMm, false));
     if (p != white) {
-      samples.push_back({name + " tint",
-                         {{p, kTintPigmentShare}, {white, 1.0f - kTintPigmentShare}},
-                         kOpaqueMm,
-                         false});
+      samples.push_back(layer_sample(name + " tint",
+                                     {{p, kTintPigmentShare}, {white, 1.0f - kTintPigmentShare}},
+                                     kOpaqueMm, false));
     }
-    samples.push_back({name + " glaze over white", {{p, 1.0f}}, kGlazeMm, false});
-    samples.push_back({name + " glaze over black", {{p, 1.0f}}, kGlazeMm, true});
+    samples.push_back(layer_sample(name + " glaze over white", {{p, 1.0f}}, kGlazeMm, false));
+    samples.push_back(layer_sample(name + " glaze over black", {{p, 1.0f}}, kGlazeMm, true));
   }
   for (int p = 0; p < count; ++p) {
     for (int q = p + 1; q < count; ++q) {
-      samples.push_back({pigments[static_cast<std::size_t>(p)].name + " + " +
-                             pigments[static_cast<std::size_t>(q)].name,
-                         {{p, 0.5f}, {q, 0.5f}},
-                         kOpaqueMm,
-                         false});
+      samples.push_back(layer_sample(pigments[static_cast<std::size_t>(p)].name + " + " +
+                                         pigments[static_cast<std::size_t>(q)].name,
+                                     {{p, 0.5f}, {q, 0.5f}}, kOpaqueMm, false));
     }
   }
   return samples;
+}
+
+std::vector<ColorSample> painting_color_samples(const std::vector<data::Pigment>& pigments) {
+  const int white = index_of(pigments, "White");
+  index_of(pigments, "Black");
+  const double scale = RenderSettings{}.thickness_scale_mm;
+  const int count = static_cast<int>(pigments.size());
+  const auto name_of = [&](int p) { return pigments[static_cast<std::size_t>(p)].name; };
+  std::vector<ColorSample> samples;
+  const auto add = [&](ColorSample sample) {
+    sample.through_surface = true;
+    samples.push_back(std::move(sample));
+  };
+  add(layer_sample("the bare ground", {}, 0.0f, false, "ground"));
+  // Mixes: every pigment alone and every pair 50/50.
+  std::vector<std::pair<std::string, std::vector<std::pair<int, float>>>> mixes;
+  for (int p = 0; p < count; ++p) mixes.push_back({name_of(p), {{p, 1.0f}}});
+  for (int p = 0; p < count; ++p)
+    for (int q = p + 1; q < count; ++q)
+      mixes.push_back({name_of(p) + " + " + name_of(q), {{p, 0.5f}, {q, 0.5f}}});
+  for (const auto& [name, mix] : mixes)
+    add(layer_sample(name + " masstone", mix, kOpaqueMm, false, "masstone"));
+  for (int p = 0; p < count; ++p) {
+    if (p == white) continue;
+    for (const int parts : {1, 2, 5, 10, 20}) {
+      const float share = 1.0f / static_cast<float>(1 + parts);
+      add(layer_sample(name_of(p) + " tint 1:" + std::to_string(parts),
+                       {{p, share}, {white, 1.0f - share}}, kOpaqueMm, false, "tint"));
+    }
+  }
+  for (const auto& [name, mix] : mixes)
+    for (const double units : {0.5, 1.0, 2.0, 5.0, 10.0, 20.0, 50.0})
+      for (const bool black : {false, true}) {
+        char label[32];
+        std::snprintf(label, sizeof label, " glaze %g over %s", units, black ? "black" : "ground");
+        add(layer_sample(name + label, mix, static_cast<float>(units * scale), black, "glaze"));
+      }
+  for (int p = 0; p < count; ++p)
+    for (int q = 0; q < count; ++q) {
+      if (p == q || q == white) continue;
+      for (const double units : {2.0, 10.0}) {
+        ColorSample sample =
+            layer_sample(name_of(p) + " " + std::to_string(static_cast<int>(units)) + " over dry " +
+                             name_of(q) + " tint 1:2",
+                         {{p, 1.0f}}, static_cast<float>(units * scale), false, "stack");
+        sample.under_mix = {{q, 1.0f / 3.0f}, {white, 2.0f / 3.0f}};
+        sample.under_mm = kOpaqueMm;
+        add(std::move(sample));
+      }
+    }
+  return samples;
+}
+
+ClassError summarise_errors(std::string kind,
+                            const std::vector<std::pair<double, std::string>>& errors) {
+  ClassError out;
+  out.kind = std::move(kind);
+  out.count = static_cast<int>(errors.size());
+  if (errors.empty()) return out;
+  std::vector<double> sorted;
+  for (const auto& [de, name] : errors) {
+    sorted.push_back(de);
+    out.mean_de00 += de / static_cast<double>(errors.size());
+    if (de > out.max_de00 || out.worst.empty()) out.max_de00 = de, out.worst = name;
+  }
+  std::sort(sorted.begin(), sorted.end());
+  // The nearest rank: the smallest error that at least 95 % of the samples do not exceed.
+  const auto rank = static_cast<std::size_t>(std::ceil(0.95 * static_cast<double>(sorted.size())));
+  out.p95_de00 = sorted[std::max<std::size_t>(rank, 1) - 1];
+  return out;
 }
 
 AccuracyResult evaluate_color_accuracy(const data::Spectrum& light, const std::string& light_name,
@@ -198,18 +297,30 @@ AccuracyResult evaluate_color_accuracy(const data::Spectrum& light, const std::s
   result.light = light_name;
   result.storage = storage;
   double sum = 0.0;
+  std::vector<std::string> kinds;
+  std::vector<std::vector<std::pair<double, std::string>>> by_kind;
   for (const ColorSample& sample : samples) {
     const data::Lab expected =
         render_sample(reference, sample, ReflectanceStorage::float32, thickness_scale_mm);
     const data::Lab got = render_sample(scene, sample, storage, thickness_scale_mm);
     const double difference = data::ciede2000(expected, got);
     sum += difference;
+    if (!sample.kind.empty()) {
+      const auto at = std::find(kinds.begin(), kinds.end(), sample.kind) - kinds.begin();
+      if (at == static_cast<std::ptrdiff_t>(kinds.size())) {
+        kinds.push_back(sample.kind);
+        by_kind.emplace_back();
+      }
+      by_kind[static_cast<std::size_t>(at)].push_back({difference, sample.name});
+    }
     if (difference > result.max_de00) {  // stays empty when every sample is exact
       result.max_de00 = difference;
       result.worst_sample = sample.name;
     }
   }
   result.mean_de00 = sum / static_cast<double>(samples.size());
+  for (std::size_t k = 0; k < kinds.size(); ++k)
+    result.classes.push_back(summarise_errors(kinds[k], by_kind[k]));
   if (timing_cells > 0) {
     result.ns_per_cell = time_cells(scene, storage, timing_cells, thickness_scale_mm);
   }

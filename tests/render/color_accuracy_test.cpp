@@ -3,7 +3,10 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "impasto/data/lights.hpp"
 #include "impasto/data/pigments.hpp"
@@ -35,4 +38,53 @@ TEST(ColorAccuracy, FullSpectrumAgainstItselfIsExactAndNodesConverge) {
   EXPECT_GT(coarse, 0.0);
   EXPECT_LT(fine, coarse);
   EXPECT_LT(fine, 1.0);
+}
+
+// What paintings are made of: each class, counted; the pigments a sample names exist.
+TEST(ColorAccuracy, PaintingSamplesCoverEveryClassAPaintingIsMadeOf) {
+  const auto samples = painting_color_samples(three_pigments());
+  std::map<std::string, int> count;
+  for (const ColorSample& s : samples) {
+    ++count[s.kind];
+    EXPECT_TRUE(s.through_surface) << s.name;
+    for (const auto& [pigment, share] : s.mix) EXPECT_LT(pigment, 3) << s.name;
+  }
+  EXPECT_EQ(count["ground"], 1);
+  EXPECT_EQ(count["masstone"], 3 + 3);         // alone and the pairs
+  EXPECT_EQ(count["tint"], 2 * 5);             // each but White, 1:1 to 1:20
+  EXPECT_EQ(count["glaze"], (3 + 3) * 7 * 2);  // 7 thicknesses over ground and black
+  EXPECT_EQ(count["stack"], 4 * 2);  // wet over a dry tint of another (not White): 4 pairs
+  EXPECT_THROW(painting_color_samples({three_pigments()[2]}), std::runtime_error);
+}
+
+TEST(ColorAccuracy, ClassesAreSummarisedByMeanP95AndMax) {
+  std::vector<std::pair<double, std::string>> errors;
+  for (int i = 100; i >= 1; --i) errors.push_back({i, "sample " + std::to_string(i)});
+  const ClassError c = summarise_errors("glaze", errors);
+  EXPECT_EQ(c.count, 100);
+  EXPECT_DOUBLE_EQ(c.mean_de00, 50.5);
+  EXPECT_DOUBLE_EQ(c.p95_de00, 95.0);
+  EXPECT_DOUBLE_EQ(c.max_de00, 100.0);
+  EXPECT_EQ(c.worst, "sample 100");
+  EXPECT_EQ(summarise_errors("ground", {}).count, 0);
+}
+
+// Each class is exact at the full spectrum and converges with the nodes; the surface (k1 +
+// the body) makes a glaze's colour differ from the bare reflectance's.
+TEST(ColorAccuracy, EveryClassIsExactAtTheReferenceAndConverges) {
+  const auto pigments = three_pigments();
+  const auto samples = painting_color_samples(pigments);
+  const data::Spectrum light = data::light_from_spec("D65");
+  const AccuracyResult exact = evaluate_color_accuracy(light, "D65", 0, pigments, samples);
+  EXPECT_EQ(exact.max_de00, 0.0);
+  ASSERT_EQ(exact.classes.size(), 5u);  // the painting class is the command's
+  const AccuracyResult coarse = evaluate_color_accuracy(light, "D65", 3, pigments, samples);
+  const AccuracyResult fine = evaluate_color_accuracy(light, "D65", 16, pigments, samples);
+  ASSERT_EQ(fine.classes.size(), 5u);
+  for (std::size_t k = 0; k < fine.classes.size(); ++k) {
+    EXPECT_LT(fine.classes[k].mean_de00, 0.2) << fine.classes[k].kind;
+    EXPECT_LE(fine.classes[k].mean_de00, coarse.classes[k].mean_de00) << fine.classes[k].kind;
+    EXPECT_LE(fine.classes[k].p95_de00, fine.classes[k].max_de00);
+  }
+  EXPECT_GT(coarse.classes[3].mean_de00, 0.0);  // the glazes
 }
