@@ -294,7 +294,8 @@ PYBIND11_MODULE(impasto, m) {
                 impasto::render::render_painting(p, render_settings(light, wavelengths, light_dir));
             return to_array(image.rgb, {image.height, image.width, 3});
           },
-          py::arg("light") = "D65", py::arg("wavelengths") = 8,
+          py::arg("light") = "D65",
+          py::arg("wavelengths") = impasto::render::RenderSettings{}.wavelengths,
           py::arg("light_dir") = std::pair{225.0, 60.0},
           "The spectral render, sRGB-encoded floats in [0, 1], (rows, columns, 3)")
       .def(
@@ -304,7 +305,8 @@ PYBIND11_MODULE(impasto, m) {
             impasto::render::render_painting_to_file(
                 p, render_settings(light, wavelengths, light_dir), path);
           },
-          py::arg("path"), py::arg("light") = "D65", py::arg("wavelengths") = 8,
+          py::arg("path"), py::arg("light") = "D65",
+          py::arg("wavelengths") = impasto::render::RenderSettings{}.wavelengths,
           py::arg("light_dir") = std::pair{225.0, 60.0},
           "Renders to FILE.png (sRGB) or FILE.exr (linear), as impasto render does");
 

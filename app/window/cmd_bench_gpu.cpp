@@ -40,7 +40,7 @@ struct BenchGpuArgs {
   int viewport_h = 900;
   int brush_px = 128;  // brush width in cells for the latency
   int samples = 20;
-  int wavelengths = 8;
+  int wavelengths = render::RenderSettings{}.wavelengths;
   bool json = false;
 };
 

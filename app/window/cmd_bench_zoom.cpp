@@ -37,7 +37,7 @@ using Clock = std::chrono::steady_clock;
 struct BenchZoomArgs {
   std::string painting;
   std::vector<double> cells_per_pixel{1.0, 1.25, 1.5, 2.0, 3.0, 4.0};
-  int wavelengths = 8;
+  int wavelengths = render::RenderSettings{}.wavelengths;
   int frames = 3;
   std::string views;  // a prefix: each zoom's window view and reference as PNG
   bool json = false;

@@ -2,6 +2,7 @@
 // What `impasto paint` was asked to do.
 #include <impasto/paintcore/canvas.hpp>
 #include <impasto/paintcore/step_quality.hpp>
+#include <impasto/render/render_settings.hpp>
 
 #include <filesystem>
 #include <optional>
@@ -19,7 +20,7 @@ struct PaintOptions {
   int window_width = 1400;
   int window_height = 900;
   paintcore::CanvasSpec new_canvas{1024, 768, 150.0, 1};  // when no painting is opened
-  int wavelengths = 8;
+  int wavelengths = render::RenderSettings{}.wavelengths;
   // How finely the simulation steps the brush, and whether it takes fast steps while it is
   // behind the pen (the View panel's Quality).
   paintcore::StepQuality quality = paintcore::StepQuality::balanced;

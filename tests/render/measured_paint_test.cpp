@@ -104,9 +104,10 @@ TEST(MeasuredPaint, AFlatOpaqueLayerRendersBackItsMeasurement) {
             << ")\n";
   // The surface's model, judged on the full spectrum: every sample within 1 dE00.
   EXPECT_LT(exact.max, 1.0) << exact.worst;
-  // The default 8 nodes add their own error (their rule is trained on the bare K-M
-  // reflectance, not through the surface: up to 1.9 on the blue masstone, docs/rendering.md).
-  EXPECT_LT(now.mean, 0.5);
+  // The default 16 nodes add little of their own (their rule is trained on the bare K-M
+  // reflectance, not through the surface; 8 nodes: 0.44 / 0.94, docs/rendering.md).
+  EXPECT_LT(now.mean, 0.35);
+  EXPECT_LT(now.max, 1.0) << now.worst;
   EXPECT_GT(bare.mean, 3.0);  // the test can tell the surface's model apart
 }
 
@@ -140,7 +141,7 @@ TEST(MeasuredPaint, TheBundledPaintsRenderBackTheirMeasurements) {
               << "\n";
   }
   EXPECT_LT(exact.max, 1.0) << exact.worst;
-  EXPECT_LT(now.mean, 1.0);
+  EXPECT_LT(now.max, 1.0) << now.worst;  // with the default settings too
 }
 
 }  // namespace
