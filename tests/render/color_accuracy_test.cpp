@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -10,6 +11,7 @@
 
 #include "impasto/data/lights.hpp"
 #include "impasto/data/pigments.hpp"
+#include "impasto/render/render_settings.hpp"
 
 using namespace impasto;
 using namespace impasto::render;
@@ -87,4 +89,44 @@ TEST(ColorAccuracy, EveryClassIsExactAtTheReferenceAndConverges) {
     EXPECT_LE(fine.classes[k].p95_de00, fine.classes[k].max_de00);
   }
   EXPECT_GT(coarse.classes[3].mean_de00, 0.0);  // the glazes
+}
+
+// The default (its node count and rule) on what paintings are made of, with the bundled
+// paints: every class within 0.3 mean and 1.5 max dE00 of the 1 nm reference under a
+// daylight, an incandescent and a narrow-band fluorescent light (docs/color-accuracy.md;
+// the painted cells of the replays are `impasto bench color`'s).
+TEST(ColorAccuracy, TheDefaultHoldsEveryKindOfPaintUnderEveryLight) {
+  const auto& pigments = data::PigmentDatabase::defaults().all();
+  const auto samples = painting_color_samples(pigments);
+  const RenderSettings defaults;
+  for (const char* light_name : {"D65", "A", "F11"}) {
+    const AccuracyResult result = evaluate_color_accuracy(
+        data::light_from_spec(light_name), light_name, defaults.wavelengths, pigments, samples,
+        ReflectanceStorage::float32, defaults.node_weights);
+    ASSERT_EQ(result.classes.size(), 5u);
+    for (const ClassError& c : result.classes) {
+      EXPECT_LT(c.mean_de00, 0.3) << light_name << " " << c.kind << ": " << c.worst;
+      EXPECT_LT(c.max_de00, 1.5) << light_name << " " << c.kind << ": " << c.worst;
+    }
+  }
+}
+
+// In the default rule family the worst class's mean, and the mean over all samples, fall as
+// nodes are added.
+TEST(ColorAccuracy, ErrorFallsAsNodesAreAdded) {
+  const auto& pigments = data::PigmentDatabase::defaults().all();
+  const auto samples = painting_color_samples(pigments);
+  const data::Spectrum d65 = data::light_from_spec("D65");
+  double worst_before = 1e9, mean_before = 1e9;
+  for (const int nodes : {4, 8, 12, 16}) {
+    const AccuracyResult result =
+        evaluate_color_accuracy(d65, "D65", nodes, pigments, samples, ReflectanceStorage::float32,
+                                RenderSettings{}.node_weights);
+    double worst = 0.0;
+    for (const ClassError& c : result.classes) worst = std::max(worst, c.mean_de00);
+    EXPECT_LT(worst, worst_before) << nodes << " nodes";
+    EXPECT_LT(result.mean_de00, mean_before) << nodes << " nodes";
+    worst_before = worst;
+    mean_before = result.mean_de00;
+  }
 }
