@@ -57,10 +57,12 @@ CanvasEditResult edit_canvas(paintcore::Painting& painting, const CanvasEdit& ed
                                  std::to_string(result.height) + " canvas");
       cells = {r.x, r.y, r.x + r.w, r.y + r.h};
     }
-    if (!(edit.varnish_thickness_mm > 0.0 && edit.varnish_thickness_mm <= paintcore::kMaxVarnishMm))
-      throw std::runtime_error("--varnish-thickness " + std::to_string(edit.varnish_thickness_mm) +
-                               ": must be in (0, " + std::to_string(paintcore::kMaxVarnishMm) +
-                               "] mm");
+    if (!(edit.varnish_thickness_mm >= paintcore::kMinVarnishMm &&
+          edit.varnish_thickness_mm <= paintcore::kMaxVarnishMm))
+      throw std::runtime_error("--varnish-thickness " +
+                               util::number_text(edit.varnish_thickness_mm) + ": must be in [" +
+                               util::number_text(paintcore::kMinVarnishMm) + ", " +
+                               util::number_text(paintcore::kMaxVarnishMm) + "] mm");
     painting.apply_varnish(*edit.varnish, edit.varnish_thickness_mm, cells);
     char text[160];
     std::snprintf(text, sizeof text,
