@@ -40,16 +40,17 @@ std::optional<PickedPaint> pick_paint(const paintcore::Painting& painting, doubl
   return picked;
 }
 
-void render_picked_colours(PickedPaint& picked, const render::RenderSettings& settings) {
+void render_picked_colours(PickedPaint& picked, const render::RenderSettings& settings,
+                           const render::SpectralSampling* rule) {
   const std::vector<input::PigmentPart>& mix = picked.mix;
   // The layer: the visible paint's thickness, wet where it is wet, else the dry paint's.
   const double layer_mm = std::max(picked.dry ? picked.dry_mm : picked.wet_mm, 1e-3);
   picked.masstone_rgb =
       session::clamped(session::render_flat_layers(settings, std::span(&mix, 1),
-                                                   session::masstone_thickness_mm(settings))
+                                                   session::masstone_thickness_mm(settings), rule)
                            .front());
-  picked.layer_rgb =
-      session::clamped(session::render_flat_layers(settings, std::span(&mix, 1), layer_mm).front());
+  picked.layer_rgb = session::clamped(
+      session::render_flat_layers(settings, std::span(&mix, 1), layer_mm, rule).front());
   picked.rendered = true;
 }
 

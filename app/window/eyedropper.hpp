@@ -40,9 +40,11 @@ struct PickedPaint {
 // The paint within `radius_cells` of (x_cells, y_cells); nullopt over bare canvas.
 std::optional<PickedPaint> pick_paint(const paintcore::Painting& painting, double x_cells,
                                       double y_cells, double radius_cells = kPickRadiusCells);
-// Renders the chips (session/swatch.hpp's flat layers). Throws std::runtime_error for a
-// pigment the library does not know (a painting's carried pigment that was removed).
-void render_picked_colours(PickedPaint& picked, const render::RenderSettings& settings);
+// Renders the chips (session/swatch.hpp's flat layers), under `rule` (the painting's) when given.
+// Throws std::runtime_error for a pigment the library does not know (a painting's carried pigment
+// that was removed).
+void render_picked_colours(PickedPaint& picked, const render::RenderSettings& settings,
+                           const render::SpectralSampling* rule = nullptr);
 // What the brush takes: the picked mix with its medium, volume_mm3 of it, in `body`.
 input::LoadEvent picked_load(const PickedPaint& picked, double volume_mm3, const std::string& body);
 // The Palette panel's medium for the picked paint (palette_medium.hpp): its finish (none:

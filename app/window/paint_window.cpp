@@ -136,11 +136,13 @@ void PaintWindow::time_view_motion(double swap_time_s) {
 void PaintWindow::draw_frame(bool take_screenshot) {
   const auto start = Clock::now();
   if (worker().stats().submitted != applied_at_upload_) worker().wait_idle_for(kSimWait);
-  // The Palette panel's chips, painted and rendered off the UI thread (swatch_chips.hpp).
-  swatch_chips_.update(state_, worker().with_painting(
-                                   [](const paintcore::Painting& p) { return p.canvas().spec(); }));
   applied_at_upload_ = worker().stats().applied;  // each has dirtied its tiles by now
   viewer_->sync(worker(), state_, router_->in_stroke(), shell_.now_s());
+  // The Palette panel's chips, painted and rendered off the UI thread (swatch_chips.hpp),
+  // under the painting's own rule (the viewer's, synced just now).
+  const paintcore::CanvasSpec canvas_spec =
+      worker().with_painting([](const paintcore::Painting& p) { return p.canvas().spec(); });
+  swatch_chips_.update(state_, canvas_spec, viewer_->palette().sampling());
   int fb_w = 0, fb_h = 0, win_w = 0, win_h = 0;
   shell_.framebuffer_size(fb_w, fb_h);
   shell_.window_size(win_w, win_h);

@@ -20,23 +20,25 @@ SwatchChips::~SwatchChips() {
 }
 
 SwatchChips::Result SwatchChips::compute(const session::SwatchStroke& stroke,
-                                         const render::RenderSettings& settings, double layer_mm) {
+                                         const render::RenderSettings& settings, double layer_mm,
+                                         const render::SpectralSampling& rule) {
   Result result;
   if (!stroke.load.mix.empty()) {
-    result.swatch = make_swatch(stroke, settings);
+    result.swatch = make_swatch(stroke, settings, &rule);
     layer_mm = result.swatch->deposit.median_mm;
   }
   std::vector<std::vector<input::PigmentPart>> singles;
   for (const auto& pigment : data::PigmentDatabase::defaults().all())
     singles.push_back({{pigment.name, 1.0}});
-  result.pigment_masstones =
-      session::render_flat_layers(settings, singles, session::masstone_thickness_mm(settings));
-  result.pigment_layers = session::render_flat_layers(settings, singles, layer_mm);
-  result.pigment_glazes = session::render_flat_layers(settings, singles, kGlazeChipMm);
+  result.pigment_masstones = session::render_flat_layers(
+      settings, singles, session::masstone_thickness_mm(settings), &rule);
+  result.pigment_layers = session::render_flat_layers(settings, singles, layer_mm, &rule);
+  result.pigment_glazes = session::render_flat_layers(settings, singles, kGlazeChipMm, &rule);
   return result;
 }
 
-void SwatchChips::update(WindowState& s, const paintcore::CanvasSpec& canvas) {
+void SwatchChips::update(WindowState& s, const paintcore::CanvasSpec& canvas,
+                         const render::SpectralSampling& rule) {
   if (job_.valid() && job_.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
     s.swatch_busy = false;
     try {
@@ -67,13 +69,16 @@ void SwatchChips::update(WindowState& s, const paintcore::CanvasSpec& canvas) {
   stroke.pressure = s.mouse_pressure;
   stroke.dpi = canvas.dpi;
   stroke.weave_seed = canvas.weave_seed;
-  if (!s.mix_changed && started_ && *started_ == stroke) return;
+  const bool same_rule =
+      rule.wavelengths_nm == started_rule_.wavelengths_nm && rule.to_xyz == started_rule_.to_xyz;
+  if (!s.mix_changed && started_ && *started_ == stroke && same_rule) return;
   s.mix_changed = false;
   started_ = stroke;
+  started_rule_ = rule;
   s.swatch_busy = true;
   // Without a mix the pigment rows still show a layer as thick as the last deposit.
   const double layer_mm = s.swatch_thickness_mm > 0.0 ? s.swatch_thickness_mm : 0.1;
-  job_ = std::async(std::launch::async, &SwatchChips::compute, stroke, s.settings, layer_mm);
+  job_ = std::async(std::launch::async, &SwatchChips::compute, stroke, s.settings, layer_mm, rule);
 }
 
 }  // namespace impasto::app::window

@@ -32,6 +32,17 @@ SpectralPalette::SpectralPalette(const RenderSettings& settings,
 
 SpectralPalette::SpectralPalette(const RenderSettings& settings,
                                  std::span<const std::string> pigment_names,
+                                 const SpectralSampling& rule) {
+  const auto& database = data::PigmentDatabase::defaults();
+  std::vector<data::Pigment> pigments;
+  for (const auto& name : pigment_names) pigments.push_back(database.get(name));
+  const data::Spectrum ground =
+      settings.ground ? *settings.ground : hiding_reflectance(database.get(kGroundPigment));
+  build(settings, data::light_from_spec(settings.light), pigments, ground, &rule);
+}
+
+SpectralPalette::SpectralPalette(const RenderSettings& settings,
+                                 std::span<const std::string> pigment_names,
                                  CarriedPigments carried) {
   const auto& database = data::PigmentDatabase::defaults();
   const auto find = [&](const std::string& name) -> const data::Pigment& {
@@ -60,10 +71,11 @@ SpectralPalette::SpectralPalette(const RenderSettings& settings, const data::Spe
 
 void SpectralPalette::build(const RenderSettings& settings, const data::Spectrum& light,
                             const std::vector<data::Pigment>& pigments,
-                            const data::Spectrum& ground) {
+                            const data::Spectrum& ground, const SpectralSampling* rule) {
   validate(settings);
-  sampling_ = make_palette_sampling(light, data::cie1931_2deg(), settings.wavelengths,
-                                    settings.range, settings.node_weights, pigments, ground);
+  sampling_ = rule ? *rule
+                   : make_palette_sampling(light, data::cie1931_2deg(), settings.wavelengths,
+                                           settings.range, settings.node_weights, pigments, ground);
   const auto n = static_cast<std::size_t>(nodes());
 
   pigment_names_.clear();

@@ -1,5 +1,7 @@
 #include "impasto/session/swatch.hpp"
 
+#include <impasto/render/spectral_palette.hpp>
+
 #include <impasto/render/display.hpp>
 #include <impasto/render/tile_renderer.hpp>
 
@@ -113,12 +115,25 @@ std::vector<std::uint8_t> stroke_area(const paintcore::Canvas& canvas) {
   return area;
 }
 
+namespace {
+
+// A renderer of these pigments with the rule settings ask for, or with `rule`.
+render::TileRenderer renderer_of(const render::RenderSettings& settings,
+                                 std::span<const std::string> slots,
+                                 const render::SpectralSampling* rule) {
+  if (!rule) return render::TileRenderer(settings, slots);
+  return render::TileRenderer(settings, render::SpectralPalette(settings, slots, *rule));
+}
+
+}  // namespace
+
 DisplayRgb mean_stroke_colour(const paintcore::Painting& painting,
-                              const render::RenderSettings& settings) {
+                              const render::RenderSettings& settings,
+                              const render::SpectralSampling* rule) {
   render::RenderSettings linear = settings;
   linear.display = render::DisplayEncoding::linear_srgb;
   linear.threads = 1;
-  render::TileRenderer renderer(linear, painting.pigment_slots());
+  render::TileRenderer renderer = renderer_of(linear, painting.pigment_slots(), rule);
   const paintcore::Canvas& canvas = painting.canvas();
   renderer.render_all(canvas);
   const render::Image image = renderer.image();
@@ -135,7 +150,7 @@ DisplayRgb mean_stroke_colour(const paintcore::Painting& painting,
     }
   if (count == 0) {  // nothing painted: the ground
     const std::vector<input::PigmentPart> none = {};
-    return render_flat_layers(settings, std::span(&none, 1), 0.0).front();
+    return render_flat_layers(settings, std::span(&none, 1), 0.0, rule).front();
   }
   // Linear sRGB back to XYZ, then through the display transform the renderer would use.
   static const std::array<double, 9> to_xyz = render::invert_3x3(render::xyz_to_linear_srgb());
@@ -152,7 +167,8 @@ DisplayRgb mean_stroke_colour(const paintcore::Painting& painting,
 
 std::vector<DisplayRgb> render_flat_layers(const render::RenderSettings& settings,
                                            std::span<const std::vector<input::PigmentPart>> mixes,
-                                           double thickness_mm) {
+                                           double thickness_mm,
+                                           const render::SpectralSampling* rule) {
   if (!std::isfinite(thickness_mm) || thickness_mm < 0.0)
     throw std::runtime_error("swatch: the layer thickness must be finite and >= 0");
   render::RenderSettings flat = settings;
@@ -193,7 +209,7 @@ std::vector<DisplayRgb> render_flat_layers(const render::RenderSettings& setting
             static_cast<float>(thickness_mm * part.parts / total);
       }
     }
-    render::TileRenderer renderer(flat, slots);
+    render::TileRenderer renderer = renderer_of(flat, slots, rule);
     renderer.render_all(canvas);
     const render::Image image = renderer.image();
     for (int x = 0; x < width; ++x) {
@@ -209,14 +225,16 @@ double masstone_thickness_mm(const render::RenderSettings& settings) {
   return 1e4 * settings.thickness_scale_mm;
 }
 
-Swatch make_swatch(const SwatchStroke& stroke, const render::RenderSettings& settings) {
+Swatch make_swatch(const SwatchStroke& stroke, const render::RenderSettings& settings,
+                   const render::SpectralSampling* rule) {
   Swatch swatch;
   const paintcore::Painting painting = paint_swatch_stroke(stroke);
   swatch.deposit = wet_deposit(painting);
-  swatch.on_canvas = mean_stroke_colour(painting, settings);
+  swatch.on_canvas = mean_stroke_colour(painting, settings, rule);
   const std::vector<input::PigmentPart>& mix = stroke.load.mix;
   swatch.masstone =
-      render_flat_layers(settings, std::span(&mix, 1), masstone_thickness_mm(settings)).front();
+      render_flat_layers(settings, std::span(&mix, 1), masstone_thickness_mm(settings), rule)
+          .front();
   return swatch;
 }
 

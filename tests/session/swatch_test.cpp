@@ -7,17 +7,20 @@
 #include <impasto/data/pigment_library.hpp>
 #include <impasto/data/pigments.hpp>
 #include <impasto/render/display.hpp>
+#include <impasto/render/spectral_palette.hpp>
 #include <impasto/render/tile_renderer.hpp>
 
 #include <algorithm>
 #include <array>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <iterator>
 #include <string>
 #include <vector>
 
 #include "../common/user_pigment_folder.hpp"
+#include "impasto/session/replay.hpp"
 #include "impasto/session/swatch.hpp"
 
 namespace impasto::session {
@@ -198,5 +201,51 @@ TEST(Swatch, IsDeterministicAndRejectsBadMixes) {
   EXPECT_THROW(make_swatch(unknown, settings), std::runtime_error);
 }
 
+}  // namespace
+}  // namespace impasto::session
+
+namespace impasto::session {
+namespace {
+// A paint chip in the window (the library's masstones rendered together) against the same
+// paint laid flat on a painting whose palette is the demo's: rendered under the painting's
+// own rule, as the window renders its chips, they agree; under a rule trained on the whole
+// library (the chips' own palette, as the window did before) they differ by the two rules.
+TEST(Swatch, APaintChipIsItsPaintOnThePainting) {
+  const render::RenderSettings settings = linear_settings();
+  const std::vector<std::string> slots = demo_palette();
+  const render::SpectralSampling painting_rule =
+      render::SpectralPalette(settings, slots).sampling();
+  std::vector<std::vector<input::PigmentPart>> singles;
+  for (const auto& name : slots) singles.push_back({{name, 1.0}});
+  const double opaque = masstone_thickness_mm(settings);
+  const auto chips = render_flat_layers(settings, singles, opaque, &painting_rule);
+  // The whole library's chips under the rule trained on it, this palette's among them.
+  std::vector<std::vector<input::PigmentPart>> library;
+  for (const auto& name : slots) library.push_back({{name, 1.0}});
+  for (const auto& pigment : data::PigmentDatabase::defaults().all())
+    if (std::find(slots.begin(), slots.end(), pigment.name) == slots.end())
+      library.push_back({{pigment.name, 1.0}});
+  const auto own_rule_chips = render_flat_layers(settings, library, opaque);
+  // The painting: one cell of each of its paints.
+  paintcore::Canvas canvas(paintcore::CanvasSpec{static_cast<int>(slots.size()), 1, 254.0, 0});
+  paintcore::Tile& tile = canvas.ensure_tile(0, static_cast<int>(slots.size()));
+  for (std::size_t s = 0; s < slots.size(); ++s) {
+    tile.wet_volume_mm[s] = static_cast<float>(opaque);
+    tile.pigment(static_cast<int>(s))[s] = static_cast<float>(opaque);
+  }
+  render::TileRenderer renderer(settings, slots);
+  renderer.render_all(canvas);
+  const render::Image image = renderer.image();
+  double worst = 0.0, worst_own_rule = 0.0;
+  for (std::size_t s = 0; s < slots.size(); ++s) {
+    const float* rgb = image.pixel(static_cast<int>(s), 0);
+    const DisplayRgb on_painting{rgb[0], rgb[1], rgb[2]};
+    EXPECT_LT(delta_e(chips[s], on_painting), 0.05) << slots[s];
+    worst = std::max(worst, delta_e(chips[s], on_painting));
+    worst_own_rule = std::max(worst_own_rule, delta_e(own_rule_chips[s], on_painting));
+  }
+  std::cout << "[ chip ] at most " << worst << " dE00 from the painting under its rule; "
+            << worst_own_rule << " under the library's\n";
+}
 }  // namespace
 }  // namespace impasto::session

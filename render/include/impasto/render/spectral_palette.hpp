@@ -29,6 +29,11 @@ class SpectralPalette {
   using CarriedPigments = std::shared_ptr<const std::map<std::string, data::Pigment>>;
   SpectralPalette(const RenderSettings& settings, std::span<const std::string> pigment_names,
                   CarriedPigments carried);
+  // The pigments by name with a rule already made (another palette's: a chip of a paint shown
+  // under the painting's own rule, as the canvas shows it). The rule must be for
+  // settings.light; its nodes and weights are taken as they are.
+  SpectralPalette(const RenderSettings& settings, std::span<const std::string> pigment_names,
+                  const SpectralSampling& rule);
   // The painting's slots with the pigments it carries (bit-identical without the library).
   SpectralPalette(const RenderSettings& settings, const paintcore::Painting& painting);
   // The same from explicit data (tests, benchmarks, files).
@@ -61,8 +66,10 @@ class SpectralPalette {
   std::size_t offset(int row) const {
     return static_cast<std::size_t>(row) * static_cast<std::size_t>(nodes());
   }
+  // With `rule` null, the rule settings ask for (make_palette_sampling); else that one.
   void build(const RenderSettings& settings, const data::Spectrum& light,
-             const std::vector<data::Pigment>& pigments, const data::Spectrum& ground);
+             const std::vector<data::Pigment>& pigments, const data::Spectrum& ground,
+             const SpectralSampling* rule = nullptr);
 
   SpectralSampling sampling_;
   std::vector<std::string> pigment_names_;

@@ -7,6 +7,7 @@
 #include <impasto/input/stroke_events.hpp>
 #include <impasto/paintcore/painting.hpp>
 #include <impasto/render/render_settings.hpp>
+#include <impasto/render/spectral_sampling.hpp>
 
 #include <algorithm>
 #include <array>
@@ -63,16 +64,20 @@ inline DisplayRgb clamped(const DisplayRgb& rgb) {
 std::vector<std::uint8_t> stroke_area(const paintcore::Canvas& canvas);
 // The painting rendered by render::TileRenderer, and the mean colour over stroke_area(),
 // taken in linear light and encoded for settings.display. The ground's colour when nothing
-// is painted.
+// is painted. Each function here renders with the rule settings ask for for its pigments,
+// or, given `rule` (the painting's own: CanvasViewer's palette), with that one, so a chip
+// shows a paint as the canvas will.
 DisplayRgb mean_stroke_colour(const paintcore::Painting& painting,
-                              const render::RenderSettings& settings);
+                              const render::RenderSettings& settings,
+                              const render::SpectralSampling* rule = nullptr);
 
 // Flat, uniform layers over the flat canvas ground, rendered by render::TileRenderer: one
 // colour per mix, each a layer of `thickness_mm` (pigment names from the default database,
 // any parts).
 std::vector<DisplayRgb> render_flat_layers(const render::RenderSettings& settings,
                                            std::span<const std::vector<input::PigmentPart>> mixes,
-                                           double thickness_mm);
+                                           double thickness_mm,
+                                           const render::SpectralSampling* rule = nullptr);
 // A layer thick enough to hide anything beneath it: the masstone (optical thickness 1e4).
 double masstone_thickness_mm(const render::RenderSettings& settings);
 
@@ -84,6 +89,7 @@ struct Swatch {
 
 // Paints the standard stroke and renders both chips. Throws std::runtime_error (naming the
 // problem) for an empty mix, unknown pigments, bad brush or light settings.
-Swatch make_swatch(const SwatchStroke& stroke, const render::RenderSettings& settings);
+Swatch make_swatch(const SwatchStroke& stroke, const render::RenderSettings& settings,
+                   const render::SpectralSampling* rule = nullptr);
 
 }  // namespace impasto::session
