@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <ctime>
 #include <stdexcept>
+#include <tuple>
+#include <utility>
 
 #include "impasto/data/colorimetry.hpp"
 #include "impasto/render/kubelka_munk_cell.hpp"
@@ -107,8 +109,8 @@ double thread_cpu_ns() {
 // spectral kernels (spectral_kernels.hpp) as it runs them, a row of 64 cells at a time:
 // substrate load (float or half), a two-pigment wet layer, XYZ. Best of three runs. The full
 // spectrum (more nodes than a kernel takes) is timed through the scalar reference.
-double time_cells(const SampledScene& scene, ReflectanceStorage storage, int cells,
-                  double thickness_scale_mm) {
+std::pair<double, double> time_cells(const SampledScene& scene, ReflectanceStorage storage,
+                                     int cells, double thickness_scale_mm) {
   const SpectralPalette& palette = scene.palette;
   const int nodes = palette.nodes();
   const auto count = static_cast<std::size_t>(cells);
@@ -133,7 +135,7 @@ double time_cells(const SampledScene& scene, ReflectanceStorage storage, int cel
   constexpr std::size_t kRow = 64;
   std::vector<float> row(kRow * stride, 0.0f);
   std::vector<float> xyz(3 * kRow);
-  double best = 1e300;
+  double best = 1e300, worst = 0.0;
   for (int run = 0; run < 3; ++run) {
     float checksum = 0.0f;
     const double start = thread_cpu_ns();
@@ -166,10 +168,12 @@ double time_cells(const SampledScene& scene, ReflectanceStorage storage, int cel
       }
       for (std::size_t c = 0; c < n; ++c) checksum += xyz[3 * c + 1];
     }
-    best = std::min(best, (thread_cpu_ns() - start) / static_cast<double>(cells));
+    const double ns = (thread_cpu_ns() - start) / static_cast<double>(cells);
+    best = std::min(best, ns);
+    worst = std::max(worst, ns);
     if (!(checksum >= 0.0f)) throw std::runtime_error("colour timing: non-finite result");
   }
-  return best;
+  return {best, worst - best};
 }
 
 // A sample of one layer over a ground (kind empty: the standard samples).
@@ -263,6 +267,19 @@ std::vector<ColorSample> painting_color_samples(const std::vector<data::Pigment>
   return samples;
 }
 
+std::vector<bool> frontier_points(const std::vector<CostAndError>& points) {
+  std::vector<bool> on(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const CostAndError& p = points[i];
+    on[i] = std::none_of(points.begin(), points.end(), [&](const CostAndError& other) {
+      return other.group == p.group &&
+             other.ns_per_cell <= p.ns_per_cell + std::max(p.ns_spread, other.ns_spread) &&
+             other.error < p.error;
+    });
+  }
+  return on;
+}
+
 ClassError summarise_errors(std::string kind,
                             const std::vector<std::pair<double, std::string>>& errors) {
   ClassError out;
@@ -322,7 +339,8 @@ AccuracyResult evaluate_color_accuracy(const data::Spectrum& light, const std::s
   for (std::size_t k = 0; k < kinds.size(); ++k)
     result.classes.push_back(summarise_errors(kinds[k], by_kind[k]));
   if (timing_cells > 0) {
-    result.ns_per_cell = time_cells(scene, storage, timing_cells, thickness_scale_mm);
+    std::tie(result.ns_per_cell, result.ns_per_cell_spread) =
+        time_cells(scene, storage, timing_cells, thickness_scale_mm);
   }
   return result;
 }

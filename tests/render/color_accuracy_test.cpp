@@ -130,3 +130,19 @@ TEST(ColorAccuracy, ErrorFallsAsNodesAreAdded) {
     mean_before = result.mean_de00;
   }
 }
+
+// A point is on the frontier only by an advantage larger than the timing noise.
+TEST(ColorAccuracy, TheFrontierIgnoresTimingNoise) {
+  // Two rules of one cost (45 and 47 ns, each +-3 between runs): only the more accurate is on
+  // the frontier, whichever timed faster; a cheaper one by more than the spread is too.
+  const std::vector<CostAndError> points = {{"D65", 47.0, 3.0, 0.3},
+                                            {"D65", 45.0, 3.0, 0.9},
+                                            {"D65", 30.0, 1.0, 2.0},
+                                            {"A", 45.0, 3.0, 0.9}};
+  const std::vector<bool> on = frontier_points(points);
+  EXPECT_EQ(on, (std::vector<bool>{true, false, true, true}));
+  // Without the spread the faster, worse one would have been a frontier point.
+  std::vector<CostAndError> exact = points;
+  for (CostAndError& p : exact) p.ns_spread = 0.0;
+  EXPECT_TRUE(frontier_points(exact)[1]);
+}

@@ -59,6 +59,18 @@ struct ClassError {
 ClassError summarise_errors(std::string kind,
                             const std::vector<std::pair<double, std::string>>& errors);
 
+// A point of the speed/accuracy trade: its cost with the run-to-run spread of that cost, its
+// error, and the group it competes in (a light).
+struct CostAndError {
+  std::string group;
+  double ns_per_cell = 0.0, ns_spread = 0.0;
+  double error = 0.0;
+};
+// Which points are on the frontier: no other point of the group is as cheap and more accurate,
+// where costs closer than either's spread count as equal (a point is not on the frontier by
+// timing noise alone).
+std::vector<bool> frontier_points(const std::vector<CostAndError>& points);
+
 struct AccuracyResult {
   int nodes = 0;  // 0: the full spectrum (the reference itself)
   std::string light;
@@ -67,6 +79,7 @@ struct AccuracyResult {
   double max_de00 = 0.0;
   std::string worst_sample;
   double ns_per_cell = 0.0;         // one wet layer of two pigments over a baked substrate, to XYZ
+  double ns_per_cell_spread = 0.0;  // the timing runs' max - min: the run-to-run noise
   std::vector<ClassError> classes;  // per kind of sample, in the order they first appear
 };
 
