@@ -7,6 +7,7 @@
 #include <impasto/paintcore/brush_head.hpp>
 #include <impasto/paintcore/paint_body.hpp>
 #include <impasto/paintcore/paint_surface.hpp>
+#include <impasto/util/text.hpp>
 
 namespace impasto::input::detail {
 
@@ -102,7 +103,7 @@ BrushEvent parse_brush(const Fields& f, const LineContext& where) {
     if (seen()) where.fail(key, "given twice");
     if (key == "size") {
       if (!(value > 0.0 && value <= paintcore::kMaxBrushSizeMm))
-        where.fail(key, "must be in (0, 1000] mm");
+        where.fail(key, "must be in (0, " + util::number_text(paintcore::kMaxBrushSizeMm) + "] mm");
       brush.size_mm = value;
       has_size = true;
     } else if (key == "stiffness") {
@@ -148,7 +149,8 @@ LoadEvent parse_load(Fields f, const LineContext& where) {
     where.fail("", "'load' takes a volume in mm^3 then \"pigment name\" parts pairs");
   }
   load.volume_mm3 = parse_double(f[1], where, "volume");
-  if (load.volume_mm3 < 0.0) where.fail("volume", "must not be negative");
+  if (!(load.volume_mm3 >= 0.0 && load.volume_mm3 <= paintcore::kMaxLoadMm3))
+    where.fail("volume", "must be in [0, " + util::number_text(paintcore::kMaxLoadMm3) + "] mm^3");
   for (std::size_t i = 2; i < f.size(); i += 2) {
     if (!is_quoted(f[i])) where.fail("pigment", "pigment names are written in double quotes");
     const std::string_view name = unquote(f[i]);

@@ -10,6 +10,7 @@
 #include <tbb/parallel_for.h>
 
 #include "impasto/paintcore/brush_resample.hpp"
+#include "impasto/util/text.hpp"
 #include "levelling.hpp"
 #include "painting_impl.hpp"
 #include "painting_surface.hpp"
@@ -133,9 +134,10 @@ void Painting::load_brush(const std::vector<PigmentMixPart>& mix, double volume_
                           std::optional<Medium> medium) {
   Impl& p = *impl_;
   if (p.brush.empty()) throw std::runtime_error("load_brush: no brush is set (call set_brush)");
-  if (!std::isfinite(volume_mm3) || volume_mm3 < 0.0 || volume_mm3 > 1e9)
-    throw std::runtime_error("load_brush: field 'volume_mm3' must be in [0, 1e9], got " +
-                             std::to_string(volume_mm3));
+  if (!std::isfinite(volume_mm3) || volume_mm3 < 0.0 || volume_mm3 > kMaxLoadMm3)
+    throw std::runtime_error("load_brush: field 'volume_mm3' must be in [0, " +
+                             util::number_text(kMaxLoadMm3) + "], got " +
+                             util::number_text(volume_mm3));
   if (mix.empty()) throw std::runtime_error("load_brush: field 'mix' is empty");
   if (medium) validate(*medium);
   double total_parts = 0.0;

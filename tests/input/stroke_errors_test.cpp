@@ -134,7 +134,10 @@ INSTANTIATE_TEST_SUITE_P(
         ErrorCase{"LoadUnterminated", kHeader + "load 3 \"White 1\n",
                   "bad.strokes:2: unterminated quoted name"},
         ErrorCase{"LoadNegativeVolume", kHeader + "load -3 \"White\" 1\n",
-                  "bad.strokes:2: field 'volume': must not be negative"},
+                  "bad.strokes:2: field 'volume': must be in [0, 1e+09] mm^3"},
+        // The engine's range, refused when the file is read (the replay refused it before).
+        ErrorCase{"LoadHugeVolume", kHeader + "load 2e9 \"White\" 1\n",
+                  "bad.strokes:2: field 'volume': must be in [0, 1e+09] mm^3"},
         ErrorCase{"LoadZeroParts", kHeader + "load 3 \"White\" 0\n",
                   "bad.strokes:2: field 'parts': must be positive"},
         ErrorCase{"DryTooMuch", kHeader + "dry 1.5\n",

@@ -23,6 +23,10 @@ inline double max_brush_size_mm(double cell_mm) {
   return by_cells < kMaxBrushSizeMm ? by_cells : kMaxBrushSizeMm;
 }
 
+// A load of paint: [0, kMaxLoadMm3] mm³ wherever a load is taken (stroke files, the engine),
+// and no more than the head holds (Painting::load_brush refuses more, naming what fits).
+inline constexpr double kMaxLoadMm3 = 1e9;
+
 struct BrushSettings {
   std::string head = "round";  // head file name in the brushes folder (without .brush)
   double size_mm = 4.0;        // width of the head
