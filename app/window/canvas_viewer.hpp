@@ -53,6 +53,10 @@ class CanvasViewer {
   void make_room();
 
   const render::SpectralPalette& palette() const { return *palette_; }
+  // The wavelength rule the canvas is shaded with; null before the first sync.
+  const render::SpectralSampling* rule() const {
+    return palette_ ? &palette_->sampling() : nullptr;
+  }
   // The Gaussian rule stands in while the palette's own is built.
   bool palette_stands_in() const { return palette_stands_in_; }
   int width_cells() const { return width_cells_; }

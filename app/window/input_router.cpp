@@ -257,7 +257,7 @@ void InputRouter::pick_at(const PointerEvent& at, bool released) {
   if (!released) return;
   e.reveal = true;
   try {
-    render_picked_colours(*e.picked, state_.settings, &viewer_.palette().sampling());
+    render_picked_colours(*e.picked, state_.settings, viewer_.rule());
   } catch (const std::exception& error) {
     e.message = error.what();
   }

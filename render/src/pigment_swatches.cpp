@@ -1,6 +1,6 @@
 #include "impasto/render/pigment_swatches.hpp"
 
-#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "impasto/data/cie.hpp"
@@ -22,6 +22,8 @@ std::vector<float> mix_reflectance(const std::vector<const data::Pigment*>& pigm
     throw std::invalid_argument("mix_reflectance: one share for each pigment");
   double total = 0.0;
   for (const double share : shares) total += share;
+  if (!(total > 0.0) || !std::isfinite(total))
+    throw std::invalid_argument("mix_reflectance: the shares must add up to a positive number");
   // K and S at the nodes as SpectralPalette samples them, then Eq. 5 as the renderer adds them.
   std::vector<float> absorption(static_cast<std::size_t>(sampling.size()), 0.0f);
   std::vector<float> scattering(absorption.size(), 0.0f);
