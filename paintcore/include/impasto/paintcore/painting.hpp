@@ -94,8 +94,8 @@ class Painting {
   // fraction of what is still wet of the varnish.
   void dry(double fraction);
 
-  // A coat of varnish (paint_surface.hpp) of `finish`, thickness_mm [kMinVarnishMm, kMaxVarnishMm] thick,
-  // over the cells of `region` (clipped to the canvas; none: the whole painting), as one
+  // A coat of varnish (paint_surface.hpp) of `finish`, thickness_mm [kMinVarnishMm, kMaxVarnishMm]
+  // thick, over the cells of `region` (clipped to the canvas; none: the whole painting), as one
   // undoable step. It goes on wet (glossy) and dries with dry(); its finish replaces an
   // older coat's, the thicknesses add. Throws, changing nothing, on a bad finish, thickness
   // or a region outside the canvas.
