@@ -88,7 +88,7 @@ TEST(SurfaceRender, BlinnIsTheDefaultAndRendersAsBefore) {
   RenderSettings defaults;
   EXPECT_EQ(defaults.surface.model, SurfaceModel::blinn);
   defaults.node_weights = NodeWeights::interpolatory;  // the rule of the hash below
-  defaults.wavelengths = 8;  // and its node count (the default until 2026-12-07)
+  defaults.wavelengths = 8;     // and its node count (the default until 2026-12-07)
   defaults.saunderson = false;  // and the paint's surface as it was (off by default then)
   // The scalar reference path (the SIMD kernels differ from it by float ulps, tested in
   // spectral_kernels_test.cpp).

@@ -51,7 +51,7 @@ struct RenderSettings {
   // under D65, A and F11 (`impasto bench color`, docs/color-accuracy.md); 8 misses on glazes,
   // stacks and the bare ground, for 20 % less time a relight.
   int wavelengths = 16;
-  WavelengthRange range;      // the measure the nodes are chosen on
+  WavelengthRange range;                              // the measure the nodes are chosen on
   NodeWeights node_weights = NodeWeights::optimised;  // built once a palette (node_cache.hpp)
   ChromaticAdaptation adaptation = ChromaticAdaptation::bradford;
   DisplayEncoding display = DisplayEncoding::srgb;
