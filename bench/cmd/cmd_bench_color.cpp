@@ -21,6 +21,7 @@
 #include <impasto/render/spectral_palette.hpp>
 #include <impasto/render/tile_renderer.hpp>
 #include <impasto/session/replay.hpp>
+#include <impasto/session/swatch.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -58,7 +59,7 @@ constexpr const char* kPaintingReplays[] = {"demo.dat", "metallic.strokes", "sur
 struct ReplayedPainting {
   std::string name;
   paintcore::Painting painting;
-  std::vector<std::pair<int, int>> cells;  // painted: more than a micrometre of paint
+  std::vector<std::pair<int, int>> cells;  // painted: more than session::kPaintedAboveMm
 };
 
 std::vector<ReplayedPainting> replay_paintings() {
@@ -78,7 +79,8 @@ std::vector<ReplayedPainting> replay_paintings() {
         const int x = x0 + c % paintcore::kTileSize, y = y0 + c / paintcore::kTileSize;
         if (x >= canvas.width_cells() || y >= canvas.height_cells()) continue;
         const auto i = static_cast<std::size_t>(c);
-        if (tile->wet_volume_mm[i] + tile->dry_height_mm[i] > 1e-3f) cells.push_back({x, y});
+        if (tile->wet_volume_mm[i] + tile->dry_height_mm[i] > session::kPaintedAboveMm)
+          cells.push_back({x, y});
       }
     }
     out.push_back({name, std::move(painting), std::move(cells)});
@@ -106,25 +108,34 @@ std::vector<data::Lab> rendered_cells(const ReplayedPainting& replayed, RenderSe
   return out;
 }
 
-// The "painting" class: every painted cell of the replays rendered (the default renderer, its
-// lamp and relief) with `nodes` wavelengths against the full spectrum.
+// Every painted cell of each replay rendered (the default renderer, its lamp and relief)
+// under `light` with `nodes` wavelengths (0: the full spectrum, the reference).
+std::vector<std::vector<data::Lab>> painted_cells(const std::vector<ReplayedPainting>& paintings,
+                                                  const std::string& light, int nodes,
+                                                  NodeWeights weights) {
+  RenderSettings settings;
+  settings.light = light;
+  settings.node_weights = weights;
+  settings.wavelengths = nodes;
+  std::vector<std::vector<data::Lab>> out;
+  for (const ReplayedPainting& replayed : paintings)
+    out.push_back(rendered_cells(replayed, settings));
+  return out;
+}
+
+// The "painting" class: the cells at `nodes` wavelengths against the reference's.
 ClassError painting_cells_error(const std::vector<ReplayedPainting>& paintings,
+                                const std::vector<std::vector<data::Lab>>& reference,
                                 const std::string& light, int nodes, NodeWeights weights) {
+  const std::vector<std::vector<data::Lab>> got = painted_cells(paintings, light, nodes, weights);
   std::vector<std::pair<double, std::string>> errors;
-  for (const ReplayedPainting& replayed : paintings) {
-    RenderSettings settings;
-    settings.light = light;
-    settings.node_weights = weights;
-    settings.wavelengths = 0;
-    const std::vector<data::Lab> reference = rendered_cells(replayed, settings);
-    settings.wavelengths = nodes;
-    const std::vector<data::Lab> got = rendered_cells(replayed, settings);
-    for (std::size_t i = 0; i < got.size(); ++i) {
-      const auto [x, y] = replayed.cells[i];
-      errors.push_back({data::ciede2000(reference[i], got[i]),
-                        replayed.name + " (" + std::to_string(x) + ", " + std::to_string(y) + ")"});
+  for (std::size_t p = 0; p < paintings.size(); ++p)
+    for (std::size_t i = 0; i < got[p].size(); ++i) {
+      const auto [x, y] = paintings[p].cells[i];
+      errors.push_back(
+          {data::ciede2000(reference[p][i], got[p][i]),
+           paintings[p].name + " (" + std::to_string(x) + ", " + std::to_string(y) + ")"});
     }
-  }
   return summarise_errors("painting", errors);
 }
 
@@ -182,17 +193,13 @@ void print_classes(const std::vector<AccuracyResult>& rows) {
     }
     std::printf("\n");
   }
+  // The first row (float storage, the first node count) holds every class.
   std::printf("%-11s", "samples");
   if (!rows.empty())
     for (const char* kind : kColorClasses) {
       const auto c = std::find_if(rows.front().classes.begin(), rows.front().classes.end(),
                                   [&](const ClassError& e) { return e.kind == kind; });
-      int count = c == rows.front().classes.end() ? 0 : c->count;
-      if (std::string(kind) == "painting")
-        for (const AccuracyResult& r : rows)
-          for (const ClassError& e : r.classes)
-            if (e.kind == kind) count = e.count;
-      std::printf(" %20d", count);
+      std::printf(" %20d", c == rows.front().classes.end() ? 0 : c->count);
     }
   std::printf("\n");
 }
@@ -224,12 +231,17 @@ void run(const BenchColorArgs& args) {
     }
     std::vector<int> node_counts = args.nodes;
     node_counts.push_back(0);  // the full spectrum: its cost (its error is 0 by definition)
+    // The replays' cells at the full spectrum, once per light for every node count.
+    const std::vector<std::vector<data::Lab>> reference_cells =
+        by_class ? painted_cells(paintings, light_name, 0, weights)
+                 : std::vector<std::vector<data::Lab>>{};
     for (int n : node_counts) {
       rows.push_back(evaluate_color_accuracy(light, light_name, n, pigments, samples,
                                              ReflectanceStorage::float32, weights,
                                              args.timing_cells));
       if (by_class && n != 0)
-        rows.back().classes.push_back(painting_cells_error(paintings, light_name, n, weights));
+        rows.back().classes.push_back(
+            painting_cells_error(paintings, reference_cells, light_name, n, weights));
       progress.update(++done, steps);
       if (args.half && n != 0) {
         rows.push_back(evaluate_color_accuracy(light, light_name, n, pigments, samples,

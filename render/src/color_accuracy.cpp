@@ -86,10 +86,9 @@ data::Lab render_sample(const SampledScene& scene, const ColorSample& sample,
   if (!sample.mix.empty())
     composite_paint_layer(palette, shares_of(sample.mix),
                           static_cast<float>(sample.thickness_mm / thickness_scale_mm), r);
-  if (sample.through_surface) {
-    const RenderSettings defaults;
-    const auto k1 = static_cast<float>(defaults.saunderson_k1);
-    const auto k2 = static_cast<float>(defaults.saunderson_k2);
+  if (sample.through_surface) {  // the interface RenderSettings has by default
+    const auto k1 = static_cast<float>(data::kSaundersonK1);
+    const auto k2 = static_cast<float>(data::kSaundersonK2);
     for (int i = 0; i < palette.nodes(); ++i) r[i] = k1 + km::saunderson(r[i], k1, k2);
   }
   float xyz[3];

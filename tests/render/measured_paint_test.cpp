@@ -9,10 +9,10 @@
 
 #include <algorithm>
 #include <iostream>
-#include <numeric>
 #include <string>
 #include <vector>
 
+#include "flat_layer_canvas.hpp"
 #include "impasto/data/colorimetry.hpp"
 #include "impasto/data/data_dir.hpp"
 #include "impasto/data/ks_fit.hpp"
@@ -24,21 +24,6 @@ namespace impasto::render {
 namespace {
 
 using paintcore::kTileSize;
-
-// One flat tile holding `depth_mm` of the mixture (concentrations by volume), no weave.
-paintcore::Canvas flat_layer(const std::vector<double>& concentrations, float depth_mm) {
-  const int slots = static_cast<int>(concentrations.size());
-  paintcore::Canvas canvas({kTileSize, kTileSize, 254.0, 0});
-  paintcore::Tile& tile = canvas.ensure_tile(0, slots);
-  const double total = std::accumulate(concentrations.begin(), concentrations.end(), 0.0);
-  tile.wet_volume_mm.fill(depth_mm);
-  for (int s = 0; s < slots; ++s) {
-    const auto amount =
-        static_cast<float>(depth_mm * concentrations[static_cast<std::size_t>(s)] / total);
-    std::fill_n(tile.pigment(s), paintcore::kTileCells, amount);
-  }
-  return canvas;
-}
 
 struct Errors {
   double mean = 0.0, max = 0.0;
@@ -56,7 +41,8 @@ Errors rendered_against_measured(RenderSettings settings, const data::KsFitProbl
   TileRenderer renderer(settings, problem.pigment_names);
   Errors errors;
   for (const data::KsSample& sample : problem.samples) {
-    renderer.render_all(flat_layer(sample.concentrations, 2.0f));  // 400 optical units: opaque
+    renderer.render_all(
+        test::flat_layer_canvas(sample.concentrations, 2.0f));  // 400 optical units: opaque
     const Image image = renderer.image();
     const float* rgb = image.pixel(kTileSize / 2, kTileSize / 2);
     data::Xyz rendered;

@@ -7,10 +7,10 @@
 
 #include <algorithm>
 #include <iostream>
-#include <numeric>
 #include <string>
 #include <vector>
 
+#include "flat_layer_canvas.hpp"
 #include "impasto/data/colorimetry.hpp"
 #include "impasto/data/lights.hpp"
 #include "impasto/data/pigments.hpp"
@@ -23,21 +23,6 @@ namespace impasto::render {
 namespace {
 
 using paintcore::kTileSize;
-
-// One flat tile holding `depth_mm` of paint of these concentrations (by volume), no weave.
-paintcore::Canvas flat_canvas(const std::vector<double>& concentrations, float depth_mm) {
-  const int slots = static_cast<int>(concentrations.size());
-  paintcore::Canvas canvas({kTileSize, kTileSize, 254.0, 0});
-  paintcore::Tile& tile = canvas.ensure_tile(0, slots);
-  const double total = std::accumulate(concentrations.begin(), concentrations.end(), 0.0);
-  tile.wet_volume_mm.fill(depth_mm);
-  for (int s = 0; s < slots; ++s) {
-    const auto amount =
-        static_cast<float>(depth_mm * concentrations[static_cast<std::size_t>(s)] / total);
-    std::fill_n(tile.pigment(s), paintcore::kTileCells, amount);
-  }
-  return canvas;
-}
 
 // The renderer's pixel (linear sRGB, adapted to D65) as L*a*b* relative to D65.
 data::Lab rendered_lab(TileRenderer& renderer, const paintcore::Canvas& canvas) {
@@ -82,7 +67,7 @@ Gap swatches_against_renderer(RenderSettings settings) {
   names.push_back("White");
   const std::size_t white_slot = names.size() - 1;
   TileRenderer renderer(settings, names);
-  const SpectralPalette palette(settings, names);
+  const SpectralPalette& palette = renderer.palette();
   const SpectralSampling& sampling = palette.sampling();
   const std::vector<float> ground(palette.ground(), palette.ground() + palette.nodes());
   Gap gap;
@@ -96,7 +81,7 @@ Gap swatches_against_renderer(RenderSettings settings) {
           "tint", seen_through_surface(tint_reflectance(pigment, white, parts, sampling)),
           sampling);
       gap.add(data::ciede2000(swatch_lab_d65(swatch, sampling),
-                              rendered_lab(renderer, flat_canvas(c, 2.0f))),
+                              rendered_lab(renderer, test::flat_layer_canvas(c, 2.0f))),
               names[i] + " 1:" + std::to_string(parts));
     }
     std::vector<double> c(names.size(), 0.0);
@@ -107,7 +92,7 @@ Gap swatches_against_renderer(RenderSettings settings) {
         seen_through_surface(glaze_reflectance(pigment, kGlazeThickness, ground, sampling)),
         sampling);
     gap.add(data::ciede2000(swatch_lab_d65(swatch, sampling),
-                            rendered_lab(renderer, flat_canvas(c, glaze_mm))),
+                            rendered_lab(renderer, test::flat_layer_canvas(c, glaze_mm))),
             names[i] + " glaze");
   }
   return gap;
